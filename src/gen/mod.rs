@@ -1,0 +1,1 @@
+//! Seeded, deterministic generators of closed triangulated surfaces.

@@ -1,0 +1,1 @@
+//! Mesh file I/O (OFF, OBJ, PLY ascii/binary, optionally gzip-compressed).
