@@ -1,9 +1,19 @@
 //! `contractible`: topology-preserving edge contraction on triangulated closed surfaces.
+//!
+//! The core ([`Triangulation`]) is a corner table over flat `u32` arrays that supports
+//! orientable and non-orientable surfaces alike. On it: the link condition (two
+//! independent implementations), contraction with exact undo, vertex splits and flips.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod core;
 pub mod gen;
 pub mod io;
 pub mod mesh;
+pub mod rng;
 
+pub use crate::core::{
+    BuildError, Component, ContractError, ContractionRecord, Corner, FaceId, FlipError, History,
+    LinkTester, SplitError, Surfaces, Triangulation, ValidationError, VertexId,
+};
 pub use mesh::{Mesh, QuadMesh, TriMesh};

@@ -1,1 +1,5 @@
 //! Seeded, deterministic generators of closed triangulated surfaces.
+
+pub mod random;
+
+pub use random::{random, seed_surface, RandomParams, SurfaceKind};

@@ -1,0 +1,519 @@
+//! Construction of a [`Triangulation`] from a face list, with full validation.
+
+use super::ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES, NONE};
+use super::tri::Triangulation;
+use crate::mesh::TriMesh;
+
+/// Why a face list is not a closed surface triangulation. Every variant says where:
+/// face indices are positions in the input face list, vertex ids are input vertex ids.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum BuildError {
+    /// The face list is empty.
+    #[error("the mesh has no faces")]
+    Empty,
+    /// More vertices or faces than the 32-bit index type can address.
+    #[error("too many {what}: {count} (at most {max})")]
+    TooLarge {
+        /// `"vertices"` or `"faces"`.
+        what: &'static str,
+        /// The count given.
+        count: usize,
+        /// The largest supported count.
+        max: usize,
+    },
+    /// A face refers to a vertex id outside `0..vertex_count`.
+    #[error("face {face}: vertex index {vertex} out of range (vertex count {vertex_count})")]
+    VertexOutOfRange {
+        /// Input face index.
+        face: usize,
+        /// The offending index.
+        vertex: u32,
+        /// The declared vertex count.
+        vertex_count: usize,
+    },
+    /// A face repeats a vertex.
+    #[error("face {face} is degenerate: vertices {vertices:?}")]
+    DegenerateFace {
+        /// Input face index.
+        face: usize,
+        /// Its vertices.
+        vertices: [u32; 3],
+    },
+    /// Two faces have the same three vertices.
+    #[error("face {face} duplicates face {first} (vertices {vertices:?})")]
+    DuplicateFace {
+        /// The later input face index.
+        face: usize,
+        /// The earlier input face index with the same vertex set.
+        first: usize,
+        /// The shared vertices (as in the later face).
+        vertices: [u32; 3],
+    },
+    /// An edge lies in exactly one face: the surface has a boundary.
+    #[error("edge [{a}, {b}] is a boundary edge: it lies only in face {face}")]
+    BoundaryEdge {
+        /// Edge endpoint (the smaller id).
+        a: u32,
+        /// Edge endpoint (the larger id).
+        b: u32,
+        /// The one face containing it.
+        face: usize,
+    },
+    /// An edge lies in an odd number (at least 3) of faces.
+    #[error("edge [{a}, {b}] is non-manifold: it lies in {faces} faces (first: face {face})")]
+    NonManifoldEdge {
+        /// Edge endpoint (the smaller id).
+        a: u32,
+        /// Edge endpoint (the larger id).
+        b: u32,
+        /// How many faces contain it.
+        faces: usize,
+        /// The first input face containing it.
+        face: usize,
+    },
+    /// An even number (at least 4) of faces contain the same endpoints: two or more
+    /// distinct edges with the same endpoints, which a triangulation does not allow.
+    #[error(
+        "vertices {a} and {b} are joined by {edges} edges ({faces} faces, first: face {face})"
+    )]
+    MultipleEdges {
+        /// Endpoint (the smaller id).
+        a: u32,
+        /// Endpoint (the larger id).
+        b: u32,
+        /// Number of edges (faces / 2).
+        edges: usize,
+        /// Number of faces containing both.
+        faces: usize,
+        /// The first input face containing both.
+        face: usize,
+    },
+    /// The faces around a vertex form several fans (a pinched, non-manifold vertex).
+    #[error(
+        "vertex {vertex}: its link is not one cycle but {cycles} cycles (faces around it: {faces})"
+    )]
+    VertexLinkNotCycle {
+        /// The vertex id.
+        vertex: u32,
+        /// Number of separate cycles of faces around it.
+        cycles: usize,
+        /// Number of faces containing it.
+        faces: usize,
+    },
+    /// A vertex has fewer than 3 incident edges.
+    #[error("vertex {vertex} has degree {degree} (at least 3 required)")]
+    VertexDegreeTooLow {
+        /// The vertex id.
+        vertex: u32,
+        /// Its degree.
+        degree: usize,
+    },
+    /// A vertex in `0..vertex_count` is used by no face (only [`Triangulation::from_faces`]
+    /// reports this; [`Surfaces::from_mesh`] drops such vertices instead).
+    #[error("vertex {vertex} is used by no face")]
+    UnusedVertex {
+        /// The vertex id.
+        vertex: u32,
+    },
+    /// The faces form several connected surfaces (only [`Triangulation::from_faces`]
+    /// reports this; [`Surfaces::from_mesh`] splits them instead).
+    #[error("the faces form {components} connected components, not one")]
+    Disconnected {
+        /// Number of components.
+        components: usize,
+    },
+}
+
+/// Result of the shared validation: a possibly disconnected, possibly sparse corner table.
+struct Checked {
+    tri: Triangulation,
+    used: Vec<bool>,
+}
+
+fn check_sizes(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
+    if faces.is_empty() {
+        return Err(BuildError::Empty);
+    }
+    if faces.len() > MAX_FACES {
+        return Err(BuildError::TooLarge {
+            what: "faces",
+            count: faces.len(),
+            max: MAX_FACES,
+        });
+    }
+    if vertex_count > MAX_VERTICES {
+        return Err(BuildError::TooLarge {
+            what: "vertices",
+            count: vertex_count,
+            max: MAX_VERTICES,
+        });
+    }
+    Ok(())
+}
+
+/// Validates every face and builds `opposite` by bucketing each corner's opposite edge
+/// under its smaller endpoint. O(F) plus sorting the buckets (each of size ~degree).
+fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
+    check_sizes(vertex_count, faces)?;
+    let nf = faces.len();
+    for (i, f) in faces.iter().enumerate() {
+        for &v in f {
+            if v as usize >= vertex_count {
+                return Err(BuildError::VertexOutOfRange {
+                    face: i,
+                    vertex: v,
+                    vertex_count,
+                });
+            }
+        }
+        if f[0] == f[1] || f[1] == f[2] || f[0] == f[2] {
+            return Err(BuildError::DegenerateFace {
+                face: i,
+                vertices: *f,
+            });
+        }
+    }
+    let corner_vertex: Vec<u32> = faces.iter().flat_map(|f| f.iter().copied()).collect();
+    let nc = corner_vertex.len();
+
+    // Bucket the edge opposite each corner under its smaller endpoint; each entry packs
+    // (larger endpoint, corner) into a u64 so a bucket sorts without indirection.
+    let mut start = vec![0u32; vertex_count + 1];
+    let edge_of = |c: usize| {
+        let a = corner_vertex[Corner(c as u32).next().index()];
+        let b = corner_vertex[Corner(c as u32).prev().index()];
+        if a < b {
+            (a, b)
+        } else {
+            (b, a)
+        }
+    };
+    for c in 0..nc {
+        start[edge_of(c).0 as usize + 1] += 1;
+    }
+    for i in 0..vertex_count {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut bucket = vec![0u64; nc];
+    for c in 0..nc {
+        let (lo, hi) = edge_of(c);
+        let slot = &mut fill[lo as usize];
+        bucket[*slot as usize] = ((hi as u64) << 32) | c as u64;
+        *slot += 1;
+    }
+    drop(fill);
+
+    let mut opposite = vec![NONE; nc];
+    // The first problem of each kind, reported in a fixed order of precedence below.
+    let mut duplicate: Option<BuildError> = None;
+    let mut bad_edge: Option<BuildError> = None;
+    let mut boundary: Option<BuildError> = None;
+    for lo in 0..vertex_count {
+        let b = &mut bucket[start[lo] as usize..start[lo + 1] as usize];
+        if b.len() > 1 {
+            b.sort_unstable();
+        }
+        let mut i = 0;
+        while i < b.len() {
+            let hi = b[i] >> 32;
+            let mut j = i + 1;
+            while j < b.len() && b[j] >> 32 == hi {
+                j += 1;
+            }
+            let run = &b[i..j];
+            let corner = |k: usize| (run[k] & 0xffff_ffff) as usize;
+            // Two faces on the same edge with the same third vertex are the same face.
+            if duplicate.is_none() {
+                'dup: for p in 0..run.len() {
+                    for q in p + 1..run.len() {
+                        if corner_vertex[corner(p)] == corner_vertex[corner(q)] {
+                            let (f1, f2) = (corner(p) / 3, corner(q) / 3);
+                            let (first, face) = (f1.min(f2), f1.max(f2));
+                            duplicate = Some(BuildError::DuplicateFace {
+                                face,
+                                first,
+                                vertices: faces[face],
+                            });
+                            break 'dup;
+                        }
+                    }
+                }
+            }
+            let first_face = (0..run.len()).map(|k| corner(k) / 3).min().unwrap_or(0);
+            let (a, b2) = (lo as u32, hi as u32);
+            match run.len() {
+                2 => {
+                    let (p, q) = (corner(0), corner(1));
+                    opposite[p] = q as u32;
+                    opposite[q] = p as u32;
+                }
+                1 => {
+                    if boundary.is_none() {
+                        boundary = Some(BuildError::BoundaryEdge {
+                            a,
+                            b: b2,
+                            face: first_face,
+                        });
+                    }
+                }
+                n if n % 2 == 1 => {
+                    if bad_edge.is_none() {
+                        bad_edge = Some(BuildError::NonManifoldEdge {
+                            a,
+                            b: b2,
+                            faces: n,
+                            face: first_face,
+                        });
+                    }
+                }
+                n => {
+                    if bad_edge.is_none() {
+                        bad_edge = Some(BuildError::MultipleEdges {
+                            a,
+                            b: b2,
+                            edges: n / 2,
+                            faces: n,
+                            face: first_face,
+                        });
+                    }
+                }
+            }
+            i = j;
+        }
+    }
+    drop(bucket);
+    drop(start);
+    if let Some(e) = duplicate.or(bad_edge).or(boundary) {
+        return Err(e);
+    }
+
+    // Every edge is now in exactly two faces. Walk each vertex's star once: its link is
+    // one cycle iff the walk from any corner visits all the vertex's corners.
+    let mut corner_count = vec![0u32; vertex_count];
+    let mut vertex_corner = vec![NONE; vertex_count];
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        corner_count[v as usize] += 1;
+        if vertex_corner[v as usize] == NONE {
+            vertex_corner[v as usize] = c as u32;
+        }
+    }
+    let used: Vec<bool> = vertex_corner.iter().map(|&c| c != NONE).collect();
+    let mut tri = Triangulation {
+        corner_vertex,
+        opposite,
+        vertex_corner,
+        degree: corner_count,
+        live_vertices: 0,
+        live_faces: nf,
+    };
+    tri.live_vertices = used.iter().filter(|&&u| u).count();
+    for (v, &is_used) in used.iter().enumerate() {
+        if !is_used {
+            continue;
+        }
+        let walked = tri.star(VertexId(v as u32)).count();
+        let total = tri.degree[v] as usize;
+        if walked != total {
+            return Err(BuildError::VertexLinkNotCycle {
+                vertex: v as u32,
+                cycles: count_fans(&tri, v as u32),
+                faces: total,
+            });
+        }
+        if total < 3 {
+            return Err(BuildError::VertexDegreeTooLow {
+                vertex: v as u32,
+                degree: total,
+            });
+        }
+    }
+    Ok(Checked { tri, used })
+}
+
+/// Number of separate face cycles around `v` (only called on the error path).
+fn count_fans(tri: &Triangulation, v: u32) -> usize {
+    let corners: Vec<u32> = (0..tri.corner_vertex.len() as u32)
+        .filter(|&c| tri.corner_vertex[c as usize] == v)
+        .collect();
+    let mut seen = std::collections::HashSet::new();
+    let mut cycles = 0;
+    for &c in &corners {
+        if seen.contains(&c) {
+            continue;
+        }
+        cycles += 1;
+        for s in tri.star_from(Corner(c)) {
+            seen.insert(s.corner.0);
+        }
+    }
+    cycles
+}
+
+/// Connected components of the face graph: `label[f]` and the component count. O(F).
+fn face_components(tri: &Triangulation) -> (Vec<u32>, usize) {
+    let nf = tri.face_capacity();
+    let mut label = vec![NONE; nf];
+    let mut count = 0u32;
+    let mut stack = Vec::new();
+    for f0 in 0..nf {
+        if label[f0] != NONE {
+            continue;
+        }
+        label[f0] = count;
+        stack.push(f0 as u32);
+        while let Some(f) = stack.pop() {
+            for g in tri.face_neighbours(FaceId(f)) {
+                if label[g.index()] == NONE {
+                    label[g.index()] = count;
+                    stack.push(g.0);
+                }
+            }
+        }
+        count += 1;
+    }
+    (label, count as usize)
+}
+
+impl Triangulation {
+    /// Builds the triangulation of one connected closed surface from `faces` over vertices
+    /// `0..vertex_count`, checking everything [`BuildError`] lists. Vertex ids and face ids
+    /// are the input indices. O(F) (plus sorting each vertex's edge bucket).
+    ///
+    /// Strict: unused vertices and several components are errors here; use
+    /// [`Surfaces::from_mesh`] to drop or split them.
+    pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
+        let Checked { tri, used } = check(vertex_count, faces)?;
+        if let Some(v) = used.iter().position(|&u| !u) {
+            return Err(BuildError::UnusedVertex { vertex: v as u32 });
+        }
+        let (_, components) = face_components(&tri);
+        if components != 1 {
+            return Err(BuildError::Disconnected { components });
+        }
+        Ok(tri)
+    }
+}
+
+/// One connected surface of a mesh, with the map back to the mesh's ids.
+#[derive(Clone, Debug)]
+pub struct Component {
+    /// The surface, with vertices and faces renumbered densely from 0.
+    pub tri: Triangulation,
+    /// `vertex_origin[v]` is the mesh vertex index of local vertex `v`.
+    pub vertex_origin: Vec<u32>,
+    /// `face_origin[f]` is the mesh face index of local face `f`.
+    pub face_origin: Vec<u32>,
+}
+
+/// A mesh validated as a disjoint union of closed surfaces.
+#[derive(Clone, Debug)]
+pub struct Surfaces {
+    /// The connected components, ordered by their smallest mesh face index.
+    pub components: Vec<Component>,
+    /// Mesh vertices used by no face (dropped; callers should warn).
+    pub dropped_vertices: Vec<u32>,
+    /// The mesh's vertex count.
+    pub mesh_vertex_count: usize,
+}
+
+impl Surfaces {
+    /// Validates `mesh` (every check of [`Triangulation::from_faces`] except connectivity
+    /// and unused vertices), drops unused vertices, and splits it into connected surfaces.
+    /// Local ids follow mesh order, so the result is deterministic. O(F).
+    pub fn from_mesh(mesh: &TriMesh) -> Result<Self, BuildError> {
+        Self::from_faces(mesh.vertex_count, &mesh.faces)
+    }
+
+    /// [`Self::from_mesh`] on a bare face list.
+    pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
+        let Checked { tri, used } = check(vertex_count, faces)?;
+        let dropped_vertices: Vec<u32> = used
+            .iter()
+            .enumerate()
+            .filter(|(_, &u)| !u)
+            .map(|(i, _)| i as u32)
+            .collect();
+        let (label, count) = face_components(&tri);
+        let components = if count == 1 && dropped_vertices.is_empty() {
+            vec![Component {
+                vertex_origin: (0..vertex_count as u32).collect(),
+                face_origin: (0..faces.len() as u32).collect(),
+                tri,
+            }]
+        } else {
+            split(&tri, &label, count)
+        };
+        Ok(Surfaces {
+            components,
+            dropped_vertices,
+            mesh_vertex_count: vertex_count,
+        })
+    }
+
+    /// Total vertices, edges, faces over all components.
+    pub fn counts(&self) -> (usize, usize, usize) {
+        self.components.iter().fold((0, 0, 0), |(v, e, f), c| {
+            (
+                v + c.tri.vertex_count(),
+                e + c.tri.edge_count(),
+                f + c.tri.face_count(),
+            )
+        })
+    }
+}
+
+/// Extracts each component with dense local ids, in mesh order.
+fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Component> {
+    let nf = tri.face_capacity();
+    let mut local_face = vec![NONE; nf];
+    let mut face_origin: Vec<Vec<u32>> = vec![Vec::new(); count];
+    for f in 0..nf {
+        let k = label[f] as usize;
+        local_face[f] = face_origin[k].len() as u32;
+        face_origin[k].push(f as u32);
+    }
+    let mut local_vertex = vec![NONE; tri.vertex_capacity()];
+    let mut out = Vec::with_capacity(count);
+    for origin in face_origin {
+        let mut vertex_origin = Vec::new();
+        let mut corner_vertex = Vec::with_capacity(3 * origin.len());
+        let mut opposite = Vec::with_capacity(3 * origin.len());
+        for &f in &origin {
+            for c in FaceId(f).corners() {
+                let v = tri.corner_vertex[c.index()] as usize;
+                if local_vertex[v] == NONE {
+                    local_vertex[v] = vertex_origin.len() as u32;
+                    vertex_origin.push(v as u32);
+                }
+                corner_vertex.push(local_vertex[v]);
+                let o = tri.opposite(c);
+                opposite.push(3 * local_face[o.face().index()] + o.slot());
+            }
+        }
+        let nv = vertex_origin.len();
+        let mut vertex_corner = vec![NONE; nv];
+        let mut degree = vec![0u32; nv];
+        for (c, &v) in corner_vertex.iter().enumerate() {
+            degree[v as usize] += 1;
+            if vertex_corner[v as usize] == NONE {
+                vertex_corner[v as usize] = c as u32;
+            }
+        }
+        let live_faces = origin.len();
+        out.push(Component {
+            tri: Triangulation {
+                corner_vertex,
+                opposite,
+                vertex_corner,
+                degree,
+                live_vertices: nv,
+                live_faces,
+            },
+            vertex_origin,
+            face_origin: origin,
+        });
+    }
+    out
+}

@@ -1,0 +1,159 @@
+//! The link condition (RS paper, Eq. 1, Theorem 3) in two independent implementations.
+//!
+//! Edge `[u, v]` with link `{x, y}` is contractible iff `lk(u) ∩ lk(v) = lk(uv)`: as
+//! simplicial complexes, so the intersection may contain neither a third common vertex
+//! (a critical 3-cycle `u, v, w`) nor the edge `[x, y]` (which happens exactly on the
+//! tetrahedron boundary T4).
+
+use super::ids::{VertexId, NONE};
+use super::tri::Triangulation;
+
+impl Triangulation {
+    /// The two link vertices `{x, y}` of edge `[u, v]` (the third vertices of its two
+    /// faces), or `None` if `[u, v]` is not an edge. O(degree(u)).
+    pub fn edge_link(&self, u: VertexId, v: VertexId) -> Option<[VertexId; 2]> {
+        let [c1, c2] = self.edge_corners(u, v)?;
+        Some([self.vertex(c1), self.vertex(c2)])
+    }
+
+    /// The link condition by definition: builds `lk(u)` and `lk(v)` as vertex and edge
+    /// sets and intersects them pairwise. O(d_u · d_v). Shares nothing with the fast
+    /// test but [`Self::link`]; it is the reference the fast paths are checked against.
+    ///
+    /// Returns `false` if `[u, v]` is not an edge.
+    pub fn link_condition_naive(&self, u: VertexId, v: VertexId) -> bool {
+        let Some([x, y]) = self.edge_link(u, v) else {
+            return false;
+        };
+        let lu: Vec<VertexId> = self.link(u).collect();
+        let lv: Vec<VertexId> = self.link(v).collect();
+        // Vertices of lk(u) ∩ lk(v), with u and v themselves excluded (u ∈ lk(v) and
+        // v ∈ lk(u), but neither is in both links).
+        let mut common = Vec::new();
+        for &a in &lu {
+            for &b in &lv {
+                if a == b {
+                    common.push(a);
+                }
+            }
+        }
+        common.sort();
+        let mut expect = vec![x, y];
+        expect.sort();
+        if common != expect {
+            return false;
+        }
+        // Edges of lk(u) ∩ lk(v): consecutive pairs of each link cycle.
+        let cyc = |l: &[VertexId]| -> Vec<(VertexId, VertexId)> {
+            (0..l.len())
+                .map(|i| {
+                    let (a, b) = (l[i], l[(i + 1) % l.len()]);
+                    (a.min(b), a.max(b))
+                })
+                .collect()
+        };
+        let eu = cyc(&lu);
+        let ev = cyc(&lv);
+        !eu.iter().any(|e| ev.contains(e))
+    }
+
+    /// The link condition as [`Triangulation::is_contractible`] decides it, with
+    /// per-call marking: O(d_u + d_v). See [`LinkTester`] for the O(d_v) form.
+    pub fn is_contractible(&self, u: VertexId, v: VertexId) -> bool {
+        let mut t = LinkTester::new(self.vertex_capacity());
+        t.test(self, u, v)
+    }
+
+    /// Whether no edge passes the link condition (naive test on every edge). O(Σ d_u·d_v).
+    /// The tetrahedron is irreducible (Prop. 6): every edge has two degree-3 endpoints.
+    pub fn is_irreducible_naive(&self) -> bool {
+        self.edges()
+            .all(|(a, b, _)| !self.link_condition_naive(a, b))
+    }
+
+    /// Whether no edge passes the link condition, by the marked test. O(Σ d_u + d_v) = O(E·d).
+    pub fn is_irreducible(&self) -> bool {
+        let mut t = LinkTester::new(self.vertex_capacity());
+        // Iterate by vertex so each vertex's neighbourhood is marked once.
+        for u in self.vertices() {
+            t.mark(self, u);
+            for w in self.link(u) {
+                if u < w && t.test_marked(self, u, w) {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+}
+
+/// The marked-neighbour link test of RS Sec. 4.2: with the neighbours of `u` marked
+/// (O(d_u), once), each edge `[u, v]` is tested in O(d_v) by counting marked vertices in
+/// `lk(v)`: `[u, v]` is contractible iff exactly two (`x` and `y`) are marked and the
+/// surface is not T4 (`d_u = d_v = 3`, Prop. 6).
+///
+/// Marks are generation stamps, so re-marking costs O(d_u), never O(V).
+#[derive(Clone, Debug)]
+pub struct LinkTester {
+    stamp: Vec<u32>,
+    generation: u32,
+    marked: u32,
+}
+
+impl LinkTester {
+    /// A tester for triangulations with at most `vertex_capacity` vertex ids.
+    pub fn new(vertex_capacity: usize) -> Self {
+        LinkTester {
+            stamp: vec![0; vertex_capacity],
+            generation: 0,
+            marked: NONE,
+        }
+    }
+
+    /// Marks the neighbours of `u`. O(d_u).
+    pub fn mark(&mut self, tri: &Triangulation, u: VertexId) {
+        if self.stamp.len() < tri.vertex_capacity() {
+            self.stamp.resize(tri.vertex_capacity(), 0);
+        }
+        self.generation = self.generation.wrapping_add(1);
+        if self.generation == 0 {
+            self.stamp.fill(0);
+            self.generation = 1;
+        }
+        for w in tri.link(u) {
+            self.stamp[w.index()] = self.generation;
+        }
+        self.marked = u.0;
+    }
+
+    /// The link test for `[u, v]` given that [`Self::mark`]`(u)` ran on the current
+    /// triangulation. O(d_v). Returns `false` if `v` is not a neighbour of `u`.
+    pub fn test_marked(&self, tri: &Triangulation, u: VertexId, v: VertexId) -> bool {
+        debug_assert_eq!(
+            self.marked, u.0,
+            "test_marked: marks are for another vertex"
+        );
+        if self.stamp[v.index()] != self.generation {
+            return false;
+        }
+        if tri.degree(u) == 3 && tri.degree(v) == 3 {
+            return false; // T4 (Prop. 6)
+        }
+        let mut common = 0;
+        for w in tri.link(v) {
+            if self.stamp[w.index()] == self.generation {
+                common += 1;
+            }
+        }
+        common == 2
+    }
+
+    /// Marks `u` and tests `[u, v]`. O(d_u + d_v).
+    pub fn test(&mut self, tri: &Triangulation, u: VertexId, v: VertexId) -> bool {
+        if !tri.is_vertex(u) || !tri.is_vertex(v) {
+            return false;
+        }
+        self.mark(tri, u);
+        self.test_marked(tri, u, v)
+    }
+}

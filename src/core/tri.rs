@@ -1,0 +1,374 @@
+//! The compact-index triangulation: a corner table that does not assume orientability.
+
+use super::ids::{Corner, FaceId, VertexId, NONE};
+
+/// A triangulation of one connected closed surface, orientable or not.
+///
+/// # Representation (a corner table, Rossignac's "Corner Table" without orientation)
+/// Four flat arrays, nothing else:
+/// - `corner_vertex[c]`: the vertex at corner `c` (`3 * face + slot`); a removed face has
+///   `NONE` in its three slots;
+/// - `opposite[c]`: the corner on the other side of the edge opposite `c`;
+/// - `vertex_corner[v]`: one corner at `v`, or `NONE` if `v` was removed;
+/// - `degree[v]`: the number of edges (= faces) at `v`, kept up to date by every operation.
+///
+/// That is 24 bytes per face plus 8 bytes per vertex (about 28 bytes per face, since a
+/// closed surface has about half as many vertices as faces).
+///
+/// # No orientation assumed
+/// The two faces of an edge may list its endpoints in the same order (that is what a
+/// non-orientable surface forces somewhere). Every traversal therefore looks at the
+/// vertices, never at slot parity: see [`Triangulation::star`].
+///
+/// # Invariants (checked from scratch by [`Triangulation::validate`])
+/// Every live face has three distinct live vertices; `opposite` is a fixed-point-free
+/// involution on live corners, and `c`, `opposite[c]` see the same two edge endpoints;
+/// each vertex link is one simple cycle of length `degree[v] >= 3`; no two faces have the
+/// same vertex set; no two edges have the same endpoints; the surface is connected.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Triangulation {
+    pub(crate) corner_vertex: Vec<u32>,
+    pub(crate) opposite: Vec<u32>,
+    pub(crate) vertex_corner: Vec<u32>,
+    pub(crate) degree: Vec<u32>,
+    pub(crate) live_vertices: usize,
+    pub(crate) live_faces: usize,
+}
+
+/// Which of the two other corners of a face is opposite the edge a star walk leaves by.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub(crate) enum Exit {
+    Next,
+    Prev,
+}
+
+/// One step of a walk around a vertex: the corner at the centre vertex and the link
+/// vertex across the edge the walk leaves the face by.
+#[derive(Copy, Clone, PartialEq, Eq, Debug)]
+pub struct StarStep {
+    /// A corner at the centre vertex.
+    pub corner: Corner,
+    /// The neighbour on the edge through which the walk leaves `corner`'s face.
+    pub neighbour: VertexId,
+}
+
+/// Iterator over the faces around a vertex in cyclic order (see [`Triangulation::star`]).
+pub struct Star<'a> {
+    tri: &'a Triangulation,
+    centre: u32,
+    start: u32,
+    corner: u32,
+    exit: Exit,
+    done: bool,
+}
+
+impl Iterator for Star<'_> {
+    type Item = StarStep;
+    #[inline]
+    fn next(&mut self) -> Option<StarStep> {
+        if self.done {
+            return None;
+        }
+        let c = Corner(self.corner);
+        let (exit_corner, neighbour_corner) = match self.exit {
+            Exit::Next => (c.next(), c.prev()),
+            Exit::Prev => (c.prev(), c.next()),
+        };
+        let step = StarStep {
+            corner: c,
+            neighbour: VertexId(self.tri.corner_vertex[neighbour_corner.index()]),
+        };
+        let (c2, exit2) = self
+            .tri
+            .turn(self.centre, Corner(self.tri.opposite[exit_corner.index()]));
+        self.corner = c2.0;
+        self.exit = exit2;
+        if self.corner == self.start {
+            self.done = true;
+        }
+        Some(step)
+    }
+}
+
+impl Triangulation {
+    /// Number of live vertices.
+    #[inline]
+    pub fn vertex_count(&self) -> usize {
+        self.live_vertices
+    }
+    /// Number of live faces.
+    #[inline]
+    pub fn face_count(&self) -> usize {
+        self.live_faces
+    }
+    /// Number of edges (`3F/2` on a closed surface).
+    #[inline]
+    pub fn edge_count(&self) -> usize {
+        3 * self.live_faces / 2
+    }
+    /// One more than the largest vertex id ever used (live or removed).
+    #[inline]
+    pub fn vertex_capacity(&self) -> usize {
+        self.vertex_corner.len()
+    }
+    /// One more than the largest face id ever used (live or removed).
+    #[inline]
+    pub fn face_capacity(&self) -> usize {
+        self.corner_vertex.len() / 3
+    }
+    /// Whether `v` names a live vertex.
+    #[inline]
+    pub fn is_vertex(&self, v: VertexId) -> bool {
+        self.vertex_corner
+            .get(v.index())
+            .is_some_and(|&c| c != NONE)
+    }
+    /// Whether `f` names a live face.
+    #[inline]
+    pub fn is_face(&self, f: FaceId) -> bool {
+        self.corner_vertex
+            .get(3 * f.index())
+            .is_some_and(|&v| v != NONE)
+    }
+    /// Live vertex ids in increasing order.
+    pub fn vertices(&self) -> impl Iterator<Item = VertexId> + '_ {
+        self.vertex_corner
+            .iter()
+            .enumerate()
+            .filter(|(_, &c)| c != NONE)
+            .map(|(i, _)| VertexId(i as u32))
+    }
+    /// Live face ids in increasing order.
+    pub fn faces(&self) -> impl Iterator<Item = FaceId> + '_ {
+        self.corner_vertex
+            .chunks_exact(3)
+            .enumerate()
+            .filter(|(_, c)| c[0] != NONE)
+            .map(|(i, _)| FaceId(i as u32))
+    }
+    /// The vertex at corner `c`. O(1).
+    #[inline]
+    pub fn vertex(&self, c: Corner) -> VertexId {
+        VertexId(self.corner_vertex[c.index()])
+    }
+    /// The corner across the edge opposite `c`. O(1).
+    #[inline]
+    pub fn opposite(&self, c: Corner) -> Corner {
+        Corner(self.opposite[c.index()])
+    }
+    /// The three vertices of face `f` in slot order. O(1).
+    #[inline]
+    pub fn face_vertices(&self, f: FaceId) -> [VertexId; 3] {
+        let i = 3 * f.index();
+        let cv = &self.corner_vertex;
+        [VertexId(cv[i]), VertexId(cv[i + 1]), VertexId(cv[i + 2])]
+    }
+    /// The three neighbouring faces of `f`: entry `i` is across the edge opposite slot `i`.
+    #[inline]
+    pub fn face_neighbours(&self, f: FaceId) -> [FaceId; 3] {
+        let i = 3 * f.index();
+        let o = &self.opposite;
+        [
+            Corner(o[i]).face(),
+            Corner(o[i + 1]).face(),
+            Corner(o[i + 2]).face(),
+        ]
+    }
+    /// The degree of `v` (number of incident edges, equal to incident faces). O(1).
+    #[inline]
+    pub fn degree(&self, v: VertexId) -> usize {
+        self.degree[v.index()] as usize
+    }
+    /// One corner at `v`.
+    #[inline]
+    pub fn corner_of(&self, v: VertexId) -> Corner {
+        Corner(self.vertex_corner[v.index()])
+    }
+
+    /// Given the corner `o` entered across an edge at `centre`, the corner at `centre` in
+    /// `o`'s face and which side the walk leaves that face by.
+    #[inline]
+    pub(crate) fn turn(&self, centre: u32, o: Corner) -> (Corner, Exit) {
+        // The entry edge is opposite `o`; the centre is one of its endpoints, and the walk
+        // leaves through the other edge at the centre, the one opposite the third corner.
+        let n = o.next();
+        if self.corner_vertex[n.index()] == centre {
+            (n, Exit::Next)
+        } else {
+            (o.prev(), Exit::Prev)
+        }
+    }
+
+    /// The faces around `v` in cyclic order, as corners at `v`, each with the link vertex
+    /// shared with the next face of the walk. Starts at [`Self::corner_of`]`(v)`.
+    ///
+    /// The `neighbour`s, in order, are the link of `v` as a cycle. O(1) per step; the walk
+    /// visits exactly `degree(v)` faces. Works the same on non-orientable surfaces.
+    pub fn star(&self, v: VertexId) -> Star<'_> {
+        self.star_from(self.corner_of(v))
+    }
+
+    /// Like [`Self::star`], starting at corner `c` (which must be a live corner).
+    pub fn star_from(&self, c: Corner) -> Star<'_> {
+        Star {
+            tri: self,
+            centre: self.corner_vertex[c.index()],
+            start: c.0,
+            corner: c.0,
+            exit: Exit::Next,
+            done: false,
+        }
+    }
+
+    /// The link of `v` as a cycle of vertices. O(degree).
+    pub fn link(&self, v: VertexId) -> impl Iterator<Item = VertexId> + '_ {
+        self.star(v).map(|s| s.neighbour)
+    }
+
+    /// A corner at `u` whose face contains `v` (so `v` is at its `next()` or `prev()`),
+    /// or `None` if `[u, v]` is not an edge. O(degree(u)).
+    pub fn find_edge(&self, u: VertexId, v: VertexId) -> Option<Corner> {
+        if !self.is_vertex(u) || !self.is_vertex(v) || u == v {
+            return None;
+        }
+        self.star(u).find(|s| s.neighbour == v).map(|s| s.corner)
+    }
+
+    /// Whether `[u, v]` is an edge. O(min(degree(u), degree(v))).
+    pub fn has_edge(&self, u: VertexId, v: VertexId) -> bool {
+        if !self.is_vertex(u) || !self.is_vertex(v) || u == v {
+            return false;
+        }
+        let (a, b) = if self.degree(u) <= self.degree(v) {
+            (u, v)
+        } else {
+            (v, u)
+        };
+        self.link(a).any(|w| w == b)
+    }
+
+    /// The two corners opposite edge `[u, v]` (one in each face of the edge), or `None`.
+    pub fn edge_corners(&self, u: VertexId, v: VertexId) -> Option<[Corner; 2]> {
+        let c = self.find_edge(u, v)?;
+        // The corner of the face that is neither u's nor v's is opposite [u, v].
+        let opp = if self.corner_vertex[c.next().index()] == v.0 {
+            c.prev()
+        } else {
+            c.next()
+        };
+        Some([opp, self.opposite(opp)])
+    }
+
+    /// The endpoints of the edge opposite corner `c`.
+    #[inline]
+    pub fn edge_endpoints(&self, c: Corner) -> [VertexId; 2] {
+        [self.vertex(c.next()), self.vertex(c.prev())]
+    }
+
+    /// Every edge once, as `(u, v)` with `u < v`, and a corner opposite it. O(F).
+    pub fn edges(&self) -> impl Iterator<Item = (VertexId, VertexId, Corner)> + '_ {
+        self.faces().flat_map(move |f| {
+            f.corners().into_iter().filter_map(move |c| {
+                let o = self.opposite(c);
+                // Each edge has two opposite corners; report it from the smaller one.
+                if c < o {
+                    let [a, b] = self.edge_endpoints(c);
+                    Some(if a < b { (a, b, c) } else { (b, a, c) })
+                } else {
+                    None
+                }
+            })
+        })
+    }
+
+    /// The live faces as vertex triples (ids as they are, not compacted).
+    pub fn face_list(&self) -> Vec<[u32; 3]> {
+        self.faces()
+            .map(|f| self.face_vertices(f).map(|v| v.0))
+            .collect()
+    }
+
+    /// Euler characteristic `V - E + F`.
+    pub fn euler_characteristic(&self) -> i64 {
+        self.live_vertices as i64 - self.edge_count() as i64 + self.live_faces as i64
+    }
+
+    /// Euler genus `2 - χ` (twice the genus if orientable, the number of cross-caps if not).
+    pub fn euler_genus(&self) -> i64 {
+        2 - self.euler_characteristic()
+    }
+
+    /// Whether the faces can be oriented consistently. O(F), by a walk over the dual graph.
+    pub fn is_orientable(&self) -> bool {
+        self.orientation().is_some()
+    }
+
+    /// A consistent orientation if one exists: `flip[f]` says whether face `f` must be
+    /// reversed (removed faces get `false`). O(F).
+    pub fn orientation(&self) -> Option<Vec<bool>> {
+        let nf = self.face_capacity();
+        let mut flip = vec![false; nf];
+        let mut seen = vec![false; nf];
+        let mut stack = Vec::new();
+        for f0 in self.faces() {
+            if seen[f0.index()] {
+                continue;
+            }
+            seen[f0.index()] = true;
+            stack.push(f0);
+            while let Some(f) = stack.pop() {
+                for c in f.corners() {
+                    let o = self.opposite(c);
+                    let g = o.face();
+                    // The edge runs next(c) -> prev(c) in f. If g lists it the same way,
+                    // the two faces disagree and g must be flipped relative to f.
+                    let same = self.corner_vertex[o.next().index()]
+                        == self.corner_vertex[c.next().index()];
+                    let want = flip[f.index()] ^ same;
+                    if seen[g.index()] {
+                        if flip[g.index()] != want {
+                            return None;
+                        }
+                    } else {
+                        seen[g.index()] = true;
+                        flip[g.index()] = want;
+                        stack.push(g);
+                    }
+                }
+            }
+        }
+        Some(flip)
+    }
+
+    /// The orientable genus `(2 - χ) / 2`, or `None` on a non-orientable surface.
+    pub fn genus(&self) -> Option<i64> {
+        self.is_orientable().then(|| self.euler_genus() / 2)
+    }
+
+    /// Degree histogram: entry `d` counts the live vertices of degree `d`.
+    pub fn degree_histogram(&self) -> Vec<usize> {
+        let mut h = Vec::new();
+        for v in self.vertices() {
+            let d = self.degree(v);
+            if h.len() <= d {
+                h.resize(d + 1, 0);
+            }
+            h[d] += 1;
+        }
+        h
+    }
+
+    /// Whether this is (isomorphic to) the tetrahedron boundary T4, the one irreducible
+    /// genus-0 triangulation. O(1): a connected closed surface with 4 vertices is T4.
+    pub fn is_tetrahedron(&self) -> bool {
+        self.live_vertices == 4 && self.live_faces == 4
+    }
+
+    /// Approximate heap bytes held by the four core arrays.
+    pub fn heap_bytes(&self) -> usize {
+        4 * (self.corner_vertex.capacity()
+            + self.opposite.capacity()
+            + self.vertex_corner.capacity()
+            + self.degree.capacity())
+    }
+}

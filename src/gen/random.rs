@@ -1,0 +1,172 @@
+//! Random closed triangulations of any surface, grown by random vertex splits.
+
+use crate::core::{Triangulation, VertexId};
+use crate::rng::Rng;
+
+/// Which closed surface to triangulate.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum SurfaceKind {
+    /// The orientable surface of genus `g` (sphere for 0, torus for 1, ...).
+    Orientable(u32),
+    /// The non-orientable surface of Euler genus `h >= 1` (connected sum of `h`
+    /// projective planes: 1 = projective plane, 2 = Klein bottle).
+    NonOrientable(u32),
+}
+
+impl SurfaceKind {
+    /// Euler characteristic of the surface.
+    pub fn euler_characteristic(self) -> i64 {
+        match self {
+            SurfaceKind::Orientable(g) => 2 - 2 * g as i64,
+            SurfaceKind::NonOrientable(h) => 2 - h as i64,
+        }
+    }
+}
+
+/// Parameters of [`random`].
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct RandomParams {
+    /// The surface.
+    pub surface: SurfaceKind,
+    /// Grow until the triangulation has at least this many faces.
+    pub min_faces: usize,
+    /// After each split, flip a random edge (if flippable) with probability
+    /// `flip_percent / 100`.
+    pub flip_percent: u32,
+    /// The seed of the documented stream in [`crate::rng`].
+    pub seed: u64,
+}
+
+/// The 7-vertex torus (Möbius–Császár), 14 faces.
+const TORUS7: [[u32; 3]; 14] = [
+    [0, 1, 2],
+    [0, 1, 6],
+    [0, 2, 3],
+    [0, 3, 4],
+    [0, 4, 5],
+    [0, 5, 6],
+    [1, 2, 4],
+    [1, 3, 5],
+    [1, 3, 6],
+    [1, 4, 5],
+    [2, 3, 5],
+    [2, 4, 6],
+    [2, 5, 6],
+    [3, 4, 6],
+];
+/// The 6-vertex projective plane (hemi-icosahedron), 10 faces.
+const RP2_6: [[u32; 3]; 10] = [
+    [0, 1, 2],
+    [0, 1, 5],
+    [0, 2, 3],
+    [0, 3, 4],
+    [0, 4, 5],
+    [1, 2, 4],
+    [1, 3, 4],
+    [1, 3, 5],
+    [2, 3, 5],
+    [2, 4, 5],
+];
+/// The tetrahedron boundary T4.
+const T4: [[u32; 3]; 4] = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]];
+
+/// Connected sum of two face lists: removes face `a_face` of `a` and the *last* face of
+/// `b`, identifies their vertices in order and renumbers `b`'s other vertices after
+/// `a`'s. The result is a simplicial closed surface with χ = χ(a) + χ(b) − 2: the only
+/// edges between identified vertices are the glued triangle's, and no face survives on
+/// all three of them.
+fn connected_sum(
+    a: &[[u32; 3]],
+    a_vertices: u32,
+    b: &[[u32; 3]],
+    b_vertices: u32,
+) -> Vec<[u32; 3]> {
+    let removed_a = a[a.len() - 1];
+    let removed_b = b[b.len() - 1];
+    let mut map = vec![u32::MAX; b_vertices as usize];
+    for k in 0..3 {
+        map[removed_b[k] as usize] = removed_a[k];
+    }
+    let mut next = a_vertices;
+    for m in map.iter_mut() {
+        if *m == u32::MAX {
+            *m = next;
+            next += 1;
+        }
+    }
+    let mut out: Vec<[u32; 3]> = a[..a.len() - 1].to_vec();
+    // Glue b in with the opposite orientation of its removed face relative to a's, so an
+    // orientable sum of consistently oriented pieces stays consistently oriented.
+    out.extend(
+        b[..b.len() - 1]
+            .iter()
+            .map(|f| [map[f[0] as usize], map[f[2] as usize], map[f[1] as usize]]),
+    );
+    out
+}
+
+/// `faces` with faces reversed as needed so neighbours agree (when orientable).
+fn consistently_oriented(faces: &[[u32; 3]], vertices: u32) -> Vec<[u32; 3]> {
+    let t = Triangulation::from_faces(vertices as usize, faces).expect("valid seed piece");
+    match t.orientation() {
+        Some(flip) => faces
+            .iter()
+            .zip(flip)
+            .map(|(f, r)| if r { [f[0], f[2], f[1]] } else { *f })
+            .collect(),
+        None => faces.to_vec(),
+    }
+}
+
+/// The smallest seed triangulation this generator uses for `surface`: T4 for the sphere,
+/// connected sums of `g` 7-vertex tori, or of `h` 6-vertex projective planes.
+/// Vertices `4`, `7g − 3(g−1)`, `6h − 3(h−1)` respectively.
+pub fn seed_surface(surface: SurfaceKind) -> Triangulation {
+    let (piece, piece_v, count): (&[[u32; 3]], u32, u32) = match surface {
+        SurfaceKind::Orientable(0) => (&T4, 4, 1),
+        SurfaceKind::Orientable(g) => (&TORUS7, 7, g),
+        SurfaceKind::NonOrientable(h) => (&RP2_6, 6, h.max(1)),
+    };
+    let piece = consistently_oriented(piece, piece_v);
+    let piece = &piece[..];
+    let mut faces = piece.to_vec();
+    let mut nv = piece_v;
+    for _ in 1..count {
+        faces = connected_sum(&faces, nv, piece, piece_v);
+        nv += piece_v - 3;
+    }
+    Triangulation::from_faces(nv as usize, &faces)
+        .expect("connected sums of simplicial surfaces are simplicial surfaces")
+}
+
+/// A random triangulation of `params.surface` with at least `params.min_faces` faces.
+///
+/// Starts from [`seed_surface`] and repeats until the face count is reached: pick a
+/// vertex `u = below(V)` (ids are dense), list its link in star order from
+/// `corner_of(u)`, pick `i = below(d)` and `j = (i + 1 + below(d − 1)) mod d`, split `u`
+/// along link vertices `i` and `j` ([`Triangulation::split_vertex`]); then with
+/// probability `flip_percent`% pick a face `below(F)` and slot `below(3)` and flip the edge
+/// opposite that corner if it is flippable. Deterministic for a given `params`.
+/// O(F · average degree).
+pub fn random(params: &RandomParams) -> Triangulation {
+    let mut tri = seed_surface(params.surface);
+    let mut rng = Rng::new(params.seed);
+    while tri.face_count() < params.min_faces {
+        let u = VertexId(rng.index(tri.vertex_capacity()) as u32);
+        let link: Vec<VertexId> = tri.link(u).collect();
+        let d = link.len();
+        let i = rng.index(d);
+        let j = (i + 1 + rng.index(d - 1)) % d;
+        tri.split_vertex(u, link[i], link[j])
+            .expect("link vertices of a live vertex");
+        if params.flip_percent > 0 && rng.chance(params.flip_percent as u64, 100) {
+            let f = crate::core::FaceId(rng.index(tri.face_capacity()) as u32);
+            let c = f.corner(rng.index(3) as u32);
+            let [a, b] = tri.edge_endpoints(c);
+            if tri.is_flippable(a, b) {
+                tri.flip(a, b).expect("checked flippable");
+            }
+        }
+    }
+    tri
+}

@@ -1,0 +1,141 @@
+//! Shared helpers for the integration tests: paths into `../shared` and list parsing.
+#![allow(dead_code)]
+
+use std::path::PathBuf;
+
+/// `../shared` beside the project checkout.
+pub fn shared_dir() -> PathBuf {
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"))
+}
+
+/// One named small surface from `../shared/irreducible/*.txt`.
+pub struct NamedSurface {
+    pub name: String,
+    pub vertex_count: usize,
+    pub faces: Vec<[u32; 3]>,
+}
+
+/// Parses `NAME: [[a,b,c],...]` lines.
+pub fn read_surface_list(file: &str) -> Vec<NamedSurface> {
+    let path = shared_dir().join("irreducible").join(file);
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    text.lines()
+        .filter(|l| !l.trim().is_empty())
+        .map(|line| {
+            let (name, rest) = line.split_once(':').expect("NAME: list");
+            let nums: Vec<u32> = rest
+                .split(|c: char| !c.is_ascii_digit())
+                .filter(|s| !s.is_empty())
+                .map(|s| s.parse().expect("number"))
+                .collect();
+            assert_eq!(nums.len() % 3, 0, "{name}: triples");
+            let faces: Vec<[u32; 3]> = nums.chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
+            let vertex_count = nums.iter().max().map_or(0, |&m| m as usize + 1);
+            NamedSurface {
+                name: name.trim().to_string(),
+                vertex_count,
+                faces,
+            }
+        })
+        .collect()
+}
+
+/// One row of `../shared/meshes/manifest.csv` (the columns the tests use).
+#[derive(Debug, Clone)]
+pub struct ManifestRow {
+    pub name: String,
+    pub set: String,
+    pub file: String,
+    pub v: usize,
+    pub e: usize,
+    pub f: usize,
+    pub components: usize,
+    /// Per-component genus expanded to a sorted list; `None` entries for `N2`-style codes.
+    pub genus: Vec<String>,
+    pub euler: i64,
+    pub orientable: bool,
+}
+
+/// Splits one CSV line honouring double quotes.
+fn csv_fields(line: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut cur = String::new();
+    let mut quoted = false;
+    for ch in line.chars() {
+        match ch {
+            '"' => quoted = !quoted,
+            ',' if !quoted => out.push(std::mem::take(&mut cur)),
+            _ => cur.push(ch),
+        }
+    }
+    out.push(cur);
+    out
+}
+
+/// Expands the manifest's genus column (`0`, `0,0`, `0 x26`, `0 x1; 1 x4`) to one entry
+/// per component, sorted.
+pub fn expand_genus(s: &str, components: usize) -> Vec<String> {
+    let mut out = Vec::new();
+    if s.contains('x') {
+        for part in s.split(';') {
+            let part = part.trim();
+            let (g, n) = part.split_once(" x").expect("G xN");
+            for _ in 0..n.trim().parse::<usize>().expect("count") {
+                out.push(g.trim().to_string());
+            }
+        }
+    } else {
+        out = s.split(',').map(|g| g.trim().to_string()).collect();
+    }
+    if out.len() == 1 && components > 1 {
+        out = vec![out[0].clone(); components];
+    }
+    out.sort();
+    out
+}
+
+pub fn manifest() -> Vec<ManifestRow> {
+    let path = shared_dir().join("meshes/manifest.csv");
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let mut lines = text.lines();
+    let header = csv_fields(lines.next().expect("header"));
+    let col = |n: &str| {
+        header
+            .iter()
+            .position(|h| h == n)
+            .unwrap_or_else(|| panic!("column {n}"))
+    };
+    let (c_name, c_set, c_file, c_v, c_e, c_f) = (
+        col("name"),
+        col("set"),
+        col("file"),
+        col("V"),
+        col("E"),
+        col("F"),
+    );
+    let (c_comp, c_genus, c_euler, c_or) = (
+        col("components"),
+        col("genus"),
+        col("euler"),
+        col("orientable"),
+    );
+    lines
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let r = csv_fields(l);
+            let components: usize = r[c_comp].parse().expect("components");
+            ManifestRow {
+                name: r[c_name].clone(),
+                set: r[c_set].clone(),
+                file: r[c_file].clone(),
+                v: r[c_v].parse().expect("V"),
+                e: r[c_e].parse().expect("E"),
+                f: r[c_f].parse().expect("F"),
+                components,
+                genus: expand_genus(&r[c_genus], components),
+                euler: r[c_euler].parse().expect("euler"),
+                orientable: r[c_or] == "True",
+            }
+        })
+        .collect()
+}
