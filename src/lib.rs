@@ -9,6 +9,7 @@
 pub mod core;
 pub mod gen;
 pub mod io;
+pub mod irreducible;
 pub mod mesh;
 pub mod rng;
 

@@ -50,6 +50,26 @@ pub struct ContractionRecord {
 }
 
 impl ContractionRecord {
+    /// The two edge gluings the contraction made, one per removed face: `(a, b)` where
+    /// `a` was the corner across `[v, x]` (resp. `[v, y]`) and `b` the corner across
+    /// `[u, x]` (resp. `[u, y]`); afterwards `a` and `b` are opposite each other across
+    /// the merged edge `[u, x]` (resp. `[u, y]`). Edge-identity trackers use this to let
+    /// the merged edge keep the identity of `[u, x]` (as Alg. 4.7 keeps the record `f`).
+    pub fn glued(&self) -> [(Corner, Corner); 2] {
+        let mut out = [(Corner(NONE), Corner(NONE)); 2];
+        for (k, pair) in out.iter_mut().enumerate() {
+            let slot_of = |w: VertexId| {
+                (0..3)
+                    .find(|&s| self.saved_vertex[3 * k + s] == w.0)
+                    .expect("removed face holds u and v")
+            };
+            let a = self.saved_opposite[3 * k + slot_of(self.u)];
+            let b = self.saved_opposite[3 * k + slot_of(self.v)];
+            *pair = (Corner(a), Corner(b));
+        }
+        out
+    }
+
     /// Number of corners renamed from `v` to `u` (`degree(v) - 2`).
     pub fn renamed_len(&self) -> usize {
         (self.renamed.1 - self.renamed.0) as usize

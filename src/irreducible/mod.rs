@@ -1,0 +1,220 @@
+//! Irreducible triangulations: contract edges under the link condition until none is
+//! contractible (RS paper). Three algorithms sharing one result type:
+//!
+//! - [`rs`]: Ramaswami–Siqueira (Alg. 4.1–4.7), every edge tested at most once per
+//!   processed vertex, O(g² + g·n);
+//! - [`schipper`]: Schipper's algorithm (Sec. 3), lowest-degree loose vertex first,
+//!   neighbour dictionaries, O(n log n + g log n + g⁴);
+//! - [`brute`]: the randomized brute force of Sec. 5 (shuffle, pass, retry failures).
+//!
+//! All three return a [`Reduction`]: the irreducible triangulation with the input's
+//! vertex ids, the contraction [`History`] (the stack S) that [`Reduction::expand`]
+//! replays, and [`Stats`] with the paper's counters ℓ and ε.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::core::{ContractionRecord, Corner, History, Triangulation};
+
+pub mod brute;
+pub mod rs;
+pub mod schipper;
+
+/// Which algorithm to run.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Algorithm {
+    /// Ramaswami–Siqueira.
+    Rs,
+    /// Schipper.
+    Schipper,
+    /// Randomized brute force.
+    Brute,
+}
+
+impl Algorithm {
+    /// The short name used on the command line and in JSON (`rs`, `schipper`, `brute`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Rs => "rs",
+            Algorithm::Schipper => "schipper",
+            Algorithm::Brute => "brute",
+        }
+    }
+}
+
+/// Counters and timings of one reduction (the quantities of the RS paper's Tables 6–11).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Stats {
+    /// Vertices of the input.
+    pub vertices_in: usize,
+    /// Edges of the input.
+    pub edges_in: usize,
+    /// Faces of the input.
+    pub faces_in: usize,
+    /// Vertices of the output.
+    pub vertices_out: usize,
+    /// Faces of the output.
+    pub faces_out: usize,
+    /// ℓ: link condition tests carried out (the degree-3 shortcut of Prop. 6 counts as a
+    /// test for S and BF, which test every edge they examine, and not for RS, which
+    /// decides it without testing, as the paper counts).
+    pub link_tests: u64,
+    /// ε: edges tested more than once. Edge identity follows the DCEL of the paper: an
+    /// edge `[v, z]` renamed `[u, z]` by a contraction is the same edge, and the merged
+    /// `[u, x]` keeps the identity of the old `[u, x]`.
+    pub edges_tested_more_than_once: u64,
+    /// Contractions carried out.
+    pub contractions: u64,
+    /// Seconds spent in the algorithm proper (no I/O, no construction).
+    pub seconds: f64,
+}
+
+/// The result of a reduction.
+#[derive(Clone, Debug)]
+pub struct Reduction {
+    /// Which algorithm produced it.
+    pub algorithm: Algorithm,
+    /// The irreducible triangulation. Vertex and face ids are the input's (removed ones
+    /// are simply absent); see [`Triangulation::vertices`].
+    pub tri: Triangulation,
+    /// Every contraction, oldest first.
+    pub history: History,
+    /// Counters.
+    pub stats: Stats,
+}
+
+impl Reduction {
+    /// Replays the history backwards by vertex splits: gives back the input exactly
+    /// (same ids, same corner slots). O(n).
+    pub fn expand(&self) -> Triangulation {
+        let mut t = self.tri.clone();
+        let mut h = self.history.clone();
+        h.undo_all(&mut t);
+        t
+    }
+}
+
+/// Options shared by the three algorithms.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Options {
+    /// Seed of the documented stream ([`crate::rng`]); used by the brute force's shuffle
+    /// (RS and Schipper are deterministic without it).
+    pub seed: u64,
+    /// Track edge identities to count ε. Costs 8 bytes per face and a little time; the
+    /// command line turns it on, benchmarks off.
+    pub count_retests: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            seed: 0,
+            count_retests: true,
+        }
+    }
+}
+
+/// Runs `algorithm` on `tri` (consumed: the reduction happens in place).
+pub fn reduce(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Reduction {
+    match algorithm {
+        Algorithm::Rs => rs::reduce(tri, options),
+        Algorithm::Schipper => schipper::reduce(tri, options),
+        Algorithm::Brute => brute::reduce(tri, options),
+    }
+}
+
+/// Persistent edge identities over contractions, to count ε (edges tested more than
+/// once). Each corner maps to the id of the edge opposite it; ids are assigned in
+/// [`Triangulation::edges`] order; after a contraction the merged edges keep the ids of
+/// `[u, x]` and `[u, y]` ([`ContractionRecord::glued`]).
+#[derive(Clone, Debug, Default)]
+pub struct RetestCounter {
+    edge_of_corner: Vec<u32>,
+    tests: Vec<u8>,
+    more_than_once: u64,
+    enabled: bool,
+}
+
+impl RetestCounter {
+    /// A counter for `tri`; a disabled one does nothing and allocates nothing.
+    pub fn new(tri: &Triangulation, enabled: bool) -> Self {
+        if !enabled {
+            return RetestCounter::default();
+        }
+        let mut edge_of_corner = vec![u32::MAX; 3 * tri.face_capacity()];
+        let mut n = 0u32;
+        for (_, _, c) in tri.edges() {
+            edge_of_corner[c.index()] = n;
+            edge_of_corner[tri.opposite(c).index()] = n;
+            n += 1;
+        }
+        RetestCounter {
+            edge_of_corner,
+            tests: vec![0; n as usize],
+            more_than_once: 0,
+            enabled: true,
+        }
+    }
+
+    /// Records one link test of the edge opposite corner `c`.
+    #[inline]
+    pub fn tested(&mut self, c: Corner) {
+        if !self.enabled {
+            return;
+        }
+        let e = self.edge_of_corner[c.index()] as usize;
+        let t = &mut self.tests[e];
+        if *t == 1 {
+            self.more_than_once += 1;
+        }
+        *t = t.saturating_add(1);
+    }
+
+    /// Updates identities after a contraction.
+    #[inline]
+    pub fn contracted(&mut self, rec: &ContractionRecord) {
+        if !self.enabled {
+            return;
+        }
+        for (a, b) in rec.glued() {
+            self.edge_of_corner[a.index()] = self.edge_of_corner[b.index()];
+        }
+    }
+
+    /// ε so far.
+    pub fn more_than_once(&self) -> u64 {
+        self.more_than_once
+    }
+}
+
+/// Fills the size fields of [`Stats`] and the timing.
+pub(crate) fn finish(
+    algorithm: Algorithm,
+    tri: Triangulation,
+    history: History,
+    mut stats: Stats,
+    started: Instant,
+) -> Reduction {
+    stats.seconds = started.elapsed().as_secs_f64();
+    stats.vertices_out = tri.vertex_count();
+    stats.faces_out = tri.face_count();
+    stats.contractions = history.len() as u64;
+    Reduction {
+        algorithm,
+        tri,
+        history,
+        stats,
+    }
+}
+
+/// [`Stats`] with the input sizes filled in.
+pub(crate) fn start_stats(tri: &Triangulation) -> Stats {
+    Stats {
+        vertices_in: tri.vertex_count(),
+        edges_in: tri.edge_count(),
+        faces_in: tri.face_count(),
+        ..Stats::default()
+    }
+}
