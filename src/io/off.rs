@@ -15,9 +15,9 @@ use super::text::{parse_f64, parse_i64, parse_u64, Lines, Tokens};
 use crate::mesh::{Mesh, TriMesh};
 
 /// Smallest possible vertex line: `0 0 0` plus a newline.
-const MIN_VERTEX_BYTES: u128 = 6;
+const MIN_VERTEX_BYTES: u64 = 6;
 /// Smallest possible face line: `3 0 0 0` plus a newline.
-const MIN_FACE_BYTES: u128 = 8;
+const MIN_FACE_BYTES: u64 = 8;
 
 /// Parses ASCII OFF bytes into a triangle mesh; see the module docs for the accepted syntax.
 pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
@@ -76,10 +76,8 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
     }
     let [nv, nf, _ne] = parsed;
 
-    // Never trust the counts: they must fit in the bytes that are left, and vertices must be
-    // addressable by u32 indices. Only then is it safe to reserve memory for them.
-    let remaining = lines.remaining() as u128 + 1;
-    if nv > u64::from(u32::MAX) || u128::from(nv) * MIN_VERTEX_BYTES > remaining {
+    // Vertices must be addressable by u32 indices.
+    if nv > u64::from(u32::MAX) {
         return Err(ReadError::at_line(
             K::CountTooLarge {
                 what: "vertices",
@@ -88,27 +86,21 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
             count_line,
         ));
     }
-    if u128::from(nv) * MIN_VERTEX_BYTES + u128::from(nf) * MIN_FACE_BYTES > remaining {
-        return Err(ReadError::at_line(
-            K::CountTooLarge {
-                what: "faces",
-                declared: nf,
-            },
-            count_line,
-        ));
-    }
-    // Both fit in usize now: they are bounded by the input length.
-    let nv = nv as usize;
-    let nf = nf as usize;
+    // Never trust the counts for allocation: reserve at most what the remaining bytes could
+    // hold at the smallest possible record size. The loops below consume at least one line
+    // per record, so a count larger than the input ends in a located `CountMismatch`.
+    let remaining = lines.remaining() as u64 + 1;
+    let nv_cap = nv.min(remaining / MIN_VERTEX_BYTES) as usize;
+    let nf_cap = nf.min(remaining / MIN_FACE_BYTES) as usize;
 
-    let mut positions = Vec::with_capacity(nv);
+    let mut positions = Vec::with_capacity(nv_cap);
     for i in 0..nv {
         let Some((n, line)) = lines.next_data_line(b'#') else {
             return Err(ReadError::at_line(
                 K::CountMismatch {
                     what: "vertices",
-                    declared: nv as u64,
-                    found: i as u64,
+                    declared: nv,
+                    found: i,
                 },
                 lines.line(),
             ));
@@ -134,14 +126,14 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         positions.push(p);
     }
 
-    let mut faces = Vec::with_capacity(nf);
+    let mut faces = Vec::with_capacity(nf_cap);
     for f in 0..nf {
         let Some((n, line)) = lines.next_data_line(b'#') else {
             return Err(ReadError::at_line(
                 K::CountMismatch {
                     what: "faces",
-                    declared: nf as u64,
-                    found: f as u64,
+                    declared: nf,
+                    found: f,
                 },
                 lines.line(),
             ));
@@ -160,7 +152,7 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         if k != 3 {
             return Err(ReadError::at_line(
                 K::NonTriangleFace {
-                    face: f,
+                    face: f as usize,
                     corners: k,
                 },
                 n,
@@ -185,13 +177,13 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
                 )
             })?;
             *c = match u32::try_from(idx) {
-                Ok(v) if (v as usize) < nv => v,
+                Ok(v) if u64::from(v) < nv => v,
                 _ => {
                     return Err(ReadError::at_line(
                         K::IndexOutOfRange {
-                            face: f,
+                            face: f as usize,
                             index: idx,
-                            vertex_count: nv,
+                            vertex_count: nv as usize,
                         },
                         n,
                     ))
@@ -210,8 +202,8 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         return Err(ReadError::at_line(
             K::CountMismatch {
                 what: "faces",
-                declared: nf as u64,
-                found: nf as u64 + extra,
+                declared: nf,
+                found: nf.saturating_add(extra),
             },
             first,
         ));

@@ -111,16 +111,6 @@ enum ElementKind {
     Other,
 }
 
-impl ElementKind {
-    fn what(self) -> &'static str {
-        match self {
-            ElementKind::Vertex => "vertices",
-            ElementKind::Face => "faces",
-            ElementKind::Other => "elements",
-        }
-    }
-}
-
 struct Header {
     encoding: PlyEncoding,
     elements: Vec<Element>,
@@ -128,6 +118,8 @@ struct Header {
     data_start: usize,
     /// Number of header lines (the payload's first line is `lines + 1`).
     lines: usize,
+    /// Length of the payload in bytes.
+    payload_len: usize,
 }
 
 fn bad_header(msg: impl Into<String>, line: usize) -> ReadError {
@@ -300,32 +292,12 @@ fn parse_header(bytes: &[u8]) -> Result<Header, ReadError> {
             ));
         }
     }
-    // Never trust the counts: the smallest possible encoding of every declared record must fit
-    // in the bytes that are present. This bounds every loop and reservation below.
-    let available = (bytes.len() - data_start) as u128 + 1;
-    let mut needed: u128 = 0;
-    for e in &elements {
-        let min_record: u128 = e
-            .properties
-            .iter()
-            .map(|p| min_bytes(encoding, p) as u128)
-            .sum();
-        needed += u128::from(e.count) * min_record;
-        if needed > available {
-            return Err(ReadError::at_line(
-                K::CountTooLarge {
-                    what: e.kind.what(),
-                    declared: e.count,
-                },
-                e.line,
-            ));
-        }
-    }
     Ok(Header {
         encoding,
         elements,
         data_start,
         lines: header_lines,
+        payload_len: bytes.len() - data_start,
     })
 }
 
@@ -533,18 +505,24 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
     let mut positions: Vec<[f64; 3]> = Vec::new();
     let mut faces: Vec<[u32; 3]> = Vec::new();
     for e in &header.elements {
-        // Counts were bounded by the input size in `parse_header`, so they fit in usize and
-        // the reservations below are at most proportional to the input.
-        let count = e.count as usize;
         if e.properties.is_empty() {
             continue;
         }
+        // Never trust the counts for allocation: reserve at most as many records as the
+        // payload could hold at their smallest encoding. Every record consumes at least one
+        // byte (or token), so a larger count ends in a located `Truncated` error.
+        let min_record: usize = e
+            .properties
+            .iter()
+            .map(|p| min_bytes(header.encoding, p))
+            .sum();
+        let cap = e.count.min((header.payload_len / min_record.max(1)) as u64) as usize;
         match e.kind {
-            ElementKind::Vertex => positions.reserve_exact(count),
-            ElementKind::Face => faces.reserve_exact(count),
+            ElementKind::Vertex => positions.reserve_exact(cap),
+            ElementKind::Face => faces.reserve_exact(cap),
             ElementKind::Other => {}
         }
-        for i in 0..count {
+        for i in 0..e.count {
             let mut xyz = [0.0; 3];
             let mut corners = None;
             for p in &e.properties {
@@ -585,7 +563,7 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
                             if n != 3 {
                                 return Err(ReadError::new(
                                     K::NonTriangleFace {
-                                        face: i,
+                                        face: i as usize,
                                         corners: n,
                                     },
                                     loc,
@@ -604,7 +582,7 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
                                     _ => {
                                         return Err(ReadError::new(
                                             K::IndexOutOfRange {
-                                                face: i,
+                                                face: i as usize,
                                                 index: idx,
                                                 vertex_count: nv,
                                             },
