@@ -1,0 +1,189 @@
+//! Wavefront OBJ reading (positions and faces) and writing.
+//!
+//! Why a hand parser rather than `tobj` (which is a dependency): `tobj` 4 (a) stores positions
+//! as `f32` unless its `use_f64` feature is enabled, so coordinates would not round-trip;
+//! (b) with `single_index: false` it still *renumbers* vertices per model in order of first
+//! use and drops unreferenced ones, so the mesh would not have "indices as in the file";
+//! (c) its errors carry no line number. The subset needed here is small: `v x y z [...]`
+//! lines give positions, `f` lines give faces (`i`, `i/t`, `i//n`, `i/t/n`; negative indices
+//! are relative to the vertices read so far), everything else (`vn`, `vt`, `o`, `g`, `s`,
+//! `usemtl`, `mtllib`, `l`, `p`, ...) is ignored. All objects/groups form one mesh.
+//! Not supported: `\` line continuations.
+
+use std::io::Write;
+
+use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
+use super::fmt_f64_triple;
+use super::text::{parse_f64, parse_i64, Lines, Tokens};
+use crate::mesh::{Mesh, TriMesh};
+
+/// Parses OBJ bytes into a triangle mesh; see the module docs for the accepted subset.
+pub(crate) fn parse_obj(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+    let mut lines = Lines::new(bytes);
+    let mut positions: Vec<[f64; 3]> = Vec::new();
+    let mut faces: Vec<[u32; 3]> = Vec::new();
+    // Face indices are checked against the final vertex count (forward references are
+    // tolerated by most tools); `max_index` finds out cheaply whether any is out of range.
+    let mut max_index: u64 = 0;
+    while let Some((n, line)) = lines.next_data_line(b'#') {
+        let mut t = Tokens::new(line);
+        match t.next().unwrap_or_default() {
+            b"v" => {
+                let mut p = [0.0; 3];
+                for (c, name) in p
+                    .iter_mut()
+                    .zip(["x coordinate", "y coordinate", "z coordinate"])
+                {
+                    let tok = t
+                        .next()
+                        .ok_or_else(|| ReadError::at_line(K::MissingValue { expected: name }, n))?;
+                    *c = parse_f64(tok).ok_or_else(|| bad_number(tok, n))?;
+                }
+                if positions.len() >= u32::MAX as usize {
+                    return Err(ReadError::at_line(
+                        K::CountTooLarge {
+                            what: "vertices",
+                            declared: positions.len() as u64 + 1,
+                        },
+                        n,
+                    ));
+                }
+                positions.push(p);
+            }
+            b"f" => {
+                let face_no = faces.len();
+                let mut face = [0u32; 3];
+                let mut corners = 0u64;
+                for tok in t {
+                    corners += 1;
+                    let slot = usize::try_from(corners - 1)
+                        .ok()
+                        .and_then(|i| face.get_mut(i));
+                    let Some(slot) = slot else { continue };
+                    *slot = parse_ref(tok, positions.len(), face_no, n)?;
+                    max_index = max_index.max(u64::from(*slot));
+                }
+                if corners != 3 {
+                    return Err(ReadError::at_line(
+                        K::NonTriangleFace {
+                            face: face_no,
+                            corners,
+                        },
+                        n,
+                    ));
+                }
+                faces.push(face);
+            }
+            _ => {}
+        }
+    }
+    if !faces.is_empty() && max_index >= positions.len() as u64 {
+        return Err(locate_bad_face(bytes, &faces, positions.len()));
+    }
+    Ok(Mesh::with_positions(positions, faces))
+}
+
+fn bad_number(tok: &[u8], line: usize) -> ReadError {
+    ReadError::at_line(
+        K::BadNumber {
+            token: token_string(tok),
+        },
+        line,
+    )
+}
+
+/// The 0-based position index of one face corner `i[/t[/n]]`.
+fn parse_ref(tok: &[u8], seen: usize, face: usize, line: usize) -> Result<u32, ReadError> {
+    let vtok = tok.split(|&b| b == b'/').next().unwrap_or_default();
+    if tok.split(|&b| b == b'/').count() > 3 {
+        return Err(ReadError::at_line(
+            K::Obj(format!(
+                "face corner {:?} has more than 3 `/`-separated parts",
+                token_string(tok)
+            )),
+            line,
+        ));
+    }
+    let i = parse_i64(vtok).ok_or_else(|| bad_number(vtok, line))?;
+    let out_of_range = |index: i64| {
+        ReadError::at_line(
+            K::IndexOutOfRange {
+                face,
+                index,
+                vertex_count: seen,
+            },
+            line,
+        )
+    };
+    let zero_based: i64 = match i {
+        0 => {
+            return Err(ReadError::at_line(
+                K::Obj("vertex index 0 is invalid (OBJ indices start at 1)".into()),
+                line,
+            ))
+        }
+        // Relative: -1 is the last vertex read so far.
+        i if i < 0 => i64::try_from(seen)
+            .ok()
+            .and_then(|s| s.checked_add(i))
+            .ok_or_else(|| out_of_range(i))?,
+        i => i - 1,
+    };
+    if zero_based < 0 {
+        return Err(out_of_range(zero_based));
+    }
+    u32::try_from(zero_based).map_err(|_| out_of_range(zero_based))
+}
+
+/// Error for the first face with an index `>= vertex_count`, with its line found by rescanning.
+fn locate_bad_face(bytes: &[u8], faces: &[[u32; 3]], vertex_count: usize) -> ReadError {
+    let Some((face_no, index)) = faces.iter().enumerate().find_map(|(i, f)| {
+        f.iter()
+            .find(|&&v| v as usize >= vertex_count)
+            .map(|&v| (i, v))
+    }) else {
+        // Unreachable by construction; still a typed error rather than a panic.
+        return ReadError::new(
+            K::Obj("internal: no bad face found".into()),
+            Location::Unknown,
+        );
+    };
+    let kind = K::IndexOutOfRange {
+        face: face_no,
+        index: i64::from(index),
+        vertex_count,
+    };
+    let mut lines = Lines::new(bytes);
+    let mut seen = 0usize;
+    while let Some((n, line)) = lines.next_data_line(b'#') {
+        if Tokens::new(line).next() == Some(b"f") {
+            if seen == face_no {
+                return ReadError::at_line(kind, n);
+            }
+            seen += 1;
+        }
+    }
+    ReadError::new(kind, Location::Face(face_no))
+}
+
+/// Writes OBJ: one `v x y z` line per vertex (`0 0 0` without positions) and one
+/// `f a b c ...` line per face with 1-based indices. The mesh must pass
+/// [`super::check_mesh`].
+pub(crate) fn write_obj<const N: usize>(w: &mut impl Write, mesh: &Mesh<N>) -> std::io::Result<()> {
+    let mut buf = String::with_capacity(96);
+    for i in 0..mesh.vertex_count {
+        buf.clear();
+        buf.push_str("v ");
+        fmt_f64_triple(&mut buf, mesh.positions.as_ref().and_then(|p| p.get(i)));
+        buf.push('\n');
+        w.write_all(buf.as_bytes())?;
+    }
+    for f in &mesh.faces {
+        w.write_all(b"f")?;
+        for v in f {
+            write!(w, " {}", u64::from(*v) + 1)?;
+        }
+        writeln!(w)?;
+    }
+    Ok(())
+}

@@ -1,0 +1,687 @@
+//! PLY reading (ascii, binary little/big endian) and writing.
+//!
+//! Why a hand parser rather than `ply-rs-bw` (a dependency, used in the tests as an
+//! independent cross-check): its header model is an `IndexMap` keyed by name, so a header
+//! that repeats an element or property name is silently collapsed (a repeated element even
+//! takes the *earlier* position and later properties attach to the wrong element). For
+//! binary files that changes the record layout, and the payload is then misread without an
+//! error. Its binary errors also carry only an element ordinal, not a byte offset. (Its
+//! preallocation *is* capped, so huge header counts are not an allocation hazard there.)
+//! The format is small: this reader rejects duplicate names, bounds every declared count by
+//! the bytes actually present before reserving anything, and reports byte offsets (binary)
+//! or line numbers (ascii, header).
+//!
+//! Read: element `vertex` with scalar properties `x`, `y`, `z` (any numeric type; must be
+//! finite) and optional element `face` with a list property `vertex_indices` or
+//! `vertex_index` of integer type. Every other element and property is parsed and skipped.
+
+use std::io::Write;
+
+use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
+use super::fmt_f64_triple;
+use super::text::{is_space, parse_i64, Lines, Tokens};
+use crate::mesh::{Mesh, TriMesh};
+
+/// How a PLY file encodes its payload.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlyEncoding {
+    /// Whitespace-separated decimal text.
+    Ascii,
+    /// Binary, least significant byte first.
+    BinaryLittleEndian,
+    /// Binary, most significant byte first.
+    BinaryBigEndian,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Scalar {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Scalar {
+    fn parse(s: &[u8]) -> Option<Scalar> {
+        Some(match s {
+            b"char" | b"int8" => Scalar::I8,
+            b"uchar" | b"uint8" => Scalar::U8,
+            b"short" | b"int16" => Scalar::I16,
+            b"ushort" | b"uint16" => Scalar::U16,
+            b"int" | b"int32" => Scalar::I32,
+            b"uint" | b"uint32" => Scalar::U32,
+            b"float" | b"float32" => Scalar::F32,
+            b"double" | b"float64" => Scalar::F64,
+            _ => return None,
+        })
+    }
+
+    fn size(self) -> usize {
+        match self {
+            Scalar::I8 | Scalar::U8 => 1,
+            Scalar::I16 | Scalar::U16 => 2,
+            Scalar::I32 | Scalar::U32 | Scalar::F32 => 4,
+            Scalar::F64 => 8,
+        }
+    }
+
+    fn is_int(self) -> bool {
+        !matches!(self, Scalar::F32 | Scalar::F64)
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum PropType {
+    Scalar(Scalar),
+    List { count: Scalar, item: Scalar },
+}
+
+/// What a property means to this reader.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Role {
+    Ignore,
+    Coord(usize),
+    Corners,
+}
+
+#[derive(Debug)]
+struct Property {
+    name: String,
+    ty: PropType,
+    role: Role,
+}
+
+#[derive(Debug)]
+struct Element {
+    name: String,
+    count: u64,
+    kind: ElementKind,
+    properties: Vec<Property>,
+    line: usize,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ElementKind {
+    Vertex,
+    Face,
+    Other,
+}
+
+struct Header {
+    encoding: PlyEncoding,
+    elements: Vec<Element>,
+    /// Byte offset of the payload.
+    data_start: usize,
+    /// Number of header lines (the payload's first line is `lines + 1`).
+    lines: usize,
+    /// Length of the payload in bytes.
+    payload_len: usize,
+}
+
+fn bad_header(msg: impl Into<String>, line: usize) -> ReadError {
+    ReadError::at_line(K::BadHeader(msg.into()), line)
+}
+
+fn parse_header(bytes: &[u8]) -> Result<Header, ReadError> {
+    let mut lines = Lines::new(bytes);
+    match lines.next_line() {
+        Some((_, l)) if trim(l) == b"ply" => {}
+        _ => return Err(bad_header("missing `ply` magic line", 1)),
+    }
+    let mut encoding = None;
+    let mut elements: Vec<Element> = Vec::new();
+    loop {
+        let Some((n, line)) = lines.next_line() else {
+            return Err(bad_header("missing `end_header`", lines.line().max(1)));
+        };
+        let mut t = Tokens::new(line);
+        match t.next() {
+            None => continue,
+            Some(b"comment" | b"obj_info") => continue,
+            Some(b"end_header") => break,
+            Some(b"format") => {
+                if encoding.is_some() {
+                    return Err(bad_header("repeated `format` line", n));
+                }
+                let enc = match t.next() {
+                    Some(b"ascii") => PlyEncoding::Ascii,
+                    Some(b"binary_little_endian") => PlyEncoding::BinaryLittleEndian,
+                    Some(b"binary_big_endian") => PlyEncoding::BinaryBigEndian,
+                    other => {
+                        return Err(bad_header(
+                            format!(
+                                "unknown PLY format {:?}",
+                                token_string(other.unwrap_or_default())
+                            ),
+                            n,
+                        ))
+                    }
+                };
+                if t.next() != Some(b"1.0") {
+                    return Err(bad_header("expected version 1.0", n));
+                }
+                encoding = Some(enc);
+            }
+            Some(b"element") => {
+                let (Some(name), Some(count), None) = (t.next(), t.next(), t.next()) else {
+                    return Err(bad_header("expected `element <name> <count>`", n));
+                };
+                let count = super::text::parse_u64(count).ok_or_else(|| {
+                    ReadError::at_line(
+                        K::BadNumber {
+                            token: token_string(count),
+                        },
+                        n,
+                    )
+                })?;
+                let name = String::from_utf8_lossy(name).into_owned();
+                if elements.iter().any(|e| e.name == name) {
+                    return Err(bad_header(format!("element `{name}` declared twice"), n));
+                }
+                let kind = match name.as_str() {
+                    "vertex" => ElementKind::Vertex,
+                    "face" => ElementKind::Face,
+                    _ => ElementKind::Other,
+                };
+                elements.push(Element {
+                    name,
+                    count,
+                    kind,
+                    properties: Vec::new(),
+                    line: n,
+                });
+            }
+            Some(b"property") => {
+                let Some(elem) = elements.last_mut() else {
+                    return Err(bad_header("`property` before any `element`", n));
+                };
+                let toks: Vec<&[u8]> = t.collect();
+                let scalar = |s: &[u8]| {
+                    Scalar::parse(s).ok_or_else(|| {
+                        bad_header(format!("unknown property type {:?}", token_string(s)), n)
+                    })
+                };
+                let (ty, name) = match toks.as_slice() {
+                    [b"list", c, i, name] => {
+                        let count = scalar(c)?;
+                        if !count.is_int() {
+                            return Err(bad_header("list count type must be an integer", n));
+                        }
+                        (
+                            PropType::List {
+                                count,
+                                item: scalar(i)?,
+                            },
+                            name,
+                        )
+                    }
+                    [ty, name] => (PropType::Scalar(scalar(ty)?), name),
+                    _ => return Err(bad_header("expected `property <type> <name>`", n)),
+                };
+                let name = String::from_utf8_lossy(name).into_owned();
+                if elem.properties.iter().any(|p| p.name == name) {
+                    return Err(bad_header(
+                        format!("property `{name}` declared twice in `{}`", elem.name),
+                        n,
+                    ));
+                }
+                let role = match (elem.kind, name.as_str(), ty) {
+                    (ElementKind::Vertex, "x", PropType::Scalar(_)) => Role::Coord(0),
+                    (ElementKind::Vertex, "y", PropType::Scalar(_)) => Role::Coord(1),
+                    (ElementKind::Vertex, "z", PropType::Scalar(_)) => Role::Coord(2),
+                    (ElementKind::Face, "vertex_indices" | "vertex_index", _) => match ty {
+                        PropType::List { item, .. } if item.is_int() => Role::Corners,
+                        _ => {
+                            return Err(bad_header(
+                                format!("`{name}` must be a list of integers"),
+                                n,
+                            ))
+                        }
+                    },
+                    _ => Role::Ignore,
+                };
+                if role == Role::Corners && elem.properties.iter().any(|p| p.role == Role::Corners)
+                {
+                    return Err(bad_header(
+                        "both `vertex_indices` and `vertex_index` declared",
+                        n,
+                    ));
+                }
+                elem.properties.push(Property { name, ty, role });
+            }
+            Some(other) => {
+                return Err(bad_header(
+                    format!("unknown header keyword {:?}", token_string(other)),
+                    n,
+                ))
+            }
+        }
+    }
+    let header_lines = lines.line();
+    let data_start = bytes.len() - lines.remaining();
+    let encoding = encoding.ok_or_else(|| bad_header("missing `format` line", header_lines))?;
+    let Some(vertex) = elements.iter().find(|e| e.kind == ElementKind::Vertex) else {
+        return Err(bad_header("no `vertex` element", header_lines));
+    };
+    for c in 0..3 {
+        if !vertex.properties.iter().any(|p| p.role == Role::Coord(c)) {
+            return Err(bad_header(
+                format!("`vertex` has no scalar property `{}`", ["x", "y", "z"][c]),
+                vertex.line,
+            ));
+        }
+    }
+    if vertex.count > u64::from(u32::MAX) {
+        return Err(ReadError::at_line(
+            K::CountTooLarge {
+                what: "vertices",
+                declared: vertex.count,
+            },
+            vertex.line,
+        ));
+    }
+    if let Some(face) = elements.iter().find(|e| e.kind == ElementKind::Face) {
+        if !face.properties.iter().any(|p| p.role == Role::Corners) {
+            return Err(bad_header(
+                "`face` has no `vertex_indices` list property",
+                face.line,
+            ));
+        }
+    }
+    Ok(Header {
+        encoding,
+        elements,
+        data_start,
+        lines: header_lines,
+        payload_len: bytes.len() - data_start,
+    })
+}
+
+/// Fewest bytes one property can occupy in `encoding` (face corner lists hold 3 items).
+fn min_bytes(encoding: PlyEncoding, p: &Property) -> usize {
+    let items = if p.role == Role::Corners { 3 } else { 0 };
+    match (encoding, p.ty) {
+        // A token plus a separator.
+        (PlyEncoding::Ascii, PropType::Scalar(_)) => 2,
+        (PlyEncoding::Ascii, PropType::List { .. }) => 2 + 2 * items,
+        (_, PropType::Scalar(s)) => s.size(),
+        (_, PropType::List { count, item }) => count.size() + items * item.size(),
+    }
+}
+
+fn trim(s: &[u8]) -> &[u8] {
+    let start = s.iter().position(|b| !is_space(*b)).unwrap_or(s.len());
+    let end = s
+        .iter()
+        .rposition(|b| !is_space(*b))
+        .map_or(start, |i| i + 1);
+    s.get(start..end).unwrap_or_default()
+}
+
+/// A numeric value as read from the payload.
+#[derive(Clone, Copy)]
+enum Value {
+    Int(i64),
+    Float(f64),
+}
+
+impl Value {
+    fn as_f64(self) -> f64 {
+        match self {
+            Value::Int(i) => i as f64,
+            Value::Float(f) => f,
+        }
+    }
+}
+
+/// Source of payload values, positioned for error messages.
+trait Payload {
+    /// Reads one value of type `s`; `what` describes it for truncation errors.
+    fn value(&mut self, s: Scalar, what: &dyn Fn() -> String) -> Result<Value, ReadError>;
+    /// Where the most recently read value starts.
+    fn last(&self) -> Location;
+    /// Error unless only whitespace remains.
+    fn finish(&mut self) -> Result<(), ReadError>;
+}
+
+struct Binary<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    last: usize,
+    big_endian: bool,
+}
+
+impl Payload for Binary<'_> {
+    fn value(&mut self, s: Scalar, what: &dyn Fn() -> String) -> Result<Value, ReadError> {
+        let size = s.size();
+        let Some(raw) = self.bytes.get(self.pos..).and_then(|r| r.get(..size)) else {
+            return Err(ReadError::at_byte(
+                K::Truncated { expected: what() },
+                self.pos,
+            ));
+        };
+        let mut b = [0u8; 8];
+        b[..size].copy_from_slice(raw);
+        if self.big_endian {
+            b[..size].reverse();
+        }
+        self.last = self.pos;
+        self.pos += size;
+        // `b` is now little endian.
+        let v = match s {
+            Scalar::I8 => Value::Int(i64::from(b[0] as i8)),
+            Scalar::U8 => Value::Int(i64::from(b[0])),
+            Scalar::I16 => Value::Int(i64::from(i16::from_le_bytes([b[0], b[1]]))),
+            Scalar::U16 => Value::Int(i64::from(u16::from_le_bytes([b[0], b[1]]))),
+            Scalar::I32 => Value::Int(i64::from(i32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
+            Scalar::U32 => Value::Int(i64::from(u32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
+            Scalar::F32 => Value::Float(f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
+            Scalar::F64 => Value::Float(f64::from_le_bytes(b)),
+        };
+        Ok(v)
+    }
+
+    fn last(&self) -> Location {
+        Location::ByteOffset(self.last as u64)
+    }
+
+    fn finish(&mut self) -> Result<(), ReadError> {
+        let rest = self.bytes.get(self.pos..).unwrap_or_default();
+        match rest.iter().position(|b| !b.is_ascii_whitespace()) {
+            None => Ok(()),
+            Some(i) => Err(ReadError::at_byte(
+                K::TrailingData { what: "element" },
+                self.pos + i,
+            )),
+        }
+    }
+}
+
+struct Ascii<'a> {
+    lines: Lines<'a>,
+    current: Tokens<'a>,
+    line: usize,
+}
+
+impl<'a> Ascii<'a> {
+    fn next_token(&mut self) -> Option<&'a [u8]> {
+        loop {
+            if let Some(t) = self.current.next() {
+                return Some(t);
+            }
+            let (n, l) = self.lines.next_line()?;
+            self.line = n;
+            self.current = Tokens::new(l);
+        }
+    }
+}
+
+impl Payload for Ascii<'_> {
+    fn value(&mut self, s: Scalar, what: &dyn Fn() -> String) -> Result<Value, ReadError> {
+        let Some(tok) = self.next_token() else {
+            return Err(ReadError::at_line(
+                K::Truncated { expected: what() },
+                self.line.max(1),
+            ));
+        };
+        let bad = || {
+            ReadError::at_line(
+                K::BadNumber {
+                    token: token_string(tok),
+                },
+                self.line,
+            )
+        };
+        if s.is_int() {
+            let v = parse_i64(tok).ok_or_else(bad)?;
+            let (lo, hi): (i64, i64) = match s {
+                Scalar::I8 => (i8::MIN.into(), i8::MAX.into()),
+                Scalar::U8 => (0, u8::MAX.into()),
+                Scalar::I16 => (i16::MIN.into(), i16::MAX.into()),
+                Scalar::U16 => (0, u16::MAX.into()),
+                Scalar::I32 => (i32::MIN.into(), i32::MAX.into()),
+                _ => (0, u32::MAX.into()),
+            };
+            if v < lo || v > hi {
+                return Err(bad());
+            }
+            Ok(Value::Int(v))
+        } else {
+            // Any float syntax (NaN too) for ignored properties; coordinates are checked later.
+            let s = std::str::from_utf8(tok).map_err(|_| bad())?;
+            Ok(Value::Float(s.parse::<f64>().map_err(|_| bad())?))
+        }
+    }
+
+    fn last(&self) -> Location {
+        Location::Line(self.line.max(1))
+    }
+
+    fn finish(&mut self) -> Result<(), ReadError> {
+        match self.next_token() {
+            None => Ok(()),
+            Some(_) => Err(ReadError::at_line(
+                K::TrailingData { what: "element" },
+                self.line,
+            )),
+        }
+    }
+}
+
+/// Parses PLY bytes (ascii or binary) into a triangle mesh; see the module docs.
+pub(crate) fn parse_ply(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+    let header = parse_header(bytes)?;
+    match header.encoding {
+        PlyEncoding::Ascii => {
+            let mut p = Ascii {
+                lines: Lines::starting_at(bytes, header.data_start, header.lines),
+                current: Tokens::new(&[]),
+                line: header.lines + 1,
+            };
+            read_payload(&header, &mut p)
+        }
+        enc => {
+            let mut p = Binary {
+                bytes,
+                pos: header.data_start,
+                last: header.data_start,
+                big_endian: enc == PlyEncoding::BinaryBigEndian,
+            };
+            read_payload(&header, &mut p)
+        }
+    }
+}
+
+fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, ReadError> {
+    let nv = header
+        .elements
+        .iter()
+        .find(|e| e.kind == ElementKind::Vertex)
+        .map_or(0, |e| e.count as usize);
+    let mut positions: Vec<[f64; 3]> = Vec::new();
+    let mut faces: Vec<[u32; 3]> = Vec::new();
+    for e in &header.elements {
+        if e.properties.is_empty() {
+            continue;
+        }
+        // Never trust the counts for allocation: reserve at most as many records as the
+        // payload could hold at their smallest encoding. Every record consumes at least one
+        // byte (or token), so a larger count ends in a located `Truncated` error.
+        let min_record: usize = e
+            .properties
+            .iter()
+            .map(|p| min_bytes(header.encoding, p))
+            .sum();
+        let cap = e.count.min((header.payload_len / min_record.max(1)) as u64) as usize;
+        match e.kind {
+            ElementKind::Vertex => positions.reserve_exact(cap),
+            ElementKind::Face => faces.reserve_exact(cap),
+            ElementKind::Other => {}
+        }
+        for i in 0..e.count {
+            let mut xyz = [0.0; 3];
+            let mut corners = None;
+            for p in &e.properties {
+                let what = || format!("{} {i} of {} (property `{}`)", e.name, e.count, p.name);
+                match p.ty {
+                    PropType::Scalar(s) => {
+                        let v = src.value(s, &what)?;
+                        let loc = src.last();
+                        if let Role::Coord(c) = p.role {
+                            let x = v.as_f64();
+                            if !x.is_finite() {
+                                return Err(ReadError::new(
+                                    K::BadNumber {
+                                        token: x.to_string(),
+                                    },
+                                    loc,
+                                ));
+                            }
+                            xyz[c] = x;
+                        }
+                    }
+                    PropType::List { count: cs, item } => {
+                        let n = src.value(cs, &what)?;
+                        let loc = src.last();
+                        let n = match n {
+                            Value::Int(n) if n >= 0 => n as u64,
+                            Value::Int(n) => {
+                                return Err(ReadError::new(
+                                    K::BadNumber {
+                                        token: n.to_string(),
+                                    },
+                                    loc,
+                                ))
+                            }
+                            Value::Float(_) => unreachable_float(loc)?,
+                        };
+                        if p.role == Role::Corners {
+                            if n != 3 {
+                                return Err(ReadError::new(
+                                    K::NonTriangleFace {
+                                        face: i as usize,
+                                        corners: n,
+                                    },
+                                    loc,
+                                ));
+                            }
+                            let mut f = [0u32; 3];
+                            for c in &mut f {
+                                let idx = src.value(item, &what)?;
+                                let loc = src.last();
+                                let idx = match idx {
+                                    Value::Int(v) => v,
+                                    Value::Float(_) => unreachable_float(loc)?,
+                                };
+                                *c = match u32::try_from(idx) {
+                                    Ok(v) if (v as usize) < nv => v,
+                                    _ => {
+                                        return Err(ReadError::new(
+                                            K::IndexOutOfRange {
+                                                face: i as usize,
+                                                index: idx,
+                                                vertex_count: nv,
+                                            },
+                                            loc,
+                                        ))
+                                    }
+                                };
+                            }
+                            corners = Some(f);
+                        } else {
+                            // Each item consumes at least one byte, so this loop is bounded by
+                            // the input length (truncation ends it early).
+                            for _ in 0..n {
+                                src.value(item, &what)?;
+                            }
+                        }
+                    }
+                }
+            }
+            match e.kind {
+                ElementKind::Vertex => positions.push(xyz),
+                ElementKind::Face => {
+                    if let Some(f) = corners {
+                        faces.push(f);
+                    }
+                }
+                ElementKind::Other => {}
+            }
+        }
+    }
+    src.finish()?;
+    Ok(Mesh::with_positions(positions, faces))
+}
+
+/// Integer-typed values never decode as floats; typed error instead of a panic anyway.
+fn unreachable_float<T>(loc: Location) -> Result<T, ReadError> {
+    Err(ReadError::new(
+        K::Ply("internal: integer property decoded as float".into()),
+        loc,
+    ))
+}
+
+/// Writes PLY with `double` coordinates and `list uchar uint vertex_indices` faces
+/// (`0 0 0` for every vertex when the mesh has no positions). The mesh must pass
+/// [`super::check_mesh`].
+pub(crate) fn write_ply<const N: usize>(
+    w: &mut impl Write,
+    mesh: &Mesh<N>,
+    encoding: PlyEncoding,
+) -> std::io::Result<()> {
+    let fmt = match encoding {
+        PlyEncoding::Ascii => "ascii",
+        PlyEncoding::BinaryLittleEndian => "binary_little_endian",
+        PlyEncoding::BinaryBigEndian => "binary_big_endian",
+    };
+    write!(
+        w,
+        "ply\nformat {fmt} 1.0\ncomment written by contractible\n\
+         element vertex {}\nproperty double x\nproperty double y\nproperty double z\n\
+         element face {}\nproperty list uchar uint vertex_indices\nend_header\n",
+        mesh.vertex_count,
+        mesh.faces.len()
+    )?;
+    let pos = |i: usize| mesh.positions.as_ref().and_then(|p| p.get(i));
+    match encoding {
+        PlyEncoding::Ascii => {
+            let mut buf = String::with_capacity(96);
+            for i in 0..mesh.vertex_count {
+                buf.clear();
+                fmt_f64_triple(&mut buf, pos(i));
+                buf.push('\n');
+                w.write_all(buf.as_bytes())?;
+            }
+            for f in &mesh.faces {
+                write!(w, "{N}")?;
+                for v in f {
+                    write!(w, " {v}")?;
+                }
+                writeln!(w)?;
+            }
+        }
+        enc => {
+            let be = enc == PlyEncoding::BinaryBigEndian;
+            for i in 0..mesh.vertex_count {
+                for x in pos(i).copied().unwrap_or([0.0; 3]) {
+                    w.write_all(&if be { x.to_be_bytes() } else { x.to_le_bytes() })?;
+                }
+            }
+            // N is 3 or 4 in this crate; a larger N would not fit the `uchar` count.
+            let n = u8::try_from(N).map_err(|_| {
+                std::io::Error::new(std::io::ErrorKind::InvalidInput, "face too large for PLY")
+            })?;
+            for f in &mesh.faces {
+                w.write_all(&[n])?;
+                for v in f {
+                    w.write_all(&if be { v.to_be_bytes() } else { v.to_le_bytes() })?;
+                }
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,191 @@
+//! Allocation-free line and token scanning over in-memory bytes, shared by the text readers.
+
+/// Iterates over the lines of a byte buffer, tracking 1-based line numbers.
+pub(crate) struct Lines<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    line: usize,
+}
+
+impl<'a> Lines<'a> {
+    /// Starts at the beginning of `bytes`, before line 1.
+    pub(crate) fn new(bytes: &'a [u8]) -> Self {
+        Lines {
+            bytes,
+            pos: 0,
+            line: 0,
+        }
+    }
+
+    /// Starts at byte `pos` of `bytes`, where the line about to be read has number `line + 1`.
+    pub(crate) fn starting_at(bytes: &'a [u8], pos: usize, line: usize) -> Self {
+        Lines {
+            bytes,
+            pos: pos.min(bytes.len()),
+            line,
+        }
+    }
+
+    /// Number of the last line returned (0 before the first).
+    pub(crate) fn line(&self) -> usize {
+        self.line
+    }
+
+    /// Bytes not yet consumed.
+    pub(crate) fn remaining(&self) -> usize {
+        self.bytes.len() - self.pos
+    }
+
+    /// The next line without its terminator (`\n`, `\r\n`), and its 1-based number.
+    pub(crate) fn next_line(&mut self) -> Option<(usize, &'a [u8])> {
+        let rest = self.bytes.get(self.pos..)?;
+        if rest.is_empty() {
+            return None;
+        }
+        let (mut line, advance) = match rest.iter().position(|&b| b == b'\n') {
+            Some(i) => (&rest[..i], i + 1),
+            None => (rest, rest.len()),
+        };
+        if let [head @ .., b'\r'] = line {
+            line = head;
+        }
+        self.pos += advance;
+        self.line += 1;
+        Some((self.line, line))
+    }
+
+    /// The next line that has a token once a `comment` character and what follows it
+    /// are removed; returns the line with the comment removed.
+    pub(crate) fn next_data_line(&mut self, comment: u8) -> Option<(usize, &'a [u8])> {
+        while let Some((n, line)) = self.next_line() {
+            let line = match line.iter().position(|&b| b == comment) {
+                Some(i) => &line[..i],
+                None => line,
+            };
+            if line.iter().any(|b| !is_space(*b)) {
+                return Some((n, line));
+            }
+        }
+        None
+    }
+}
+
+/// ASCII whitespace within a line (space, tab, CR, vertical tab, form feed).
+#[inline]
+pub(crate) fn is_space(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\r' | 0x0b | 0x0c)
+}
+
+/// Iterates over whitespace-separated tokens of one line.
+pub(crate) struct Tokens<'a> {
+    s: &'a [u8],
+    pos: usize,
+}
+
+impl<'a> Tokens<'a> {
+    /// Tokens of `s`.
+    pub(crate) fn new(s: &'a [u8]) -> Self {
+        Tokens { s, pos: 0 }
+    }
+}
+
+impl<'a> Iterator for Tokens<'a> {
+    type Item = &'a [u8];
+
+    #[inline]
+    fn next(&mut self) -> Option<&'a [u8]> {
+        let s = self.s;
+        let mut i = self.pos;
+        while i < s.len() && is_space(s[i]) {
+            i += 1;
+        }
+        if i >= s.len() {
+            self.pos = i;
+            return None;
+        }
+        let start = i;
+        while i < s.len() && !is_space(s[i]) {
+            i += 1;
+        }
+        self.pos = i;
+        Some(&s[start..i])
+    }
+}
+
+/// A finite `f64` from a token, or `None` (not a number, NaN or infinite).
+#[inline]
+pub(crate) fn parse_f64(tok: &[u8]) -> Option<f64> {
+    let s = std::str::from_utf8(tok).ok()?;
+    let x: f64 = s.parse().ok()?;
+    x.is_finite().then_some(x)
+}
+
+/// A decimal unsigned integer (optional leading `+`), or `None` (including on overflow).
+#[inline]
+pub(crate) fn parse_u64(tok: &[u8]) -> Option<u64> {
+    let digits = match tok {
+        [b'+', rest @ ..] => rest,
+        _ => tok,
+    };
+    if digits.is_empty() {
+        return None;
+    }
+    let mut v: u64 = 0;
+    for &b in digits {
+        let d = b.wrapping_sub(b'0');
+        if d > 9 {
+            return None;
+        }
+        v = v.checked_mul(10)?.checked_add(u64::from(d))?;
+    }
+    Some(v)
+}
+
+/// A decimal signed integer (optional sign), or `None` (including on overflow).
+#[inline]
+pub(crate) fn parse_i64(tok: &[u8]) -> Option<i64> {
+    match tok {
+        [b'-', rest @ ..] => {
+            let v = parse_u64(rest)?;
+            if rest.first() == Some(&b'+') {
+                return None;
+            }
+            0i64.checked_sub_unsigned(v)
+        }
+        _ => i64::try_from(parse_u64(tok)?).ok(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lines_and_tokens() {
+        let mut l = Lines::new(b"a b\r\n\n # c\n  d # e\nf");
+        assert_eq!(l.next_data_line(b'#'), Some((1, &b"a b"[..])));
+        assert_eq!(l.next_data_line(b'#'), Some((4, &b"  d "[..])));
+        assert_eq!(l.next_data_line(b'#'), Some((5, &b"f"[..])));
+        assert_eq!(l.next_data_line(b'#'), None);
+        let t: Vec<&[u8]> = Tokens::new(b" 1\t2  3 ").collect();
+        assert_eq!(t, vec![&b"1"[..], b"2", b"3"]);
+    }
+
+    #[test]
+    fn numbers() {
+        assert_eq!(parse_u64(b"18446744073709551615"), Some(u64::MAX));
+        assert_eq!(parse_u64(b"18446744073709551616"), None);
+        assert_eq!(parse_u64(b"+7"), Some(7));
+        assert_eq!(parse_u64(b"-7"), None);
+        assert_eq!(parse_u64(b""), None);
+        assert_eq!(parse_i64(b"-9223372036854775808"), Some(i64::MIN));
+        assert_eq!(parse_i64(b"-9223372036854775809"), None);
+        assert_eq!(parse_i64(b"-+1"), None);
+        assert_eq!(parse_i64(b"-3"), Some(-3));
+        assert_eq!(parse_f64(b"nan"), None);
+        assert_eq!(parse_f64(b"inf"), None);
+        assert_eq!(parse_f64(b"1e400"), None);
+        assert_eq!(parse_f64(b"-0.5e1"), Some(-5.0));
+        assert_eq!(parse_f64(b"\xff"), None);
+    }
+}

@@ -1,0 +1,1248 @@
+//! Tests of the mesh file readers and writers (`contractible::io`).
+
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use contractible::io::{
+    read_tri_mesh, read_tri_mesh_bytes, read_tri_mesh_from, write_mesh, write_mesh_to,
+    write_ply_to, Format, Location, PlyEncoding, ReadError, ReadErrorKind as K, WriteError,
+};
+use contractible::{Mesh, QuadMesh, TriMesh};
+
+/// A predicate on an error kind.
+type KindCheck = fn(&K) -> bool;
+
+const MESHES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/meshes");
+
+/// Coordinates that stress shortest-round-trip formatting.
+fn tricky_positions(n: usize) -> Vec<[f64; 3]> {
+    let special = [
+        0.1,
+        -0.0,
+        1e300,
+        -1e-300,
+        5e-324,
+        std::f64::consts::PI,
+        f64::MAX,
+        f64::MIN_POSITIVE,
+        123_456_789.123_456_78,
+        -2.5,
+        1.0 / 3.0,
+        7.0,
+    ];
+    (0..n)
+        .map(|i| {
+            [
+                special[i % special.len()],
+                special[(i * 5 + 1) % special.len()],
+                (i as f64) * 0.7 - 3.0,
+            ]
+        })
+        .collect()
+}
+
+/// An octahedron (closed, 6 vertices, 8 triangles) with tricky coordinates.
+fn octahedron() -> TriMesh {
+    let faces = vec![
+        [0, 2, 4],
+        [2, 1, 4],
+        [1, 3, 4],
+        [3, 0, 4],
+        [2, 0, 5],
+        [1, 2, 5],
+        [3, 1, 5],
+        [0, 3, 5],
+    ];
+    Mesh::with_positions(tricky_positions(6), faces)
+}
+
+/// A cube as 6 quads.
+fn cube() -> QuadMesh {
+    let faces = vec![
+        [0, 1, 3, 2],
+        [4, 6, 7, 5],
+        [0, 4, 5, 1],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 5, 7, 3],
+    ];
+    Mesh::with_positions(tricky_positions(8), faces)
+}
+
+fn bits(p: &[[f64; 3]]) -> Vec<[u64; 3]> {
+    p.iter().map(|q| q.map(f64::to_bits)).collect()
+}
+
+fn assert_same(a: &TriMesh, b: &TriMesh) {
+    assert_eq!(a.vertex_count, b.vertex_count);
+    assert_eq!(a.faces, b.faces);
+    assert_eq!(
+        bits(a.positions.as_ref().unwrap()),
+        bits(b.positions.as_ref().unwrap())
+    );
+}
+
+fn to_bytes<const N: usize>(mesh: &Mesh<N>, format: Format, ply_binary: bool) -> Vec<u8> {
+    let mut out = Vec::new();
+    write_mesh_to(&mut out, mesh, format, ply_binary).unwrap();
+    out
+}
+
+fn tmp(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("io_formats_{name}"))
+}
+
+fn err(bytes: &[u8], format: Format) -> ReadError {
+    match read_tri_mesh_bytes(bytes, Some(format)) {
+        Ok(m) => panic!("expected an error, read {m:?}"),
+        Err(e) => e,
+    }
+}
+
+// ---------------------------------------------------------------- round trips
+
+#[test]
+fn tri_round_trip_all_formats_in_memory() {
+    let m = octahedron();
+    for (format, binary) in [
+        (Format::Off, false),
+        (Format::Obj, false),
+        (Format::Ply, false),
+        (Format::Ply, true),
+    ] {
+        let bytes = to_bytes(&m, format, binary);
+        let back = read_tri_mesh_bytes(&bytes, Some(format)).unwrap();
+        assert_same(&m, &back);
+        // Sniffing finds the same format.
+        assert_eq!(Format::sniff(&bytes), Some(format));
+        assert_same(&m, &read_tri_mesh_bytes(&bytes, None).unwrap());
+        assert_same(&m, &read_tri_mesh_from(&bytes[..], format).unwrap());
+    }
+    for enc in [
+        PlyEncoding::Ascii,
+        PlyEncoding::BinaryLittleEndian,
+        PlyEncoding::BinaryBigEndian,
+    ] {
+        let mut bytes = Vec::new();
+        write_ply_to(&mut bytes, &m, enc).unwrap();
+        assert_same(&m, &read_tri_mesh_bytes(&bytes, Some(Format::Ply)).unwrap());
+    }
+}
+
+#[test]
+fn tri_round_trip_files_with_and_without_gzip() {
+    let m = octahedron();
+    for name in [
+        "t.off", "t.obj", "t.ply", "t.off.gz", "t.OBJ.GZ", "t.Ply.gz", "t.OFF",
+    ] {
+        let path = tmp(name);
+        write_mesh(&path, &m).unwrap();
+        let raw = std::fs::read(&path).unwrap();
+        assert_eq!(
+            raw.starts_with(&[0x1f, 0x8b]),
+            name.to_ascii_lowercase().ends_with(".gz"),
+            "{name}"
+        );
+        assert_same(&m, &read_tri_mesh(&path).unwrap());
+        // gzip also detected in memory / from a reader by its magic bytes.
+        let format = Format::from_path(&path).0.unwrap();
+        assert_same(&m, &read_tri_mesh_from(&raw[..], format).unwrap());
+    }
+    // Unknown extension: content is sniffed, gzip detected by magic.
+    let path = tmp("t.off.gz");
+    let renamed = tmp("t.mesh");
+    std::fs::copy(&path, &renamed).unwrap();
+    assert_same(&m, &read_tri_mesh(&renamed).unwrap());
+}
+
+#[test]
+fn combinatorial_mesh_written_with_zero_positions() {
+    let m = TriMesh::combinatorial(4, vec![[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]]);
+    for (format, binary) in [
+        (Format::Off, false),
+        (Format::Obj, false),
+        (Format::Ply, false),
+        (Format::Ply, true),
+    ] {
+        let back = read_tri_mesh_bytes(&to_bytes(&m, format, binary), Some(format)).unwrap();
+        assert_eq!(back.faces, m.faces);
+        assert_eq!(back.positions, Some(vec![[0.0; 3]; 4]));
+    }
+}
+
+/// Reads quads written by our writers back with an independent parser: ply-rs-bw for PLY,
+/// a few lines of splitting for OFF and OBJ.
+#[test]
+fn quad_round_trip_all_formats() {
+    let m = cube();
+    let pos = bits(m.positions.as_ref().unwrap());
+
+    // OFF
+    let text = String::from_utf8(to_bytes(&m, Format::Off, false)).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(lines.next(), Some("OFF"));
+    assert_eq!(lines.next(), Some("8 6 0"));
+    let lines: Vec<&str> = lines.collect();
+    let read_pos: Vec<[f64; 3]> = lines[..8].iter().map(|l| xyz(l.split(' '))).collect();
+    assert_eq!(bits(&read_pos), pos);
+    let read_faces: Vec<Vec<u32>> = lines[8..]
+        .iter()
+        .map(|l| l.split(' ').map(|t| t.parse().unwrap()).collect())
+        .collect();
+    for (f, r) in m.faces.iter().zip(&read_faces) {
+        assert_eq!(r[0], 4);
+        assert_eq!(&r[1..], f);
+    }
+
+    // OBJ
+    let text = String::from_utf8(to_bytes(&m, Format::Obj, false)).unwrap();
+    let vs: Vec<[f64; 3]> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("v "))
+        .map(|l| xyz(l.split(' ')))
+        .collect();
+    assert_eq!(bits(&vs), pos);
+    let fs: Vec<Vec<u32>> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("f "))
+        .map(|l| {
+            l.split(' ')
+                .map(|t| t.parse::<u32>().unwrap() - 1)
+                .collect()
+        })
+        .collect();
+    assert_eq!(fs, m.faces.iter().map(|f| f.to_vec()).collect::<Vec<_>>());
+
+    // PLY, every encoding, read by ply-rs-bw.
+    for enc in [
+        PlyEncoding::Ascii,
+        PlyEncoding::BinaryLittleEndian,
+        PlyEncoding::BinaryBigEndian,
+    ] {
+        let mut bytes = Vec::new();
+        write_ply_to(&mut bytes, &m, enc).unwrap();
+        let (p, f) = read_with_ply_rs(&bytes);
+        assert_eq!(bits(&p), pos, "{enc:?}");
+        assert_eq!(f, m.faces.iter().map(|f| f.to_vec()).collect::<Vec<_>>());
+        // Our own reader rejects the quads, naming face 0.
+        let e = err(&bytes, Format::Ply);
+        assert!(
+            matches!(
+                e.kind,
+                K::NonTriangleFace {
+                    face: 0,
+                    corners: 4
+                }
+            ),
+            "{e}"
+        );
+    }
+
+    // Quads to files (with gzip) also round-trip through ply-rs-bw.
+    let path = tmp("cube.ply.gz");
+    write_mesh(&path, &m).unwrap();
+    let mut raw = Vec::new();
+    use std::io::Read;
+    flate2::read::GzDecoder::new(std::fs::File::open(&path).unwrap())
+        .read_to_end(&mut raw)
+        .unwrap();
+    assert!(raw.starts_with(b"ply\nformat binary_little_endian 1.0\n"));
+    assert_eq!(bits(&read_with_ply_rs(&raw).0), pos);
+}
+
+fn xyz<'a>(mut t: impl Iterator<Item = &'a str>) -> [f64; 3] {
+    [(); 3].map(|_| t.next().unwrap().parse().unwrap())
+}
+
+fn read_with_ply_rs(bytes: &[u8]) -> (Vec<[f64; 3]>, Vec<Vec<u32>>) {
+    use ply_rs_bw::parser::Parser;
+    use ply_rs_bw::ply::{DefaultElement, Property};
+    let ply = Parser::<DefaultElement>::new()
+        .read_ply(&mut &bytes[..])
+        .unwrap();
+    let num = |p: &Property| match p {
+        Property::Double(x) => *x,
+        other => panic!("{other:?}"),
+    };
+    let pos = ply.payload["vertex"]
+        .iter()
+        .map(|v| [num(&v["x"]), num(&v["y"]), num(&v["z"])])
+        .collect();
+    let faces = ply.payload["face"]
+        .iter()
+        .map(|f| match &f["vertex_indices"] {
+            Property::ListUInt(l) => l.clone(),
+            other => panic!("{other:?}"),
+        })
+        .collect();
+    (pos, faces)
+}
+
+/// A PLY file written by ply-rs-bw (float coordinates, `int` indices, an extra element and
+/// extra properties) reads with our reader, in all three encodings.
+#[test]
+fn reads_ply_written_by_ply_rs_bw() {
+    use ply_rs_bw::ply::{
+        Addable, DefaultElement, ElementDef, Encoding, Ply, Property, PropertyDef, PropertyType,
+        ScalarType,
+    };
+    use ply_rs_bw::writer::Writer;
+    let mut m = octahedron();
+    // Coordinates representable as finite f32.
+    for (i, p) in m.positions.as_mut().unwrap().iter_mut().enumerate() {
+        *p = [i as f64 * 0.1, -(i as f64) / 3.0, 1e-3 * i as f64];
+    }
+    for enc in [
+        Encoding::Ascii,
+        Encoding::BinaryLittleEndian,
+        Encoding::BinaryBigEndian,
+    ] {
+        let mut ply = Ply::<DefaultElement>::new();
+        ply.header.encoding = enc;
+        let mut v = ElementDef::new("vertex".into());
+        for n in ["x", "y", "z"] {
+            v.properties.add(PropertyDef::new(
+                n.into(),
+                PropertyType::Scalar(ScalarType::Float),
+            ));
+        }
+        v.properties.add(PropertyDef::new(
+            "red".into(),
+            PropertyType::Scalar(ScalarType::UChar),
+        ));
+        v.count = m.vertex_count;
+        ply.header.elements.add(v);
+        let mut e = ElementDef::new("edge".into());
+        e.properties.add(PropertyDef::new(
+            "ends".into(),
+            PropertyType::List(ScalarType::UShort, ScalarType::Double),
+        ));
+        e.count = 2;
+        ply.header.elements.add(e);
+        let mut f = ElementDef::new("face".into());
+        f.properties.add(PropertyDef::new(
+            "vertex_index".into(),
+            PropertyType::List(ScalarType::UChar, ScalarType::Int),
+        ));
+        f.count = m.faces.len();
+        ply.header.elements.add(f);
+
+        let p = m.positions.as_ref().unwrap();
+        let verts = p
+            .iter()
+            .map(|q| {
+                let mut el = DefaultElement::new();
+                for (n, x) in ["x", "y", "z"].iter().zip(q) {
+                    el.insert((*n).into(), Property::Float(*x as f32));
+                }
+                el.insert("red".into(), Property::UChar(200));
+                el
+            })
+            .collect();
+        ply.payload.insert("vertex".into(), verts);
+        let edges = (0..2)
+            .map(|i| {
+                let mut el = DefaultElement::new();
+                el.insert("ends".into(), Property::ListDouble(vec![1.5; i * 3]));
+                el
+            })
+            .collect();
+        ply.payload.insert("edge".into(), edges);
+        let faces = m
+            .faces
+            .iter()
+            .map(|f| {
+                let mut el = DefaultElement::new();
+                el.insert(
+                    "vertex_index".into(),
+                    Property::ListInt(f.iter().map(|&i| i as i32).collect()),
+                );
+                el
+            })
+            .collect();
+        ply.payload.insert("face".into(), faces);
+        let mut bytes = Vec::new();
+        Writer::new().write_ply(&mut bytes, &mut ply).unwrap();
+
+        let back = read_tri_mesh_bytes(&bytes, None).unwrap();
+        assert_eq!(back.faces, m.faces, "{enc:?}");
+        // Binary: the f32 value widened; ascii: the decimal text ply-rs-bw wrote, read as f64.
+        let expect: Vec<[f64; 3]> = p
+            .iter()
+            .map(|q| {
+                q.map(|x| match enc {
+                    Encoding::Ascii => (x as f32).to_string().parse().unwrap(),
+                    _ => f64::from(x as f32),
+                })
+            })
+            .collect();
+        assert_eq!(bits(back.positions.as_ref().unwrap()), bits(&expect));
+    }
+}
+
+#[test]
+fn writer_rejects_inconsistent_meshes_before_writing() {
+    let mut m = octahedron();
+    m.faces[3][1] = 6;
+    let mut out = Vec::new();
+    let e = write_mesh_to(&mut out, &m, Format::Off, false).unwrap_err();
+    assert!(matches!(
+        e,
+        WriteError::IndexOutOfRange {
+            face: 3,
+            index: 6,
+            vertex_count: 6
+        }
+    ));
+    assert!(out.is_empty());
+    let mut m = octahedron();
+    m.positions.as_mut().unwrap()[2][1] = f64::NAN;
+    let e = write_mesh_to(&mut out, &m, Format::Obj, false).unwrap_err();
+    assert!(matches!(e, WriteError::NonFinitePosition { vertex: 2 }));
+    let mut m = octahedron();
+    m.vertex_count = 7;
+    let e = write_mesh_to(&mut out, &m, Format::Ply, true).unwrap_err();
+    assert!(matches!(
+        e,
+        WriteError::PositionCountMismatch {
+            vertex_count: 7,
+            positions: 6
+        }
+    ));
+    let e = write_mesh(&tmp("x.stl"), &octahedron()).unwrap_err();
+    assert!(matches!(e, WriteError::UnknownFormat(_)));
+    assert!(out.is_empty());
+}
+
+// ---------------------------------------------------------------- shared meshes
+
+struct ManifestRow {
+    file: String,
+    v: usize,
+    f: usize,
+}
+
+fn manifest() -> Vec<ManifestRow> {
+    let text = std::fs::read_to_string(format!("{MESHES}/manifest.csv")).unwrap();
+    let mut lines = text.lines();
+    let head: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
+    let (cf, cv, cfa) = (col("file"), col("V"), col("F"));
+    assert!(
+        cf < 6 && cv < 6 && cfa < 6,
+        "only the first columns are parsed"
+    );
+    lines
+        .filter(|l| !l.trim().is_empty())
+        .map(|l| {
+            let c: Vec<&str> = l.splitn(7, ',').collect();
+            ManifestRow {
+                file: c[cf].to_string(),
+                v: c[cv].parse().unwrap(),
+                f: c[cfa].parse().unwrap(),
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn every_closed_shared_mesh_reads_with_manifest_counts() {
+    let rows = manifest();
+    let closed: Vec<&ManifestRow> = rows
+        .iter()
+        .filter(|r| r.file.starts_with("closed/"))
+        .collect();
+    let on_disk = std::fs::read_dir(format!("{MESHES}/closed"))
+        .unwrap()
+        .filter(|e| {
+            e.as_ref()
+                .unwrap()
+                .file_name()
+                .to_string_lossy()
+                .ends_with(".off.gz")
+        })
+        .count();
+    assert!(on_disk > 0);
+    assert_eq!(closed.len(), on_disk, "manifest lists every closed file");
+    for r in closed {
+        let path = PathBuf::from(format!("{MESHES}/{}", r.file));
+        let m = read_tri_mesh(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(m.faces.len(), r.f, "{}", r.file);
+        let used: HashSet<u32> = m.faces.iter().flatten().copied().collect();
+        assert_eq!(used.len(), r.v, "{}", r.file);
+        assert!(r.v <= m.vertex_count, "{}", r.file);
+        assert_eq!(m.positions.as_ref().unwrap().len(), m.vertex_count);
+    }
+}
+
+#[test]
+fn invalid_shared_meshes_still_parse() {
+    // They are not closed manifolds, but they are well-formed files: rejecting them is the
+    // job of validation, not of the reader.
+    for e in std::fs::read_dir(format!("{MESHES}/invalid")).unwrap() {
+        let path = e.unwrap().path();
+        let m = read_tri_mesh(&path).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!m.faces.is_empty(), "{}", path.display());
+    }
+}
+
+// ---------------------------------------------------------------- malformed OFF
+
+fn off_err(s: &str) -> ReadError {
+    err(s.as_bytes(), Format::Off)
+}
+
+#[test]
+fn off_accepts_variants_comments_and_colours() {
+    let s = "# leading comment\n\nCOFF 4 2 0 # counts here\n\
+             0 0 0 255 0 0 255\n1 0 0 1 1 1 1\n\n0 1 0 1 1 1 1\r\n0 0 1 1 1 1 1\n\
+             3 0 1 2 0.5 0.5 0.5\n# mid comment\n3 0 2 3\n\n# trailing\n   \n";
+    let m = read_tri_mesh_bytes(s.as_bytes(), Some(Format::Off)).unwrap();
+    assert_eq!(m.faces, vec![[0, 1, 2], [0, 2, 3]]);
+    assert_eq!(m.positions.unwrap()[3], [0.0, 0.0, 1.0]);
+    let m = read_tri_mesh_bytes(
+        b"NOFF\n3 1\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2",
+        None,
+    )
+    .unwrap();
+    assert_eq!(m.faces, vec![[0, 1, 2]]);
+}
+
+#[test]
+fn off_quad_face_is_non_triangle_with_line() {
+    let e = off_err("OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n4 0 1 2 3\n");
+    assert!(
+        matches!(
+            e.kind,
+            K::NonTriangleFace {
+                face: 1,
+                corners: 4
+            }
+        ),
+        "{e}"
+    );
+    assert_eq!(e.location, Location::Line(8));
+    assert_eq!(
+        e.to_string(),
+        "line 8: face 1 has 4 corners, only triangles are accepted"
+    );
+}
+
+#[test]
+fn off_errors_have_kind_and_line() {
+    let cases: Vec<(&str, KindCheck, usize)> = vec![
+        ("", |k| matches!(k, K::BadHeader(_)), 1),
+        ("# only a comment\n", |k| matches!(k, K::BadHeader(_)), 1),
+        ("PLY\n", |k| matches!(k, K::BadHeader(_)), 1),
+        ("4OFF\n1 0 0\n", |k| matches!(k, K::BadHeader(_)), 1),
+        ("OFF BINARY\n", |k| matches!(k, K::BadHeader(_)), 1),
+        ("OFF\n", |k| matches!(k, K::BadHeader(_)), 1),
+        ("OFF\n3\n", |k| matches!(k, K::BadHeader(_)), 2),
+        ("OFF\n1 2 3 4\n", |k| matches!(k, K::BadHeader(_)), 2),
+        (
+            "OFF\n-3 1 0\n",
+            |k| matches!(k, K::BadNumber { token } if token == "-3"),
+            2,
+        ),
+        (
+            "OFF\n3 x 0\n",
+            |k| matches!(k, K::BadNumber { token } if token == "x"),
+            2,
+        ),
+        // A vertex with a non-numeric, a non-finite, or a missing coordinate.
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 zero\n0 1 0\n3 0 1 2\n",
+            |k| matches!(k, K::BadNumber { token } if token == "zero"),
+            4,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n",
+            |k| matches!(k, K::BadNumber { .. }),
+            4,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n",
+            |k| matches!(k, K::BadNumber { .. }),
+            4,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n",
+            |k| {
+                matches!(
+                    k,
+                    K::MissingValue {
+                        expected: "z coordinate"
+                    }
+                )
+            },
+            4,
+        ),
+        // Faces: missing index, non-numeric, negative, out of range, beyond u32 / i64.
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n",
+            |k| matches!(k, K::MissingValue { .. }),
+            6,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 two\n",
+            |k| matches!(k, K::BadNumber { token } if token == "two"),
+            6,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3.0 0 1 2\n",
+            |k| matches!(k, K::BadNumber { .. }),
+            6,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n",
+            |k| {
+                matches!(
+                    k,
+                    K::IndexOutOfRange {
+                        face: 0,
+                        index: -1,
+                        vertex_count: 3
+                    }
+                )
+            },
+            6,
+        ),
+        (
+            "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 3\n",
+            |k| {
+                matches!(
+                    k,
+                    K::IndexOutOfRange {
+                        face: 1,
+                        index: 3,
+                        ..
+                    }
+                )
+            },
+            7,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 4294967296\n",
+            |k| {
+                matches!(
+                    k,
+                    K::IndexOutOfRange {
+                        index: 4294967296,
+                        ..
+                    }
+                )
+            },
+            6,
+        ),
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 99999999999999999999\n",
+            |k| matches!(k, K::BadNumber { .. }),
+            6,
+        ),
+        // Fewer records than declared.
+        // The face line is taken as the 4th vertex (extra values ignored); then no face.
+        (
+            "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "faces",
+                        declared: 1,
+                        found: 0
+                    }
+                )
+            },
+            6,
+        ),
+        (
+            "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n# no more\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "faces",
+                        declared: 2,
+                        found: 1
+                    }
+                )
+            },
+            7,
+        ),
+        (
+            "OFF\n3 0 0\n0 0 0\n1 0 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "vertices",
+                        declared: 3,
+                        found: 2
+                    }
+                )
+            },
+            4,
+        ),
+        // More faces than declared.
+        (
+            "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n\n3 0 2 1\n3 1 2 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "faces",
+                        declared: 1,
+                        found: 3
+                    }
+                )
+            },
+            8,
+        ),
+        // Impossible counts.
+        (
+            "OFF\n1000000000000 1 0\n0 0 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountTooLarge {
+                        what: "vertices",
+                        ..
+                    }
+                )
+            },
+            2,
+        ),
+        (
+            "OFF 3 18446744073709551615 0\n0 0 0\n1 0 0\n0 1 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "faces",
+                        declared: u64::MAX,
+                        found: 0
+                    }
+                )
+            },
+            4,
+        ),
+        (
+            "OFF\n4294967295 4294967295\n0 0 0\n1 1 1",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "vertices",
+                        declared: 4294967295,
+                        found: 2
+                    }
+                )
+            },
+            4,
+        ),
+        (
+            "OFF\n3 1 0 99999999999999999999\n",
+            |k| matches!(k, K::BadHeader(_)),
+            2,
+        ),
+    ];
+    for (input, kind_ok, line) in cases {
+        let e = off_err(input);
+        assert!(kind_ok(&e.kind), "{input:?}: {e:?}");
+        assert_eq!(e.location, Location::Line(line), "{input:?}: {e}");
+    }
+}
+
+#[test]
+fn huge_header_counts_fail_fast_without_allocating() {
+    let inputs: Vec<(Vec<u8>, Format)> = vec![
+        (
+            b"OFF\n1000000000000 1000000000000 0\n0 0 0\n".to_vec(),
+            Format::Off,
+        ),
+        (
+            b"OFF\n4000000000 4000000000 0\n0 0 0\n".to_vec(),
+            Format::Off,
+        ),
+        (
+            b"ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n\
+              property float x\nproperty float y\nproperty float z\nend_header\n0123456789"
+                .to_vec(),
+            Format::Ply,
+        ),
+        (
+            b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+              property float z\nelement face 18446744073709551615\n\
+              property list uchar int vertex_indices\nend_header\n0 0 0\n"
+                .to_vec(),
+            Format::Ply,
+        ),
+        (
+            b"ply\nformat binary_big_endian 1.0\nelement vertex 0\nproperty float x\n\
+              property float y\nproperty float z\nelement junk 18446744073709551615\n\
+              property double w\nend_header\n"
+                .to_vec(),
+            Format::Ply,
+        ),
+    ];
+    for (bytes, format) in inputs {
+        let t = Instant::now();
+        let e = read_tri_mesh_bytes(&bytes, Some(format)).unwrap_err();
+        assert!(
+            matches!(
+                e.kind,
+                K::CountTooLarge { .. } | K::CountMismatch { .. } | K::Truncated { .. }
+            ),
+            "{}: {e}",
+            String::from_utf8_lossy(&bytes)
+        );
+        assert_ne!(e.location, Location::Unknown);
+        assert!(t.elapsed() < Duration::from_millis(100));
+    }
+}
+
+// ---------------------------------------------------------------- malformed OBJ
+
+#[test]
+fn obj_features_and_indices_as_in_file() {
+    let s = "# comment\nmtllib x.mtl\no a\nv 0 0 0\nv 1 0 0 1.0\nv 0 1 0 0.5 0.5 0.5\n\
+             vn 0 0 1\nvt 0 0\nv 9 9 9\ng g1\nusemtl m\ns off\nf 1/1/1 2/1/1 3/1/1\n\
+             o b\nv 0 0 1\nf -4//1 -2 -1\nf 2/1 5 1\n";
+    let m = read_tri_mesh_bytes(s.as_bytes(), Some(Format::Obj)).unwrap();
+    // Vertex 4 (9 9 9) is unreferenced and kept; indices stay as in the file.
+    assert_eq!(m.vertex_count, 5);
+    assert_eq!(m.faces, vec![[0, 1, 2], [1, 3, 4], [1, 4, 0]]);
+    assert_eq!(m.positions.unwrap()[4], [0.0, 0.0, 1.0]);
+}
+
+#[test]
+fn obj_errors_have_kind_and_line() {
+    let cases: Vec<(&str, KindCheck, Location)> = vec![
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3 4\n",
+            |k| {
+                matches!(
+                    k,
+                    K::NonTriangleFace {
+                        face: 0,
+                        corners: 4
+                    }
+                )
+            },
+            Location::Line(5),
+        ),
+        (
+            "v 0 0 0\nv 1 0 0\nf 1 2\n",
+            |k| {
+                matches!(
+                    k,
+                    K::NonTriangleFace {
+                        face: 0,
+                        corners: 2
+                    }
+                )
+            },
+            Location::Line(3),
+        ),
+        (
+            "v 0 0 0\nv 1 0 x\n",
+            |k| matches!(k, K::BadNumber { token } if token == "x"),
+            Location::Line(2),
+        ),
+        (
+            "v 0 0 0\nv 1 0 NaN\n",
+            |k| matches!(k, K::BadNumber { .. }),
+            Location::Line(2),
+        ),
+        (
+            "v 0 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::MissingValue {
+                        expected: "z coordinate"
+                    }
+                )
+            },
+            Location::Line(1),
+        ),
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 a\n",
+            |k| matches!(k, K::BadNumber { token } if token == "a"),
+            Location::Line(5),
+        ),
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n",
+            |k| matches!(k, K::Obj(_)),
+            Location::Line(4),
+        ),
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n",
+            |k| {
+                matches!(
+                    k,
+                    K::IndexOutOfRange {
+                        face: 0,
+                        index: -1,
+                        vertex_count: 3
+                    }
+                )
+            },
+            Location::Line(4),
+        ),
+        (
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n# x\n\nf 1 2 4\nf 1 2 3\n",
+            |k| {
+                matches!(
+                    k,
+                    K::IndexOutOfRange {
+                        face: 1,
+                        index: 3,
+                        vertex_count: 3
+                    }
+                )
+            },
+            Location::Line(7),
+        ),
+        (
+            "v 0 0 0\nf 1 1 9999999999\n",
+            |k| matches!(k, K::IndexOutOfRange { face: 0, .. }),
+            Location::Line(2),
+        ),
+        (
+            "v 0 0 0\nf 1/1/1/1 1 1\n",
+            |k| matches!(k, K::Obj(_)),
+            Location::Line(2),
+        ),
+    ];
+    for (input, kind_ok, loc) in cases {
+        let e = err(input.as_bytes(), Format::Obj);
+        assert!(kind_ok(&e.kind), "{input:?}: {e:?}");
+        assert_eq!(e.location, loc, "{input:?}: {e}");
+    }
+}
+
+// ---------------------------------------------------------------- malformed PLY
+
+const PLY_HEAD: &str = "ply\nformat ascii 1.0\ncomment c\nelement vertex 3\nproperty float x\n\
+    property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\n\
+    end_header\n";
+
+#[test]
+fn ply_errors_have_kind_and_location() {
+    let ok = format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+    assert_eq!(
+        read_tri_mesh_bytes(ok.as_bytes(), None).unwrap().faces,
+        vec![[0, 1, 2]]
+    );
+    let cases: Vec<(String, KindCheck, Location)> = vec![
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n4 0 1 2 0\n"),
+            |k| {
+                matches!(
+                    k,
+                    K::NonTriangleFace {
+                        face: 0,
+                        corners: 4
+                    }
+                )
+            },
+            Location::Line(14),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 q\n0 1 0\n3 0 1 2\n"),
+            |k| matches!(k, K::BadNumber { token } if token == "q"),
+            Location::Line(12),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 nan\n0 1 0\n3 0 1 2\n"),
+            |k| matches!(k, K::BadNumber { .. }),
+            Location::Line(12),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
+            |k| {
+                matches!(
+                    k,
+                    K::IndexOutOfRange {
+                        face: 0,
+                        index: 3,
+                        vertex_count: 3
+                    }
+                )
+            },
+            Location::Line(14),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n"),
+            |k| matches!(k, K::IndexOutOfRange { index: -1, .. }),
+            Location::Line(14),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n3 0 1\n"),
+            |k| matches!(k, K::Truncated { .. }),
+            Location::Line(14),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 2\n"),
+            |k| matches!(k, K::TrailingData { .. }),
+            Location::Line(15),
+        ),
+        (
+            format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n300 0 1 2\n"),
+            |k| matches!(k, K::BadNumber { .. }),
+            Location::Line(14),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float x\n".into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(5),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex 1\nelement vertex 1\n".into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(4),
+        ),
+        (
+            "ply\nformat ascii 2.0\n".into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(2),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex -1\n".into(),
+            |k| matches!(k, K::BadNumber { .. }),
+            Location::Line(3),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n\
+             end_header\n0 0\n"
+                .into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(3),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n".into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(5),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\nproperty float y\n\
+             property float z\nelement face 0\nproperty list uchar float vertex_indices\n"
+                .into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(8),
+        ),
+        (
+            "ply\nformat ascii 1.0\nproperty float x\n".into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(3),
+        ),
+        (
+            "ply\nformat ascii 1.0\nelement vertex 0\nproperty flot x\n".into(),
+            |k| matches!(k, K::BadHeader(_)),
+            Location::Line(4),
+        ),
+    ];
+    for (input, kind_ok, loc) in cases {
+        let e = err(input.as_bytes(), Format::Ply);
+        assert!(kind_ok(&e.kind), "{input:?}: {e:?}");
+        assert_eq!(e.location, loc, "{input:?}: {e}");
+    }
+}
+
+fn binary_ply(body: &[u8], nv: usize, nf: usize) -> Vec<u8> {
+    let mut b = format!(
+        "ply\nformat binary_little_endian 1.0\nelement vertex {nv}\nproperty float x\n\
+         property float y\nproperty float z\nelement face {nf}\n\
+         property list uchar int vertex_indices\nend_header\n"
+    )
+    .into_bytes();
+    b.extend_from_slice(body);
+    b
+}
+
+#[test]
+fn binary_ply_errors_have_byte_offsets() {
+    let mut body = Vec::new();
+    for p in [[0f32, 0., 0.], [1., 0., 0.], [0., 1., 0.]] {
+        for x in p {
+            body.extend_from_slice(&x.to_le_bytes());
+        }
+    }
+    let header_len = binary_ply(&[], 3, 1).len();
+    let face = |n: u8, idx: [i32; 3]| {
+        let mut f = vec![n];
+        for i in idx {
+            f.extend_from_slice(&i.to_le_bytes());
+        }
+        f
+    };
+    let good = [body.clone(), face(3, [0, 1, 2])].concat();
+    assert_eq!(
+        read_tri_mesh_bytes(&binary_ply(&good, 3, 1), None)
+            .unwrap()
+            .faces,
+        vec![[0, 1, 2]]
+    );
+
+    // Truncated in the middle of the last index.
+    let e = err(&binary_ply(&good[..good.len() - 2], 3, 1), Format::Ply);
+    assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+    assert_eq!(
+        e.location,
+        Location::ByteOffset((header_len + 36 + 1 + 8) as u64)
+    );
+
+    // Index out of range, at the offset of the bad index.
+    let e = err(
+        &binary_ply(&[body.clone(), face(3, [0, 7, 2])].concat(), 3, 1),
+        Format::Ply,
+    );
+    assert!(
+        matches!(
+            e.kind,
+            K::IndexOutOfRange {
+                face: 0,
+                index: 7,
+                ..
+            }
+        ),
+        "{e}"
+    );
+    assert_eq!(
+        e.location,
+        Location::ByteOffset((header_len + 36 + 1 + 4) as u64)
+    );
+
+    // Quad: reported at the list count.
+    let mut quad = face(4, [0, 1, 2]);
+    quad.extend_from_slice(&0i32.to_le_bytes());
+    let e = err(
+        &binary_ply(&[body.clone(), quad].concat(), 3, 1),
+        Format::Ply,
+    );
+    assert!(
+        matches!(
+            e.kind,
+            K::NonTriangleFace {
+                face: 0,
+                corners: 4
+            }
+        ),
+        "{e}"
+    );
+    assert_eq!(e.location, Location::ByteOffset((header_len + 36) as u64));
+
+    // Non-finite coordinate.
+    let mut nan = body.clone();
+    nan[16..20].copy_from_slice(&f32::INFINITY.to_le_bytes());
+    let e = err(
+        &binary_ply(&[nan, face(3, [0, 1, 2])].concat(), 3, 1),
+        Format::Ply,
+    );
+    assert!(matches!(e.kind, K::BadNumber { .. }), "{e}");
+    assert_eq!(e.location, Location::ByteOffset((header_len + 16) as u64));
+
+    // Trailing garbage (whitespace is tolerated).
+    let mut tail = binary_ply(&good, 3, 1);
+    tail.extend_from_slice(b"\n \n");
+    assert!(read_tri_mesh_bytes(&tail, None).is_ok());
+    tail.push(0);
+    let e = err(&tail, Format::Ply);
+    assert!(matches!(e.kind, K::TrailingData { .. }), "{e}");
+
+    // A list count byte claiming 255 items of an ignored list: truncation, not a hang.
+    let mut b = b"ply\nformat binary_little_endian 1.0\nelement vertex 0\nproperty float x\n\
+        property float y\nproperty float z\nelement junk 1\nproperty list uint double w\n\
+        end_header\n"
+        .to_vec();
+    b.extend_from_slice(&u32::MAX.to_le_bytes());
+    b.extend_from_slice(&[0; 16]);
+    let t = Instant::now();
+    let e = err(&b, Format::Ply);
+    assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+    assert!(t.elapsed() < Duration::from_secs(1));
+}
+
+// ---------------------------------------------------------------- format selection, gzip
+
+#[test]
+fn unknown_format_and_bad_gzip() {
+    let e = read_tri_mesh_bytes(b"solid cube\nfacet normal 0 0 1\n", None).unwrap_err();
+    assert!(matches!(e.kind, K::UnknownFormat));
+    let e = read_tri_mesh_bytes(&[0x1f, 0x8b, 8, 0, 1, 2], None).unwrap_err();
+    assert!(matches!(e.kind, K::Decompress(_)));
+    let path = tmp("not_gzip.off.gz");
+    std::fs::write(&path, "OFF\n0 0 0\n").unwrap();
+    let e = read_tri_mesh(&path).unwrap_err();
+    assert!(matches!(e.kind, K::Decompress(_)), "{e}");
+    assert_eq!(e.path.as_deref(), Some(path.as_path()));
+    let e = read_tri_mesh(&tmp("does_not_exist.off")).unwrap_err();
+    assert!(matches!(e.kind, K::Io(_)));
+    // Errors read from a path show it.
+    let path = tmp("bad.off");
+    std::fs::write(&path, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 0\n").unwrap();
+    let e = read_tri_mesh(&path).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        format!(
+            "{}:line 6: face 0 has 4 corners, only triangles are accepted",
+            path.display()
+        )
+    );
+}
+
+// ---------------------------------------------------------------- no panics
+
+/// Every prefix and many single-byte corruptions of valid files in each format, with and
+/// without a format hint: the readers must return (Ok or Err), never panic.
+#[test]
+fn corrupted_inputs_never_panic() {
+    let m = octahedron();
+    let mut samples = vec![
+        to_bytes(&m, Format::Off, false),
+        to_bytes(&m, Format::Obj, false),
+        to_bytes(&m, Format::Ply, false),
+        to_bytes(&m, Format::Ply, true),
+    ];
+    let mut be = Vec::new();
+    write_ply_to(&mut be, &m, PlyEncoding::BinaryBigEndian).unwrap();
+    samples.push(be);
+    let mut gz = Vec::new();
+    {
+        use std::io::Write;
+        let mut enc = flate2::write::GzEncoder::new(&mut gz, flate2::Compression::fast());
+        enc.write_all(&samples[0]).unwrap();
+        enc.finish().unwrap();
+    }
+    samples.push(gz);
+    let replacements = [0u8, b'\n', b' ', b'-', b'9', b'#', 0xff, b'4', b'e'];
+    let mut state = 0x9E37_79B9_7F4A_7C15u64;
+    let mut rng = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state
+    };
+    for s in &samples {
+        for cut in 0..s.len() {
+            for f in [
+                None,
+                Some(Format::Off),
+                Some(Format::Obj),
+                Some(Format::Ply),
+            ] {
+                let _ = read_tri_mesh_bytes(&s[..cut], f);
+            }
+        }
+        for _ in 0..3000 {
+            let mut c = s.clone();
+            for _ in 0..=(rng() % 3) {
+                let i = (rng() % c.len() as u64) as usize;
+                c[i] = replacements[(rng() % replacements.len() as u64) as usize];
+            }
+            let _ = read_tri_mesh_bytes(&c, None);
+        }
+    }
+}
