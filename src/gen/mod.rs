@@ -10,9 +10,9 @@ mod standard;
 mod subdivide;
 
 pub use brick::{
-    brick, brick_counts, brick_shape_counts, brick_shaped, BrickParams, BrickShape,
+    brick, brick_counts, brick_shape_counts, brick_shaped, brick_target_shape, brick_with_target,
+    paper_entry, paper_family, paper_family_shape, BrickParams, BrickShape, PaperEntry,
+    PAPER_TABLE,
 };
-pub use standard::{
-    icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7,
-};
+pub use standard::{icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7};
 pub use subdivide::subdivide;
