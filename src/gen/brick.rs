@@ -664,7 +664,7 @@ const fn entry(
 
 /// The paper's counts, verbatim (group B: Table 3, C: Table 4, D: Table 5).
 ///
-/// Note: the printed rows are not all consistent with χ = 2 − 2g (e.g. C5–C7); the
+/// Note: the printed rows C5 and C7 are not consistent with χ = 2 − 2g; the
 /// triangle count and the genus are what [`paper_family`] reproduces.
 pub const PAPER_TABLE: [PaperEntry; 28] = [
     entry("B0", 0, 2_097_150, 6_291_444, 4_194_296),
