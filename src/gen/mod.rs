@@ -1,5 +1,27 @@
-//! Seeded, deterministic generators of closed triangulated surfaces.
+//! Deterministic generators of closed triangulated surfaces.
+//!
+//! Every generator returns a closed triangulated surface in the strict (simplicial)
+//! sense: every edge in exactly two triangles, every vertex link a single cycle, no
+//! duplicate or degenerate triangles, no parallel edges, every vertex used, one connected
+//! component. Same inputs (and seed) give identical outputs.
+//!
+//! - [`standard`](tetrahedron): the small classics (T4, octahedron, icosahedron, the
+//!   7-vertex torus, the 6-vertex projective plane, a 9-vertex Klein bottle);
+//! - [`brick`]: the RS paper's benchmark surfaces (Tables 3–5);
+//! - [`subdivide`]: 1-to-4 subdivision, to scale any input up;
+//! - [`random`]: random triangulations of any surface by vertex splits (a
+//!   [`crate::Triangulation`], seeded by the documented [`crate::rng`]).
 
+mod brick;
 pub mod random;
+mod standard;
+mod subdivide;
 
+pub use brick::{
+    brick, brick_counts, brick_shape_counts, brick_shaped, brick_target_shape, brick_with_target,
+    paper_entry, paper_family, paper_family_shape, BrickParams, BrickShape, PaperEntry,
+    PAPER_TABLE,
+};
 pub use random::{random, seed_surface, RandomParams, SurfaceKind};
+pub use standard::{icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7};
+pub use subdivide::subdivide;
