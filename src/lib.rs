@@ -12,6 +12,7 @@ pub mod io;
 pub mod irreducible;
 pub mod mesh;
 pub mod rng;
+pub mod spec;
 
 pub use crate::core::{
     BuildError, Component, ContractError, ContractionRecord, Corner, FaceId, FlipError, History,

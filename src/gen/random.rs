@@ -37,39 +37,6 @@ pub struct RandomParams {
     pub seed: u64,
 }
 
-/// The 7-vertex torus (Möbius–Császár), 14 faces.
-const TORUS7: [[u32; 3]; 14] = [
-    [0, 1, 2],
-    [0, 1, 6],
-    [0, 2, 3],
-    [0, 3, 4],
-    [0, 4, 5],
-    [0, 5, 6],
-    [1, 2, 4],
-    [1, 3, 5],
-    [1, 3, 6],
-    [1, 4, 5],
-    [2, 3, 5],
-    [2, 4, 6],
-    [2, 5, 6],
-    [3, 4, 6],
-];
-/// The 6-vertex projective plane (hemi-icosahedron), 10 faces.
-const RP2_6: [[u32; 3]; 10] = [
-    [0, 1, 2],
-    [0, 1, 5],
-    [0, 2, 3],
-    [0, 3, 4],
-    [0, 4, 5],
-    [1, 2, 4],
-    [1, 3, 4],
-    [1, 3, 5],
-    [2, 3, 5],
-    [2, 4, 5],
-];
-/// The tetrahedron boundary T4.
-const T4: [[u32; 3]; 4] = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]];
-
 /// Connected sum of two face lists: removes face `a_face` of `a` and the *last* face of
 /// `b`, identifies their vertices in order and renumbers `b`'s other vertices after
 /// `a`'s. The result is a simplicial closed surface with χ = χ(a) + χ(b) − 2: the only
@@ -122,12 +89,13 @@ fn consistently_oriented(faces: &[[u32; 3]], vertices: u32) -> Vec<[u32; 3]> {
 /// connected sums of `g` 7-vertex tori, or of `h` 6-vertex projective planes.
 /// Vertices `4`, `7g − 3(g−1)`, `6h − 3(h−1)` respectively.
 pub fn seed_surface(surface: SurfaceKind) -> Triangulation {
-    let (piece, piece_v, count): (&[[u32; 3]], u32, u32) = match surface {
-        SurfaceKind::Orientable(0) => (&T4, 4, 1),
-        SurfaceKind::Orientable(g) => (&TORUS7, 7, g),
-        SurfaceKind::NonOrientable(h) => (&RP2_6, 6, h.max(1)),
+    let (mesh, count) = match surface {
+        SurfaceKind::Orientable(0) => (super::tetrahedron(), 1),
+        SurfaceKind::Orientable(g) => (super::torus7(), g),
+        SurfaceKind::NonOrientable(h) => (super::projective_plane6(), h.max(1)),
     };
-    let piece = consistently_oriented(piece, piece_v);
+    let piece_v = mesh.vertex_count as u32;
+    let piece = consistently_oriented(&mesh.faces, piece_v);
     let piece = &piece[..];
     let mut faces = piece.to_vec();
     let mut nv = piece_v;

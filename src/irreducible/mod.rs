@@ -183,6 +183,11 @@ impl RetestCounter {
         }
     }
 
+    /// Whether identities are tracked.
+    pub fn is_enabled(&self) -> bool {
+        self.enabled
+    }
+
     /// ε so far.
     pub fn more_than_once(&self) -> u64 {
         self.more_than_once

@@ -1,9 +1,482 @@
-//! Work in progress.
+//! The Ramaswami–Siqueira algorithm (RS paper, Sec. 4, Algorithms 4.1–4.7).
+//!
+//! **Guarantee.** The output is irreducible (no edge passes the link condition), has the
+//! input's surface (every contraction passes the link condition), and keeps the input's
+//! vertex ids. Each edge is tested against the link condition at most once per processed
+//! vertex, and in fact at most once overall (ε = 0, checked in the tests).
+//!
+//! **Complexity.** O(g² + g·n) time, Θ(n) space (Sec. 4.7); for genus 0 every
+//! contraction happens while the first vertex is processed (Sec. 4.6).
+//!
+//! **How.** Vertices are processed in id order (the queue Q of Alg. 4.1). Processing `u`
+//! contracts edges `[u, v]` (identifying `v` with `u`) until `u` is trapped. Candidate
+//! edges are named by their other endpoint and kept in two intrusive doubly-linked lists
+//! over vertex ids: `lue` (untested; degree-3 endpoints first, Prop. 8(2)) and `lte`
+//! (tested and failed; counters `c = 0` first, Prop. 10). The counter `c(w)` of an
+//! edge `[u, w]` in `lte` is kept equal to its number of critical cycles (Prop. 11) by
+//! the time stamps `o` and `t`, so an edge that becomes contractible again is found
+//! without a second link test (Prop. 7).
+//!
+//! Departures from the printed pseudo-code (all recorded with evidence in
+//! `spec/ERRATA.md`): Alg. 4.3 l.13 uses `t(x) >= o(y)`; l.22 means `lte`; Alg. 4.2 resets
+//! `c(v)` of the initial neighbours; and the processing of `u` ends only when `lue` is
+//! empty *and* the front of `lte` is not contractible (the printed `until lue = ∅` can
+//! stop with a contractible edge left in `lte`).
 
-use super::{Options, Reduction};
-use crate::core::Triangulation;
+use std::time::Instant;
 
-/// Not yet written.
-pub fn reduce(_tri: Triangulation, _options: &Options) -> Reduction {
-    todo!("rs")
+use super::{finish, start_stats, Algorithm, Options, Reduction, RetestCounter};
+use crate::core::{History, Triangulation, VertexId};
+
+/// "−1" of the paper for the time stamps `o` and `t`, and "nil" for `n`.
+const NIL: u32 = u32::MAX;
+
+const LUE: usize = 0;
+const LTE: usize = 1;
+
+/// Two intrusive doubly-linked lists over vertex ids sharing `next`/`prev` arrays; a
+/// vertex is in at most one of them (`tag`). All operations O(1).
+#[derive(Clone, Debug)]
+pub(crate) struct Lists {
+    next: Vec<u32>,
+    prev: Vec<u32>,
+    tag: Vec<u8>,
+    head: [u32; 2],
+    tail: [u32; 2],
+    len: [usize; 2],
+}
+
+impl Lists {
+    fn new(n: usize) -> Self {
+        Lists {
+            next: vec![NIL; n],
+            prev: vec![NIL; n],
+            tag: vec![0; n],
+            head: [NIL; 2],
+            tail: [NIL; 2],
+            len: [0; 2],
+        }
+    }
+    #[inline]
+    fn contains(&self, l: usize, z: u32) -> bool {
+        self.tag[z as usize] == l as u8 + 1
+    }
+    #[inline]
+    fn front(&self, l: usize) -> Option<u32> {
+        (self.head[l] != NIL).then_some(self.head[l])
+    }
+    #[inline]
+    fn is_empty(&self, l: usize) -> bool {
+        self.head[l] == NIL
+    }
+    #[inline]
+    fn push_front(&mut self, l: usize, z: u32) {
+        debug_assert_eq!(self.tag[z as usize], 0);
+        let h = self.head[l];
+        self.next[z as usize] = h;
+        self.prev[z as usize] = NIL;
+        if h == NIL {
+            self.tail[l] = z;
+        } else {
+            self.prev[h as usize] = z;
+        }
+        self.head[l] = z;
+        self.tag[z as usize] = l as u8 + 1;
+        self.len[l] += 1;
+    }
+    #[inline]
+    fn push_back(&mut self, l: usize, z: u32) {
+        debug_assert_eq!(self.tag[z as usize], 0);
+        let t = self.tail[l];
+        self.prev[z as usize] = t;
+        self.next[z as usize] = NIL;
+        if t == NIL {
+            self.head[l] = z;
+        } else {
+            self.next[t as usize] = z;
+        }
+        self.tail[l] = z;
+        self.tag[z as usize] = l as u8 + 1;
+        self.len[l] += 1;
+    }
+    #[inline]
+    fn remove(&mut self, z: u32) {
+        let l = match self.tag[z as usize] {
+            0 => return,
+            k => (k - 1) as usize,
+        };
+        let (p, n) = (self.prev[z as usize], self.next[z as usize]);
+        if p == NIL {
+            self.head[l] = n;
+        } else {
+            self.next[p as usize] = n;
+        }
+        if n == NIL {
+            self.tail[l] = p;
+        } else {
+            self.prev[n as usize] = p;
+        }
+        self.tag[z as usize] = 0;
+        self.len[l] -= 1;
+    }
+    #[inline]
+    fn pop_front(&mut self, l: usize) -> Option<u32> {
+        let z = self.front(l)?;
+        self.remove(z);
+        Some(z)
+    }
+    fn clear(&mut self, l: usize) {
+        while self.pop_front(l).is_some() {}
+    }
+    /// The members of list `l` in order (for checks and tests).
+    pub(crate) fn members(&self, l: usize) -> Vec<u32> {
+        let mut out = Vec::with_capacity(self.len[l]);
+        let mut z = self.head[l];
+        while z != NIL {
+            out.push(z);
+            z = self.next[z as usize];
+        }
+        out
+    }
+}
+
+/// Deliberate deviations, for tests that show a check or an erratum can fail.
+#[doc(hidden)]
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct Variant {
+    /// Use the printed `until lue = ∅` loop exit of Alg. 4.2 l.34.
+    pub printed_loop_exit: bool,
+    /// Use the printed strict `t(x) > o(y)` of Alg. 4.3 l.13.
+    pub printed_strict_stamp: bool,
+    /// Skip resetting `c(v)` of the initial neighbours (as printed in Alg. 4.2).
+    pub printed_no_counter_reset: bool,
+    /// Skip the counter decrements of Alg. 4.3 (a mutation that must be caught).
+    pub skip_degree3_decrement: bool,
+}
+
+/// The state of Alg. 4.2: the triangulation K, the stack S, the vertex attributes of
+/// Table 1 (`d` is the core's degree) and the two lists.
+pub(crate) struct Rs {
+    pub(crate) tri: Triangulation,
+    pub(crate) history: History,
+    /// p: processed (or removed).
+    pub(crate) processed: Vec<bool>,
+    /// n: the vertex whose neighbour this vertex was last found to be.
+    pub(crate) nbr: Vec<u32>,
+    /// c: critical cycles through `[u, v]` (exact for edges in `lte` at Alg. 4.2 l.32).
+    pub(crate) count: Vec<u32>,
+    /// o: when v became a neighbour of u.
+    pub(crate) o: Vec<u32>,
+    /// t: when `[u, v]` left `lue`.
+    pub(crate) t: Vec<u32>,
+    pub(crate) lists: Lists,
+    /// ts: the global time stamp, incremented by each contraction.
+    pub(crate) ts: u32,
+    pub(crate) link_tests: u64,
+    counter: RetestCounter,
+    variant: Variant,
+    /// The vertex being processed and its index in processing order.
+    pub(crate) current: u32,
+    pub(crate) processed_count: u64,
+    /// Contractions made while processing the first processed vertex.
+    pub(crate) contractions_first_vertex: u64,
+    scratch: Vec<u32>,
+    scratch2: Vec<u32>,
+}
+
+/// Runs RS on `tri`. See the module documentation.
+pub fn reduce(tri: Triangulation, options: &Options) -> Reduction {
+    reduce_variant(tri, options, Variant::default()).0
+}
+
+/// RS with a deliberate [`Variant`]; also returns how many contractions happened while
+/// the first vertex was processed (Sec. 4.6).
+#[doc(hidden)]
+pub fn reduce_variant(tri: Triangulation, options: &Options, variant: Variant) -> (Reduction, u64) {
+    let started = Instant::now();
+    let mut stats = start_stats(&tri);
+    let mut rs = Rs::new(tri, options, variant);
+    rs.run();
+    stats.link_tests = rs.link_tests;
+    stats.edges_tested_more_than_once = rs.counter.more_than_once();
+    let first = rs.contractions_first_vertex;
+    (
+        finish(Algorithm::Rs, rs.tri, rs.history, stats, started),
+        first,
+    )
+}
+
+impl Rs {
+    fn new(tri: Triangulation, options: &Options, variant: Variant) -> Self {
+        let n = tri.vertex_capacity();
+        let counter = RetestCounter::new(&tri, options.count_retests);
+        Rs {
+            // Alg. 4.1: p = false, n = nil, c = 0, o = t = −1 (removed ids count as
+            // processed so the queue skips them).
+            processed: (0..n).map(|v| !tri.is_vertex(VertexId(v as u32))).collect(),
+            nbr: vec![NIL; n],
+            count: vec![0; n],
+            o: vec![NIL; n],
+            t: vec![NIL; n],
+            lists: Lists::new(n),
+            tri,
+            history: History::new(),
+            ts: 0,
+            link_tests: 0,
+            counter,
+            variant,
+            current: NIL,
+            processed_count: 0,
+            contractions_first_vertex: 0,
+            scratch: Vec::new(),
+            scratch2: Vec::new(),
+        }
+    }
+
+    #[inline]
+    fn degree(&self, v: u32) -> usize {
+        self.tri.degree(VertexId(v))
+    }
+
+    /// Alg. 4.2: the queue Q is the vertex ids in increasing order.
+    fn run(&mut self) {
+        for u in 0..self.tri.vertex_capacity() as u32 {
+            if self.processed[u as usize] {
+                continue;
+            }
+            self.process(u);
+        }
+    }
+
+    /// Alg. 4.2 l.6–36: processes `u` until it is trapped.
+    fn process(&mut self, u: u32) {
+        self.current = u;
+        let before = self.history.len();
+        // l.8–19 (and the erratum: c(v) must start at 0 for Prop. 8(6)).
+        let mut link = std::mem::take(&mut self.scratch);
+        link.clear();
+        link.extend(self.tri.link(VertexId(u)).map(|v| v.0));
+        for &v in &link {
+            let vi = v as usize;
+            self.nbr[vi] = u;
+            self.o[vi] = self.ts;
+            self.t[vi] = NIL;
+            if !self.variant.printed_no_counter_reset {
+                self.count[vi] = 0;
+            }
+            if !self.processed[vi] {
+                if self.degree(v) == 3 {
+                    self.lists.push_front(LUE, v);
+                } else {
+                    self.lists.push_back(LUE, v);
+                }
+            }
+        }
+        self.scratch = link;
+        loop {
+            // l.22–30
+            crate::spec::rs_at_line_22(self);
+            while let Some(v) = self.lists.pop_front(LUE) {
+                self.t[v as usize] = self.ts;
+                if self.degree(v) == 3 {
+                    self.degree3(u, v);
+                } else {
+                    self.test(u, v);
+                }
+                crate::spec::rs_at_line_22(self);
+            }
+            // l.31–33 (Prop. 11 holds here).
+            crate::spec::rs_at_line_32(self);
+            if self.lists.is_empty(LTE) {
+                break;
+            }
+            self.process_edge_list(u);
+            if self.lists.is_empty(LUE) {
+                let more = match self.lists.front(LTE) {
+                    Some(v) => self.degree(v) == 3 || self.count[v as usize] == 0,
+                    None => false,
+                };
+                if !more || self.variant.printed_loop_exit {
+                    break;
+                }
+            }
+        }
+        self.lists.clear(LTE);
+        self.processed[u as usize] = true;
+        if self.processed_count == 0 {
+            self.contractions_first_vertex = (self.history.len() - before) as u64;
+        }
+        self.processed_count += 1;
+        crate::spec::rs_vertex_trapped(self, u);
+    }
+
+    /// Alg. 4.6: contracts degree-3 edges at the front of `lte`, then the front edge if
+    /// its counter is 0.
+    fn process_edge_list(&mut self, u: u32) {
+        while let Some(v) = self.lists.front(LTE) {
+            if self.degree(v) != 3 {
+                break;
+            }
+            self.lists.remove(v);
+            self.degree3(u, v);
+        }
+        if let Some(v) = self.lists.front(LTE) {
+            if self.count[v as usize] == 0 {
+                self.lists.remove(v);
+                self.contract(u, v);
+            }
+        }
+    }
+
+    /// Alg. 4.3: `d(v) = 3`, so `[u, v]` is contractible unless K is T4 (Prop. 6).
+    fn degree3(&mut self, u: u32, v: u32) {
+        if self.degree(u) == 3 {
+            return; // K is T4: nothing is contractible.
+        }
+        let [x, y] = self.contract(u, v);
+        if self.variant.skip_degree3_decrement {
+            return;
+        }
+        let (tx, ty) = (self.t[x as usize], self.t[y as usize]);
+        // The critical cycle lk(v) = (u, x, y) is gone (Prop. 7). c(x) counted it iff
+        // [u, x] was tested with y already a neighbour (t(x) >= o(y)) or [u, y] was
+        // tested after [u, x] (then both counted it): see spec/ERRATA.md, E1.
+        let counted = |t_a: u32, o_b: u32, strict: bool| {
+            if strict {
+                t_a > o_b
+            } else {
+                t_a >= o_b
+            }
+        };
+        let strict = self.variant.printed_strict_stamp;
+        if tx != NIL && ty != NIL {
+            self.decrement(x);
+            self.decrement(y);
+        } else if tx != NIL && counted(tx, self.o[y as usize], strict) {
+            self.decrement(x);
+        } else if ty != NIL && counted(ty, self.o[x as usize], strict) {
+            self.decrement(y);
+        }
+    }
+
+    /// c(w) ← c(w) − 1 for `[u, w]` in `lte`; a counter reaching 0 moves to the front.
+    fn decrement(&mut self, w: u32) {
+        debug_assert!(self.lists.contains(LTE, w), "decrement of {w} not in lte");
+        let c = &mut self.count[w as usize];
+        debug_assert!(*c > 0, "critical-cycle counter of {w} underflows");
+        *c = c.saturating_sub(1);
+        if *c == 0 {
+            self.lists.remove(w);
+            self.lists.push_front(LTE, w);
+        }
+    }
+
+    /// c(w) ← c(w) + 1 for `[u, w]` in `lte`; a counter leaving 0 moves to the rear.
+    fn increment(&mut self, w: u32) {
+        let c = &mut self.count[w as usize];
+        *c += 1;
+        if *c == 1 && self.lists.contains(LTE, w) {
+            self.lists.remove(w);
+            self.lists.push_back(LTE, w);
+        }
+    }
+
+    /// Fills `scratch` with lk(v) and returns the positions of `u` in it.
+    fn link_around(&mut self, v: u32, u: u32) -> usize {
+        self.scratch.clear();
+        self.scratch.extend(self.tri.link(VertexId(v)).map(|w| w.0));
+        self.scratch
+            .iter()
+            .position(|&w| w == u)
+            .expect("u is a neighbour of v")
+    }
+
+    /// Alg. 4.4: the link test of `[u, v]` with `d(v) > 3`, counting critical cycles.
+    fn test(&mut self, u: u32, v: u32) {
+        self.link_tests += 1;
+        if self.counter.is_enabled() {
+            // Name the edge by the corner opposite it in a face of [u, v].
+            let c = self
+                .tri
+                .edge_corners(VertexId(u), VertexId(v))
+                .expect("[u, v] is an edge")[0];
+            self.counter.tested(c);
+        }
+        let i = self.link_around(v, u);
+        let d = self.scratch.len();
+        let ov = self.o[v as usize];
+        let mut cv = 0u32;
+        // lk(v) minus u and the link {x, y} of [u, v] (its cyclic neighbours of u) is Π_uv.
+        for k in 2..d - 1 {
+            let z = self.scratch[(i + k) % d];
+            if self.nbr[z as usize] == u {
+                cv += 1; // (u, v, z) is a critical cycle
+                let tz = self.t[z as usize];
+                if tz != NIL && tz < ov {
+                    self.increment(z);
+                }
+            }
+        }
+        self.count[v as usize] = cv;
+        if cv == 0 {
+            self.contract(u, v);
+        } else {
+            self.lists.push_back(LTE, v);
+        }
+    }
+
+    /// Alg. 4.5: contracts `[u, v]` (identifying v with u) and updates the attributes of
+    /// the new neighbours, `lue`, and the counters of edges in `lte`. Returns `[x, y]`.
+    fn contract(&mut self, u: u32, v: u32) -> [u32; 2] {
+        // l.4–11 on Π_uv, collected before the collapse.
+        let i = self.link_around(v, u);
+        let d = self.scratch.len();
+        let mut pi = std::mem::take(&mut self.scratch2);
+        pi.clear();
+        pi.extend((2..d - 1).map(|k| self.scratch[(i + k) % d]));
+        self.ts += 1;
+        for &z in &pi {
+            let zi = z as usize;
+            self.nbr[zi] = u;
+            self.count[zi] = 0;
+            self.o[zi] = self.ts;
+            self.t[zi] = NIL;
+        }
+        self.processed[v as usize] = true;
+        let rec = self
+            .tri
+            .contract_tested(VertexId(u), VertexId(v), &mut self.history);
+        self.counter.contracted(&rec);
+        crate::spec::rs_after_contraction(self, &rec, &pi);
+        let [x, y] = rec.link.map(|w| w.0);
+        // l.19–24: keep degree-3 endpoints at the front of lue (Prop. 8(2)).
+        for w in [x, y] {
+            if self.degree(w) == 3 && !self.processed[w as usize] && self.t[w as usize] == NIL {
+                self.lists.remove(w);
+                self.lists.push_front(LUE, w);
+            }
+        }
+        // l.25–43
+        for &z in &pi {
+            if !self.processed[z as usize] {
+                if self.degree(z) == 3 {
+                    self.lists.push_front(LUE, z);
+                } else {
+                    self.lists.push_back(LUE, z);
+                }
+            } else {
+                // New critical cycles (u, z, w) through an edge [u, w] already in lte.
+                let j = self.link_around(z, u);
+                let dz = self.scratch.len();
+                for k in 2..dz - 1 {
+                    let w = self.scratch[(j + k) % dz];
+                    if self.nbr[w as usize] == u && self.t[w as usize] != NIL {
+                        self.increment(w);
+                    }
+                }
+            }
+        }
+        self.scratch2 = pi;
+        [x, y]
+    }
 }

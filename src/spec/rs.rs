@@ -1,0 +1,191 @@
+//! Propositions 8–11 and Lemma 5 of the RS paper as checks on the state of
+//! [`crate::irreducible::rs`].
+
+#![cfg_attr(not(any(debug_assertions, feature = "invariants")), allow(unused))]
+
+use super::oracle::{critical_cycles_through, is_trapped_naive};
+use super::FULL_CHECK_DEGREE;
+use crate::core::{ContractionRecord, VertexId};
+use crate::irreducible::rs::Rs;
+
+const NIL: u32 = u32::MAX;
+
+macro_rules! spec_fail {
+    ($rs:expr, $stmt:literal, $($fmt:tt)*) => {
+        panic!(
+            "specification violated: {} (u = {}, ts = {}): {}",
+            $stmt,
+            $rs.current,
+            $rs.ts,
+            format!($($fmt)*)
+        )
+    };
+}
+
+/// Proposition 8 (1)–(6), at the top of the `while` loop of Alg. 4.2 (l.22): every
+/// `[u, w]` in `lue` is an edge of K, degree-3 endpoints come first, `p(w)` is false,
+/// `o(w) ≠ −1`, `t(w) = −1`, `c(w) = 0`. (8)(7), "never tested before", is checked by
+/// the ε = 0 test over every input.) Also Proposition 9 (2) and 10 on `lte`.
+#[inline]
+pub(crate) fn rs_at_line_22(rs: &Rs) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let u = rs.current;
+        let lue = rs.lists.members(0);
+        let mut seen_big = false;
+        for &w in lue.iter().take(FULL_CHECK_DEGREE) {
+            let wi = w as usize;
+            if !rs.tri.has_edge(VertexId(u), VertexId(w)) {
+                spec_fail!(rs, "Proposition 8(1)", "[{u}, {w}] in lue is not an edge");
+            }
+            let big = rs.tri.degree(VertexId(w)) > 3;
+            if seen_big && !big {
+                spec_fail!(
+                    rs,
+                    "Proposition 8(2)",
+                    "degree-3 [{u}, {w}] follows a higher-degree edge in lue"
+                );
+            }
+            seen_big |= big;
+            if rs.processed[wi] {
+                spec_fail!(
+                    rs,
+                    "Proposition 8(3)",
+                    "p({w}) is true for [{u}, {w}] in lue"
+                );
+            }
+            if rs.o[wi] == NIL {
+                spec_fail!(rs, "Proposition 8(4)", "o({w}) = -1 for [{u}, {w}] in lue");
+            }
+            if rs.t[wi] != NIL {
+                spec_fail!(
+                    rs,
+                    "Proposition 8(5)",
+                    "t({w}) = {} for [{u}, {w}] in lue",
+                    rs.t[wi]
+                );
+            }
+            if rs.count[wi] != 0 {
+                spec_fail!(
+                    rs,
+                    "Proposition 8(6)",
+                    "c({w}) = {} for [{u}, {w}] in lue",
+                    rs.count[wi]
+                );
+            }
+        }
+        check_lte_order(rs);
+    }
+}
+
+/// Proposition 9 (2) and Proposition 10 on `lte`.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+fn check_lte_order(rs: &Rs) {
+    let u = rs.current;
+    let mut seen_positive = false;
+    for &w in rs.lists.members(1).iter().take(FULL_CHECK_DEGREE) {
+        let wi = w as usize;
+        if !(rs.o[wi] != NIL && rs.t[wi] != NIL && rs.t[wi] >= rs.o[wi]) {
+            spec_fail!(
+                rs,
+                "Proposition 9(2)",
+                "[{u}, {w}] in lte has t = {}, o = {}",
+                rs.t[wi] as i64,
+                rs.o[wi] as i64
+            );
+        }
+        let zero = rs.count[wi] == 0;
+        if seen_positive && zero {
+            spec_fail!(
+                rs,
+                "Proposition 10",
+                "[{u}, {w}] with c = 0 follows an edge with c > 0 in lte"
+            );
+        }
+        seen_positive |= !zero;
+    }
+}
+
+/// Proposition 11, whenever Alg. 4.2 l.32 is reached: for every `[u, w]` in `lte`,
+/// `c(w)` equals the number of critical cycles through `[u, w]` in K (counted by the
+/// naive oracle). Also Propositions 9 (2) and 10.
+#[inline]
+pub(crate) fn rs_at_line_32(rs: &Rs) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let u = rs.current;
+        for &w in rs.lists.members(1).iter().take(FULL_CHECK_DEGREE) {
+            let truth = critical_cycles_through(&rs.tri, VertexId(u), VertexId(w));
+            let Some(truth) = truth else {
+                spec_fail!(
+                    rs,
+                    "Proposition 9 / 8(1)",
+                    "[{u}, {w}] in lte is not an edge"
+                );
+            };
+            if rs.count[w as usize] as usize != truth {
+                spec_fail!(
+                    rs,
+                    "Proposition 11",
+                    "c({w}) = {} but [{u}, {w}] lies on {truth} critical cycles",
+                    rs.count[w as usize]
+                );
+            }
+        }
+        check_lte_order(rs);
+    }
+}
+
+/// When the processing of `u` ends, `u` is trapped (Def. 4; the loop of Alg. 4.2 ends
+/// only when no edge at `u` is contractible).
+#[inline]
+pub(crate) fn rs_vertex_trapped(rs: &Rs, u: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let v = VertexId(u);
+        if rs.tri.degree(v) <= FULL_CHECK_DEGREE && !is_trapped_naive(&rs.tri, v) {
+            let w = rs
+                .tri
+                .link(v)
+                .find(|&w| rs.tri.link_condition_naive(v, w))
+                .map_or(u32::MAX, |w| w.0);
+            spec_fail!(
+                rs,
+                "Definition 4 (u trapped after processing)",
+                "edge [{u}, {w}] is still contractible"
+            );
+        }
+    }
+}
+
+/// Lemma 5, locally: after a contraction, every processed (hence trapped) vertex of the
+/// affected neighbourhood — `x`, `y` and `u`'s new neighbours — is still trapped.
+#[inline]
+pub(crate) fn rs_after_contraction(rs: &Rs, rec: &ContractionRecord, new_neighbours: &[u32]) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let check = |w: VertexId| {
+            let wi = w.index();
+            // Removed vertices are marked processed too; only live ones are trapped.
+            if rs.processed[wi]
+                && rs.tri.is_vertex(w)
+                && w.0 != rs.current
+                && rs.tri.degree(w) <= FULL_CHECK_DEGREE
+                && !is_trapped_naive(&rs.tri, w)
+            {
+                spec_fail!(
+                    rs,
+                    "Lemma 5",
+                    "processed vertex {w} is loose after contracting [{}, {}]",
+                    rec.u,
+                    rec.v
+                );
+            }
+        };
+        check(rec.link[0]);
+        check(rec.link[1]);
+        for &z in new_neighbours.iter().take(FULL_CHECK_DEGREE) {
+            check(VertexId(z));
+        }
+    }
+}

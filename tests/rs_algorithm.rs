@@ -1,0 +1,99 @@
+//! The RS algorithm against independent checks: naive irreducibility, topology, exact
+//! expansion, ℓ ≤ E and ε = 0, Sec. 4.6 for genus 0.
+
+mod common;
+
+use contractible::gen::{random, RandomParams, SurfaceKind};
+use contractible::irreducible::rs::{reduce_variant, Variant};
+use contractible::irreducible::{reduce, Algorithm, Options};
+use contractible::Triangulation;
+
+fn check_rs(input: &Triangulation, what: &str) {
+    let (r, first) = reduce_variant(input.clone(), &Options::default(), Variant::default());
+    let t = &r.tri;
+    t.validate().unwrap();
+    assert!(t.is_irreducible_naive(), "{what}: RS output is reducible");
+    assert_eq!(
+        t.euler_characteristic(),
+        input.euler_characteristic(),
+        "{what}"
+    );
+    assert_eq!(t.is_orientable(), input.is_orientable(), "{what}");
+    let h = t.euler_genus();
+    if h == 0 {
+        assert!(t.is_tetrahedron(), "{what}: genus 0 must give T4");
+        assert_eq!(
+            first, r.stats.contractions,
+            "{what}: Sec. 4.6, all contractions in the first vertex"
+        );
+    } else {
+        assert!(
+            t.vertex_count() as i64 <= 13 * h - 4,
+            "{what}: {} vertices > 13h-4",
+            t.vertex_count()
+        );
+    }
+    assert!(
+        r.stats.link_tests <= r.stats.edges_in as u64,
+        "{what}: ℓ = {} > E = {}",
+        r.stats.link_tests,
+        r.stats.edges_in
+    );
+    assert_eq!(
+        r.stats.edges_tested_more_than_once, 0,
+        "{what}: ε_RS must be 0"
+    );
+    assert_eq!(
+        r.stats.contractions as usize,
+        r.stats.vertices_in - r.stats.vertices_out
+    );
+    assert_eq!(
+        &r.expand(),
+        input,
+        "{what}: expanding the history must give the input back"
+    );
+}
+
+#[test]
+fn rs_on_random_surfaces() {
+    for g in 0..=8 {
+        for seed in 0..4 {
+            let t = random(&RandomParams {
+                surface: SurfaceKind::Orientable(g),
+                min_faces: 300 + 200 * g as usize,
+                flip_percent: 30,
+                seed,
+            });
+            check_rs(&t, &format!("genus {g} seed {seed}"));
+        }
+    }
+    for h in 1..=6 {
+        for seed in 0..4 {
+            let t = random(&RandomParams {
+                surface: SurfaceKind::NonOrientable(h),
+                min_faces: 300 + 150 * h as usize,
+                flip_percent: 30,
+                seed,
+            });
+            check_rs(&t, &format!("euler genus {h} (non-orientable) seed {seed}"));
+        }
+    }
+}
+
+#[test]
+fn rs_on_the_small_surfaces() {
+    for file in [
+        "surfaces-upto-8-vertices.txt",
+        "torus.txt",
+        "projective-plane.txt",
+    ] {
+        for s in common::read_surface_list(file) {
+            let t = Triangulation::from_faces(s.vertex_count, &s.faces).unwrap();
+            check_rs(&t, &s.name);
+            let r = reduce(t.clone(), Algorithm::Rs, &Options::default());
+            if s.name.contains("_irr_") || file != "surfaces-upto-8-vertices.txt" {
+                assert_eq!(r.stats.contractions, 0, "{}: irreducible input", s.name);
+            }
+        }
+    }
+}
