@@ -139,3 +139,129 @@ pub fn manifest() -> Vec<ManifestRow> {
         })
         .collect()
 }
+
+/// Whether the two face lists describe isomorphic triangulations: a bijection of their
+/// vertices mapping the face set of `a` exactly onto the face set of `b` (faces compared
+/// as unordered triples, so mirror images count as isomorphic). Vertex ids may be sparse.
+///
+/// Backtracking over vertex bijections: vertices of `a` are assigned in BFS order, each
+/// to an unused vertex of `b` of the same degree that is adjacent in `b` to the images
+/// of exactly the already-assigned `a`-neighbours. For the small triangulations of the
+/// tests (≤ ~20 vertices) this is instantaneous.
+pub fn is_isomorphic(a: &[[u32; 3]], b: &[[u32; 3]]) -> bool {
+    use std::collections::{BTreeMap, BTreeSet};
+
+    /// Dense relabelling, adjacency matrix, and the face set as sorted triples.
+    struct G {
+        n: usize,
+        adj: Vec<Vec<bool>>,
+        nbrs: Vec<Vec<usize>>,
+        faces: BTreeSet<[usize; 3]>,
+    }
+    fn build(f: &[[u32; 3]]) -> Option<G> {
+        let mut id: BTreeMap<u32, usize> = BTreeMap::new();
+        for t in f {
+            for &v in t {
+                let k = id.len();
+                id.entry(v).or_insert(k);
+            }
+        }
+        let n = id.len();
+        let mut adj = vec![vec![false; n]; n];
+        let mut faces = BTreeSet::new();
+        for t in f {
+            let mut d = t.map(|v| id[&v]);
+            for i in 0..3 {
+                let (p, q) = (d[i], d[(i + 1) % 3]);
+                adj[p][q] = true;
+                adj[q][p] = true;
+            }
+            d.sort();
+            if !faces.insert(d) {
+                return None; // a repeated face: not a simplicial surface
+            }
+        }
+        let nbrs = (0..n)
+            .map(|v| (0..n).filter(|&w| adj[v][w]).collect())
+            .collect();
+        Some(G {
+            n,
+            adj,
+            nbrs,
+            faces,
+        })
+    }
+    let (Some(ga), Some(gb)) = (build(a), build(b)) else {
+        return false;
+    };
+    if ga.n != gb.n || ga.faces.len() != gb.faces.len() {
+        return false;
+    }
+    let mut da: Vec<usize> = ga.nbrs.iter().map(Vec::len).collect();
+    let mut db: Vec<usize> = gb.nbrs.iter().map(Vec::len).collect();
+    da.sort();
+    db.sort();
+    if da != db {
+        return false;
+    }
+    // BFS order over a's vertices (every component).
+    let mut order = Vec::with_capacity(ga.n);
+    let mut seen = vec![false; ga.n];
+    for s in 0..ga.n {
+        if seen[s] {
+            continue;
+        }
+        seen[s] = true;
+        let mut k = order.len();
+        order.push(s);
+        while k < order.len() {
+            let v = order[k];
+            k += 1;
+            for &w in &ga.nbrs[v] {
+                if !seen[w] {
+                    seen[w] = true;
+                    order.push(w);
+                }
+            }
+        }
+    }
+    fn go(
+        k: usize,
+        order: &[usize],
+        ga: &G,
+        gb: &G,
+        map: &mut Vec<usize>,
+        used: &mut Vec<bool>,
+    ) -> bool {
+        if k == order.len() {
+            return ga.faces.iter().all(|f| {
+                let mut g = f.map(|v| map[v]);
+                g.sort();
+                gb.faces.contains(&g)
+            });
+        }
+        let v = order[k];
+        for c in 0..gb.n {
+            if used[c] || gb.nbrs[c].len() != ga.nbrs[v].len() {
+                continue;
+            }
+            let consistent = order[..k]
+                .iter()
+                .all(|&p| ga.adj[v][p] == gb.adj[c][map[p]]);
+            if !consistent {
+                continue;
+            }
+            map[v] = c;
+            used[c] = true;
+            if go(k + 1, order, ga, gb, map, used) {
+                return true;
+            }
+            used[c] = false;
+        }
+        map[v] = usize::MAX;
+        false
+    }
+    let mut map = vec![usize::MAX; ga.n];
+    let mut used = vec![false; gb.n];
+    go(0, &order, &ga, &gb, &mut map, &mut used)
+}
