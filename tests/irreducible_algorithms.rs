@@ -5,142 +5,17 @@
 //! triangulations of the torus and projective plane (up to isomorphism), and
 //! determinism.
 //!
-//! Every test runs each algorithm of [`algorithms`]: all three by default; set
+//! Every test runs each algorithm of `common::algorithms`: all three by default; set
 //! `CONTRACTIBLE_TEST_ALGORITHMS` (comma-separated `rs`, `schipper`, `brute`) to
-//! restrict the run.
+//! restrict the run. The checks themselves are `common::check`.
 
 mod common;
 
+use common::{algorithms, check, options};
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::irreducible::{reduce, Algorithm, Options, Reduction, Stats};
 use contractible::rng::Rng;
 use contractible::{Triangulation, VertexId};
-
-const ALL: [Algorithm; 3] = [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute];
-
-/// The algorithms under test (see the module documentation).
-fn algorithms() -> Vec<Algorithm> {
-    match std::env::var("CONTRACTIBLE_TEST_ALGORITHMS") {
-        Ok(list) if !list.trim().is_empty() => {
-            let chosen: Vec<Algorithm> = list
-                .split(',')
-                .map(|name| {
-                    let name = name.trim();
-                    *ALL.iter()
-                        .find(|a| a.name() == name)
-                        .unwrap_or_else(|| panic!("unknown algorithm {name:?}"))
-                })
-                .collect();
-            chosen
-        }
-        _ => ALL.to_vec(),
-    }
-}
-
-fn options(seed: u64) -> Options {
-    Options {
-        seed,
-        count_retests: true,
-    }
-}
-
-/// Checks `r`, the reduction of `input` by `alg`, independently of the algorithm.
-fn check(input: &Triangulation, r: &Reduction, alg: Algorithm, label: &str) {
-    let out = &r.tri;
-    let label = format!("{} {label}", alg.name());
-    assert_eq!(r.algorithm, alg, "{label}");
-    out.validate()
-        .unwrap_or_else(|e| panic!("{label}: invalid output: {e}"));
-    assert_eq!(
-        out.euler_characteristic(),
-        input.euler_characteristic(),
-        "{label}: χ changed"
-    );
-    assert_eq!(
-        out.is_orientable(),
-        input.is_orientable(),
-        "{label}: orientability changed"
-    );
-    for (a, b, _) in out.edges() {
-        assert!(
-            !out.link_condition_naive(a, b),
-            "{label}: output edge {a}-{b} is contractible"
-        );
-    }
-    let h = out.euler_genus();
-    if h == 0 {
-        assert!(
-            out.vertex_count() == 4 && out.face_count() == 4,
-            "{label}: a sphere must reduce to the tetrahedron, got {} vertices",
-            out.vertex_count()
-        );
-    } else {
-        assert!(
-            out.vertex_count() as i64 <= 13 * h - 4,
-            "{label}: {} vertices exceed Joret–Wood 13h − 4 = {}",
-            out.vertex_count(),
-            13 * h - 4
-        );
-    }
-    // Output vertex ids are input ids.
-    assert!(out.vertices().all(|v| input.is_vertex(v)), "{label}");
-    assert!(r.expand() == *input, "{label}: expand() is not the input");
-
-    let s = &r.stats;
-    let c = s.contractions as usize;
-    assert_eq!(s.vertices_in, input.vertex_count(), "{label}");
-    assert_eq!(s.edges_in, input.edge_count(), "{label}");
-    assert_eq!(s.faces_in, input.face_count(), "{label}");
-    assert_eq!(s.vertices_out, out.vertex_count(), "{label}");
-    assert_eq!(s.faces_out, out.face_count(), "{label}");
-    assert_eq!(c, r.history.len(), "{label}");
-    assert_eq!(c, s.vertices_in - s.vertices_out, "{label}");
-    assert_eq!(s.faces_out, s.faces_in - 2 * c, "{label}");
-    assert!(s.edges_tested_more_than_once <= s.link_tests, "{label}");
-    let e_out = out.edge_count() as u64;
-    match alg {
-        Algorithm::Rs => {
-            assert!(
-                s.link_tests <= s.edges_in as u64,
-                "{label}: ℓ = {} > edges_in = {}",
-                s.link_tests,
-                s.edges_in
-            );
-            assert_eq!(s.edges_tested_more_than_once, 0, "{label}: ε");
-        }
-        Algorithm::Schipper => {
-            // Each contraction follows a passing test; every output vertex was found
-            // trapped by testing all its edges, so every output edge was tested from
-            // both endpoints.
-            assert!(
-                s.link_tests >= s.contractions + 2 * e_out,
-                "{label}: ℓ = {} too small",
-                s.link_tests
-            );
-            assert!(
-                s.edges_tested_more_than_once >= e_out,
-                "{label}: ε too small"
-            );
-        }
-        Algorithm::Brute => {
-            if c == 0 {
-                assert_eq!(s.link_tests, e_out, "{label}: one pass, every edge once");
-                assert_eq!(s.edges_tested_more_than_once, 0, "{label}");
-            } else {
-                // The last two passes both tested every surviving edge.
-                assert!(
-                    s.link_tests >= s.contractions + 2 * e_out,
-                    "{label}: ℓ = {} too small",
-                    s.link_tests
-                );
-                assert!(
-                    s.edges_tested_more_than_once >= e_out,
-                    "{label}: ε too small"
-                );
-            }
-        }
-    }
-}
 
 fn run(input: &Triangulation, alg: Algorithm, seed: u64, label: &str) -> Reduction {
     let r = reduce(input.clone(), alg, &options(seed));
