@@ -33,7 +33,9 @@ fn random_surfaces() -> Vec<SurfaceKind> {
 fn random_surfaces_reduce_to_irreducible_triangulations_of_the_same_surface() {
     for alg in algorithms() {
         for (k, surface) in random_surfaces().into_iter().enumerate() {
-            for (seed, min_faces, flip_percent) in [(1u64, 200, 0), (2, 1200, 30), (3, 3000, 10)] {
+            for (seed, min_faces, flip_percent) in
+                [(1u64, 200, 0), (2, 1200, 30), (3, 3000, 10), (4, 6000, 50)]
+            {
                 let input = random(&RandomParams {
                     surface,
                     min_faces,
