@@ -1,9 +1,111 @@
-//! Work in progress.
+//! The randomized brute force BF of the RS paper (Sec. 5, l.1016-1024).
+//!
+//! 1. Put every edge of the input in an array and shuffle it with the documented stream
+//!    ([`crate::rng::Rng::new`]`(options.seed)`, [`crate::rng::Rng::shuffle`]).
+//! 2. Visit the array in order. An edge removed by an earlier contraction is skipped;
+//!    every other edge is tested against the link condition. If it passes it is
+//!    contracted, otherwise it goes to an auxiliary array.
+//! 3. When the array is exhausted, the auxiliary array (in the order the failures were
+//!    found) becomes the array and step 2 repeats. A pass without a contraction ends the
+//!    algorithm.
+//!
+//! # Guarantee
+//! The output is irreducible: the last pass tested every edge still alive (all of them
+//! were in the array, since an edge is only ever dropped when it dies) and contracted
+//! none, and nothing changed during that pass, so every edge fails the link condition.
+//! Every contraction passed the link condition, so the surface (χ, orientability) is the
+//! input's.
+//!
+//! # Edge identity
+//! Edges are numbered in [`Triangulation::edges`] order and keep their number across
+//! contractions exactly as [`super::RetestCounter`] defines identity: a renamed edge
+//! `[v, z] → [u, z]` keeps its number; the merged edge `[u, x]` keeps the number of the
+//! old `[u, x]`, while `[u, v]`, `[v, x]` and `[v, y]` die (like the DCEL record removed
+//! by Alg. 4.7). Each edge number stores one live corner opposite it, moved when a
+//! gluing ([`crate::core::ContractionRecord::glued`]) kills the corner it held.
+//!
+//! # Which endpoint survives
+//! The edge stored as corner `c` is contracted as [`Triangulation::contract_tested`]`(a,
+//! b)` with `[a, b] = `[`Triangulation::edge_endpoints`]`(c)`: `b` is identified with the
+//! first endpoint `a`.
+//!
+//! # Cost
+//! One link test is the marked test [`LinkTester::test`], O(d_a + d_b); it is counted as
+//! one test in ℓ (the T4 check of Prop. 6 included). A pass over `m` edges costs
+//! O(m · d_max); there can be Θ(n) passes, and the brute force may carry out Ω(n²) link
+//! tests (the sphere of Fig. 6, if the shuffle puts the non-contractible edges first),
+//! so the worst case is O(n² · d_max) time. Space: O(F) beyond the triangulation (edge
+//! numbers per corner, two edge arrays).
+//!
+//! # Determinism
+//! The output (triangulation, history, counters except `seconds`) is a function of the
+//! input triangulation (including its ids and corner slots) and `options.seed`.
 
-use super::{Options, Reduction};
-use crate::core::Triangulation;
+use std::time::Instant;
 
-/// Not yet written.
-pub fn reduce(_tri: Triangulation, _options: &Options) -> Reduction {
-    todo!("brute")
+use super::{Algorithm, Options, Reduction, RetestCounter};
+use crate::core::{Corner, History, LinkTester, Triangulation};
+use crate::rng::Rng;
+
+/// Runs BF on `tri` (see the module documentation).
+pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
+    let started = Instant::now();
+    let mut stats = super::start_stats(&tri);
+    let mut history = History::new();
+    let mut counter = RetestCounter::new(&tri, options.count_retests);
+    let mut tester = LinkTester::new(tri.vertex_capacity());
+
+    // Edge numbers: per corner, and one live corner per edge.
+    let mut edge_of_corner = vec![u32::MAX; 3 * tri.face_capacity()];
+    let mut corner_of_edge: Vec<Corner> = Vec::with_capacity(tri.edge_count());
+    for (_, _, c) in tri.edges() {
+        let e = corner_of_edge.len() as u32;
+        edge_of_corner[c.index()] = e;
+        edge_of_corner[tri.opposite(c).index()] = e;
+        corner_of_edge.push(c);
+    }
+    let mut alive = vec![true; corner_of_edge.len()];
+
+    let mut current: Vec<u32> = (0..corner_of_edge.len() as u32).collect();
+    Rng::new(options.seed).shuffle(&mut current);
+    let mut failed: Vec<u32> = Vec::with_capacity(current.len());
+
+    loop {
+        let mut contracted_in_pass = false;
+        for &e in &current {
+            if !alive[e as usize] {
+                continue;
+            }
+            let c = corner_of_edge[e as usize];
+            debug_assert!(tri.is_face(c.face()), "live edge {e} holds a dead corner");
+            let [a, b] = tri.edge_endpoints(c);
+            stats.link_tests += 1;
+            counter.tested(c);
+            if !tester.test(&tri, a, b) {
+                failed.push(e);
+                continue;
+            }
+            let rec = tri.contract_tested(a, b, &mut history);
+            counter.contracted(&rec);
+            contracted_in_pass = true;
+            alive[e as usize] = false;
+            for (dying, kept) in rec.glued() {
+                // `dying` was across [b, x] (that edge dies), `kept` across [a, x]; they
+                // are now the two corners of the merged edge, which stays [a, x].
+                let dead_edge = edge_of_corner[dying.index()];
+                let merged = edge_of_corner[kept.index()];
+                alive[dead_edge as usize] = false;
+                edge_of_corner[dying.index()] = merged;
+                corner_of_edge[merged as usize] = kept;
+            }
+        }
+        if !contracted_in_pass {
+            break;
+        }
+        std::mem::swap(&mut current, &mut failed);
+        failed.clear();
+    }
+
+    stats.edges_tested_more_than_once = counter.more_than_once();
+    super::finish(Algorithm::Brute, tri, history, stats, started)
 }

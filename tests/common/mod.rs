@@ -3,6 +3,9 @@
 
 use std::path::PathBuf;
 
+use contractible::irreducible::{Algorithm, Options, Reduction};
+use contractible::Triangulation;
+
 /// `../shared` beside the project checkout.
 pub fn shared_dir() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"))
@@ -138,4 +141,258 @@ pub fn manifest() -> Vec<ManifestRow> {
             }
         })
         .collect()
+}
+
+/// Whether the two face lists describe isomorphic triangulations: a bijection of their
+/// vertices mapping the face set of `a` exactly onto the face set of `b` (faces compared
+/// as unordered triples, so mirror images count as isomorphic). Vertex ids may be sparse.
+///
+/// Backtracking over vertex bijections: vertices of `a` are assigned in BFS order, each
+/// to an unused vertex of `b` of the same degree that is adjacent in `b` to the images
+/// of exactly the already-assigned `a`-neighbours. For the small triangulations of the
+/// tests (≤ ~20 vertices) this is instantaneous.
+pub fn is_isomorphic(a: &[[u32; 3]], b: &[[u32; 3]]) -> bool {
+    use std::collections::{BTreeMap, BTreeSet};
+
+    /// Dense relabelling, adjacency matrix, and the face set as sorted triples.
+    struct G {
+        n: usize,
+        adj: Vec<Vec<bool>>,
+        nbrs: Vec<Vec<usize>>,
+        faces: BTreeSet<[usize; 3]>,
+    }
+    fn build(f: &[[u32; 3]]) -> Option<G> {
+        let mut id: BTreeMap<u32, usize> = BTreeMap::new();
+        for t in f {
+            for &v in t {
+                let k = id.len();
+                id.entry(v).or_insert(k);
+            }
+        }
+        let n = id.len();
+        let mut adj = vec![vec![false; n]; n];
+        let mut faces = BTreeSet::new();
+        for t in f {
+            let mut d = t.map(|v| id[&v]);
+            for i in 0..3 {
+                let (p, q) = (d[i], d[(i + 1) % 3]);
+                adj[p][q] = true;
+                adj[q][p] = true;
+            }
+            d.sort();
+            if !faces.insert(d) {
+                return None; // a repeated face: not a simplicial surface
+            }
+        }
+        let nbrs = (0..n)
+            .map(|v| (0..n).filter(|&w| adj[v][w]).collect())
+            .collect();
+        Some(G {
+            n,
+            adj,
+            nbrs,
+            faces,
+        })
+    }
+    let (Some(ga), Some(gb)) = (build(a), build(b)) else {
+        return false;
+    };
+    if ga.n != gb.n || ga.faces.len() != gb.faces.len() {
+        return false;
+    }
+    let mut da: Vec<usize> = ga.nbrs.iter().map(Vec::len).collect();
+    let mut db: Vec<usize> = gb.nbrs.iter().map(Vec::len).collect();
+    da.sort();
+    db.sort();
+    if da != db {
+        return false;
+    }
+    // BFS order over a's vertices (every component).
+    let mut order = Vec::with_capacity(ga.n);
+    let mut seen = vec![false; ga.n];
+    for s in 0..ga.n {
+        if seen[s] {
+            continue;
+        }
+        seen[s] = true;
+        let mut k = order.len();
+        order.push(s);
+        while k < order.len() {
+            let v = order[k];
+            k += 1;
+            for &w in &ga.nbrs[v] {
+                if !seen[w] {
+                    seen[w] = true;
+                    order.push(w);
+                }
+            }
+        }
+    }
+    fn go(
+        k: usize,
+        order: &[usize],
+        ga: &G,
+        gb: &G,
+        map: &mut Vec<usize>,
+        used: &mut Vec<bool>,
+    ) -> bool {
+        if k == order.len() {
+            return ga.faces.iter().all(|f| {
+                let mut g = f.map(|v| map[v]);
+                g.sort();
+                gb.faces.contains(&g)
+            });
+        }
+        let v = order[k];
+        for c in 0..gb.n {
+            if used[c] || gb.nbrs[c].len() != ga.nbrs[v].len() {
+                continue;
+            }
+            let consistent = order[..k]
+                .iter()
+                .all(|&p| ga.adj[v][p] == gb.adj[c][map[p]]);
+            if !consistent {
+                continue;
+            }
+            map[v] = c;
+            used[c] = true;
+            if go(k + 1, order, ga, gb, map, used) {
+                return true;
+            }
+            used[c] = false;
+        }
+        map[v] = usize::MAX;
+        false
+    }
+    let mut map = vec![usize::MAX; ga.n];
+    let mut used = vec![false; gb.n];
+    go(0, &order, &ga, &gb, &mut map, &mut used)
+}
+
+// ---- Irreducible-triangulation algorithms: which to run, and the independent checks.
+
+pub const ALL: [Algorithm; 3] = [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute];
+
+/// The algorithms under test (see the module documentation).
+pub fn algorithms() -> Vec<Algorithm> {
+    match std::env::var("CONTRACTIBLE_TEST_ALGORITHMS") {
+        Ok(list) if !list.trim().is_empty() => {
+            let chosen: Vec<Algorithm> = list
+                .split(',')
+                .map(|name| {
+                    let name = name.trim();
+                    *ALL.iter()
+                        .find(|a| a.name() == name)
+                        .unwrap_or_else(|| panic!("unknown algorithm {name:?}"))
+                })
+                .collect();
+            chosen
+        }
+        _ => ALL.to_vec(),
+    }
+}
+
+pub fn options(seed: u64) -> Options {
+    Options {
+        seed,
+        count_retests: true,
+    }
+}
+
+/// Checks `r`, the reduction of `input` by `alg`, independently of the algorithm.
+pub fn check(input: &Triangulation, r: &Reduction, alg: Algorithm, label: &str) {
+    let out = &r.tri;
+    let label = format!("{} {label}", alg.name());
+    assert_eq!(r.algorithm, alg, "{label}");
+    out.validate()
+        .unwrap_or_else(|e| panic!("{label}: invalid output: {e}"));
+    assert_eq!(
+        out.euler_characteristic(),
+        input.euler_characteristic(),
+        "{label}: χ changed"
+    );
+    assert_eq!(
+        out.is_orientable(),
+        input.is_orientable(),
+        "{label}: orientability changed"
+    );
+    for (a, b, _) in out.edges() {
+        assert!(
+            !out.link_condition_naive(a, b),
+            "{label}: output edge {a}-{b} is contractible"
+        );
+    }
+    let h = out.euler_genus();
+    if h == 0 {
+        assert!(
+            out.vertex_count() == 4 && out.face_count() == 4,
+            "{label}: a sphere must reduce to the tetrahedron, got {} vertices",
+            out.vertex_count()
+        );
+    } else {
+        assert!(
+            out.vertex_count() as i64 <= 13 * h - 4,
+            "{label}: {} vertices exceed Joret–Wood 13h − 4 = {}",
+            out.vertex_count(),
+            13 * h - 4
+        );
+    }
+    // Output vertex ids are input ids.
+    assert!(out.vertices().all(|v| input.is_vertex(v)), "{label}");
+    assert!(r.expand() == *input, "{label}: expand() is not the input");
+
+    let s = &r.stats;
+    let c = s.contractions as usize;
+    assert_eq!(s.vertices_in, input.vertex_count(), "{label}");
+    assert_eq!(s.edges_in, input.edge_count(), "{label}");
+    assert_eq!(s.faces_in, input.face_count(), "{label}");
+    assert_eq!(s.vertices_out, out.vertex_count(), "{label}");
+    assert_eq!(s.faces_out, out.face_count(), "{label}");
+    assert_eq!(c, r.history.len(), "{label}");
+    assert_eq!(c, s.vertices_in - s.vertices_out, "{label}");
+    assert_eq!(s.faces_out, s.faces_in - 2 * c, "{label}");
+    assert!(s.edges_tested_more_than_once <= s.link_tests, "{label}");
+    let e_out = out.edge_count() as u64;
+    match alg {
+        Algorithm::Rs => {
+            assert!(
+                s.link_tests <= s.edges_in as u64,
+                "{label}: ℓ = {} > edges_in = {}",
+                s.link_tests,
+                s.edges_in
+            );
+            assert_eq!(s.edges_tested_more_than_once, 0, "{label}: ε");
+        }
+        Algorithm::Schipper => {
+            // Each contraction follows a passing test; every output vertex was found
+            // trapped by testing all its edges, so every output edge was tested from
+            // both endpoints.
+            assert!(
+                s.link_tests >= s.contractions + 2 * e_out,
+                "{label}: ℓ = {} too small",
+                s.link_tests
+            );
+            assert!(
+                s.edges_tested_more_than_once >= e_out,
+                "{label}: ε too small"
+            );
+        }
+        Algorithm::Brute => {
+            if c == 0 {
+                assert_eq!(s.link_tests, e_out, "{label}: one pass, every edge once");
+                assert_eq!(s.edges_tested_more_than_once, 0, "{label}");
+            } else {
+                // The last two passes both tested every surviving edge.
+                assert!(
+                    s.link_tests >= s.contractions + 2 * e_out,
+                    "{label}: ℓ = {} too small",
+                    s.link_tests
+                );
+                assert!(
+                    s.edges_tested_more_than_once >= e_out,
+                    "{label}: ε too small"
+                );
+            }
+        }
+    }
 }
