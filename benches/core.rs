@@ -45,5 +45,11 @@ fn surfaces_b0(b: divan::Bencher) {
 fn info_invariants_b0(b: divan::Bencher) {
     let m = b0();
     let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface");
-    b.bench(|| (t.euler_characteristic(), t.is_orientable(), t.degree_histogram()));
+    b.bench(|| {
+        (
+            t.euler_characteristic(),
+            t.is_orientable(),
+            t.degree_histogram(),
+        )
+    });
 }

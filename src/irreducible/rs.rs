@@ -129,6 +129,7 @@ impl Lists {
         while self.pop_front(l).is_some() {}
     }
     /// The members of list `l` in order (for checks and tests).
+    #[cfg_attr(not(any(debug_assertions, feature = "invariants")), allow(dead_code))]
     pub(crate) fn members(&self, l: usize) -> Vec<u32> {
         let mut out = Vec::with_capacity(self.len[l]);
         let mut z = self.head[l];
