@@ -332,8 +332,10 @@ impl Rs {
     /// Alg. 4.3: `d(v) = 3`, so `[u, v]` is contractible unless K is T4 (Prop. 6).
     fn degree3(&mut self, u: u32, v: u32) {
         if self.degree(u) == 3 {
+            crate::spec::rs_degree3(self, u, v);
             return; // K is T4: nothing is contractible.
         }
+        crate::spec::rs_degree3(self, u, v);
         let [x, y] = self.contract(u, v);
         if self.variant.skip_degree3_decrement {
             return;
@@ -419,6 +421,7 @@ impl Rs {
             }
         }
         self.count[v as usize] = cv;
+        crate::spec::rs_after_test(self, u, v, cv);
         if cv == 0 {
             self.contract(u, v);
         } else {
@@ -444,6 +447,7 @@ impl Rs {
             self.t[zi] = NIL;
         }
         self.processed[v as usize] = true;
+        let before = crate::spec::rs_prop7_before(self);
         let rec = self
             .tri
             .contract_tested(VertexId(u), VertexId(v), &mut self.history);
@@ -478,6 +482,7 @@ impl Rs {
             }
         }
         self.scratch2 = pi;
+        crate::spec::rs_prop7(self, before, &rec);
         [x, y]
     }
 }

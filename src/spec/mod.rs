@@ -11,7 +11,7 @@
 //! full-graph oracles (petgraph critical cycles, naive irreducibility) run in the tests.
 
 /// Degree (or list length) up to which a local check runs in full.
-pub const FULL_CHECK_DEGREE: usize = 256;
+pub const FULL_CHECK_DEGREE: usize = 64;
 
 /// Whether the checks are compiled in.
 pub const ENABLED: bool = cfg!(any(debug_assertions, feature = "invariants"));
@@ -19,4 +19,7 @@ pub const ENABLED: bool = cfg!(any(debug_assertions, feature = "invariants"));
 pub mod oracle;
 pub(crate) mod rs;
 
-pub(crate) use rs::{rs_after_contraction, rs_at_line_22, rs_at_line_32, rs_vertex_trapped};
+pub(crate) use rs::{
+    rs_after_contraction, rs_after_test, rs_at_line_22, rs_at_line_32, rs_degree3, rs_prop7,
+    rs_prop7_before, rs_vertex_trapped,
+};

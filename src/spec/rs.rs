@@ -3,7 +3,7 @@
 
 #![cfg_attr(not(any(debug_assertions, feature = "invariants")), allow(unused))]
 
-use super::oracle::{critical_cycles_through, is_trapped_naive};
+use super::oracle::{contractible_by_theorem_3, critical_cycles_through, is_trapped_naive};
 use super::FULL_CHECK_DEGREE;
 use crate::core::{ContractionRecord, VertexId};
 use crate::irreducible::rs::Rs;
@@ -187,5 +187,126 @@ pub(crate) fn rs_after_contraction(rs: &Rs, rec: &ContractionRecord, new_neighbo
         for &z in new_neighbours.iter().take(FULL_CHECK_DEGREE) {
             check(VertexId(z));
         }
+    }
+}
+
+/// Theorem 3 and Eq. 1 at each link test of Alg. 4.4 (`d(v) > 3`, so K is not T4): the
+/// count `c(v)` the algorithm computed equals the number of critical cycles through
+/// `[u, v]` (oracle), and `c(v) = 0` iff the link condition holds by definition.
+#[inline]
+pub(crate) fn rs_after_test(rs: &Rs, u: u32, v: u32, cv: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let (a, b) = (VertexId(u), VertexId(v));
+        if rs.tri.degree(a) > FULL_CHECK_DEGREE {
+            return;
+        }
+        let truth = critical_cycles_through(&rs.tri, a, b).unwrap_or(usize::MAX);
+        if truth != cv as usize {
+            spec_fail!(
+                rs,
+                "Alg. 4.4 / Theorem 3",
+                "c({v}) = {cv} but [{u}, {v}] lies on {truth} critical cycles"
+            );
+        }
+        let naive = rs.tri.link_condition_naive(a, b);
+        if naive != (cv == 0) || naive != contractible_by_theorem_3(&rs.tri, a, b) {
+            spec_fail!(
+                rs,
+                "Theorem 3 / Eq. 1",
+                "[{u}, {v}]: link condition {naive}, critical cycles {cv}"
+            );
+        }
+    }
+}
+
+/// Proposition 6 on the degree-3 path (Alg. 4.3): with `d(v) = 3`, `[u, v]` is
+/// contractible iff K is not T4 (`d(u) = 3`), by the naive link condition.
+#[inline]
+pub(crate) fn rs_degree3(rs: &Rs, u: u32, v: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let (a, b) = (VertexId(u), VertexId(v));
+        if rs.tri.degree(b) != 3 {
+            spec_fail!(
+                rs,
+                "Proposition 6",
+                "degree-3 path taken for [{u}, {v}] with d({v}) = {}",
+                rs.tri.degree(b)
+            );
+        }
+        let t4 = rs.tri.degree(a) == 3;
+        if t4 != rs.tri.is_tetrahedron() || rs.tri.link_condition_naive(a, b) == t4 {
+            spec_fail!(
+                rs,
+                "Proposition 6",
+                "[{u}, {v}] with d({v}) = 3: T4 = {t4}, link condition disagrees"
+            );
+        }
+    }
+}
+
+/// The `lte` edges that are non-contractible just before a contraction (for
+/// [`rs_prop7`]); empty when the checks are compiled out.
+#[derive(Default)]
+pub(crate) struct Prop7Before(#[allow(dead_code)] Vec<u32>);
+
+/// Snapshot for Proposition 7: the edges `[u, w]` in `lte` on at least one critical cycle.
+#[inline]
+pub(crate) fn rs_prop7_before(rs: &Rs) -> Prop7Before {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let u = rs.current;
+        if rs.tri.degree(VertexId(u)) > FULL_CHECK_DEGREE {
+            return Prop7Before::default();
+        }
+        let lte = rs.lists.members(1);
+        let w: Vec<u32> = lte
+            .into_iter()
+            .take(FULL_CHECK_DEGREE)
+            .filter(|&w| {
+                critical_cycles_through(&rs.tri, VertexId(u), VertexId(w)).is_some_and(|c| c > 0)
+            })
+            .collect();
+        Prop7Before(w)
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    {
+        let _ = rs;
+        Prop7Before::default()
+    }
+}
+
+/// Proposition 7, locally, after contracting `f = [u, v]`: a non-contractible edge
+/// `[u, w]` of `lte` (snapshot before the contraction) can have become contractible only
+/// if `d(v) = 3` and `w ∈ lk(v)`, and then the critical cycle it was on was the one of
+/// `lk(v)`, its only one.
+#[inline]
+pub(crate) fn rs_prop7(rs: &Rs, before: Prop7Before, rec: &ContractionRecord) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let u = rs.current;
+        for w in before.0 {
+            if !rs.tri.is_vertex(VertexId(w)) {
+                continue;
+            }
+            if critical_cycles_through(&rs.tri, VertexId(u), VertexId(w)) == Some(0) {
+                let allowed = rec.degree_v == 3 && rec.link.contains(&VertexId(w));
+                if !allowed {
+                    spec_fail!(
+                        rs,
+                        "Proposition 7",
+                        "contracting [{}, {}] (d = {}) made non-contractible [{u}, {w}] contractible",
+                        rec.u,
+                        rec.v,
+                        rec.degree_v
+                    );
+                }
+            }
+        }
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    {
+        let _ = (rs, before, rec);
     }
 }
