@@ -57,7 +57,10 @@ fn main() {
         let mesh = paper_family(group, index);
         let tri = Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("surface");
         let genus = tri.euler_genus() / 2;
-        let opts = |seed| Options { seed, count_retests: true };
+        let opts = |seed| Options {
+            seed,
+            count_retests: true,
+        };
         let rs = reduce(tri.clone(), Algorithm::Rs, &opts(0)).stats;
         let s = reduce(tri.clone(), Algorithm::Schipper, &opts(0)).stats;
         let (mut l_bf, mut e_bf) = (0.0, 0.0);
