@@ -184,10 +184,12 @@ fn critical_cycles_agree_on_small_and_published_surfaces() {
     let mut comparisons = 0;
     for (i, (name, t)) in small_lists().iter().enumerate() {
         edges += compare_all(t, name).0;
-        comparisons += contraction_sequence(t, i as u64, 1, name);
+        for run in 0..3 {
+            comparisons += contraction_sequence(t, (3 * i + run) as u64, 1, name);
+        }
     }
     println!("small + published: {edges} edges, {comparisons} states compared");
-    assert!(edges >= 1500 && comparisons >= 200);
+    assert!(edges >= 1500 && comparisons >= 450);
 }
 
 #[test]
@@ -240,7 +242,7 @@ fn critical_cycles_agree_on_real_meshes() {
 
 // ---- Perfect matchings of the dual graph.
 
-const MATCHING_FACE_CAP: usize = 12_000;
+const MATCHING_FACE_CAP: usize = 8_000;
 
 /// Asserts that petgraph finds a perfect matching of `t`'s dual graph, and that it is a
 /// matching of dual edges covering every face once.
@@ -251,11 +253,23 @@ fn assert_perfect_dual_matching(t: &Triangulation, label: &str) {
     for n in g.node_indices() {
         assert_eq!(g.edges(n).count(), 3, "{label}: dual graph is cubic");
     }
-    let m = maximum_matching(&g);
+    // petgraph's Gabow implementation recurses along augmenting paths: on the larger
+    // meshes that overflows the default test-thread stack in debug builds, so it runs
+    // on a thread with a large stack.
+    let m = std::thread::scope(|s| {
+        std::thread::Builder::new()
+            .stack_size(1 << 30)
+            .spawn_scoped(s, || {
+                let m = maximum_matching(&g);
+                m.edges().collect::<Vec<_>>()
+            })
+            .expect("spawn")
+            .join()
+            .expect("matching thread")
+    });
     assert_eq!(2 * m.len(), t.face_count(), "{label}: matching of size {}", m.len());
-    assert!(m.is_perfect(), "{label}");
     let mut covered = vec![false; g.node_count()];
-    for (a, b) in m.edges() {
+    for &(a, b) in &m {
         assert!(g.find_edge(a, b).is_some(), "{label}: matched pair is not a dual edge");
         for n in [a, b] {
             assert!(!covered[n.index()], "{label}: face matched twice");
