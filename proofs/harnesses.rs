@@ -117,7 +117,11 @@ fn is_critical_cycle(t: &Triangulation, c: [VertexId; 3]) -> bool {
 pub fn link_conditions_agree(t: &Triangulation, e: usize) -> bool {
     let (a, b) = nth_edge(t, e);
     let naive = t.link_condition_naive(a, b);
-    assert_eq!(naive, t.link_condition_naive(b, a), "naive not symmetric on {a}-{b}");
+    assert_eq!(
+        naive,
+        t.link_condition_naive(b, a),
+        "naive not symmetric on {a}-{b}"
+    );
     assert_eq!(naive, t.is_contractible(a, b), "is_contractible({a},{b})");
     assert_eq!(naive, t.is_contractible(b, a), "is_contractible({b},{a})");
     let mut tester = LinkTester::new(t.vertex_capacity());
@@ -176,14 +180,23 @@ pub fn contract_then_split_is_identity(t: &Triangulation, e: usize, direction: b
     let mut history = History::new();
     match work.contract(u, v, &mut history) {
         Err(err) => {
-            assert!(!contractible, "contract({u},{v}) refused a contractible edge");
+            assert!(
+                !contractible,
+                "contract({u},{v}) refused a contractible edge"
+            );
             assert_eq!(err, ContractError::NotContractible { u, v });
-            assert_eq!(work, before, "a refused contraction changed the triangulation");
+            assert_eq!(
+                work, before,
+                "a refused contraction changed the triangulation"
+            );
             assert!(history.is_empty());
             false
         }
         Ok(rec) => {
-            assert!(contractible, "contract({u},{v}) accepted a non-contractible edge");
+            assert!(
+                contractible,
+                "contract({u},{v}) accepted a non-contractible edge"
+            );
             assert_eq!((rec.u, rec.v), (u, v));
             let [x, y] = rec.link;
             let link: BTreeSet<VertexId> = t.edge_link(u, v).expect("edge").into_iter().collect();
@@ -209,18 +222,27 @@ pub fn contract_then_split_is_identity(t: &Triangulation, e: usize, direction: b
                     .unwrap_or_else(|err| panic!("split_vertex({u},{p},{q}): {err}"));
                 assert_eq!(s.vertex_count(), t.vertex_count());
                 assert_eq!(s.euler_characteristic(), t.euler_characteristic());
-                assert!(s.link_condition_naive(u, w), "split edge fails the link condition");
+                assert!(
+                    s.link_condition_naive(u, w),
+                    "split edge fails the link condition"
+                );
                 // w is new, so no face holds both v and w: a pure renaming.
                 if face_set(&s) == renamed(&faces_before, v, w) {
                     inverted += 1;
                 }
             }
-            assert_eq!(inverted, 1, "exactly one side of the split inverts contract({u},{v})");
+            assert_eq!(
+                inverted, 1,
+                "exactly one side of the split inverts contract({u},{v})"
+            );
 
             let undone = history.undo(&mut work).expect("one record");
             assert_eq!(undone, rec);
             assert!(history.is_empty());
-            assert_eq!(work, before, "undo after contract({u},{v}) is not the identity");
+            assert_eq!(
+                work, before,
+                "undo after contract({u},{v}) is not the identity"
+            );
             true
         }
     }
@@ -303,7 +325,10 @@ pub fn prop7(t: &Triangulation, f_edge: usize, e_edge: usize) -> Prop7Case {
             .expect("naively contractible");
         let m = |z: VertexId| if z == v { u } else { z };
         let (p, q) = (m(ea), m(eb));
-        assert!(p != q && k.has_edge(p, q), "e = [{ea}, {eb}] survives as an edge");
+        assert!(
+            p != q && k.has_edge(p, q),
+            "e = [{ea}, {eb}] survives as an edge"
+        );
         if !k.link_condition_naive(p, q) {
             cases.push(Prop7Case::Stays);
             continue;
@@ -322,9 +347,9 @@ pub fn prop7(t: &Triangulation, f_edge: usize, e_edge: usize) -> Prop7Case {
         let z = z[0];
         // ... which is lk(c, K) for a degree-3 endpoint c of f.
         let cycle: BTreeSet<VertexId> = [ea, eb, z].into_iter().collect();
-        let centre = [fa, fb].into_iter().find(|&c| {
-            t.degree(c) == 3 && t.link(c).collect::<BTreeSet<_>>() == cycle
-        });
+        let centre = [fa, fb]
+            .into_iter()
+            .find(|&c| t.degree(c) == 3 && t.link(c).collect::<BTreeSet<_>>() == cycle);
         assert!(
             centre.is_some(),
             "{label}: f has no degree-3 endpoint whose link is the critical cycle {cycle:?}"
@@ -346,7 +371,8 @@ pub fn prop7(t: &Triangulation, f_edge: usize, e_edge: usize) -> Prop7Case {
 pub fn rs_output_irreducible(t: &Triangulation) -> usize {
     let r = reduce(t.clone(), Algorithm::Rs, &Options::default());
     let out = &r.tri;
-    out.validate().unwrap_or_else(|err| panic!("RS output: {err}"));
+    out.validate()
+        .unwrap_or_else(|err| panic!("RS output: {err}"));
     assert_eq!(out.euler_characteristic(), t.euler_characteristic());
     assert_eq!(out.is_orientable(), t.is_orientable());
     assert!(out.is_irreducible_naive(), "RS output is reducible");

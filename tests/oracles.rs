@@ -100,7 +100,11 @@ fn compare_all(t: &Triangulation, label: &str) -> (usize, usize) {
             );
             let want = cc == 0 && !t4;
             assert_eq!(t.link_condition_naive(u, w), want, "{label}: naive {u}-{w}");
-            assert_eq!(t.is_contractible(u, w), want, "{label}: is_contractible {u}-{w}");
+            assert_eq!(
+                t.is_contractible(u, w),
+                want,
+                "{label}: is_contractible {u}-{w}"
+            );
             assert_eq!(tester.test_marked(t, u, w), want, "{label}: marked {u}-{w}");
             edges += 1;
             contractible += want as usize;
@@ -149,7 +153,10 @@ fn contraction_sequence(t: &Triangulation, seed: u64, every: usize, label: &str)
             compared += 1;
         }
     }
-    assert!(k.is_irreducible_naive(), "{label}: no contractible edge left");
+    assert!(
+        k.is_irreducible_naive(),
+        "{label}: no contractible edge left"
+    );
     compare_all(&k, &format!("{label} irreducible"));
     h.undo_all(&mut k);
     assert!(k == *t, "{label}: undo_all");
@@ -206,7 +213,10 @@ fn critical_cycles_agree_on_random_surfaces() {
             });
             let label = format!("{surface:?} {min_faces}");
             let (e, c) = compare_all(&t, &label);
-            assert!(c > 0, "{label}: a fresh random surface has contractible edges");
+            assert!(
+                c > 0,
+                "{label}: a fresh random surface has contractible edges"
+            );
             edges += e;
             comparisons += contraction_sequence(&t, k as u64, every, &label);
         }
@@ -267,10 +277,18 @@ fn assert_perfect_dual_matching(t: &Triangulation, label: &str) {
             .join()
             .expect("matching thread")
     });
-    assert_eq!(2 * m.len(), t.face_count(), "{label}: matching of size {}", m.len());
+    assert_eq!(
+        2 * m.len(),
+        t.face_count(),
+        "{label}: matching of size {}",
+        m.len()
+    );
     let mut covered = vec![false; g.node_count()];
     for &(a, b) in &m {
-        assert!(g.find_edge(a, b).is_some(), "{label}: matched pair is not a dual edge");
+        assert!(
+            g.find_edge(a, b).is_some(),
+            "{label}: matched pair is not a dual edge"
+        );
         for n in [a, b] {
             assert!(!covered[n.index()], "{label}: face matched twice");
             covered[n.index()] = true;
@@ -281,7 +299,11 @@ fn assert_perfect_dual_matching(t: &Triangulation, label: &str) {
     for e in g.edge_references() {
         let (fa, fb) = (g[e.source()], g[e.target()]);
         let va = t.face_vertices(fa);
-        let shared = t.face_vertices(fb).iter().filter(|v| va.contains(v)).count();
+        let shared = t
+            .face_vertices(fb)
+            .iter()
+            .filter(|v| va.contains(v))
+            .count();
         assert_eq!(shared, 2, "{label}: dual edge joins faces sharing an edge");
     }
 }
@@ -298,8 +320,8 @@ fn dual_graphs_of_closed_meshes_have_perfect_matchings() {
             continue;
         }
         let path = common::shared_dir().join("meshes").join(&row.file);
-        let mesh = contractible::io::read_tri_mesh(&path)
-            .unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        let mesh =
+            contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let surfaces = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         for (k, c) in surfaces.components.iter().enumerate() {
             assert_perfect_dual_matching(&c.tri, &format!("{}[{k}]", row.name));

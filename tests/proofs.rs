@@ -116,7 +116,10 @@ fn surfaces_table_matches_shared_file() {
 }
 
 fn small_surfaces() -> Vec<(&'static str, Triangulation)> {
-    SURFACES.iter().map(|s| (s.name, s.triangulation())).collect()
+    SURFACES
+        .iter()
+        .map(|s| (s.name, s.triangulation()))
+        .collect()
 }
 
 // ---- Canonical forms (isomorphism classes, mirror images identified).
@@ -145,9 +148,21 @@ fn canonical(faces: &[[u32; 3]]) -> Vec<[u32; 3]> {
             degree[z as usize] += 1; // faces at z = degree of z
         }
     }
-    let min_degree = faces.iter().flatten().map(|&z| degree[z as usize]).min().unwrap_or(0);
+    let min_degree = faces
+        .iter()
+        .flatten()
+        .map(|&z| degree[z as usize])
+        .min()
+        .unwrap_or(0);
     for f in faces {
-        for perm in [[0, 1, 2], [0, 2, 1], [1, 0, 2], [1, 2, 0], [2, 0, 1], [2, 1, 0]] {
+        for perm in [
+            [0, 1, 2],
+            [0, 2, 1],
+            [1, 0, 2],
+            [1, 2, 0],
+            [2, 0, 1],
+            [2, 1, 0],
+        ] {
             if degree[f[perm[0]] as usize] != min_degree {
                 continue;
             }
@@ -209,7 +224,11 @@ fn canonical_form_separates_exactly_the_isomorphism_classes() {
     // The 57 small surfaces are pairwise non-isomorphic, as are the published lists; a
     // random relabelling of each keeps its form.
     let mut lists: Vec<Vec<[u32; 3]>> = SURFACES.iter().map(|s| s.faces.to_vec()).collect();
-    lists.extend(common::read_surface_list("torus.txt").into_iter().map(|s| s.faces));
+    lists.extend(
+        common::read_surface_list("torus.txt")
+            .into_iter()
+            .map(|s| s.faces),
+    );
     lists.extend(
         common::read_surface_list("projective-plane.txt")
             .into_iter()
@@ -234,11 +253,21 @@ fn canonical_form_separates_exactly_the_isomorphism_classes() {
         rng.shuffle(&mut perm);
         let g: Vec<[u32; 3]> = f
             .iter()
-            .map(|t| [perm[t[2] as usize], perm[t[0] as usize], perm[t[1] as usize]])
+            .map(|t| {
+                [
+                    perm[t[2] as usize],
+                    perm[t[0] as usize],
+                    perm[t[1] as usize],
+                ]
+            })
             .collect();
         assert_eq!(&canonical(&g), form);
     }
-    println!("canonical forms: {} lists, {} classes", lists.len(), distinct.len());
+    println!(
+        "canonical forms: {} lists, {} classes",
+        lists.len(),
+        distinct.len()
+    );
     assert!(distinct.len() >= 57 + 21 + 2 - 8);
 }
 
@@ -286,7 +315,9 @@ fn twin_lemma5_trapped_stays_trapped() {
             }
         }
     }
-    println!("Lemma 5: {cases} (vertex, edge) pairs, {applicable} with w trapped and e contractible");
+    println!(
+        "Lemma 5: {cases} (vertex, edge) pairs, {applicable} with w trapped and e contractible"
+    );
     assert!(cases >= 5000 && applicable >= 10);
 }
 
@@ -368,7 +399,10 @@ impl Leaves {
         let t4 = vec![[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]];
         published.insert("S0", vec![t4]);
         let list = |f: &str| -> Vec<Vec<[u32; 3]>> {
-            common::read_surface_list(f).into_iter().map(|s| s.faces).collect()
+            common::read_surface_list(f)
+                .into_iter()
+                .map(|s| s.faces)
+                .collect()
         };
         published.insert("S1", list("torus.txt"));
         published.insert("N1", list("projective-plane.txt"));
@@ -521,7 +555,10 @@ impl SplitChecker {
         t.validate().unwrap();
         assert_eq!(t.euler_characteristic(), self.base_chi, "χ");
         assert_eq!(t.is_orientable(), self.base_orientable, "orientability");
-        assert!(t.link_condition_naive(u, w), "the split edge [{u}, {w}] is contractible");
+        assert!(
+            t.link_condition_naive(u, w),
+            "the split edge [{u}, {w}] is contractible"
+        );
         // Layout-dependent checks on every result (the corner layout differs between
         // results of the same class): the marked link test against the naive one, and
         // contract + undo == identity on every edge in both directions.
@@ -570,7 +607,9 @@ impl SplitChecker {
             common::check(t, &r, alg, "split result");
             let faces = r.tri.face_list();
             assert!(
-                self.published.iter().any(|p| common::is_isomorphic(&faces, p)),
+                self.published
+                    .iter()
+                    .any(|p| common::is_isomorphic(&faces, p)),
                 "{}: output {faces:?} not isomorphic to a published irreducible triangulation",
                 alg.name()
             );
@@ -624,7 +663,10 @@ fn split_sequences_of_the_tetrahedron() {
     let s = split_sequences("T4", base, vec![t4]);
     // 4 vertices x 6 ordered pairs, then every split of each 5-vertex result.
     assert!(s.results >= 24 + 24 * 40, "{s:?}");
-    assert!(s.classes >= 3 && s.prop6 >= 4 && s.prop7_became >= 1, "{s:?}");
+    assert!(
+        s.classes >= 3 && s.prop6 >= 4 && s.prop7_became >= 1,
+        "{s:?}"
+    );
 }
 
 #[test]
@@ -636,7 +678,10 @@ fn split_sequences_of_the_torus7() {
         .collect();
     let s = split_sequences("torus7", base, published);
     assert!(s.results >= 210 + 210 * 200, "{s:?}");
-    assert!(s.classes >= 10 && s.lemma5 >= 10 && s.prop7_became >= 1, "{s:?}");
+    assert!(
+        s.classes >= 10 && s.lemma5 >= 10 && s.prop7_became >= 1,
+        "{s:?}"
+    );
 }
 
 #[test]
@@ -648,5 +693,8 @@ fn split_sequences_of_the_projective_plane6() {
         .collect();
     let s = split_sequences("RP2_6", base, published);
     assert!(s.results >= 120 + 120 * 100, "{s:?}");
-    assert!(s.classes >= 5 && s.lemma5 >= 5 && s.prop7_became >= 1, "{s:?}");
+    assert!(
+        s.classes >= 5 && s.lemma5 >= 5 && s.prop7_became >= 1,
+        "{s:?}"
+    );
 }

@@ -33,9 +33,20 @@ fn surface_kind() -> impl Strategy<Value = SurfaceKind> {
 /// sizes when applied (so every generated list is applicable and shrinks well).
 #[derive(Clone, Debug)]
 enum Op {
-    Split { vertex: u32, i: u8, j: u8 },
-    Flip { face: u32, slot: u8 },
-    Contract { face: u32, slot: u8, keep_first: bool },
+    Split {
+        vertex: u32,
+        i: u8,
+        j: u8,
+    },
+    Flip {
+        face: u32,
+        slot: u8,
+    },
+    Contract {
+        face: u32,
+        slot: u8,
+        keep_first: bool,
+    },
 }
 
 fn op() -> impl Strategy<Value = Op> {
@@ -414,7 +425,10 @@ fn brute_force_seed_changes_are_allowed_but_outputs_stay_valid() {
     for alg in [Algorithm::Rs, Algorithm::Schipper] {
         let a = reduce(t.clone(), alg, &common::options(1));
         let b = reduce(t.clone(), alg, &common::options(2));
-        assert!(a.tri == b.tri && a.history == b.history, "{alg:?} depends on the seed");
+        assert!(
+            a.tri == b.tri && a.history == b.history,
+            "{alg:?} depends on the seed"
+        );
     }
     for seed in 0..4 {
         let r = reduce(t.clone(), Algorithm::Brute, &common::options(seed));

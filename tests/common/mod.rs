@@ -404,9 +404,7 @@ pub fn check(input: &Triangulation, r: &Reduction, alg: Algorithm, label: &str) 
 /// cubic and bridgeless (every edge lies on the cycle of faces around either endpoint),
 /// so by Petersen's theorem it has a perfect matching. Node `k` is the `k`-th live
 /// face in id order.
-pub fn dual_graph(
-    t: &Triangulation,
-) -> petgraph::graph::UnGraph<contractible::FaceId, ()> {
+pub fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::FaceId, ()> {
     let mut g = petgraph::graph::UnGraph::with_capacity(t.face_count(), t.edge_count());
     let mut node = vec![petgraph::graph::NodeIndex::end(); t.face_capacity()];
     for f in t.faces() {
