@@ -396,3 +396,23 @@ pub fn check(input: &Triangulation, r: &Reduction, alg: Algorithm, label: &str) 
         }
     }
 }
+
+// ---- Dual graph (petgraph), the reference for tri-quad matchings.
+
+/// The dual graph of `t` as a petgraph: one node per live face (weight: its id), one
+/// edge per edge of `t` joining the two faces that share it. On a closed surface it is
+/// cubic and bridgeless (every edge lies on the cycle of faces around either endpoint),
+/// so by Petersen's theorem it has a perfect matching. Node `k` is the `k`-th live
+/// face in id order.
+pub fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::FaceId, ()> {
+    let mut g = petgraph::graph::UnGraph::with_capacity(t.face_count(), t.edge_count());
+    let mut node = vec![petgraph::graph::NodeIndex::end(); t.face_capacity()];
+    for f in t.faces() {
+        node[f.index()] = g.add_node(f);
+    }
+    for (_, _, c) in t.edges() {
+        let o = t.opposite(c);
+        g.add_edge(node[c.face().index()], node[o.face().index()], ());
+    }
+    g
+}
