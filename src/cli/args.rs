@@ -1,0 +1,196 @@
+//! The command-line grammar (clap derive).
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+/// Topology-preserving edge contraction on closed triangulated surfaces.
+///
+/// Reads OFF, OBJ and PLY (ascii or binary), optionally gzip-compressed (`.gz`).
+/// Exit codes: 0 success, 2 invalid input, 1 other failures.
+#[derive(Parser, Debug)]
+#[command(name = "contractible", version, about, long_about = None)]
+pub struct Cli {
+    /// Print a machine-readable JSON result on stdout (and nothing else there).
+    #[arg(long, global = true)]
+    pub json: bool,
+    /// No progress bars and no human-readable text (errors still go to stderr).
+    #[arg(long, short, global = true)]
+    pub quiet: bool,
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Validate a mesh and print its topology per connected component.
+    Info(InfoArgs),
+    /// Generate a closed triangulated surface.
+    Gen(GenArgs),
+    /// Convert between mesh formats (by extension), validating the input.
+    Convert(ConvertArgs),
+    /// Contract edges until every component is irreducible.
+    Reduce(ReduceArgs),
+    /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
+    /// and the brute force, verify.
+    Demo(DemoArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct InfoArgs {
+    /// Mesh file (.off/.obj/.ply, optionally .gz).
+    pub file: PathBuf,
+}
+
+#[derive(Args, Debug)]
+pub struct GenArgs {
+    #[command(subcommand)]
+    pub kind: GenKind,
+}
+
+/// The output file of a generator.
+#[derive(Args, Debug)]
+pub struct OutArg {
+    /// Output file; the format follows the extension (.off/.obj/.ply, optionally .gz).
+    #[arg(short, long)]
+    pub output: PathBuf,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum GenKind {
+    /// A random triangulation grown from a minimal one by random vertex splits (no
+    /// coordinates: every vertex is written as 0 0 0).
+    Random(RandomArgs),
+    /// A brick with cavities and through-holes (the RS paper's benchmark surfaces).
+    Brick(BrickArgs),
+    /// 1-to-4 subdivision of an input surface (positions kept, midpoints averaged).
+    Subdivide(SubdivideArgs),
+    /// The boundary of the tetrahedron (4 vertices).
+    Tetrahedron(OutArg),
+    /// The boundary of the octahedron (6 vertices).
+    Octahedron(OutArg),
+    /// The boundary of the icosahedron (12 vertices).
+    Icosahedron(OutArg),
+    /// The 7-vertex torus.
+    Torus7(OutArg),
+    /// The 6-vertex projective plane.
+    Rp2(OutArg),
+    /// A 9-vertex Klein bottle.
+    Klein(OutArg),
+}
+
+#[derive(Args, Debug)]
+pub struct RandomArgs {
+    /// Orientable genus g (default 0 unless --crosscaps is given).
+    #[arg(long, conflicts_with = "crosscaps")]
+    pub genus: Option<u32>,
+    /// Non-orientable surface with this Euler genus h >= 1 (1: projective plane, 2: Klein
+    /// bottle).
+    #[arg(long)]
+    pub crosscaps: Option<u32>,
+    /// Grow until at least this many faces.
+    #[arg(long, default_value_t = 1000)]
+    pub faces: usize,
+    /// Percentage of splits followed by a random edge flip.
+    #[arg(long, default_value_t = 0)]
+    pub flips: u32,
+    /// Seed of the documented random stream.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    #[command(flatten)]
+    pub out: OutArg,
+}
+
+#[derive(Args, Debug)]
+pub struct BrickArgs {
+    /// Number of sites (cavities, of which --holes are through-holes).
+    #[arg(long, required_unless_present = "paper")]
+    pub cavities: Option<u32>,
+    /// How many of the sites are through-holes: the genus.
+    #[arg(long, default_value_t = 0, conflicts_with = "paper")]
+    pub holes: u32,
+    /// Uniform grid resolution (cells per site side).
+    #[arg(long, conflicts_with_all = ["faces", "paper"])]
+    pub resolution: Option<u32>,
+    /// Choose the shape whose triangle count is closest to this target.
+    #[arg(long, conflicts_with = "paper")]
+    pub faces: Option<u64>,
+    /// A member of the paper's benchmark groups: B0..B9, C0..C7, D0..D9.
+    #[arg(long, conflicts_with = "cavities")]
+    pub paper: Option<String>,
+    #[command(flatten)]
+    pub out: OutArg,
+}
+
+#[derive(Args, Debug)]
+pub struct SubdivideArgs {
+    /// Input surface.
+    #[arg(long)]
+    pub input: PathBuf,
+    /// Number of 1-to-4 subdivision rounds.
+    #[arg(long, default_value_t = 1)]
+    pub levels: u32,
+    #[command(flatten)]
+    pub out: OutArg,
+}
+
+#[derive(Args, Debug)]
+pub struct ConvertArgs {
+    /// Input mesh.
+    pub input: PathBuf,
+    /// Output mesh (.off/.obj/.ply, optionally .gz; PLY is written binary little-endian).
+    pub output: PathBuf,
+    /// Convert even if the input is not a union of closed surfaces.
+    #[arg(long)]
+    pub no_validate: bool,
+}
+
+/// The reduction algorithms.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Algo {
+    /// Ramaswami–Siqueira.
+    Rs,
+    /// Schipper.
+    Schipper,
+    /// Randomized brute force.
+    Brute,
+}
+
+impl From<Algo> for contractible::irreducible::Algorithm {
+    fn from(a: Algo) -> Self {
+        use contractible::irreducible::Algorithm;
+        match a {
+            Algo::Rs => Algorithm::Rs,
+            Algo::Schipper => Algorithm::Schipper,
+            Algo::Brute => Algorithm::Brute,
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct ReduceArgs {
+    /// Input mesh.
+    pub input: PathBuf,
+    /// Write the irreducible components here (original coordinates of the survivors).
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Algorithm.
+    #[arg(long, value_enum, default_value_t = Algo::Rs)]
+    pub algo: Algo,
+    /// Seed (used by the brute force's shuffle).
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Skip the independent check that every output component is irreducible.
+    #[arg(long)]
+    pub no_verify: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct DemoArgs {
+    /// Seed for the random surface and the brute force.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Algorithms to compare (comma-separated).
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Algo::Rs, Algo::Schipper, Algo::Brute])]
+    pub algos: Vec<Algo>,
+}

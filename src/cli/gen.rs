@@ -1,0 +1,198 @@
+//! `contractible gen KIND ... -o FILE`: generators.
+
+use std::path::Path;
+
+use contractible::core::MAX_FACES;
+use contractible::gen::{self, BrickParams, RandomParams, SurfaceKind};
+use contractible::{Surfaces, TriMesh, Triangulation};
+
+use super::args::{BrickArgs, GenArgs, GenKind, RandomArgs, SubdivideArgs};
+use super::info::Report;
+use super::progress::spinner;
+use super::{meshio, print_json, CliError, Ui};
+
+/// The faces of `t` with vertex ids compacted to `0..V` (in id order), no positions.
+pub fn tri_to_mesh(t: &Triangulation) -> TriMesh {
+    let mut map = vec![u32::MAX; t.vertex_capacity()];
+    for (i, v) in t.vertices().enumerate() {
+        map[v.index()] = i as u32;
+    }
+    let faces = t
+        .faces()
+        .map(|f| t.face_vertices(f).map(|v| map[v.index()]))
+        .collect();
+    TriMesh::combinatorial(t.vertex_count(), faces)
+}
+
+fn too_large(what: &str, faces: u64) -> CliError {
+    CliError::Input(format!(
+        "{what}: {faces} faces requested, at most {MAX_FACES} are supported"
+    ))
+}
+
+fn random_mesh(a: &RandomArgs, ui: Ui) -> Result<TriMesh, CliError> {
+    let surface = match (a.genus, a.crosscaps) {
+        (_, Some(0)) => {
+            return Err(CliError::Input(
+                "--crosscaps must be at least 1 (use --genus 0 for the sphere)".into(),
+            ))
+        }
+        (_, Some(h)) => SurfaceKind::NonOrientable(h),
+        (g, None) => SurfaceKind::Orientable(g.unwrap_or(0)),
+    };
+    if a.faces > MAX_FACES {
+        return Err(too_large("random", a.faces as u64));
+    }
+    // The seed surface alone has about 14 faces per handle / 10 per cross-cap.
+    let seed_faces = match surface {
+        SurfaceKind::Orientable(g) => 14 * g as u64,
+        SurfaceKind::NonOrientable(h) => 10 * h as u64,
+    };
+    if seed_faces > MAX_FACES as u64 {
+        return Err(too_large("random", seed_faces));
+    }
+    if a.flips > 100 {
+        return Err(CliError::Input("--flips is a percentage (0..=100)".into()));
+    }
+    let pb = spinner(ui, format!("growing a random surface to {} faces", a.faces));
+    let t = gen::random(&RandomParams {
+        surface,
+        min_faces: a.faces,
+        flip_percent: a.flips,
+        seed: a.seed,
+    });
+    pb.finish_and_clear();
+    Ok(tri_to_mesh(&t))
+}
+
+/// Parses `B7`, `c3`, `D0` into the paper's group and index.
+fn parse_paper(s: &str) -> Result<(char, u32), CliError> {
+    let bad = || {
+        CliError::Input(format!(
+            "--paper {s:?}: expected one of B0..B9, C0..C7, D0..D9"
+        ))
+    };
+    let mut chars = s.chars();
+    let group = chars.next().ok_or_else(bad)?.to_ascii_uppercase();
+    let index: u32 = chars.as_str().parse().map_err(|_| bad())?;
+    gen::paper_entry(group, index).ok_or_else(bad)?;
+    Ok((group, index))
+}
+
+fn brick_mesh(a: &BrickArgs, ui: Ui) -> Result<TriMesh, CliError> {
+    if let Some(p) = &a.paper {
+        let (group, index) = parse_paper(p)?;
+        let pb = spinner(ui, format!("building paper brick {group}{index}"));
+        let m = gen::paper_family(group, index);
+        pb.finish_and_clear();
+        return Ok(m);
+    }
+    let cavities = a.cavities.unwrap_or(0);
+    if a.holes > cavities {
+        return Err(CliError::Input(format!(
+            "--holes {} exceeds --cavities {cavities}",
+            a.holes
+        )));
+    }
+    if let Some(target) = a.faces {
+        if target > MAX_FACES as u64 {
+            return Err(too_large("brick", target));
+        }
+        let shape = gen::brick_target_shape(cavities, a.holes, target);
+        let (_, _, f) = gen::brick_shape_counts(cavities, a.holes, &shape);
+        if f > MAX_FACES as u64 {
+            return Err(too_large("brick", f));
+        }
+        let pb = spinner(ui, format!("building a brick with about {target} faces"));
+        let m = gen::brick_shaped(cavities, a.holes, &shape);
+        pb.finish_and_clear();
+        return Ok(m);
+    }
+    let resolution = a.resolution.unwrap_or(1);
+    if resolution == 0 {
+        return Err(CliError::Input("--resolution must be at least 1".into()));
+    }
+    let params = BrickParams {
+        cavities,
+        holes: a.holes,
+        resolution,
+    };
+    let (_, _, f) = gen::brick_counts(&params);
+    if f > MAX_FACES as u64 {
+        return Err(too_large("brick", f));
+    }
+    let pb = spinner(ui, format!("building a brick with {f} faces"));
+    let m = gen::brick(&params);
+    pb.finish_and_clear();
+    Ok(m)
+}
+
+fn subdivide_mesh(a: &SubdivideArgs, ui: Ui) -> Result<TriMesh, CliError> {
+    let (mesh, _) = meshio::read(&a.input, ui)?;
+    meshio::build(&mesh, &a.input, ui)?;
+    let (mesh, _) = meshio::compact(&mesh);
+    let faces = (mesh.faces.len() as u128) << (2 * a.levels.min(32));
+    if a.levels > 32 || faces > MAX_FACES as u128 {
+        return Err(CliError::Input(format!(
+            "subdivide: {} levels would give more than {MAX_FACES} faces",
+            a.levels
+        )));
+    }
+    let pb = spinner(ui, format!("subdividing {} levels", a.levels));
+    let m = gen::subdivide(&mesh, a.levels);
+    pb.finish_and_clear();
+    Ok(m)
+}
+
+fn output_of(kind: &GenKind) -> &Path {
+    match kind {
+        GenKind::Random(r) => &r.out.output,
+        GenKind::Brick(b) => &b.out.output,
+        GenKind::Subdivide(s) => &s.out.output,
+        GenKind::Tetrahedron(o)
+        | GenKind::Octahedron(o)
+        | GenKind::Icosahedron(o)
+        | GenKind::Torus7(o)
+        | GenKind::Rp2(o)
+        | GenKind::Klein(o) => &o.output,
+    }
+}
+
+pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
+    let out = output_of(&a.kind);
+    meshio::check_output(out)?;
+    let mesh = match &a.kind {
+        GenKind::Random(r) => random_mesh(r, ui)?,
+        GenKind::Brick(b) => brick_mesh(b, ui)?,
+        GenKind::Subdivide(s) => subdivide_mesh(s, ui)?,
+        GenKind::Tetrahedron(_) => gen::tetrahedron(),
+        GenKind::Octahedron(_) => gen::octahedron(),
+        GenKind::Icosahedron(_) => gen::icosahedron(),
+        GenKind::Torus7(_) => gen::torus7(),
+        GenKind::Rp2(_) => gen::projective_plane6(),
+        GenKind::Klein(_) => gen::klein_bottle(),
+    };
+    let surfaces = Surfaces::from_mesh(&mesh)
+        .map_err(|e| CliError::Failure(format!("generated mesh is not a surface: {e}")))?;
+    meshio::write(out, &mesh, ui)?;
+    let report = Report::of(out, &surfaces, 0.0, 0.0);
+    if ui.json {
+        print_json(&report)?;
+    } else if !ui.quiet {
+        println!(
+            "wrote {}: V={} E={} F={} χ={} components={} {}",
+            out.display(),
+            report.vertices,
+            report.edges,
+            report.faces,
+            report.euler_characteristic,
+            report.components,
+            report
+                .component_list
+                .first()
+                .map(|c| c.surface_name())
+                .unwrap_or_default()
+        );
+    }
+    Ok(())
+}

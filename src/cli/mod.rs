@@ -1,0 +1,99 @@
+//! Command-line interface (binary only): argument parsing, dispatch, exit codes.
+//!
+//! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
+//! a disjoint union of closed surfaces, bad arguments); 1 any other failure.
+
+mod args;
+mod convert;
+mod demo;
+mod gen;
+mod info;
+mod meshio;
+mod progress;
+mod reduce;
+
+use std::process::ExitCode;
+
+use clap::Parser;
+
+pub use args::Cli;
+
+/// A failure of a subcommand, with the exit code it maps to.
+#[derive(Debug)]
+pub enum CliError {
+    /// Invalid input (exit code 2): one message per problem, each printed as one line.
+    Input(String),
+    /// Any other failure (exit code 1).
+    Failure(String),
+}
+
+impl CliError {
+    fn exit_code(&self) -> u8 {
+        match self {
+            CliError::Input(_) => 2,
+            CliError::Failure(_) => 1,
+        }
+    }
+
+    fn message(&self) -> &str {
+        match self {
+            CliError::Input(m) | CliError::Failure(m) => m,
+        }
+    }
+}
+
+/// Global output settings shared by every subcommand.
+#[derive(Clone, Copy, Debug)]
+pub struct Ui {
+    /// Print the machine-readable result (only it) on stdout.
+    pub json: bool,
+    /// No progress bars and no human-readable text.
+    pub quiet: bool,
+}
+
+impl Ui {
+    /// Whether human-readable text goes to stdout.
+    pub fn human(&self) -> bool {
+        !self.json && !self.quiet
+    }
+
+    /// Prints a warning on stderr (unless quiet).
+    pub fn warn(&self, msg: &str) {
+        if !self.quiet {
+            eprintln!("warning: {msg}");
+        }
+    }
+}
+
+/// Prints `value` as pretty JSON on stdout.
+pub fn print_json<T: serde::Serialize>(value: &T) -> Result<(), CliError> {
+    let s = serde_json::to_string_pretty(value)
+        .map_err(|e| CliError::Failure(format!("cannot encode JSON: {e}")))?;
+    println!("{s}");
+    Ok(())
+}
+
+/// Parses the command line, runs it and maps the result to an exit code.
+pub fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let ui = Ui {
+        json: cli.json,
+        quiet: cli.quiet,
+    };
+    let result = match cli.command {
+        args::Command::Info(a) => info::run(&a, ui),
+        args::Command::Gen(a) => gen::run(&a, ui),
+        args::Command::Convert(a) => convert::run(&a, ui),
+        args::Command::Reduce(a) => reduce::run(&a, ui),
+        args::Command::Demo(a) => demo::run(&a, ui),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            for line in e.message().lines() {
+                eprintln!("error: {line}");
+            }
+            ExitCode::from(e.exit_code())
+        }
+    }
+}

@@ -1,0 +1,241 @@
+//! `contractible reduce IN [-o OUT]`: irreducible triangulations per component.
+
+use std::path::Path;
+
+use contractible::irreducible::{self, Algorithm, Options, Reduction};
+use contractible::{Surfaces, TriMesh};
+use serde::Serialize;
+
+use super::args::ReduceArgs;
+use super::progress::bar;
+use super::{meshio, print_json, CliError, Ui};
+
+/// Counters of one reduction (one component, or the totals over all of them).
+#[derive(Serialize, Debug, Clone)]
+pub struct ReduceStats {
+    pub algo: &'static str,
+    pub vertices_in: usize,
+    pub edges_in: usize,
+    pub faces_in: usize,
+    pub euler_characteristic: i64,
+    pub orientable: bool,
+    /// Orientable genus (sum over components); `null` if any component is non-orientable.
+    pub genus: Option<i64>,
+    /// `2 - χ` (summed over components).
+    pub euler_genus: i64,
+    pub vertices_out: usize,
+    pub edges_out: usize,
+    pub faces_out: usize,
+    /// ℓ: link-condition tests.
+    pub link_tests: u64,
+    /// ε: edges tested more than once.
+    pub edges_tested_more_than_once: u64,
+    pub contractions: u64,
+    /// Time in the algorithm proper (no I/O, no validation).
+    pub seconds: f64,
+    /// Whether the naive link test found no contractible edge (`null`: not checked).
+    pub irreducible: Option<bool>,
+}
+
+impl ReduceStats {
+    fn of(r: &Reduction, orientable: bool, irreducible: Option<bool>) -> Self {
+        let s = &r.stats;
+        let chi = s.vertices_in as i64 - s.edges_in as i64 + s.faces_in as i64;
+        ReduceStats {
+            algo: r.algorithm.name(),
+            vertices_in: s.vertices_in,
+            edges_in: s.edges_in,
+            faces_in: s.faces_in,
+            euler_characteristic: chi,
+            orientable,
+            genus: orientable.then_some((2 - chi) / 2),
+            euler_genus: 2 - chi,
+            vertices_out: s.vertices_out,
+            edges_out: r.tri.edge_count(),
+            faces_out: s.faces_out,
+            link_tests: s.link_tests,
+            edges_tested_more_than_once: s.edges_tested_more_than_once,
+            contractions: s.contractions,
+            seconds: s.seconds,
+            irreducible,
+        }
+    }
+
+    pub fn total(algo: Algorithm, parts: &[ReduceStats]) -> Self {
+        let orientable = parts.iter().all(|p| p.orientable);
+        let sum = |f: fn(&ReduceStats) -> usize| parts.iter().map(f).sum::<usize>();
+        let sum64 = |f: fn(&ReduceStats) -> u64| parts.iter().map(f).sum::<u64>();
+        let chi: i64 = parts.iter().map(|p| p.euler_characteristic).sum();
+        let irreducible = parts
+            .iter()
+            .map(|p| p.irreducible)
+            .try_fold(true, |acc, x| x.map(|b| acc && b));
+        ReduceStats {
+            algo: algo.name(),
+            vertices_in: sum(|p| p.vertices_in),
+            edges_in: sum(|p| p.edges_in),
+            faces_in: sum(|p| p.faces_in),
+            euler_characteristic: chi,
+            orientable,
+            genus: orientable.then(|| parts.iter().filter_map(|p| p.genus).sum()),
+            euler_genus: parts.iter().map(|p| p.euler_genus).sum(),
+            vertices_out: sum(|p| p.vertices_out),
+            edges_out: sum(|p| p.edges_out),
+            faces_out: sum(|p| p.faces_out),
+            link_tests: sum64(|p| p.link_tests),
+            edges_tested_more_than_once: sum64(|p| p.edges_tested_more_than_once),
+            contractions: sum64(|p| p.contractions),
+            seconds: parts.iter().map(|p| p.seconds).sum(),
+            irreducible,
+        }
+    }
+}
+
+/// The JSON result of `reduce`: totals at the top level plus one entry per component.
+#[derive(Serialize, Debug)]
+pub struct ReduceReport {
+    pub file: String,
+    pub output: Option<String>,
+    pub seed: u64,
+    pub component_count: usize,
+    pub dropped_vertices: usize,
+    #[serde(flatten)]
+    pub totals: ReduceStats,
+    pub components: Vec<ReduceStats>,
+    pub seconds_read: f64,
+    pub seconds_build: f64,
+}
+
+/// Reduces (a copy of) every component of `surfaces` with `algo`; verifies each output
+/// with the naive link test when `verify`. Returns the reductions and their counters.
+pub fn reduce_all(
+    surfaces: &Surfaces,
+    algo: Algorithm,
+    seed: u64,
+    verify: bool,
+    ui: Ui,
+) -> (Vec<Reduction>, Vec<ReduceStats>) {
+    let n = surfaces.components.len();
+    let pb = bar(ui, n as u64, format!("reducing ({})", algo.name()));
+    let options = Options {
+        seed,
+        count_retests: true,
+    };
+    let mut reductions = Vec::with_capacity(n);
+    let mut stats = Vec::with_capacity(n);
+    for c in &surfaces.components {
+        let orientable = c.tri.is_orientable();
+        let r = irreducible::reduce(c.tri.clone(), algo, &options);
+        let irr = verify.then(|| r.tri.is_irreducible_naive());
+        stats.push(ReduceStats::of(&r, orientable, irr));
+        reductions.push(r);
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    (reductions, stats)
+}
+
+/// The union of the reduced components as a mesh over the original vertices (original
+/// coordinates), restricted to the surviving vertices and renumbered compactly in
+/// original index order.
+pub fn output_mesh(mesh: &TriMesh, surfaces: &Surfaces, reductions: &[Reduction]) -> TriMesh {
+    let mut faces = Vec::new();
+    for (c, r) in surfaces.components.iter().zip(reductions) {
+        for f in r.tri.faces() {
+            faces.push(r.tri.face_vertices(f).map(|v| c.vertex_origin[v.index()]));
+        }
+    }
+    let full = TriMesh {
+        vertex_count: mesh.vertex_count,
+        positions: mesh.positions.clone(),
+        faces,
+    };
+    meshio::compact(&full).0
+}
+
+fn print_table(stats: &[ReduceStats], totals: &ReduceStats, max_rows: usize) {
+    println!(
+        "{:>9} {:>10} {:>9} {:>9} {:>10} {:>6} {:>12} {:>9} {:>10}",
+        "component", "surface", "V in", "V out", "ℓ", "ε", "contractions", "seconds", "irreducible"
+    );
+    let surface = |s: &ReduceStats| match s.genus {
+        Some(g) => format!("g={g}"),
+        None => format!("h={} (n.o.)", s.euler_genus),
+    };
+    let verdict = |s: &ReduceStats| match s.irreducible {
+        Some(true) => "yes",
+        Some(false) => "NO",
+        None => "-",
+    };
+    let row = |name: String, s: &ReduceStats| {
+        println!(
+            "{:>9} {:>10} {:>9} {:>9} {:>10} {:>6} {:>12} {:>9.4} {:>10}",
+            name,
+            surface(s),
+            s.vertices_in,
+            s.vertices_out,
+            s.link_tests,
+            s.edges_tested_more_than_once,
+            s.contractions,
+            s.seconds,
+            verdict(s)
+        )
+    };
+    for (i, s) in stats.iter().enumerate().take(max_rows) {
+        row(i.to_string(), s);
+    }
+    if stats.len() > max_rows {
+        println!("{:>9}", format!("({} more)", stats.len() - max_rows));
+    }
+    row("total".into(), totals);
+}
+
+pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
+    if let Some(out) = &a.output {
+        meshio::check_output(out)?;
+    }
+    let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
+    let (surfaces, seconds_build) = meshio::build(&mesh, &a.input, ui)?;
+    let algo: Algorithm = a.algo.into();
+    let (reductions, stats) = reduce_all(&surfaces, algo, a.seed, !a.no_verify, ui);
+    let totals = ReduceStats::total(algo, &stats);
+    if let Some(out) = &a.output {
+        let m = output_mesh(&mesh, &surfaces, &reductions);
+        meshio::write(out, &m, ui)?;
+    }
+    let report = ReduceReport {
+        file: a.input.display().to_string(),
+        output: a.output.as_deref().map(|p: &Path| p.display().to_string()),
+        seed: a.seed,
+        component_count: stats.len(),
+        dropped_vertices: surfaces.dropped_vertices.len(),
+        totals,
+        components: stats,
+        seconds_read,
+        seconds_build,
+    };
+    if ui.json {
+        print_json(&report)?;
+    } else if !ui.quiet {
+        println!("{} ({}):", report.file, algo.name());
+        print_table(&report.components, &report.totals, 20);
+        if let Some(o) = &report.output {
+            println!("wrote {o}");
+        }
+    }
+    if report.totals.irreducible == Some(false) {
+        let bad: Vec<String> = report
+            .components
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| s.irreducible == Some(false))
+            .map(|(i, _)| i.to_string())
+            .collect();
+        return Err(CliError::Failure(format!(
+            "{}: output of component(s) {} still has a contractible edge (naive link test)",
+            report.file,
+            bad.join(", ")
+        )));
+    }
+    Ok(())
+}
