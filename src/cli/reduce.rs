@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use contractible::irreducible::{self, Algorithm, Options, Reduction};
-use contractible::{Surfaces, TriMesh};
+use contractible::{Surfaces, TriMesh, Triangulation};
 use serde::Serialize;
 
 use super::args::ReduceArgs;
@@ -137,17 +137,21 @@ pub fn reduce_all(
 
 /// The union of the reduced components as a mesh over the original vertices (original
 /// coordinates), restricted to the surviving vertices and renumbered compactly in
-/// original index order.
-pub fn output_mesh(mesh: &TriMesh, surfaces: &Surfaces, reductions: &[Reduction]) -> TriMesh {
+/// original index order. `parts` pairs each reduced component with its `vertex_origin`.
+pub fn output_mesh(
+    vertex_count: usize,
+    positions: Option<Vec<[f64; 3]>>,
+    parts: &[(Triangulation, Vec<u32>)],
+) -> TriMesh {
     let mut faces = Vec::new();
-    for (c, r) in surfaces.components.iter().zip(reductions) {
-        for f in r.tri.faces() {
-            faces.push(r.tri.face_vertices(f).map(|v| c.vertex_origin[v.index()]));
+    for (t, origin) in parts {
+        for f in t.faces() {
+            faces.push(t.face_vertices(f).map(|v| origin[v.index()]));
         }
     }
     let full = TriMesh {
-        vertex_count: mesh.vertex_count,
-        positions: mesh.positions.clone(),
+        vertex_count,
+        positions,
         faces,
     };
     meshio::compact(&full).0
@@ -196,11 +200,36 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
     }
     let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
     let (surfaces, seconds_build) = meshio::build(&mesh, &a.input, ui)?;
+    // Keep only what the output needs: the big face list and the triangulations are
+    // consumed as the components are reduced (peak memory matters on 4M-face inputs).
+    let TriMesh {
+        vertex_count,
+        positions,
+        faces,
+    } = mesh;
+    drop(faces);
+    let dropped_vertices = surfaces.dropped_vertices.len();
     let algo: Algorithm = a.algo.into();
-    let (reductions, stats) = reduce_all(&surfaces, algo, a.seed, !a.no_verify, ui);
+    let options = Options {
+        seed: a.seed,
+        count_retests: true,
+    };
+    let n = surfaces.components.len();
+    let pb = bar(ui, n as u64, format!("reducing ({})", algo.name()));
+    let mut parts = Vec::with_capacity(n);
+    let mut stats = Vec::with_capacity(n);
+    for c in surfaces.components {
+        let orientable = c.tri.is_orientable();
+        let r = irreducible::reduce(c.tri, algo, &options);
+        let irr = (!a.no_verify).then(|| r.tri.is_irreducible_naive());
+        stats.push(ReduceStats::of(&r, orientable, irr));
+        parts.push((r.tri, c.vertex_origin));
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
     let totals = ReduceStats::total(algo, &stats);
     if let Some(out) = &a.output {
-        let m = output_mesh(&mesh, &surfaces, &reductions);
+        let m = output_mesh(vertex_count, positions, &parts);
         meshio::write(out, &m, ui)?;
     }
     let report = ReduceReport {
@@ -208,7 +237,7 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         output: a.output.as_deref().map(|p: &Path| p.display().to_string()),
         seed: a.seed,
         component_count: stats.len(),
-        dropped_vertices: surfaces.dropped_vertices.len(),
+        dropped_vertices,
         totals,
         components: stats,
         seconds_read,

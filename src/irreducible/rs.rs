@@ -384,7 +384,7 @@ impl Rs {
         }
     }
 
-    /// Fills `scratch` with lk(v) and returns the positions of `u` in it.
+    /// Fills `scratch` with lk(v) and returns the position of `u` in it. O(d_v).
     fn link_around(&mut self, v: u32, u: u32) -> usize {
         self.scratch.clear();
         self.scratch.extend(self.tri.link(VertexId(v)).map(|w| w.0));
@@ -394,15 +394,27 @@ impl Rs {
             .expect("u is a neighbour of v")
     }
 
+    /// A corner opposite edge `[u, v]`, found from `v`'s side in O(d_v) (`u`'s degree can
+    /// be in the millions while it is processed).
+    fn edge_corner(&self, u: u32, v: u32) -> crate::core::Corner {
+        let c = self
+            .tri
+            .star(VertexId(v))
+            .find(|s| s.neighbour.0 == u)
+            .expect("[u, v] is an edge")
+            .corner;
+        if self.tri.vertex(c.next()).0 == u {
+            c.prev()
+        } else {
+            c.next()
+        }
+    }
+
     /// Alg. 4.4: the link test of `[u, v]` with `d(v) > 3`, counting critical cycles.
     fn test(&mut self, u: u32, v: u32) {
         self.link_tests += 1;
         if self.counter.is_enabled() {
-            // Name the edge by the corner opposite it in a face of [u, v].
-            let c = self
-                .tri
-                .edge_corners(VertexId(u), VertexId(v))
-                .expect("[u, v] is an edge")[0];
+            let c = self.edge_corner(u, v);
             self.counter.tested(c);
         }
         let i = self.link_around(v, u);
