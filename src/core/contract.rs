@@ -190,12 +190,20 @@ impl Triangulation {
             "contract_tested: [{u}, {v}] fails the link condition"
         );
         // Find a corner at v in a face containing u, walking v's star (O(d_v)).
-        let first = self
-            .star(v)
-            .find(|s| s.neighbour == u)
-            .map(|s| s.corner)
-            .expect("contract_tested: [u, v] is not an edge");
-        // The two faces of [u, v]: `first`'s face and the one across [u, v].
+        // One walk around v: its corners in star order, and where u is. The step whose
+        // exit neighbour is u and the step after it are the two faces of [u, v].
+        let start = history.renamed.len();
+        let mut at_u = None;
+        for (k, s) in self.star(v).enumerate() {
+            history.renamed.push(s.corner);
+            if s.neighbour == u {
+                at_u = Some(k);
+            }
+        }
+        let d = history.renamed.len() - start;
+        let p = at_u.expect("contract_tested: [u, v] is not an edge");
+        let q = (p + 1) % d;
+        let first = history.renamed[start + p];
         let opp1 = if self.corner_vertex[first.next().index()] == u.0 {
             first.prev()
         } else {
@@ -204,17 +212,13 @@ impl Triangulation {
         let opp2 = self.opposite(opp1);
         let f1 = opp1.face();
         let f2 = opp2.face();
+        debug_assert_eq!(history.renamed[start + q].face(), f2);
         let x = self.vertex(opp1);
         let y = self.vertex(opp2);
-
-        // Collect v's corners outside f1 and f2 before touching anything.
-        let start = history.renamed.len() as u32;
-        for s in self.star(v) {
-            let f = s.corner.face();
-            if f != f1 && f != f2 {
-                history.renamed.push(s.corner);
-            }
-        }
+        // Keep only v's corners outside f1 and f2 (remove the later index first).
+        history.renamed.remove(start + p.max(q));
+        history.renamed.remove(start + p.min(q));
+        let start = start as u32;
         let end = history.renamed.len() as u32;
 
         let mut saved_vertex = [0u32; 6];

@@ -435,7 +435,8 @@ impl Rs {
         self.count[v as usize] = cv;
         crate::spec::rs_after_test(self, u, v, cv);
         if cv == 0 {
-            self.contract(u, v);
+            // `scratch` still holds lk(v) with u at position i.
+            self.contract_with_link(u, v, Some(i));
         } else {
             self.lists.push_back(LTE, v);
         }
@@ -444,8 +445,16 @@ impl Rs {
     /// Alg. 4.5: contracts `[u, v]` (identifying v with u) and updates the attributes of
     /// the new neighbours, `lue`, and the counters of edges in `lte`. Returns `[x, y]`.
     fn contract(&mut self, u: u32, v: u32) -> [u32; 2] {
+        self.contract_with_link(u, v, None)
+    }
+
+    /// [`Self::contract`], reusing `scratch = lk(v)` with `u` at `link_pos` when given.
+    fn contract_with_link(&mut self, u: u32, v: u32, link_pos: Option<usize>) -> [u32; 2] {
         // l.4–11 on Π_uv, collected before the collapse.
-        let i = self.link_around(v, u);
+        let i = match link_pos {
+            Some(i) => i,
+            None => self.link_around(v, u),
+        };
         let d = self.scratch.len();
         let mut pi = std::mem::take(&mut self.scratch2);
         pi.clear();
