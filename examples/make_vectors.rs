@@ -35,9 +35,12 @@ struct Input {
 }
 
 fn read_list(path: &Path) -> Vec<Input> {
-    let text =
-        std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let file = path.file_name().expect("file").to_string_lossy().to_string();
+    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let file = path
+        .file_name()
+        .expect("file")
+        .to_string_lossy()
+        .to_string();
     text.lines()
         .filter(|l| !l.trim().is_empty())
         .map(|line| {

@@ -27,8 +27,7 @@ fn vectors(group: &str) -> Vec<Value> {
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("spec/vectors")
         .join(format!("{group}.jsonl"));
-    let text =
-        std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     text.lines()
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{group}: {e}")))
         .collect()
@@ -142,7 +141,10 @@ fn assert_reproduces(name: &str, alg: &str, stored: &Value, r: &Reduction) {
 #[test]
 fn vector_files_have_the_expected_groups_and_sizes() {
     let all = all();
-    let names: BTreeSet<&str> = all.iter().map(|v| v["name"].as_str().expect("name")).collect();
+    let names: BTreeSet<&str> = all
+        .iter()
+        .map(|v| v["name"].as_str().expect("name"))
+        .collect();
     assert_eq!(names.len(), all.len(), "duplicate names");
     let total: u64 = GROUPS
         .iter()
@@ -182,7 +184,10 @@ fn chi_and_orientable(faces: &[[u32; 3]]) -> (i64, bool) {
         for k in 0..3 {
             let (a, b) = (t[k], t[(k + 1) % 3]);
             verts.insert(a);
-            edges.entry((a.min(b), a.max(b))).or_default().push((f, a < b));
+            edges
+                .entry((a.min(b), a.max(b)))
+                .or_default()
+                .push((f, a < b));
         }
     }
     let chi = verts.len() as i64 - edges.len() as i64 + faces.len() as i64;
@@ -229,7 +234,11 @@ fn stored_outputs_are_irreducible_surfaces_of_the_input() {
             "{name}: stored χ"
         );
         assert_eq!(v["orientable"].as_bool(), Some(orientable), "{name}");
-        for (alg, stored) in [("rs", &v), ("schipper", &v["schipper"]), ("brute", &v["brute"])] {
+        for (alg, stored) in [
+            ("rs", &v),
+            ("schipper", &v["schipper"]),
+            ("brute", &v["brute"]),
+        ] {
             let out = faces_of(&stored["output_faces"]);
             assert_eq!(
                 chi_and_orientable(&out),
@@ -267,7 +276,11 @@ fn stored_outputs_are_irreducible_surfaces_of_the_input() {
 fn replaying_each_stored_history_gives_the_stored_output() {
     for v in all() {
         let (name, tri0) = input(&v);
-        for (alg, stored) in [("rs", &v), ("schipper", &v["schipper"]), ("brute", &v["brute"])] {
+        for (alg, stored) in [
+            ("rs", &v),
+            ("schipper", &v["schipper"]),
+            ("brute", &v["brute"]),
+        ] {
             let mut tri = tri0.clone();
             let mut h = History::new();
             for (k, [u, w, x, y, f1, f2]) in history_of(stored).into_iter().enumerate() {

@@ -156,8 +156,14 @@ pub fn apply_op(tri: &mut Triangulation, op: Op) -> bool {
             assert_eq!(tri.vertex_count(), v0 + 1);
             assert_eq!(tri.face_count(), f0 + 2);
             assert!(tri.has_edge(u, v), "split: no edge [u, v]");
-            assert_eq!(tri.edge_link(u, v).map(sorted2), Some(sorted2([link[i], link[j]])));
-            assert!(tri.link_condition_naive(u, v), "split edge not contractible");
+            assert_eq!(
+                tri.edge_link(u, v).map(sorted2),
+                Some(sorted2([link[i], link[j]]))
+            );
+            assert!(
+                tri.link_condition_naive(u, v),
+                "split edge not contractible"
+            );
             true
         }
         Op::Flip { face, slot } => {
@@ -230,7 +236,10 @@ pub fn check_reduction(input: &Triangulation, r: &Reduction, label: &str) {
     let out = &r.tri;
     out.validate()
         .unwrap_or_else(|e| panic!("{label}: output invalid: {e}"));
-    assert!(out.is_irreducible_naive(), "{label}: output not irreducible");
+    assert!(
+        out.is_irreducible_naive(),
+        "{label}: output not irreducible"
+    );
     let (chi_in, or_in) = chi_and_orientable(&input.face_list());
     let (chi_out, or_out) = chi_and_orientable(&out.face_list());
     assert_eq!(chi_in, chi_out, "{label}: χ changed");
@@ -251,7 +260,11 @@ pub fn check_reduction(input: &Triangulation, r: &Reduction, label: &str) {
         );
     }
     let s = &r.stats;
-    assert_eq!(s.contractions as usize, r.history.len(), "{label}: contractions");
+    assert_eq!(
+        s.contractions as usize,
+        r.history.len(),
+        "{label}: contractions"
+    );
     assert_eq!(s.vertices_in, input.vertex_count(), "{label}: vertices_in");
     assert_eq!(s.edges_in, input.edge_count(), "{label}: edges_in");
     assert_eq!(s.vertices_out, out.vertex_count(), "{label}: vertices_out");
@@ -262,7 +275,11 @@ pub fn check_reduction(input: &Triangulation, r: &Reduction, label: &str) {
     );
     assert_eq!(s.faces_out + 2 * r.history.len(), input.face_count());
     for rec in r.history.records() {
-        assert!(!out.is_vertex(rec.v), "{label}: contracted {} still live", rec.v);
+        assert!(
+            !out.is_vertex(rec.v),
+            "{label}: contracted {} still live",
+            rec.v
+        );
     }
     assert!(r.expand() == *input, "{label}: expand() != input");
 }
@@ -353,9 +370,15 @@ pub fn check_contract_undo(input: &ContractInput) {
                 }
             }
             Err(e) => {
-                assert!(!naive, "contract refused [{u}, {v}] passing the naive test: {e}");
+                assert!(
+                    !naive,
+                    "contract refused [{u}, {v}] passing the naive test: {e}"
+                );
                 assert_eq!(e, ContractError::NotContractible { u, v });
-                assert!(tri == before, "refused contraction changed the triangulation");
+                assert!(
+                    tri == before,
+                    "refused contraction changed the triangulation"
+                );
                 assert_eq!(history.len(), len_before);
             }
         }
@@ -365,11 +388,19 @@ pub fn check_contract_undo(input: &ContractInput) {
     while let Some(rec) = history.undo(&mut tri) {
         assert!(tri.is_vertex(rec.v));
         if let Some(s) = snapshots.pop() {
-            assert!(tri == s, "undo of [{}, {}] differs from before it", rec.u, rec.v);
+            assert!(
+                tri == s,
+                "undo of [{}, {}] differs from before it",
+                rec.u,
+                rec.v
+            );
         }
     }
     tri.validate().expect("valid after undo");
-    assert!(tri == start, "undo of all contractions != the pre-contraction triangulation");
+    assert!(
+        tri == start,
+        "undo of all contractions != the pre-contraction triangulation"
+    );
 }
 
 /// `parse_*`: the reader must not panic; a parsed mesh goes to [`Surfaces::from_mesh`]
