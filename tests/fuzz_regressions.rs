@@ -104,14 +104,17 @@ fn parser_seed_meshes_are_closed_surfaces() {
     }
 }
 
-/// `len` random ops from the documented stream (splits twice as likely as flips).
+/// `len` random ops from the documented stream (splits about twice as likely as flips,
+/// a relabelling about once in 256).
 fn ops(seed: u64, len: usize) -> Vec<Op> {
     let mut rng = Rng::new(seed);
     (0..len)
         .map(|_| {
             let w = rng.next_u64();
             let [a, b, c, d, e, ..] = w.to_le_bytes();
-            if e % 3 == 0 {
+            if e == 0 {
+                Op::Relabel { seed: w }
+            } else if e % 3 == 0 {
                 Op::Flip {
                     face: u16::from_le_bytes([a, b]),
                     slot: c,
@@ -137,9 +140,12 @@ fn surfaces() -> Vec<Surface> {
 #[test]
 fn every_start_surface_with_random_ops_reduces_correctly() {
     for (k, surface) in surfaces().into_iter().enumerate() {
+        // Splits and flips, a relabelling (other RS processing order), more ops.
+        let mut o = ops(k as u64, 300);
+        o.insert(150, Op::Relabel { seed: k as u64 });
         let input = SurfaceInput {
             surface,
-            ops: ops(k as u64, 300),
+            ops: o,
             seed: k as u64,
         };
         harness::check_reductions(&input);

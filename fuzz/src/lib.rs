@@ -12,6 +12,7 @@ use contractible::gen::{seed_surface, SurfaceKind};
 use contractible::io::{read_tri_mesh_bytes, Format};
 use contractible::irreducible::rs::{reduce_variant, Variant};
 use contractible::irreducible::{reduce, Algorithm, Options, Reduction};
+use contractible::rng::Rng;
 use contractible::{ContractError, FaceId, History, Surfaces, Triangulation, VertexId};
 
 /// At most this many operations of an input are applied (the rest are ignored).
@@ -58,6 +59,13 @@ pub enum Op {
         face: u16,
         /// Corner slot (mod 3).
         slot: u8,
+    },
+    /// Rebuild with vertex ids, face order and corner slots permuted by the documented
+    /// stream of `seed` (RS processes vertices in id order, and the star walks start at
+    /// the first corner of each vertex, so this reaches other processing orders).
+    Relabel {
+        /// Seed of [`Rng`].
+        seed: u64,
     },
 }
 
@@ -166,6 +174,10 @@ pub fn apply_op(tri: &mut Triangulation, op: Op) -> bool {
             );
             true
         }
+        Op::Relabel { seed } => {
+            *tri = relabel(tri, seed);
+            true
+        }
         Op::Flip { face, slot } => {
             let f = FaceId(u32::from(face) % tri.face_capacity() as u32);
             if !tri.is_face(f) {
@@ -189,6 +201,33 @@ pub fn apply_op(tri: &mut Triangulation, op: Op) -> bool {
             }
         }
     }
+}
+
+/// `tri` with vertex ids, face order and each face's slot rotation permuted by the
+/// stream of `seed`; checked to be the same surface with the same degree multiset.
+pub fn relabel(tri: &Triangulation, seed: u64) -> Triangulation {
+    let n = tri.vertex_capacity();
+    assert_eq!(n, tri.vertex_count(), "relabel needs dense vertex ids");
+    let mut rng = Rng::new(seed);
+    let mut perm: Vec<u32> = (0..n as u32).collect();
+    rng.shuffle(&mut perm);
+    let mut faces: Vec<[u32; 3]> = tri
+        .face_list()
+        .iter()
+        .map(|f| {
+            let g = f.map(|v| perm[v as usize]);
+            let r = rng.index(3);
+            [g[r], g[(r + 1) % 3], g[(r + 2) % 3]]
+        })
+        .collect();
+    rng.shuffle(&mut faces);
+    let out = Triangulation::from_faces(n, &faces).expect("a relabelled surface is a surface");
+    assert_eq!(out.euler_characteristic(), tri.euler_characteristic());
+    assert_eq!(out.is_orientable(), tri.is_orientable());
+    for v in tri.vertices() {
+        assert_eq!(out.degree(VertexId(perm[v.index()])), tri.degree(v));
+    }
+    out
 }
 
 fn sorted2(mut p: [VertexId; 2]) -> [VertexId; 2] {
