@@ -1,0 +1,475 @@
+//! The fuzz harness of `contractible`: input types and checks shared by the cargo-fuzz
+//! targets in `fuzz_targets/` and by the main crate's `tests/fuzz_regressions.rs` (which
+//! includes this file with `#[path]`), so a crash input replays through exactly the same
+//! code in a plain `cargo test`.
+//!
+//! Depends only on `contractible` and `arbitrary`. Every check panics on failure.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use arbitrary::{Arbitrary, Unstructured};
+use contractible::gen::{seed_surface, SurfaceKind};
+use contractible::io::{read_tri_mesh_bytes, Format};
+use contractible::irreducible::rs::{reduce_variant, Variant};
+use contractible::irreducible::{reduce, Algorithm, Options, Reduction};
+use contractible::rng::Rng;
+use contractible::{ContractError, FaceId, History, Surfaces, Triangulation, VertexId};
+
+/// At most this many operations of an input are applied (the rest are ignored).
+pub const MAX_OPS: usize = 2000;
+/// Full [`Triangulation::validate`] every this many applied operations (it is O(F)).
+pub const VALIDATE_EVERY: usize = 128;
+
+/// Which surface to start from; the numbers are reduced to `0..=6` (orientable genus)
+/// and `1..=6` (cross-caps).
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Surface {
+    /// Orientable genus `g % 7`.
+    Orientable(u8),
+    /// Non-orientable, Euler genus `1 + h % 6`.
+    NonOrientable(u8),
+}
+
+impl Surface {
+    /// The bounded surface kind.
+    pub fn kind(self) -> SurfaceKind {
+        match self {
+            Surface::Orientable(g) => SurfaceKind::Orientable(u32::from(g % 7)),
+            Surface::NonOrientable(h) => SurfaceKind::NonOrientable(1 + u32::from(h % 6)),
+        }
+    }
+}
+
+/// One local operation; indices are taken modulo the current sizes.
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Op {
+    /// Split `vertex` along its link vertices number `i` and `j` (positions in
+    /// `link(vertex)`; `j` is moved off `i` so the two always differ).
+    Split {
+        /// Vertex id (mod vertex capacity).
+        vertex: u16,
+        /// First link position (mod degree).
+        i: u8,
+        /// Second link position (mod degree − 1, after `i`).
+        j: u8,
+    },
+    /// Flip the edge opposite corner `slot` of `face`, if it is flippable.
+    Flip {
+        /// Face id (mod face capacity).
+        face: u16,
+        /// Corner slot (mod 3).
+        slot: u8,
+    },
+    /// Rebuild with vertex ids, face order and corner slots permuted by the documented
+    /// stream of `seed` (RS processes vertices in id order, and the star walks start at
+    /// the first corner of each vertex, so this reaches other processing orders).
+    Relabel {
+        /// Seed of [`Rng`].
+        seed: u64,
+    },
+}
+
+/// The input of `surface_ops` and `rs_printed_loop_exit`.
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct SurfaceInput {
+    /// Starting surface ([`seed_surface`]).
+    pub surface: Surface,
+    /// Operations applied in order (at most [`MAX_OPS`]).
+    pub ops: Vec<Op>,
+    /// Seed for the algorithms' [`Options`] (used by the brute force).
+    pub seed: u64,
+}
+
+/// The input of `contract_split`: a surface plus edge picks to contract.
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct ContractInput {
+    /// The surface to start from.
+    pub base: SurfaceInput,
+    /// `(vertex, k)`: contract `[vertex, link(vertex)[k]]` (ids mod capacity, `k` mod
+    /// degree); `k = 255` instead tries a vertex that is *not* a neighbour.
+    pub picks: Vec<(u16, u8)>,
+}
+
+/// Decodes fuzz bytes exactly as `libfuzzer_sys::fuzz_target!` does.
+pub fn decode<'a, T: Arbitrary<'a>>(bytes: &'a [u8]) -> Option<T> {
+    T::arbitrary_take_rest(Unstructured::new(bytes)).ok()
+}
+
+/// Euler characteristic and orientability computed from the face list alone (shares no
+/// code with the library's corner-table traversals).
+pub fn chi_and_orientable(faces: &[[u32; 3]]) -> (i64, bool) {
+    let mut verts = BTreeSet::new();
+    // Edge (sorted) -> the faces using it and the direction each lists it in.
+    let mut edges: BTreeMap<(u32, u32), Vec<(usize, bool)>> = BTreeMap::new();
+    for (f, t) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            verts.insert(a);
+            let key = (a.min(b), a.max(b));
+            edges.entry(key).or_default().push((f, a < b));
+        }
+    }
+    let chi = verts.len() as i64 - edges.len() as i64 + faces.len() as i64;
+    // 2-colour the faces: across an edge, two faces listing it in the same direction
+    // must get different flips.
+    let mut adj: Vec<Vec<(usize, bool)>> = vec![Vec::new(); faces.len()];
+    for uses in edges.values() {
+        assert_eq!(uses.len(), 2, "an edge not in exactly two faces");
+        let [(f, df), (g, dg)] = [uses[0], uses[1]];
+        adj[f].push((g, df == dg));
+        adj[g].push((f, df == dg));
+    }
+    let mut flip: Vec<Option<bool>> = vec![None; faces.len()];
+    for s in 0..faces.len() {
+        if flip[s].is_some() {
+            continue;
+        }
+        flip[s] = Some(false);
+        let mut stack = vec![s];
+        while let Some(f) = stack.pop() {
+            let ff = flip[f].expect("set");
+            for &(g, differ) in &adj[f] {
+                let want = ff ^ differ;
+                match flip[g] {
+                    Some(x) if x != want => return (chi, false),
+                    Some(_) => {}
+                    None => {
+                        flip[g] = Some(want);
+                        stack.push(g);
+                    }
+                }
+            }
+        }
+    }
+    (chi, true)
+}
+
+/// Applies one operation if it is valid; returns whether it changed anything.
+pub fn apply_op(tri: &mut Triangulation, op: Op) -> bool {
+    match op {
+        Op::Split { vertex, i, j } => {
+            let u = VertexId(u32::from(vertex) % tri.vertex_capacity() as u32);
+            if !tri.is_vertex(u) {
+                return false;
+            }
+            let link: Vec<VertexId> = tri.link(u).collect();
+            let d = link.len();
+            assert!(d >= 3, "vertex {u} of degree {d}");
+            let i = usize::from(i) % d;
+            let j = (i + 1 + usize::from(j) % (d - 1)) % d;
+            let (v0, f0) = (tri.vertex_count(), tri.face_count());
+            let v = tri
+                .split_vertex(u, link[i], link[j])
+                .expect("split along two distinct link vertices");
+            assert_eq!(tri.vertex_count(), v0 + 1);
+            assert_eq!(tri.face_count(), f0 + 2);
+            assert!(tri.has_edge(u, v), "split: no edge [u, v]");
+            assert_eq!(
+                tri.edge_link(u, v).map(sorted2),
+                Some(sorted2([link[i], link[j]]))
+            );
+            assert!(
+                tri.link_condition_naive(u, v),
+                "split edge not contractible"
+            );
+            true
+        }
+        Op::Relabel { seed } => {
+            *tri = relabel(tri, seed);
+            true
+        }
+        Op::Flip { face, slot } => {
+            let f = FaceId(u32::from(face) % tri.face_capacity() as u32);
+            if !tri.is_face(f) {
+                return false;
+            }
+            let c = f.corner(u32::from(slot % 3));
+            let [a, b] = tri.edge_endpoints(c);
+            let flippable = tri.is_flippable(a, b);
+            let before = tri.clone();
+            match tri.flip(a, b) {
+                Ok(()) => {
+                    assert!(flippable, "flip succeeded on a non-flippable edge");
+                    assert!(!tri.has_edge(a, b), "flipped edge still present");
+                    true
+                }
+                Err(_) => {
+                    assert!(!flippable, "flip refused a flippable edge");
+                    assert_eq!(*tri, before, "refused flip changed the triangulation");
+                    false
+                }
+            }
+        }
+    }
+}
+
+/// `tri` with vertex ids, face order and each face's slot rotation permuted by the
+/// stream of `seed`; checked to be the same surface with the same degree multiset.
+pub fn relabel(tri: &Triangulation, seed: u64) -> Triangulation {
+    let n = tri.vertex_capacity();
+    assert_eq!(n, tri.vertex_count(), "relabel needs dense vertex ids");
+    let mut rng = Rng::new(seed);
+    let mut perm: Vec<u32> = (0..n as u32).collect();
+    rng.shuffle(&mut perm);
+    let mut faces: Vec<[u32; 3]> = tri
+        .face_list()
+        .iter()
+        .map(|f| {
+            let g = f.map(|v| perm[v as usize]);
+            let r = rng.index(3);
+            [g[r], g[(r + 1) % 3], g[(r + 2) % 3]]
+        })
+        .collect();
+    rng.shuffle(&mut faces);
+    let out = Triangulation::from_faces(n, &faces).expect("a relabelled surface is a surface");
+    assert_eq!(out.euler_characteristic(), tri.euler_characteristic());
+    assert_eq!(out.is_orientable(), tri.is_orientable());
+    for v in tri.vertices() {
+        assert_eq!(out.degree(VertexId(perm[v.index()])), tri.degree(v));
+    }
+    out
+}
+
+fn sorted2(mut p: [VertexId; 2]) -> [VertexId; 2] {
+    p.sort();
+    p
+}
+
+/// The triangulation `input` describes: the seed surface with the ops applied, validated
+/// (fully every [`VALIDATE_EVERY`] applied ops and at the end, χ after every op).
+pub fn build_surface(input: &SurfaceInput) -> Triangulation {
+    let mut tri = seed_surface(input.surface.kind());
+    tri.validate().expect("seed surface valid");
+    let chi = tri.euler_characteristic();
+    let orientable = tri.is_orientable();
+    let mut applied = 0usize;
+    for &op in input.ops.iter().take(MAX_OPS) {
+        if apply_op(&mut tri, op) {
+            applied += 1;
+            assert_eq!(tri.euler_characteristic(), chi, "χ changed by {op:?}");
+            if applied % VALIDATE_EVERY == 0 {
+                tri.validate()
+                    .unwrap_or_else(|e| panic!("invalid after {applied} ops ({op:?}): {e}"));
+            }
+        }
+    }
+    tri.validate()
+        .unwrap_or_else(|e| panic!("invalid after all {applied} ops: {e}"));
+    assert_eq!(tri.is_orientable(), orientable, "orientability changed");
+    tri
+}
+
+/// Options used by every harness run.
+pub fn options(seed: u64) -> Options {
+    Options {
+        seed,
+        count_retests: true,
+    }
+}
+
+/// Checks one reduction of `input` against oracles that do not trust the algorithm:
+/// valid, irreducible by the naive test on every edge, same χ and orientability (from
+/// the face lists), Euler genus `h > 0` ⇒ `V ≤ 13h − 4`, `h = 0` ⇒ the tetrahedron,
+/// `expand()` gives back the input exactly, counters consistent.
+pub fn check_reduction(input: &Triangulation, r: &Reduction, label: &str) {
+    let out = &r.tri;
+    out.validate()
+        .unwrap_or_else(|e| panic!("{label}: output invalid: {e}"));
+    assert!(
+        out.is_irreducible_naive(),
+        "{label}: output not irreducible"
+    );
+    let (chi_in, or_in) = chi_and_orientable(&input.face_list());
+    let (chi_out, or_out) = chi_and_orientable(&out.face_list());
+    assert_eq!(chi_in, chi_out, "{label}: χ changed");
+    assert_eq!(or_in, or_out, "{label}: orientability changed");
+    let h = 2 - chi_in;
+    if h > 0 {
+        assert!(
+            out.vertex_count() as i64 <= 13 * h - 4,
+            "{label}: {} vertices > 13h - 4 = {}",
+            out.vertex_count(),
+            13 * h - 4
+        );
+    } else {
+        assert_eq!(h, 0);
+        assert!(
+            out.vertex_count() == 4 && out.face_count() == 4,
+            "{label}: genus 0 output is not the tetrahedron"
+        );
+    }
+    let s = &r.stats;
+    assert_eq!(
+        s.contractions as usize,
+        r.history.len(),
+        "{label}: contractions"
+    );
+    assert_eq!(s.vertices_in, input.vertex_count(), "{label}: vertices_in");
+    assert_eq!(s.edges_in, input.edge_count(), "{label}: edges_in");
+    assert_eq!(s.vertices_out, out.vertex_count(), "{label}: vertices_out");
+    assert_eq!(
+        s.vertices_out + r.history.len(),
+        input.vertex_count(),
+        "{label}: one vertex per contraction"
+    );
+    assert_eq!(s.faces_out + 2 * r.history.len(), input.face_count());
+    for rec in r.history.records() {
+        assert!(
+            !out.is_vertex(rec.v),
+            "{label}: contracted {} still live",
+            rec.v
+        );
+    }
+    assert!(r.expand() == *input, "{label}: expand() != input");
+}
+
+/// `surface_ops`: RS, Schipper and brute force on clones of the built surface.
+pub fn check_reductions(input: &SurfaceInput) {
+    let tri = build_surface(input);
+    let opts = options(input.seed);
+    for alg in [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute] {
+        let r = reduce(tri.clone(), alg, &opts);
+        check_reduction(&tri, &r, alg.name());
+        if alg == Algorithm::Rs {
+            assert_eq!(r.stats.edges_tested_more_than_once, 0, "RS: ε > 0");
+            assert!(
+                r.stats.link_tests <= tri.edge_count() as u64,
+                "RS: ℓ = {} > E = {}",
+                r.stats.link_tests,
+                tri.edge_count()
+            );
+        }
+    }
+}
+
+/// `rs_printed_loop_exit`: RS with the printed loop exit of Alg. 4.2 l.34 (erratum E4)
+/// must still reach an irreducible triangulation.
+pub fn check_printed_loop_exit(input: &SurfaceInput) {
+    let tri = build_surface(input);
+    let variant = Variant {
+        printed_loop_exit: true,
+        ..Variant::default()
+    };
+    let (r, _) = reduce_variant(tri.clone(), &options(input.seed), variant);
+    assert!(
+        r.tri.is_irreducible_naive(),
+        "E4: the printed loop exit left a contractible edge"
+    );
+    check_reduction(&tri, &r, "rs(printed_loop_exit)");
+}
+
+/// `contract_split`: contract the picked edges when the naive link condition holds
+/// (`contract` must succeed exactly then, and leave the triangulation unchanged when it
+/// refuses), then undo everything and compare with the pre-contraction triangulation.
+pub fn check_contract_undo(input: &ContractInput) {
+    let start = build_surface(&input.base);
+    let mut tri = start.clone();
+    let mut history = History::new();
+    let chi = tri.euler_characteristic();
+    let mut snapshots: Vec<Triangulation> = Vec::new();
+    for &(vertex, k) in input.picks.iter().take(MAX_OPS) {
+        let u = VertexId(u32::from(vertex) % tri.vertex_capacity() as u32);
+        if !tri.is_vertex(u) {
+            continue;
+        }
+        let link: Vec<VertexId> = tri.link(u).collect();
+        if k == 255 {
+            // A live vertex that is not a neighbour (if any): must be refused.
+            let Some(w) = tri.vertices().find(|&w| w != u && !link.contains(&w)) else {
+                continue;
+            };
+            let before = tri.clone();
+            let res = tri.contract(u, w, &mut history);
+            assert_eq!(res, Err(ContractError::NotAnEdge { u, v: w }));
+            assert!(tri == before, "refused non-edge changed the triangulation");
+            continue;
+        }
+        let v = link[usize::from(k) % link.len()];
+        let naive = tri.link_condition_naive(u, v);
+        let edge_link = tri.edge_link(u, v).expect("an edge");
+        let before = tri.clone();
+        let len_before = history.len();
+        match tri.contract(u, v, &mut history) {
+            Ok(rec) => {
+                assert!(naive, "contract accepted [{u}, {v}] failing the naive test");
+                assert_eq!((rec.u, rec.v), (u, v));
+                assert_eq!(sorted2(rec.link), sorted2(edge_link));
+                assert_eq!(rec.degree_v as usize, before.degree(v));
+                assert_eq!(history.len(), len_before + 1);
+                assert_eq!(history.renamed(&rec).len(), before.degree(v) - 2);
+                assert!(!tri.is_vertex(v));
+                assert_eq!(tri.vertex_count() + 1, before.vertex_count());
+                assert_eq!(tri.euler_characteristic(), chi);
+                if history.len() % 32 == 0 || tri.vertex_count() < 64 {
+                    tri.validate()
+                        .unwrap_or_else(|e| panic!("invalid after contracting [{u}, {v}]: {e}"));
+                }
+                if tri.vertex_count() < 64 {
+                    snapshots.push(before);
+                }
+            }
+            Err(e) => {
+                assert!(
+                    !naive,
+                    "contract refused [{u}, {v}] passing the naive test: {e}"
+                );
+                assert_eq!(e, ContractError::NotContractible { u, v });
+                assert!(
+                    tri == before,
+                    "refused contraction changed the triangulation"
+                );
+                assert_eq!(history.len(), len_before);
+            }
+        }
+    }
+    tri.validate().expect("valid after the contractions");
+    // Undo one at a time; the last snapshots (small triangulations) are compared exactly.
+    while let Some(rec) = history.undo(&mut tri) {
+        assert!(tri.is_vertex(rec.v));
+        if let Some(s) = snapshots.pop() {
+            assert!(
+                tri == s,
+                "undo of [{}, {}] differs from before it",
+                rec.u,
+                rec.v
+            );
+        }
+    }
+    tri.validate().expect("valid after undo");
+    assert!(
+        tri == start,
+        "undo of all contractions != the pre-contraction triangulation"
+    );
+}
+
+/// `parse_*`: the reader must not panic; a parsed mesh goes to [`Surfaces::from_mesh`]
+/// (must not panic), and every component it builds must validate and be consistent.
+pub fn check_parse(bytes: &[u8], format: Option<Format>) {
+    let Ok(mesh) = read_tri_mesh_bytes(bytes, format) else {
+        return;
+    };
+    if let Some(p) = &mesh.positions {
+        assert_eq!(p.len(), mesh.vertex_count, "positions vs vertex_count");
+    }
+    let Ok(surfaces) = Surfaces::from_mesh(&mesh) else {
+        return;
+    };
+    let mut faces = 0;
+    for c in &surfaces.components {
+        c.tri
+            .validate()
+            .unwrap_or_else(|e| panic!("component invalid: {e}"));
+        assert_eq!(c.face_origin.len(), c.tri.face_count());
+        assert_eq!(c.vertex_origin.len(), c.tri.vertex_count());
+        // Each local face is the mesh face it came from, renamed.
+        for (f, &origin) in c.tri.face_list().iter().zip(&c.face_origin) {
+            let mut a = f.map(|v| c.vertex_origin[v as usize]);
+            let mut b = mesh.faces[origin as usize];
+            a.sort_unstable();
+            b.sort_unstable();
+            assert_eq!(a, b, "component face does not match its origin");
+        }
+        faces += c.tri.face_count();
+    }
+    assert_eq!(faces, mesh.faces.len(), "faces lost between components");
+}

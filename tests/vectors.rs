@@ -1,0 +1,306 @@
+//! The conformance vectors of `spec/vectors/` (format: `spec/vectors/README.md`).
+//!
+//! 1. The current library reproduces every vector exactly (RS, Schipper and the brute
+//!    force with the vector's seed: output faces, history, counters), so any behaviour
+//!    change shows up here (regenerate with `cargo run --example make_vectors` only if the
+//!    change is intended, and say so in the commit).
+//! 2. Independently of the algorithms, each stored output is irreducible by the naive
+//!    link test, with the input's χ and orientability (computed from the face lists), and
+//!    replaying the stored history with `Triangulation::contract` from the input gives the
+//!    stored output and the stored `x`, `y`, `faces` of every step.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::path::PathBuf;
+
+use contractible::irreducible::{reduce, Algorithm, Options, Reduction};
+use contractible::{History, Surfaces, Triangulation, VertexId};
+use serde_json::Value;
+
+const GROUPS: [(&str, usize); 4] = [
+    ("surfaces-upto-8-vertices", 57),
+    ("torus", 21),
+    ("projective-plane", 2),
+    ("generated", 11),
+];
+
+fn vectors(group: &str) -> Vec<Value> {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("spec/vectors")
+        .join(format!("{group}.jsonl"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    text.lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{group}: {e}")))
+        .collect()
+}
+
+fn all() -> Vec<Value> {
+    GROUPS
+        .iter()
+        .flat_map(|(g, n)| {
+            let v = vectors(g);
+            assert_eq!(v.len(), *n, "{g}: number of vectors");
+            v
+        })
+        .collect()
+}
+
+fn faces_of(v: &Value) -> Vec<[u32; 3]> {
+    v.as_array()
+        .expect("face array")
+        .iter()
+        .map(|f| {
+            let f = f.as_array().expect("triple");
+            assert_eq!(f.len(), 3);
+            [0, 1, 2].map(|k| f[k].as_u64().expect("vertex id") as u32)
+        })
+        .collect()
+}
+
+fn num(v: &Value, key: &str) -> u64 {
+    v[key]
+        .as_u64()
+        .unwrap_or_else(|| panic!("missing number {key}"))
+}
+
+fn input(v: &Value) -> (String, Triangulation) {
+    let name = v["name"].as_str().expect("name").to_string();
+    let tri = Triangulation::from_faces(num(v, "vertex_count") as usize, &faces_of(&v["faces"]))
+        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    (name, tri)
+}
+
+/// The stored history as (u, v, x, y, f1, f2).
+fn history_of(v: &Value) -> Vec<[u64; 6]> {
+    v["history"]
+        .as_array()
+        .expect("history")
+        .iter()
+        .map(|h| {
+            let f = h["faces"].as_array().expect("faces");
+            assert_eq!(f.len(), 2);
+            [
+                num(h, "u"),
+                num(h, "v"),
+                num(h, "x"),
+                num(h, "y"),
+                f[0].as_u64().expect("face"),
+                f[1].as_u64().expect("face"),
+            ]
+        })
+        .collect()
+}
+
+fn history_tuples(h: &History) -> Vec<[u64; 6]> {
+    h.records()
+        .iter()
+        .map(|r| {
+            [
+                r.u.0,
+                r.v.0,
+                r.link[0].0,
+                r.link[1].0,
+                r.faces[0].0,
+                r.faces[1].0,
+            ]
+            .map(u64::from)
+        })
+        .collect()
+}
+
+fn assert_reproduces(name: &str, alg: &str, stored: &Value, r: &Reduction) {
+    assert_eq!(
+        r.tri.face_list(),
+        faces_of(&stored["output_faces"]),
+        "{name} {alg}: output_faces"
+    );
+    assert_eq!(
+        history_tuples(&r.history),
+        history_of(stored),
+        "{name} {alg}: history"
+    );
+    let s = &stored["stats"];
+    assert_eq!(
+        [
+            r.stats.link_tests,
+            r.stats.edges_tested_more_than_once,
+            r.stats.contractions,
+            r.stats.vertices_out as u64,
+            r.stats.faces_out as u64,
+        ],
+        [
+            num(s, "link_tests"),
+            num(s, "edges_tested_more_than_once"),
+            num(s, "contractions"),
+            num(s, "vertices_out"),
+            num(s, "faces_out"),
+        ],
+        "{name} {alg}: stats"
+    );
+}
+
+#[test]
+fn vector_files_have_the_expected_groups_and_sizes() {
+    let all = all();
+    let names: BTreeSet<&str> = all
+        .iter()
+        .map(|v| v["name"].as_str().expect("name"))
+        .collect();
+    assert_eq!(names.len(), all.len(), "duplicate names");
+    let total: u64 = GROUPS
+        .iter()
+        .map(|(g, _)| {
+            let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+                .join("spec/vectors")
+                .join(format!("{g}.jsonl"));
+            std::fs::metadata(p).expect("file").len()
+        })
+        .sum();
+    assert!(total < 2_000_000, "vectors take {total} bytes");
+}
+
+#[test]
+fn library_reproduces_every_vector_exactly() {
+    for v in all() {
+        let (name, tri) = input(&v);
+        let opts = |seed| Options {
+            seed,
+            count_retests: true,
+        };
+        let rs = reduce(tri.clone(), Algorithm::Rs, &opts(0));
+        assert_reproduces(&name, "rs", &v, &rs);
+        let s = reduce(tri.clone(), Algorithm::Schipper, &opts(0));
+        assert_reproduces(&name, "schipper", &v["schipper"], &s);
+        let seed = num(&v["brute"], "seed");
+        let b = reduce(tri.clone(), Algorithm::Brute, &opts(seed));
+        assert_reproduces(&name, "brute", &v["brute"], &b);
+    }
+}
+
+/// χ and orientability from a face list alone.
+fn chi_and_orientable(faces: &[[u32; 3]]) -> (i64, bool) {
+    let mut verts = BTreeSet::new();
+    let mut edges: BTreeMap<(u32, u32), Vec<(usize, bool)>> = BTreeMap::new();
+    for (f, t) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (t[k], t[(k + 1) % 3]);
+            verts.insert(a);
+            edges
+                .entry((a.min(b), a.max(b)))
+                .or_default()
+                .push((f, a < b));
+        }
+    }
+    let chi = verts.len() as i64 - edges.len() as i64 + faces.len() as i64;
+    let mut flip: Vec<Option<bool>> = vec![None; faces.len()];
+    let mut adj = vec![Vec::new(); faces.len()];
+    for uses in edges.values() {
+        assert_eq!(uses.len(), 2, "edge in {} faces", uses.len());
+        let same = uses[0].1 == uses[1].1;
+        adj[uses[0].0].push((uses[1].0, same));
+        adj[uses[1].0].push((uses[0].0, same));
+    }
+    for s in 0..faces.len() {
+        if flip[s].is_some() {
+            continue;
+        }
+        flip[s] = Some(false);
+        let mut stack = vec![s];
+        while let Some(f) = stack.pop() {
+            for &(g, same) in &adj[f] {
+                let want = flip[f].expect("set") ^ same;
+                match flip[g] {
+                    Some(x) if x != want => return (chi, false),
+                    Some(_) => {}
+                    None => {
+                        flip[g] = Some(want);
+                        stack.push(g);
+                    }
+                }
+            }
+        }
+    }
+    (chi, true)
+}
+
+#[test]
+fn stored_outputs_are_irreducible_surfaces_of_the_input() {
+    for v in all() {
+        let name = v["name"].as_str().expect("name");
+        let input_faces = faces_of(&v["faces"]);
+        let (chi, orientable) = chi_and_orientable(&input_faces);
+        assert_eq!(
+            v["euler_characteristic"].as_i64(),
+            Some(chi),
+            "{name}: stored χ"
+        );
+        assert_eq!(v["orientable"].as_bool(), Some(orientable), "{name}");
+        for (alg, stored) in [
+            ("rs", &v),
+            ("schipper", &v["schipper"]),
+            ("brute", &v["brute"]),
+        ] {
+            let out = faces_of(&stored["output_faces"]);
+            assert_eq!(
+                chi_and_orientable(&out),
+                (chi, orientable),
+                "{name} {alg}: output surface"
+            );
+            // Output ids are the input's (some unused): build on the used ones.
+            let s = Surfaces::from_faces(num(&v, "vertex_count") as usize, &out)
+                .unwrap_or_else(|e| panic!("{name} {alg}: {e}"));
+            assert_eq!(s.components.len(), 1, "{name} {alg}: connected");
+            let t = &s.components[0].tri;
+            assert!(t.is_irreducible_naive(), "{name} {alg}: output reducible");
+            let h = 2 - chi;
+            if h == 0 {
+                assert!(t.is_tetrahedron(), "{name} {alg}");
+            } else {
+                assert!(t.vertex_count() as i64 <= 13 * h - 4, "{name} {alg}");
+            }
+            let st = &stored["stats"];
+            assert_eq!(num(st, "vertices_out") as usize, t.vertex_count());
+            assert_eq!(num(st, "faces_out") as usize, out.len());
+            assert_eq!(
+                num(st, "contractions") as usize,
+                stored["history"].as_array().expect("history").len()
+            );
+        }
+        // RS counters: ε = 0 and ℓ ≤ E (Sec. 4.7).
+        let edges = 3 * input_faces.len() as u64 / 2;
+        assert_eq!(num(&v["stats"], "edges_tested_more_than_once"), 0, "{name}");
+        assert!(num(&v["stats"], "link_tests") <= edges, "{name}: ℓ > E");
+    }
+}
+
+#[test]
+fn replaying_each_stored_history_gives_the_stored_output() {
+    for v in all() {
+        let (name, tri0) = input(&v);
+        for (alg, stored) in [
+            ("rs", &v),
+            ("schipper", &v["schipper"]),
+            ("brute", &v["brute"]),
+        ] {
+            let mut tri = tri0.clone();
+            let mut h = History::new();
+            for (k, [u, w, x, y, f1, f2]) in history_of(stored).into_iter().enumerate() {
+                let (u, w) = (VertexId(u as u32), VertexId(w as u32));
+                let rec = tri
+                    .contract(u, w, &mut h)
+                    .unwrap_or_else(|e| panic!("{name} {alg} step {k}: {e}"));
+                assert_eq!(
+                    [rec.link[0].0, rec.link[1].0, rec.faces[0].0, rec.faces[1].0],
+                    [x, y, f1, f2].map(|a| a as u32),
+                    "{name} {alg} step {k}: link/faces"
+                );
+            }
+            assert_eq!(
+                tri.face_list(),
+                faces_of(&stored["output_faces"]),
+                "{name} {alg}: replayed output"
+            );
+            h.undo_all(&mut tri);
+            assert!(tri == tri0, "{name} {alg}: undo of the replay");
+        }
+    }
+}
