@@ -21,6 +21,9 @@ all_targets=(surface_ops rs_printed_loop_exit contract_split parse_off parse_obj
 if [ $# -gt 0 ]; then targets=("$@"); else targets=("${all_targets[@]}"); fi
 
 export RUSTC_BOOTSTRAP=1
+# The binaries are looked up below fuzz/target: pin the target dir even when the
+# caller's environment points cargo elsewhere.
+export CARGO_TARGET_DIR="$here/target"
 # Builds all targets (incremental: cheap when nothing changed).
 cargo fuzz build -O --debug-assertions 2>logs.build || { cat logs.build >&2; exit 2; }
 rm -f logs.build
