@@ -1,6 +1,6 @@
 //! Wavefront OBJ reading (positions and faces) and writing.
 //!
-//! Why a hand parser rather than `tobj` (which is a dependency): `tobj` 4 (a) stores positions
+//! Why a hand parser rather than the `tobj` crate: `tobj` 4 (a) stores positions
 //! as `f32` unless its `use_f64` feature is enabled, so coordinates would not round-trip;
 //! (b) with `single_index: false` it still *renumbers* vertices per model in order of first
 //! use and drops unreferenced ones, so the mesh would not have "indices as in the file";

@@ -1,6 +1,6 @@
 //! PLY reading (ascii, binary little/big endian) and writing.
 //!
-//! Why a hand parser rather than `ply-rs-bw` (a dependency, used in the tests as an
+//! Why a hand parser rather than `ply-rs-bw` (a dev-dependency, used in the tests as an
 //! independent cross-check): its header model is an `IndexMap` keyed by name, so a header
 //! that repeats an element or property name is silently collapsed (a repeated element even
 //! takes the *earlier* position and later properties attach to the wrong element). For
