@@ -128,16 +128,19 @@ impl Lists {
     fn clear(&mut self, l: usize) {
         while self.pop_front(l).is_some() {}
     }
-    /// The members of list `l` in order (for checks and tests).
+    /// The members of list `l` in order, lazily (for the specification checks, which
+    /// look at a bounded prefix: collecting a list of a million entries per check would
+    /// make the checks quadratic).
     #[cfg_attr(not(any(debug_assertions, feature = "invariants")), allow(dead_code))]
-    pub(crate) fn members(&self, l: usize) -> Vec<u32> {
-        let mut out = Vec::with_capacity(self.len[l]);
+    pub(crate) fn iter(&self, l: usize) -> impl Iterator<Item = u32> + '_ {
         let mut z = self.head[l];
-        while z != NIL {
-            out.push(z);
-            z = self.next[z as usize];
-        }
-        out
+        std::iter::from_fn(move || {
+            (z != NIL).then(|| {
+                let here = z;
+                z = self.next[z as usize];
+                here
+            })
+        })
     }
 }
 
@@ -276,7 +279,7 @@ impl Rs {
         self.scratch = link;
         loop {
             // l.22–30
-            crate::spec::rs_at_line_22(self);
+            crate::spec::rs_at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
             while let Some(v) = self.lists.pop_front(LUE) {
                 self.t[v as usize] = self.ts;
                 if self.degree(v) == 3 {
@@ -284,7 +287,7 @@ impl Rs {
                 } else {
                     self.test(u, v);
                 }
-                crate::spec::rs_at_line_22(self);
+                crate::spec::rs_at_line_22(self, 2);
             }
             // l.31–33 (Prop. 11 holds here).
             crate::spec::rs_at_line_32(self);

@@ -26,14 +26,17 @@ macro_rules! spec_fail {
 /// `[u, w]` in `lue` is an edge of K, degree-3 endpoints come first, `p(w)` is false,
 /// `o(w) ≠ −1`, `t(w) = −1`, `c(w) = 0`. (8)(7), "never tested before", is checked by
 /// the ε = 0 test over every input.) Also Proposition 9 (2) and 10 on `lte`.
+///
+/// `prefix` bounds how many list entries are examined: the caller checks a long prefix
+/// when the loop is entered and the next two entries after each iteration (each
+/// iteration changes the lists only near the front and at the entries it moves).
 #[inline]
-pub(crate) fn rs_at_line_22(rs: &Rs) {
+pub(crate) fn rs_at_line_22(rs: &Rs, prefix: usize) {
     #[cfg(any(debug_assertions, feature = "invariants"))]
     {
         let u = rs.current;
-        let lue = rs.lists.members(0);
         let mut seen_big = false;
-        for &w in lue.iter().take(FULL_CHECK_DEGREE) {
+        for w in rs.lists.iter(0).take(prefix) {
             let wi = w as usize;
             if !rs.tri.has_edge(VertexId(u), VertexId(w)) {
                 spec_fail!(rs, "Proposition 8(1)", "[{u}, {w}] in lue is not an edge");
@@ -74,16 +77,18 @@ pub(crate) fn rs_at_line_22(rs: &Rs) {
                 );
             }
         }
-        check_lte_order(rs);
+        check_lte_order(rs, prefix);
     }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, prefix);
 }
 
-/// Proposition 9 (2) and Proposition 10 on `lte`.
+/// Proposition 9 (2) and Proposition 10 on the first `prefix` entries of `lte`.
 #[cfg(any(debug_assertions, feature = "invariants"))]
-fn check_lte_order(rs: &Rs) {
+fn check_lte_order(rs: &Rs, prefix: usize) {
     let u = rs.current;
     let mut seen_positive = false;
-    for &w in rs.lists.members(1).iter().take(FULL_CHECK_DEGREE) {
+    for w in rs.lists.iter(1).take(prefix) {
         let wi = w as usize;
         if !(rs.o[wi] != NIL && rs.t[wi] != NIL && rs.t[wi] >= rs.o[wi]) {
             spec_fail!(
@@ -114,7 +119,7 @@ pub(crate) fn rs_at_line_32(rs: &Rs) {
     #[cfg(any(debug_assertions, feature = "invariants"))]
     {
         let u = rs.current;
-        for &w in rs.lists.members(1).iter().take(FULL_CHECK_DEGREE) {
+        for w in rs.lists.iter(1).take(FULL_CHECK_DEGREE) {
             let truth = critical_cycles_through(&rs.tri, VertexId(u), VertexId(w));
             let Some(truth) = truth else {
                 spec_fail!(
@@ -132,7 +137,7 @@ pub(crate) fn rs_at_line_32(rs: &Rs) {
                 );
             }
         }
-        check_lte_order(rs);
+        check_lte_order(rs, FULL_CHECK_DEGREE);
     }
 }
 
@@ -236,7 +241,10 @@ pub(crate) fn rs_degree3(rs: &Rs, u: u32, v: u32) {
             );
         }
         let t4 = rs.tri.degree(a) == 3;
-        if t4 != rs.tri.is_tetrahedron() || rs.tri.link_condition_naive(a, b) == t4 {
+        // The naive test costs O(d_u · 3); above the bound only the T4 half is checked.
+        let naive_disagrees =
+            rs.tri.degree(a) <= FULL_CHECK_DEGREE && rs.tri.link_condition_naive(a, b) == t4;
+        if t4 != rs.tri.is_tetrahedron() || naive_disagrees {
             spec_fail!(
                 rs,
                 "Proposition 6",
@@ -260,9 +268,9 @@ pub(crate) fn rs_prop7_before(rs: &Rs) -> Prop7Before {
         if rs.tri.degree(VertexId(u)) > FULL_CHECK_DEGREE {
             return Prop7Before::default();
         }
-        let lte = rs.lists.members(1);
-        let w: Vec<u32> = lte
-            .into_iter()
+        let w: Vec<u32> = rs
+            .lists
+            .iter(1)
             .take(FULL_CHECK_DEGREE)
             .filter(|&w| {
                 critical_cycles_through(&rs.tri, VertexId(u), VertexId(w)).is_some_and(|c| c > 0)
