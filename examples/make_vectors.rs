@@ -35,30 +35,19 @@ struct Input {
 }
 
 fn read_list(path: &Path) -> Vec<Input> {
-    let text = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let file = path
         .file_name()
         .expect("file")
         .to_string_lossy()
         .to_string();
-    text.lines()
-        .filter(|l| !l.trim().is_empty())
-        .map(|line| {
-            let (name, rest) = line.split_once(':').expect("NAME: [[a,b,c],...]");
-            let nums: Vec<u32> = rest
-                .split(|c: char| !c.is_ascii_digit())
-                .filter(|s| !s.is_empty())
-                .map(|s| s.parse().expect("number"))
-                .collect();
-            assert_eq!(nums.len() % 3, 0, "{name}: triples");
-            let faces: Vec<[u32; 3]> = nums.chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
-            let vertex_count = nums.iter().max().map_or(0, |&m| m as usize + 1);
-            Input {
-                name: name.trim().to_string(),
-                source: json!({ "file": format!("shared/irreducible/{file}") }),
-                vertex_count,
-                faces,
-            }
+    contractible::io::list::read_surface_list(path)
+        .unwrap_or_else(|e| panic!("{e}"))
+        .into_iter()
+        .map(|s| Input {
+            name: s.name,
+            source: json!({ "file": format!("shared/irreducible/{file}") }),
+            vertex_count: s.vertex_count,
+            faces: s.faces,
         })
         .collect()
 }

@@ -44,17 +44,7 @@ fn tricky_positions(n: usize) -> Vec<[f64; 3]> {
 
 /// An octahedron (closed, 6 vertices, 8 triangles) with tricky coordinates.
 fn octahedron() -> TriMesh {
-    let faces = vec![
-        [0, 2, 4],
-        [2, 1, 4],
-        [1, 3, 4],
-        [3, 0, 4],
-        [2, 0, 5],
-        [1, 2, 5],
-        [3, 1, 5],
-        [0, 3, 5],
-    ];
-    Mesh::with_positions(tricky_positions(6), faces)
+    Mesh::with_positions(tricky_positions(6), contractible::gen::octahedron().faces)
 }
 
 /// A cube as 6 quads.

@@ -352,3 +352,51 @@ fn dual_graphs_of_random_surfaces_have_perfect_matchings() {
     }
     assert_eq!(cases, 30);
 }
+
+/// The face-list oracle `spec::oracle::euler_and_orientability` (used by the vector and
+/// fuzz checks) agrees with the surface codes of the published lists and with the core's
+/// corner-table χ and orientability, and rejects face lists that are not closed.
+#[test]
+fn face_list_oracle_agrees_with_list_names_and_the_core() {
+    use contractible::spec::oracle::euler_and_orientability;
+    let mut checked = 0;
+    for (name, t) in small_lists() {
+        let (chi, orientable) = euler_and_orientability(&t.face_list()).expect(&name);
+        let expected = match &name[..2] {
+            "S0" => (2, true),
+            "S1" | "to" => (0, true),
+            "N1" | "pr" => (1, false),
+            "N2" => (0, false),
+            other => panic!("{name}: unknown surface code {other}"),
+        };
+        assert_eq!((chi, orientable), expected, "{name}");
+        assert_eq!(
+            (t.euler_characteristic(), t.is_orientable()),
+            expected,
+            "{name}"
+        );
+        checked += 1;
+    }
+    for (k, surface) in surface_kinds().into_iter().enumerate() {
+        let t = random(&RandomParams {
+            surface,
+            min_faces: 500,
+            flip_percent: 30,
+            seed: 77 + k as u64,
+        });
+        let got = euler_and_orientability(&t.face_list()).expect("closed");
+        assert_eq!(
+            got,
+            (surface.euler_characteristic(), surface.is_orientable())
+        );
+        assert_eq!(got, (t.euler_characteristic(), t.is_orientable()));
+        checked += 1;
+    }
+    assert_eq!(checked, 57 + 21 + 2 + 15);
+    // Open or non-manifold face lists are not surfaces.
+    assert_eq!(euler_and_orientability(&[[0, 1, 2]]), None);
+    assert_eq!(
+        euler_and_orientability(&[[0, 1, 2], [0, 1, 3], [0, 1, 4], [2, 3, 4]]),
+        None
+    );
+}

@@ -9,7 +9,7 @@
 //!    replaying the stored history with `Triangulation::contract` from the input gives the
 //!    stored output and the stored `x`, `y`, `faces` of every step.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeSet;
 use std::path::PathBuf;
 
 use contractible::irreducible::{reduce, Algorithm, Options, Reduction};
@@ -176,58 +176,12 @@ fn library_reproduces_every_vector_exactly() {
     }
 }
 
-/// χ and orientability from a face list alone.
-fn chi_and_orientable(faces: &[[u32; 3]]) -> (i64, bool) {
-    let mut verts = BTreeSet::new();
-    let mut edges: BTreeMap<(u32, u32), Vec<(usize, bool)>> = BTreeMap::new();
-    for (f, t) in faces.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            verts.insert(a);
-            edges
-                .entry((a.min(b), a.max(b)))
-                .or_default()
-                .push((f, a < b));
-        }
-    }
-    let chi = verts.len() as i64 - edges.len() as i64 + faces.len() as i64;
-    let mut flip: Vec<Option<bool>> = vec![None; faces.len()];
-    let mut adj = vec![Vec::new(); faces.len()];
-    for uses in edges.values() {
-        assert_eq!(uses.len(), 2, "edge in {} faces", uses.len());
-        let same = uses[0].1 == uses[1].1;
-        adj[uses[0].0].push((uses[1].0, same));
-        adj[uses[1].0].push((uses[0].0, same));
-    }
-    for s in 0..faces.len() {
-        if flip[s].is_some() {
-            continue;
-        }
-        flip[s] = Some(false);
-        let mut stack = vec![s];
-        while let Some(f) = stack.pop() {
-            for &(g, same) in &adj[f] {
-                let want = flip[f].expect("set") ^ same;
-                match flip[g] {
-                    Some(x) if x != want => return (chi, false),
-                    Some(_) => {}
-                    None => {
-                        flip[g] = Some(want);
-                        stack.push(g);
-                    }
-                }
-            }
-        }
-    }
-    (chi, true)
-}
-
 #[test]
 fn stored_outputs_are_irreducible_surfaces_of_the_input() {
     for v in all() {
         let name = v["name"].as_str().expect("name");
         let input_faces = faces_of(&v["faces"]);
-        let (chi, orientable) = chi_and_orientable(&input_faces);
+        let (chi, orientable) = closed_surface_invariants(&input_faces);
         assert_eq!(
             v["euler_characteristic"].as_i64(),
             Some(chi),
@@ -241,7 +195,7 @@ fn stored_outputs_are_irreducible_surfaces_of_the_input() {
         ] {
             let out = faces_of(&stored["output_faces"]);
             assert_eq!(
-                chi_and_orientable(&out),
+                closed_surface_invariants(&out),
                 (chi, orientable),
                 "{name} {alg}: output surface"
             );
@@ -303,4 +257,9 @@ fn replaying_each_stored_history_gives_the_stored_output() {
             assert!(tri == tri0, "{name} {alg}: undo of the replay");
         }
     }
+}
+
+/// χ and orientability by the face-list oracle; panics if the faces are not a closed surface.
+fn closed_surface_invariants(faces: &[[u32; 3]]) -> (i64, bool) {
+    contractible::spec::oracle::euler_and_orientability(faces).expect("a closed surface")
 }

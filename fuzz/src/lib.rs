@@ -5,8 +5,6 @@
 //!
 //! Depends only on `contractible` and `arbitrary`. Every check panics on failure.
 
-use std::collections::{BTreeMap, BTreeSet};
-
 use arbitrary::{Arbitrary, Unstructured};
 use contractible::gen::{seed_surface, SurfaceKind};
 use contractible::io::{read_tri_mesh_bytes, Format};
@@ -93,55 +91,6 @@ pub struct ContractInput {
 /// Decodes fuzz bytes exactly as `libfuzzer_sys::fuzz_target!` does.
 pub fn decode<'a, T: Arbitrary<'a>>(bytes: &'a [u8]) -> Option<T> {
     T::arbitrary_take_rest(Unstructured::new(bytes)).ok()
-}
-
-/// Euler characteristic and orientability computed from the face list alone (shares no
-/// code with the library's corner-table traversals).
-pub fn chi_and_orientable(faces: &[[u32; 3]]) -> (i64, bool) {
-    let mut verts = BTreeSet::new();
-    // Edge (sorted) -> the faces using it and the direction each lists it in.
-    let mut edges: BTreeMap<(u32, u32), Vec<(usize, bool)>> = BTreeMap::new();
-    for (f, t) in faces.iter().enumerate() {
-        for k in 0..3 {
-            let (a, b) = (t[k], t[(k + 1) % 3]);
-            verts.insert(a);
-            let key = (a.min(b), a.max(b));
-            edges.entry(key).or_default().push((f, a < b));
-        }
-    }
-    let chi = verts.len() as i64 - edges.len() as i64 + faces.len() as i64;
-    // 2-colour the faces: across an edge, two faces listing it in the same direction
-    // must get different flips.
-    let mut adj: Vec<Vec<(usize, bool)>> = vec![Vec::new(); faces.len()];
-    for uses in edges.values() {
-        assert_eq!(uses.len(), 2, "an edge not in exactly two faces");
-        let [(f, df), (g, dg)] = [uses[0], uses[1]];
-        adj[f].push((g, df == dg));
-        adj[g].push((f, df == dg));
-    }
-    let mut flip: Vec<Option<bool>> = vec![None; faces.len()];
-    for s in 0..faces.len() {
-        if flip[s].is_some() {
-            continue;
-        }
-        flip[s] = Some(false);
-        let mut stack = vec![s];
-        while let Some(f) = stack.pop() {
-            let ff = flip[f].expect("set");
-            for &(g, differ) in &adj[f] {
-                let want = ff ^ differ;
-                match flip[g] {
-                    Some(x) if x != want => return (chi, false),
-                    Some(_) => {}
-                    None => {
-                        flip[g] = Some(want);
-                        stack.push(g);
-                    }
-                }
-            }
-        }
-    }
-    (chi, true)
 }
 
 /// Applies one operation if it is valid; returns whether it changed anything.
@@ -279,8 +228,8 @@ pub fn check_reduction(input: &Triangulation, r: &Reduction, label: &str) {
         out.is_irreducible_naive(),
         "{label}: output not irreducible"
     );
-    let (chi_in, or_in) = chi_and_orientable(&input.face_list());
-    let (chi_out, or_out) = chi_and_orientable(&out.face_list());
+    let (chi_in, or_in) = closed_surface_invariants(&input.face_list());
+    let (chi_out, or_out) = closed_surface_invariants(&out.face_list());
     assert_eq!(chi_in, chi_out, "{label}: χ changed");
     assert_eq!(or_in, or_out, "{label}: orientability changed");
     let h = 2 - chi_in;
@@ -472,4 +421,9 @@ pub fn check_parse(bytes: &[u8], format: Option<Format>) {
         faces += c.tri.face_count();
     }
     assert_eq!(faces, mesh.faces.len(), "faces lost between components");
+}
+
+/// χ and orientability by the face-list oracle; panics if the faces are not a closed surface.
+fn closed_surface_invariants(faces: &[[u32; 3]]) -> (i64, bool) {
+    contractible::spec::oracle::euler_and_orientability(faces).expect("a closed surface")
 }

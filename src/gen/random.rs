@@ -21,6 +21,11 @@ impl SurfaceKind {
             SurfaceKind::NonOrientable(h) => 2 - h as i64,
         }
     }
+
+    /// Whether the surface is orientable.
+    pub fn is_orientable(self) -> bool {
+        matches!(self, SurfaceKind::Orientable(_))
+    }
 }
 
 /// Parameters of [`random`].

@@ -113,6 +113,9 @@ pub enum ReadErrorKind {
     /// PLY-specific structural problem (including what `ply-rs-bw` reported for the header).
     #[error("PLY: {0}")]
     Ply(String),
+    /// Malformed line of a surface list (`NAME: [[a,b,c],...]`, see [`crate::io::list`]).
+    #[error("surface list: {0}")]
+    List(String),
 }
 
 /// A failed read: what ([`ReadErrorKind`]), where ([`Location`]) and in which file.

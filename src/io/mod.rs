@@ -13,6 +13,7 @@
 //! Inputs are read completely into memory (and decompressed when gzip) before parsing.
 
 mod error;
+pub mod list;
 mod obj;
 mod off;
 mod ply;

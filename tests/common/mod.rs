@@ -11,36 +11,12 @@ pub fn shared_dir() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"))
 }
 
-/// One named small surface from `../shared/irreducible/*.txt`.
-pub struct NamedSurface {
-    pub name: String,
-    pub vertex_count: usize,
-    pub faces: Vec<[u32; 3]>,
-}
+pub use contractible::io::list::NamedSurface;
 
-/// Parses `NAME: [[a,b,c],...]` lines.
+/// Every surface of `../shared/irreducible/FILE`, read by the library's list reader.
 pub fn read_surface_list(file: &str) -> Vec<NamedSurface> {
     let path = shared_dir().join("irreducible").join(file);
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    text.lines()
-        .filter(|l| !l.trim().is_empty())
-        .map(|line| {
-            let (name, rest) = line.split_once(':').expect("NAME: list");
-            let nums: Vec<u32> = rest
-                .split(|c: char| !c.is_ascii_digit())
-                .filter(|s| !s.is_empty())
-                .map(|s| s.parse().expect("number"))
-                .collect();
-            assert_eq!(nums.len() % 3, 0, "{name}: triples");
-            let faces: Vec<[u32; 3]> = nums.chunks(3).map(|c| [c[0], c[1], c[2]]).collect();
-            let vertex_count = nums.iter().max().map_or(0, |&m| m as usize + 1);
-            NamedSurface {
-                name: name.trim().to_string(),
-                vertex_count,
-                faces,
-            }
-        })
-        .collect()
+    contractible::io::list::read_surface_list(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// One row of `../shared/meshes/manifest.csv` (the columns the tests use).
