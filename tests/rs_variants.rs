@@ -73,3 +73,58 @@ fn erratum_e3_missing_counter_reset_breaks_proposition_8_6() {
     };
     assert_caught(v, SurfaceKind::Orientable(1), 0, "Proposition 8(6)");
 }
+
+/// Mutation: Alg. 4.4 counting the link vertices `x, y` of `[u, v]` as critical is
+/// caught at the link test by the oracle count (Theorem 3).
+#[test]
+fn counting_link_vertices_is_caught_by_theorem_3() {
+    let v = Variant {
+        count_link_vertices: true,
+        ..Variant::default()
+    };
+    assert_caught(v, SurfaceKind::Orientable(1), 0, "Alg. 4.4 / Theorem 3");
+}
+
+/// Mutation: the degree-3 shortcut (Alg. 4.3) taken for a degree-4 endpoint is caught by
+/// Proposition 6.
+#[test]
+fn degree3_path_for_degree_4_is_caught_by_proposition_6() {
+    let v = Variant {
+        degree3_path_up_to_4: true,
+        ..Variant::default()
+    };
+    assert_caught(v, SurfaceKind::NonOrientable(1), 0, "Proposition 6");
+}
+
+/// Mutation: marking a link vertex processed in Alg. 4.5 makes a loose vertex look
+/// trapped; Lemma 5 (processed vertices stay trapped) catches it.
+#[test]
+fn marking_a_link_vertex_processed_is_caught_by_lemma_5() {
+    let v = Variant {
+        mark_link_vertex_processed: true,
+        ..Variant::default()
+    };
+    assert_caught(v, SurfaceKind::Orientable(2), 0, "Lemma 5");
+}
+
+/// Mutation: ending the processing of `u` after one pass over `lue` leaves edges whose
+/// counters dropped to 0 uncontracted; Definition 4 (u trapped) catches it.
+#[test]
+fn a_single_pass_is_caught_by_definition_4() {
+    let v = Variant {
+        single_pass: true,
+        ..Variant::default()
+    };
+    assert_caught(v, SurfaceKind::Orientable(0), 0, "Definition 4");
+}
+
+/// Mutation: an edge whose counter leaves 0 staying in place breaks the order of `lte`;
+/// Proposition 10 catches it.
+#[test]
+fn not_moving_an_incremented_edge_is_caught_by_proposition_10() {
+    let v = Variant {
+        no_move_on_increment: true,
+        ..Variant::default()
+    };
+    assert_caught(v, SurfaceKind::Orientable(0), 2, "Proposition 10");
+}

@@ -196,7 +196,7 @@ pub fn build_surface(input: &SurfaceInput) -> Triangulation {
         if apply_op(&mut tri, op) {
             applied += 1;
             assert_eq!(tri.euler_characteristic(), chi, "χ changed by {op:?}");
-            if applied.is_multiple_of(VALIDATE_EVERY) {
+            if applied % VALIDATE_EVERY == 0 {
                 tri.validate()
                     .unwrap_or_else(|e| panic!("invalid after {applied} ops ({op:?}): {e}"));
             }
@@ -349,7 +349,7 @@ pub fn check_contract_undo(input: &ContractInput) {
                 assert!(!tri.is_vertex(v));
                 assert_eq!(tri.vertex_count() + 1, before.vertex_count());
                 assert_eq!(tri.euler_characteristic(), chi);
-                if history.len().is_multiple_of(32) || tri.vertex_count() < 64 {
+                if history.len() % 32 == 0 || tri.vertex_count() < 64 {
                     tri.validate()
                         .unwrap_or_else(|e| panic!("invalid after contracting [{u}, {v}]: {e}"));
                 }

@@ -31,8 +31,8 @@ use crate::core::{History, Triangulation, VertexId};
 /// "−1" of the paper for the time stamps `o` and `t`, and "nil" for `n`.
 const NIL: u32 = u32::MAX;
 
-const LUE: usize = 0;
-const LTE: usize = 1;
+pub(crate) const LUE: usize = 0;
+pub(crate) const LTE: usize = 1;
 
 /// Two intrusive doubly-linked lists over vertex ids sharing `next`/`prev` arrays; a
 /// vertex is in at most one of them (`tag`). All operations O(1).
@@ -58,11 +58,11 @@ impl Lists {
         }
     }
     #[inline]
-    fn contains(&self, l: usize, z: u32) -> bool {
+    pub(crate) fn contains(&self, l: usize, z: u32) -> bool {
         self.tag[z as usize] == l as u8 + 1
     }
     #[inline]
-    fn front(&self, l: usize) -> Option<u32> {
+    pub(crate) fn front(&self, l: usize) -> Option<u32> {
         (self.head[l] != NIL).then_some(self.head[l])
     }
     #[inline]
@@ -70,7 +70,7 @@ impl Lists {
         self.head[l] == NIL
     }
     #[inline]
-    fn push_front(&mut self, l: usize, z: u32) {
+    pub(crate) fn push_front(&mut self, l: usize, z: u32) {
         debug_assert_eq!(self.tag[z as usize], 0);
         let h = self.head[l];
         self.next[z as usize] = h;
@@ -85,7 +85,7 @@ impl Lists {
         self.len[l] += 1;
     }
     #[inline]
-    fn push_back(&mut self, l: usize, z: u32) {
+    pub(crate) fn push_back(&mut self, l: usize, z: u32) {
         debug_assert_eq!(self.tag[z as usize], 0);
         let t = self.tail[l];
         self.prev[z as usize] = t;
@@ -100,7 +100,7 @@ impl Lists {
         self.len[l] += 1;
     }
     #[inline]
-    fn remove(&mut self, z: u32) {
+    pub(crate) fn remove(&mut self, z: u32) {
         let l = match self.tag[z as usize] {
             0 => return,
             k => (k - 1) as usize,
@@ -120,7 +120,7 @@ impl Lists {
         self.len[l] -= 1;
     }
     #[inline]
-    fn pop_front(&mut self, l: usize) -> Option<u32> {
+    pub(crate) fn pop_front(&mut self, l: usize) -> Option<u32> {
         let z = self.front(l)?;
         self.remove(z);
         Some(z)
@@ -156,6 +156,18 @@ pub struct Variant {
     pub printed_no_counter_reset: bool,
     /// Skip the counter decrements of Alg. 4.3 (a mutation that must be caught).
     pub skip_degree3_decrement: bool,
+    /// Mutation: Alg. 4.4 also counts the two link vertices of `[u, v]` as critical
+    /// (the classic off-by-two of forgetting that `x, y` bound faces).
+    pub count_link_vertices: bool,
+    /// Mutation: take the degree-3 path of Alg. 4.3 for degree-4 endpoints too.
+    pub degree3_path_up_to_4: bool,
+    /// Mutation: Alg. 4.5 marks the link vertex `x` as processed with `v`.
+    pub mark_link_vertex_processed: bool,
+    /// Mutation: end the processing of `u` after one pass over `lue` (never revisit
+    /// `lte`, whose counters may have dropped to 0).
+    pub single_pass: bool,
+    /// Mutation: an edge whose counter leaves 0 stays where it is in `lte`.
+    pub no_move_on_increment: bool,
 }
 
 /// The state of Alg. 4.2: the triangulation K, the stack S, the vertex attributes of
@@ -211,7 +223,7 @@ pub fn reduce_variant(tri: Triangulation, options: &Options, variant: Variant) -
 }
 
 impl Rs {
-    fn new(tri: Triangulation, options: &Options, variant: Variant) -> Self {
+    pub(crate) fn new(tri: Triangulation, options: &Options, variant: Variant) -> Self {
         let n = tri.vertex_capacity();
         let counter = RetestCounter::new(&tri, options.count_retests);
         Rs {
@@ -254,35 +266,15 @@ impl Rs {
 
     /// Alg. 4.2 l.6–36: processes `u` until it is trapped.
     fn process(&mut self, u: u32) {
-        self.current = u;
         let before = self.history.len();
-        // l.8–19 (and the erratum: c(v) must start at 0 for Prop. 8(6)).
-        let mut link = std::mem::take(&mut self.scratch);
-        link.clear();
-        link.extend(self.tri.link(VertexId(u)).map(|v| v.0));
-        for &v in &link {
-            let vi = v as usize;
-            self.nbr[vi] = u;
-            self.o[vi] = self.ts;
-            self.t[vi] = NIL;
-            if !self.variant.printed_no_counter_reset {
-                self.count[vi] = 0;
-            }
-            if !self.processed[vi] {
-                if self.degree(v) == 3 {
-                    self.lists.push_front(LUE, v);
-                } else {
-                    self.lists.push_back(LUE, v);
-                }
-            }
-        }
-        self.scratch = link;
+        self.begin(u);
         loop {
             // l.22–30
             crate::spec::rs_at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
             while let Some(v) = self.lists.pop_front(LUE) {
                 self.t[v as usize] = self.ts;
-                if self.degree(v) == 3 {
+                if self.degree(v) == 3 || (self.variant.degree3_path_up_to_4 && self.degree(v) == 4)
+                {
                     self.degree3(u, v);
                 } else {
                     self.test(u, v);
@@ -291,7 +283,7 @@ impl Rs {
             }
             // l.31–33 (Prop. 11 holds here).
             crate::spec::rs_at_line_32(self);
-            if self.lists.is_empty(LTE) {
+            if self.lists.is_empty(LTE) || self.variant.single_pass {
                 break;
             }
             self.process_edge_list(u);
@@ -312,6 +304,32 @@ impl Rs {
         }
         self.processed_count += 1;
         crate::spec::rs_vertex_trapped(self, u);
+    }
+
+    /// Alg. 4.2 l.8–19: makes `u` current and puts its unprocessed neighbours in `lue`
+    /// (degree 3 first), stamping `o = ts`, `t = −1`, `c = 0` (the reset is erratum E3).
+    pub(crate) fn begin(&mut self, u: u32) {
+        self.current = u;
+        let mut link = std::mem::take(&mut self.scratch);
+        link.clear();
+        link.extend(self.tri.link(VertexId(u)).map(|v| v.0));
+        for &v in &link {
+            let vi = v as usize;
+            self.nbr[vi] = u;
+            self.o[vi] = self.ts;
+            self.t[vi] = NIL;
+            if !self.variant.printed_no_counter_reset {
+                self.count[vi] = 0;
+            }
+            if !self.processed[vi] {
+                if self.degree(v) == 3 {
+                    self.lists.push_front(LUE, v);
+                } else {
+                    self.lists.push_back(LUE, v);
+                }
+            }
+        }
+        self.scratch = link;
     }
 
     /// Alg. 4.6: contracts degree-3 edges at the front of `lte`, then the front edge if
@@ -381,7 +399,7 @@ impl Rs {
     fn increment(&mut self, w: u32) {
         let c = &mut self.count[w as usize];
         *c += 1;
-        if *c == 1 && self.lists.contains(LTE, w) {
+        if *c == 1 && self.lists.contains(LTE, w) && !self.variant.no_move_on_increment {
             self.lists.remove(w);
             self.lists.push_back(LTE, w);
         }
@@ -425,7 +443,12 @@ impl Rs {
         let ov = self.o[v as usize];
         let mut cv = 0u32;
         // lk(v) minus u and the link {x, y} of [u, v] (its cyclic neighbours of u) is Π_uv.
-        for k in 2..d - 1 {
+        let window = if self.variant.count_link_vertices {
+            1..d
+        } else {
+            2..d - 1
+        };
+        for k in window {
             let z = self.scratch[(i + k) % d];
             if self.nbr[z as usize] == u {
                 cv += 1; // (u, v, z) is a critical cycle
@@ -471,6 +494,11 @@ impl Rs {
             self.t[zi] = NIL;
         }
         self.processed[v as usize] = true;
+        if self.variant.mark_link_vertex_processed {
+            // `scratch` is still lk(v) with u at i: its cyclic successor is a link vertex.
+            let x = self.scratch[(i + 1) % d];
+            self.processed[x as usize] = true;
+        }
         let before = crate::spec::rs_prop7_before(self);
         let rec = self
             .tri

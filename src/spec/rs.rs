@@ -318,3 +318,176 @@ pub(crate) fn rs_prop7(rs: &Rs, before: Prop7Before, rec: &ContractionRecord) {
         let _ = (rs, before, rec);
     }
 }
+
+/// Each check fails on a state that violates its statement: a consistent RS state (vertex
+/// 0 of a stellar-subdivided octahedron, right after Alg. 4.2 l.8–19) with one attribute
+/// corrupted per test. Together with the algorithm mutations of `tests/rs_variants.rs`
+/// this shows that no check is vacuous.
+#[cfg(all(test, any(debug_assertions, feature = "invariants")))]
+mod tests {
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+
+    use super::*;
+    use crate::core::Triangulation;
+    use crate::irreducible::rs::{Variant, LTE, LUE};
+    use crate::irreducible::Options;
+
+    /// The octahedron with face [0, 2, 4] subdivided by vertex 6 (degree 3), with vertex
+    /// 0 current: `lue = [6, 2, 3, 4, 5]` in some order with 6 first.
+    fn state() -> Rs {
+        let mut faces: Vec<[u32; 3]> = crate::gen::octahedron()
+            .faces
+            .into_iter()
+            .filter(|f| *f != [0, 2, 4])
+            .collect();
+        assert_eq!(faces.len(), 7, "octahedron face [0, 2, 4] present");
+        faces.extend([[0, 2, 6], [2, 4, 6], [4, 0, 6]]);
+        let tri = Triangulation::from_faces(7, &faces).expect("a sphere");
+        let mut rs = Rs::new(tri, &Options::default(), Variant::default());
+        rs.begin(0);
+        assert_eq!(rs.lists.front(LUE), Some(6), "degree-3 neighbour first");
+        rs
+    }
+
+    /// Runs `check` and returns its panic message (panics if it passed).
+    fn failure(check: impl FnOnce()) -> String {
+        let err = catch_unwind(AssertUnwindSafe(check)).expect_err("the check must fail");
+        err.downcast_ref::<String>()
+            .cloned()
+            .unwrap_or_else(|| "non-string panic".into())
+    }
+
+    fn assert_fails(statement: &str, check: impl FnOnce()) {
+        let msg = failure(check);
+        assert!(
+            msg.starts_with("specification violated: ") && msg.contains(statement),
+            "expected {statement}, got {msg}"
+        );
+    }
+
+    #[test]
+    fn the_uncorrupted_state_passes_every_check() {
+        let rs = state();
+        rs_at_line_22(&rs, FULL_CHECK_DEGREE);
+        rs_at_line_32(&rs);
+        rs_degree3(&rs, 0, 6);
+        // [0, 2] lies on exactly one critical cycle, (0, 2, 4).
+        rs_after_test(&rs, 0, 2, 1);
+    }
+
+    #[test]
+    fn proposition_8_1_non_edge_in_lue() {
+        let mut rs = state();
+        rs.lists.push_back(LUE, 1); // 1 is opposite 0 in the octahedron
+        assert_fails("Proposition 8(1)", || rs_at_line_22(&rs, FULL_CHECK_DEGREE));
+    }
+
+    #[test]
+    fn proposition_8_2_degree_3_edge_behind_a_higher_degree_one() {
+        let mut rs = state();
+        rs.lists.remove(6);
+        rs.lists.push_back(LUE, 6);
+        assert_fails("Proposition 8(2)", || rs_at_line_22(&rs, FULL_CHECK_DEGREE));
+    }
+
+    #[test]
+    fn proposition_8_3_to_8_6_corrupted_attributes() {
+        type Corrupt = fn(&mut Rs);
+        let cases: [(&str, Corrupt); 4] = [
+            ("Proposition 8(3)", |rs| rs.processed[6] = true),
+            ("Proposition 8(4)", |rs| rs.o[6] = NIL),
+            ("Proposition 8(5)", |rs| rs.t[6] = 0),
+            ("Proposition 8(6)", |rs| rs.count[6] = 1),
+        ];
+        for (statement, corrupt) in cases {
+            let mut rs = state();
+            corrupt(&mut rs);
+            assert_fails(statement, || rs_at_line_22(&rs, FULL_CHECK_DEGREE));
+        }
+    }
+
+    /// Moves `w` from `lue` to the back of `lte` as Alg. 4.2 l.24–28 does after a failed
+    /// test at the current time stamp.
+    fn to_lte(rs: &mut Rs, w: u32, c: u32) {
+        rs.lists.remove(w);
+        rs.t[w as usize] = rs.ts;
+        rs.count[w as usize] = c;
+        rs.lists.push_back(LTE, w);
+    }
+
+    #[test]
+    fn proposition_9_2_untested_edge_in_lte() {
+        let mut rs = state();
+        to_lte(&mut rs, 2, 1);
+        rs.t[2] = NIL;
+        assert_fails("Proposition 9(2)", || rs_at_line_22(&rs, FULL_CHECK_DEGREE));
+    }
+
+    #[test]
+    fn proposition_10_zero_counter_behind_a_positive_one() {
+        let mut rs = state();
+        to_lte(&mut rs, 2, 1);
+        to_lte(&mut rs, 3, 0);
+        assert_fails("Proposition 10", || rs_at_line_22(&rs, FULL_CHECK_DEGREE));
+    }
+
+    #[test]
+    fn proposition_11_wrong_counter_at_line_32() {
+        let mut rs = state();
+        to_lte(&mut rs, 2, 1);
+        rs_at_line_32(&rs); // the true count
+        rs.count[2] = 3;
+        assert_fails("Proposition 11", || rs_at_line_32(&rs));
+    }
+
+    #[test]
+    fn definition_4_loose_vertex_after_processing() {
+        let rs = state();
+        assert_fails("Definition 4", || rs_vertex_trapped(&rs, 0));
+    }
+
+    #[test]
+    fn theorem_3_wrong_critical_cycle_count_at_a_link_test() {
+        let rs = state();
+        assert_fails("Alg. 4.4 / Theorem 3", || rs_after_test(&rs, 0, 2, 0));
+    }
+
+    #[test]
+    fn proposition_6_degree_3_path_on_a_higher_degree_vertex() {
+        let rs = state();
+        assert_fails("Proposition 6", || rs_degree3(&rs, 0, 2));
+    }
+
+    /// Contracts `[0, 3]` (contractible: its link {4, 5} is every common neighbour).
+    fn contract_0_3(rs: &mut Rs) -> ContractionRecord {
+        assert!(rs.tri.link_condition_naive(VertexId(0), VertexId(3)));
+        rs.processed[3] = true;
+        rs.tri
+            .contract_tested(VertexId(0), VertexId(3), &mut rs.history)
+    }
+
+    #[test]
+    fn lemma_5_processed_vertex_loose_after_a_contraction() {
+        let mut rs = state();
+        rs.processed[4] = true; // wrongly: 4 is not trapped
+        let rec = contract_0_3(&mut rs);
+        assert!(rec.link.contains(&VertexId(4)));
+        assert!(!is_trapped_naive(&rs.tri, VertexId(4)));
+        assert_fails("Lemma 5", || rs_after_contraction(&rs, &rec, &[]));
+    }
+
+    #[test]
+    fn proposition_7_edge_made_contractible_by_a_degree_4_contraction() {
+        let mut rs = state();
+        let rec = contract_0_3(&mut rs);
+        assert_eq!(rec.degree_v, 4);
+        // Claim (falsely) that [0, 6] was non-contractible before: it is contractible now,
+        // and a degree-4 contraction cannot have made it so.
+        assert_eq!(
+            critical_cycles_through(&rs.tri, VertexId(0), VertexId(6)),
+            Some(0)
+        );
+        let before = Prop7Before(vec![6]);
+        assert_fails("Proposition 7", || rs_prop7(&rs, before, &rec));
+    }
+}
