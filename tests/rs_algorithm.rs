@@ -97,3 +97,37 @@ fn rs_on_the_small_surfaces() {
         }
     }
 }
+
+/// The ε counter is not vacuous: on the same inputs where RS keeps ε = 0, Schipper's
+/// algorithm and the brute force re-test edges (ε > 0), so a re-testing RS would show.
+#[test]
+fn retest_counter_sees_the_retests_of_schipper_and_brute_force() {
+    use contractible::gen::{random, RandomParams, SurfaceKind};
+    use contractible::irreducible::{reduce, Algorithm, Options};
+    let opts = Options {
+        seed: 5,
+        count_retests: true,
+    };
+    let mut seen = [0u64; 3];
+    for (k, surface) in [SurfaceKind::Orientable(2), SurfaceKind::NonOrientable(3)]
+        .into_iter()
+        .enumerate()
+    {
+        let t = random(&RandomParams {
+            surface,
+            min_faces: 3000,
+            flip_percent: 30,
+            seed: k as u64,
+        });
+        for (i, alg) in [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute]
+            .into_iter()
+            .enumerate()
+        {
+            seen[i] += reduce(t.clone(), alg, &opts)
+                .stats
+                .edges_tested_more_than_once;
+        }
+    }
+    assert_eq!(seen[0], 0, "ε_RS");
+    assert!(seen[1] > 0 && seen[2] > 0, "ε_S, ε_BF = {seen:?}");
+}
