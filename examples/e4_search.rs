@@ -1,0 +1,127 @@
+//! The search that found the witnesses of erratum E4 (`spec/ERRATA.md`): RS with the
+//! printed loop exit of Alg. 4.2 l.34 (`Variant::printed_loop_exit`) on random small
+//! surfaces (genus 1–4, cross-caps 1–4, 20–170 faces) under random vertex orders.
+//!
+//! A run fails when a specification check fires (built with `--features invariants`:
+//! Definition 4 catches the loose vertex) or, with the checks compiled out, when the
+//! output is reducible by the naive test. The first failure is shrunk by contracting
+//! edges (keeping the relative vertex order) while it keeps failing, then printed.
+//! Deterministic: the inputs come from the documented RNG stream of seed 12345.
+//!
+//! ```text
+//! cargo run --release --features invariants --example e4_search -- 180
+//! cargo run --release --example e4_search -- 600
+//! ```
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use contractible::gen::{random, RandomParams, SurfaceKind};
+use contractible::irreducible::rs::{reduce_variant, Variant};
+use contractible::irreducible::Options;
+use contractible::rng::Rng;
+use contractible::{History, Triangulation};
+
+const PRINTED: Variant = Variant {
+    printed_loop_exit: true,
+    printed_strict_stamp: false,
+    printed_no_counter_reset: false,
+    skip_degree3_decrement: false,
+    count_link_vertices: false,
+    degree3_path_up_to_4: false,
+    mark_link_vertex_processed: false,
+    single_pass: false,
+    no_move_on_increment: false,
+};
+
+fn main() {
+    // Failures are expected panics; keep the output to the summary.
+    std::panic::set_hook(Box::new(|_| {}));
+    let secs: u64 = std::env::args()
+        .nth(1)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(60);
+    let start = std::time::Instant::now();
+    let mut runs = 0u64;
+    let mut rng = Rng::new(12345);
+    while start.elapsed().as_secs() < secs {
+        let k = rng.below(8) as u32;
+        let surface = if k < 4 {
+            SurfaceKind::Orientable(k + 1)
+        } else {
+            SurfaceKind::NonOrientable(k - 3)
+        };
+        let t = random(&RandomParams {
+            surface,
+            min_faces: 20 + rng.below(150) as usize,
+            flip_percent: rng.below(100) as u32,
+            seed: rng.below(1 << 40),
+        });
+        let faces = t.face_list();
+        let n = t.vertex_capacity();
+        for _ in 0..50 {
+            let mut perm: Vec<u32> = (0..n as u32).collect();
+            rng.shuffle(&mut perm);
+            let relabelled: Vec<[u32; 3]> =
+                faces.iter().map(|f| f.map(|x| perm[x as usize])).collect();
+            runs += 1;
+            if fails(&relabelled) {
+                println!("failure after {runs} runs: {surface:?}, {n} vertices");
+                let m = shrink(relabelled);
+                let v = m.iter().flatten().max().map_or(0, |&x| x + 1);
+                println!("shrunk to {v} vertices, {} faces: {m:?}", m.len());
+                return;
+            }
+        }
+    }
+    println!("no failure in {runs} runs");
+}
+
+/// Whether the printed variant fails on `faces` (a check fires or the output is
+/// reducible).
+fn fails(faces: &[[u32; 3]]) -> bool {
+    let n = faces.iter().flatten().max().map_or(0, |&m| m as usize + 1);
+    let Ok(t) = Triangulation::from_faces(n, faces) else {
+        return false;
+    };
+    match catch_unwind(AssertUnwindSafe(|| {
+        reduce_variant(t, &Options::default(), PRINTED)
+    })) {
+        Err(_) => true,
+        Ok((r, _)) => !r.tri.is_irreducible_naive(),
+    }
+}
+
+/// Renumbers the used vertices `0..k` keeping their relative order (RS processes
+/// vertices in id order).
+fn compact(faces: &[[u32; 3]]) -> Vec<[u32; 3]> {
+    let mut used: Vec<u32> = faces.iter().flatten().copied().collect();
+    used.sort_unstable();
+    used.dedup();
+    faces
+        .iter()
+        .map(|f| f.map(|x| used.partition_point(|&u| u < x) as u32))
+        .collect()
+}
+
+/// Greedily contracts edges (first that keeps the failure, repeat) until none does.
+fn shrink(mut faces: Vec<[u32; 3]>) -> Vec<[u32; 3]> {
+    'outer: loop {
+        let n = faces.iter().flatten().max().map_or(0, |&m| m as usize + 1);
+        let Ok(t) = Triangulation::from_faces(n, &faces) else {
+            return faces;
+        };
+        let edges: Vec<_> = t.edges().map(|(a, b, _)| (a, b)).collect();
+        for (a, b) in edges {
+            for (x, y) in [(a, b), (b, a)] {
+                let mut smaller = t.clone();
+                if smaller.contract(x, y, &mut History::new()).is_ok() {
+                    let f = compact(&smaller.face_list());
+                    if fails(&f) {
+                        faces = f;
+                        continue 'outer;
+                    }
+                }
+            }
+        }
+        return faces;
+    }
+}
