@@ -59,12 +59,12 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
         }
     });
     assert!(n >= 5, "surface_ops corpus missing");
-    let n = replay("rs_printed_loop_exit", |b| {
+    let n = replay("rs_vertex_orders", |b| {
         if let Some(i) = harness::decode::<SurfaceInput>(b) {
-            harness::check_printed_loop_exit(&i);
+            harness::check_vertex_orders(&i);
         }
     });
-    assert!(n >= 5, "rs_printed_loop_exit corpus missing");
+    assert!(n >= 5, "rs_vertex_orders corpus missing");
     let n = replay("contract_split", |b| {
         if let Some(i) = harness::decode::<ContractInput>(b) {
             harness::check_contract_undo(&i);
@@ -149,7 +149,7 @@ fn every_start_surface_with_random_ops_reduces_correctly() {
             seed: k as u64,
         };
         harness::check_reductions(&input);
-        harness::check_printed_loop_exit(&input);
+        harness::check_vertex_orders(&input);
     }
 }
 
