@@ -102,8 +102,6 @@ fn rs_on_the_small_surfaces() {
 /// algorithm and the brute force re-test edges (ε > 0), so a re-testing RS would show.
 #[test]
 fn retest_counter_sees_the_retests_of_schipper_and_brute_force() {
-    use contractible::gen::{random, RandomParams, SurfaceKind};
-    use contractible::irreducible::{reduce, Algorithm, Options};
     let opts = Options {
         seed: 5,
         count_retests: true,
@@ -130,4 +128,51 @@ fn retest_counter_sees_the_retests_of_schipper_and_brute_force() {
     }
     assert_eq!(seen[0], 0, "ε_RS");
     assert!(seen[1] > 0 && seen[2] > 0, "ε_S, ε_BF = {seen:?}");
+}
+
+/// RS on small surfaces under many vertex orders (the space in which erratum E4 showed:
+/// `examples/e4_search.rs`): every output irreducible by the naive test, same χ and
+/// orientability, ε = 0, with the specification checks on (Definition 4 included).
+#[test]
+fn small_surfaces_under_many_vertex_orders() {
+    use contractible::rng::Rng;
+    let mut rng = Rng::new(2026);
+    let opts = Options {
+        seed: 0,
+        count_retests: true,
+    };
+    let mut runs = 0;
+    for k in 0..80u32 {
+        let surface = if k % 2 == 0 {
+            SurfaceKind::Orientable(1 + k % 4)
+        } else {
+            SurfaceKind::NonOrientable(1 + k % 4)
+        };
+        let t = random(&RandomParams {
+            surface,
+            min_faces: 20 + rng.below(150) as usize,
+            flip_percent: rng.below(100) as u32,
+            seed: u64::from(k),
+        });
+        let n = t.vertex_capacity();
+        for _ in 0..25 {
+            let mut perm: Vec<u32> = (0..n as u32).collect();
+            rng.shuffle(&mut perm);
+            let faces: Vec<[u32; 3]> = t
+                .face_list()
+                .iter()
+                .map(|f| f.map(|x| perm[x as usize]))
+                .collect();
+            let input = Triangulation::from_faces(n, &faces).expect("relabelled");
+            let r = reduce(input.clone(), Algorithm::Rs, &opts);
+            assert!(r.tri.is_irreducible_naive(), "{surface:?} k={k}");
+            assert_eq!(
+                (r.tri.euler_characteristic(), r.tri.is_orientable()),
+                (input.euler_characteristic(), input.is_orientable())
+            );
+            assert_eq!(r.stats.edges_tested_more_than_once, 0);
+            runs += 1;
+        }
+    }
+    assert_eq!(runs, 2000);
 }
