@@ -42,18 +42,15 @@ pub struct RandomParams {
     pub seed: u64,
 }
 
-/// Connected sum of two face lists: removes face `a_face` of `a` and the *last* face of
-/// `b`, identifies their vertices in order and renumbers `b`'s other vertices after
-/// `a`'s. The result is a simplicial closed surface with χ = χ(a) + χ(b) − 2: the only
-/// edges between identified vertices are the glued triangle's, and no face survives on
-/// all three of them.
-fn connected_sum(
-    a: &[[u32; 3]],
-    a_vertices: u32,
-    b: &[[u32; 3]],
-    b_vertices: u32,
-) -> Vec<[u32; 3]> {
-    let removed_a = a[a.len() - 1];
+/// Connected sum of two face lists, in place: removes the *last* face of `a` and of `b`,
+/// identifies their vertices in order and renumbers `b`'s other vertices after `a`'s.
+/// The result is a simplicial closed surface with χ = χ(a) + χ(b) − 2: the only edges
+/// between identified vertices are the glued triangle's, and no face survives on all
+/// three of them. O(|b|) (appending, so a chain of `g` sums is O(g·|b|), not O(g²)).
+fn connected_sum_into(a: &mut Vec<[u32; 3]>, a_vertices: u32, b: &[[u32; 3]], b_vertices: u32) {
+    let Some(removed_a) = a.pop() else {
+        return;
+    };
     let removed_b = b[b.len() - 1];
     let mut map = vec![u32::MAX; b_vertices as usize];
     for k in 0..3 {
@@ -66,15 +63,13 @@ fn connected_sum(
             next += 1;
         }
     }
-    let mut out: Vec<[u32; 3]> = a[..a.len() - 1].to_vec();
     // Glue b in with the opposite orientation of its removed face relative to a's, so an
     // orientable sum of consistently oriented pieces stays consistently oriented.
-    out.extend(
+    a.extend(
         b[..b.len() - 1]
             .iter()
             .map(|f| [map[f[0] as usize], map[f[2] as usize], map[f[1] as usize]]),
     );
-    out
 }
 
 /// `faces` with faces reversed as needed so neighbours agree (when orientable).
@@ -104,8 +99,9 @@ pub fn seed_surface(surface: SurfaceKind) -> Triangulation {
     let piece = &piece[..];
     let mut faces = piece.to_vec();
     let mut nv = piece_v;
+    faces.reserve((count as usize - 1) * (piece.len() - 2));
     for _ in 1..count {
-        faces = connected_sum(&faces, nv, piece, piece_v);
+        connected_sum_into(&mut faces, nv, piece, piece_v);
         nv += piece_v - 3;
     }
     Triangulation::from_faces(nv as usize, &faces)
