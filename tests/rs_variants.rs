@@ -52,15 +52,16 @@ fn skipping_the_degree3_decrement_is_caught_by_proposition_11() {
     assert_caught(v, SurfaceKind::Orientable(0), 0, "Proposition 11");
 }
 
-/// Erratum E1: Alg. 4.3 l.13 as printed (`t(x) > o(y)`) misses the decrement when y
-/// became a neighbour of u at the same time stamp at which [u, x] was tested.
+/// Erratum E1: Alg. 4.3 l.13 as printed (`t(x) > o(y)`; l.19 keeps its printed `>=`)
+/// misses the decrement when y became a neighbour of u at the same time stamp at which
+/// [u, x] was tested.
 #[test]
 fn erratum_e1_strict_time_stamp_breaks_proposition_11() {
     let v = Variant {
         printed_strict_stamp: true,
         ..Variant::default()
     };
-    assert_caught(v, SurfaceKind::Orientable(1), 2, "Proposition 11");
+    assert_caught(v, SurfaceKind::NonOrientable(1), 13, "Proposition 11");
 }
 
 /// Erratum E3: Alg. 4.2 l.8–19 as printed does not reset c(v) of the initial neighbours,
@@ -237,19 +238,27 @@ const E4_GENUS_4: [[u32; 3]; 62] = [
     [2, 17, 0],
 ];
 
-/// Runs the printed loop exit on `faces`: returns the `Definition 4` message when the
+const PRINTED_LOOP_EXIT: Variant = Variant {
+    printed_loop_exit: true,
+    printed_strict_stamp: false,
+    printed_no_counter_reset: false,
+    skip_degree3_decrement: false,
+    count_link_vertices: false,
+    degree3_path_up_to_4: false,
+    mark_link_vertex_processed: false,
+    single_pass: false,
+    no_move_on_increment: false,
+};
+
+/// Runs `printed` on `faces`: returns the message of the check that fired when the
 /// checks are compiled in, and whether the output is irreducible otherwise.
-fn printed_loop_exit(faces: &[[u32; 3]], n: usize) -> Result<bool, String> {
+fn run_printed(printed: Variant, faces: &[[u32; 3]], n: usize) -> Result<bool, String> {
     use contractible::Triangulation;
     let t = Triangulation::from_faces(n, faces).expect("a closed surface");
     // Ours gives an irreducible triangulation of the same surface.
     let (ours, _) = reduce_variant(t.clone(), &Options::default(), Variant::default());
     assert!(ours.tri.is_irreducible_naive());
     assert_eq!(ours.tri.euler_characteristic(), t.euler_characteristic());
-    let printed = Variant {
-        printed_loop_exit: true,
-        ..Variant::default()
-    };
     match catch_unwind(AssertUnwindSafe(|| {
         reduce_variant(t, &Options::default(), printed)
     })) {
@@ -263,7 +272,7 @@ fn printed_loop_exit(faces: &[[u32; 3]], n: usize) -> Result<bool, String> {
 
 #[test]
 fn erratum_e4_printed_loop_exit_leaves_a_vertex_loose() {
-    let res = printed_loop_exit(&E4_KLEIN_BOTTLE, 16);
+    let res = run_printed(PRINTED_LOOP_EXIT, &E4_KLEIN_BOTTLE, 16);
     if cfg!(any(debug_assertions, feature = "invariants")) {
         let msg = res.expect_err("the printed loop exit is caught");
         assert!(
@@ -278,7 +287,7 @@ fn erratum_e4_printed_loop_exit_leaves_a_vertex_loose() {
 
 #[test]
 fn erratum_e4_printed_loop_exit_returns_a_reducible_triangulation() {
-    let res = printed_loop_exit(&E4_GENUS_4, 25);
+    let res = run_printed(PRINTED_LOOP_EXIT, &E4_GENUS_4, 25);
     if cfg!(any(debug_assertions, feature = "invariants")) {
         let msg = res.expect_err("the printed loop exit is caught");
         assert!(msg.contains("Definition 4"), "{msg}");
@@ -288,6 +297,69 @@ fn erratum_e4_printed_loop_exit_returns_a_reducible_triangulation() {
             res,
             Ok(false),
             "the printed exit's output must be reducible"
+        );
+    }
+}
+
+/// Erratum E1 witness with a wrong *output*: a 16-vertex surface of Euler genus 4 (found
+/// by `examples/errata_search.rs` (`e1`, checks compiled out),
+/// and shrunk). The printed strict stamp of Alg. 4.3 l.13 leaves a counter one too
+/// high, the edge never reaches the front of `lte`, and the output keeps it contractible.
+const E1_EULER_GENUS_4: [[u32; 3]; 36] = [
+    [0, 2, 14],
+    [10, 14, 0],
+    [8, 11, 9],
+    [8, 1, 11],
+    [12, 1, 15],
+    [6, 12, 11],
+    [15, 11, 1],
+    [6, 15, 11],
+    [4, 10, 11],
+    [13, 9, 11],
+    [14, 9, 2],
+    [9, 13, 2],
+    [13, 5, 10],
+    [15, 8, 6],
+    [1, 6, 12],
+    [13, 3, 2],
+    [3, 0, 2],
+    [4, 12, 8],
+    [4, 9, 10],
+    [9, 1, 10],
+    [14, 3, 10],
+    [3, 13, 10],
+    [0, 4, 1],
+    [10, 0, 1],
+    [5, 13, 11],
+    [7, 10, 11],
+    [4, 11, 12],
+    [1, 6, 9],
+    [6, 8, 9],
+    [9, 4, 0],
+    [7, 11, 5],
+    [10, 7, 5],
+    [9, 0, 3],
+    [9, 14, 3],
+    [8, 4, 1],
+    [12, 15, 8],
+];
+
+#[test]
+fn erratum_e1_printed_stamp_returns_a_reducible_triangulation() {
+    let printed = Variant {
+        printed_strict_stamp: true,
+        ..Variant::default()
+    };
+    let res = run_printed(printed, &E1_EULER_GENUS_4, 16);
+    if cfg!(any(debug_assertions, feature = "invariants")) {
+        let msg = res.expect_err("the printed stamp is caught");
+        println!("{msg}");
+        assert!(msg.contains("Proposition 11"), "{msg}");
+    } else {
+        assert_eq!(
+            res,
+            Ok(false),
+            "the printed stamp's output must be reducible"
         );
     }
 }

@@ -150,7 +150,7 @@ impl Lists {
 pub struct Variant {
     /// Use the printed `until lue = ∅` loop exit of Alg. 4.2 l.34.
     pub printed_loop_exit: bool,
-    /// Use the printed strict `t(x) > o(y)` of Alg. 4.3 l.13.
+    /// Use the printed strict `t(x) > o(y)` of Alg. 4.3 l.13 (l.19 is printed `>=`).
     pub printed_strict_stamp: bool,
     /// Skip resetting `c(v)` of the initial neighbours (as printed in Alg. 4.2).
     pub printed_no_counter_reset: bool,
@@ -344,6 +344,9 @@ impl Rs {
         }
         if let Some(v) = self.lists.front(LTE) {
             if self.count[v as usize] == 0 {
+                // l.12: c(v) = 0 must still mean "contractible" here, after the counter
+                // updates since l.32 (the paper states Prop. 11 at l.32 only).
+                crate::spec::rs_at_alg46_line_12(self, u, v);
                 self.lists.remove(v);
                 self.contract(u, v);
             }
@@ -378,16 +381,16 @@ impl Rs {
             self.decrement(y);
         } else if tx != NIL && counted(tx, self.o[y as usize], strict) {
             self.decrement(x);
-        } else if ty != NIL && counted(ty, self.o[x as usize], strict) {
+        } else if ty != NIL && counted(ty, self.o[x as usize], false) {
+            // l.19 is printed with `>=` already; only l.13 is misprinted (E1).
             self.decrement(y);
         }
     }
 
     /// c(w) ← c(w) − 1 for `[u, w]` in `lte`; a counter reaching 0 moves to the front.
     fn decrement(&mut self, w: u32) {
-        debug_assert!(self.lists.contains(LTE, w), "decrement of {w} not in lte");
+        crate::spec::rs_decrement(self, w);
         let c = &mut self.count[w as usize];
-        debug_assert!(*c > 0, "critical-cycle counter of {w} underflows");
         *c = c.saturating_sub(1);
         if *c == 0 {
             self.lists.remove(w);
@@ -493,6 +496,7 @@ impl Rs {
             self.o[zi] = self.ts;
             self.t[zi] = NIL;
         }
+        crate::spec::rs_before_contraction(self, u, v);
         self.processed[v as usize] = true;
         if self.variant.mark_link_vertex_processed {
             // `scratch` is still lk(v) with u at i: its cyclic successor is a link vertex.

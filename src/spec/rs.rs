@@ -254,12 +254,14 @@ pub(crate) fn rs_degree3(rs: &Rs, u: u32, v: u32) {
     }
 }
 
-/// The `lte` edges that are non-contractible just before a contraction (for
-/// [`rs_prop7`]); empty when the checks are compiled out.
+/// The `lte` edges that are non-contractible just before a contraction, with their
+/// numbers of critical cycles (for [`rs_prop7`]); empty when the checks are compiled out.
 #[derive(Default)]
-pub(crate) struct Prop7Before(#[allow(dead_code)] Vec<u32>);
+pub(crate) struct Prop7Before(#[allow(dead_code)] Vec<(u32, usize)>);
 
-/// Snapshot for Proposition 7: the edges `[u, w]` in `lte` on at least one critical cycle.
+/// Snapshot for Proposition 7: the edges `[u, w]` in `lte` on at least one critical cycle
+/// (Theorem 3: K is not T4 while an edge is being contracted, so these are exactly the
+/// non-contractible ones), with their counts.
 #[inline]
 pub(crate) fn rs_prop7_before(rs: &Rs) -> Prop7Before {
     #[cfg(any(debug_assertions, feature = "invariants"))]
@@ -268,12 +270,14 @@ pub(crate) fn rs_prop7_before(rs: &Rs) -> Prop7Before {
         if rs.tri.degree(VertexId(u)) > FULL_CHECK_DEGREE {
             return Prop7Before::default();
         }
-        let w: Vec<u32> = rs
+        let w: Vec<(u32, usize)> = rs
             .lists
             .iter(1)
             .take(FULL_CHECK_DEGREE)
-            .filter(|&w| {
-                critical_cycles_through(&rs.tri, VertexId(u), VertexId(w)).is_some_and(|c| c > 0)
+            .filter_map(|w| {
+                critical_cycles_through(&rs.tri, VertexId(u), VertexId(w))
+                    .filter(|&c| c > 0)
+                    .map(|c| (w, c))
             })
             .collect();
         Prop7Before(w)
@@ -286,25 +290,28 @@ pub(crate) fn rs_prop7_before(rs: &Rs) -> Prop7Before {
 }
 
 /// Proposition 7, locally, after contracting `f = [u, v]`: a non-contractible edge
-/// `[u, w]` of `lte` (snapshot before the contraction) can have become contractible only
-/// if `d(v) = 3` and `w ∈ lk(v)`, and then the critical cycle it was on was the one of
-/// `lk(v)`, its only one.
+/// `[u, w]` of `lte` (snapshot before the contraction, first [`FULL_CHECK_DEGREE`]
+/// entries) can have become contractible only if `d(v) = 3`, `w ∈ lk(v)`, and `[u, w]`
+/// was on exactly one critical cycle before (the one of `lk(v)`, which is gone).
 #[inline]
 pub(crate) fn rs_prop7(rs: &Rs, before: Prop7Before, rec: &ContractionRecord) {
     #[cfg(any(debug_assertions, feature = "invariants"))]
     {
         let u = rs.current;
-        for w in before.0 {
+        for (w, cycles_before) in before.0 {
             if !rs.tri.is_vertex(VertexId(w)) {
                 continue;
             }
             if critical_cycles_through(&rs.tri, VertexId(u), VertexId(w)) == Some(0) {
+                // f = [u, v] on a degree-3 v, e = [u, w] an edge of lk(v) (w ∈ {x, y}: the
+                // link of [u, v] is the rest of lk(v)), and e was on exactly one critical
+                // cycle, lk(v)'s, now gone (the count after is 0).
                 let allowed = rec.degree_v == 3 && rec.link.contains(&VertexId(w));
-                if !allowed {
+                if !allowed || cycles_before != 1 {
                     spec_fail!(
                         rs,
                         "Proposition 7",
-                        "contracting [{}, {}] (d = {}) made non-contractible [{u}, {w}] contractible",
+                        "contracting [{}, {}] (d = {}) made [{u}, {w}] (on {cycles_before} critical cycles) contractible",
                         rec.u,
                         rec.v,
                         rec.degree_v
@@ -317,6 +324,76 @@ pub(crate) fn rs_prop7(rs: &Rs, before: Prop7Before, rec: &ContractionRecord) {
     {
         let _ = (rs, before, rec);
     }
+}
+
+/// Before every contraction of RS (Alg. 4.5, whichever path led there): `[u, v]` is
+/// contractible. By Theorem 3 (K is not T4: the degree-3 path returns early on T4) this
+/// is "no critical cycle through `[u, v]`", counted by the oracle from `v`'s side at any
+/// degree; the naive link condition is compared too when `d(u)` is at most
+/// [`FULL_CHECK_DEGREE`]. (The core's `contract_tested` asserts the link condition only
+/// in debug builds; this check also runs under `--features invariants`.)
+#[inline]
+pub(crate) fn rs_before_contraction(rs: &Rs, u: u32, v: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let (a, b) = (VertexId(u), VertexId(v));
+        let cycles = critical_cycles_through(&rs.tri, a, b);
+        let naive_fails =
+            rs.tri.degree(a) <= FULL_CHECK_DEGREE && !rs.tri.link_condition_naive(a, b);
+        if cycles != Some(0) || rs.tri.is_tetrahedron() || naive_fails {
+            spec_fail!(
+                rs,
+                "Theorem 3 (contraction of a contractible edge)",
+                "contracting [{u}, {v}] on {cycles:?} critical cycles (T4: {})",
+                rs.tri.is_tetrahedron()
+            );
+        }
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, u, v);
+}
+
+/// Alg. 4.6 l.12: when the front edge `[u, v]` of `lte` is contracted because `c(v) = 0`,
+/// the counter is still exact (`c(v)` = critical cycles through `[u, v]`). The paper
+/// states Proposition 11 at Alg. 4.2 l.32 only; the degree-3 contractions of Alg. 4.6
+/// l.1–9 change counters in between, and the algorithm relies on them being right.
+#[inline]
+pub(crate) fn rs_at_alg46_line_12(rs: &Rs, u: u32, v: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let truth = critical_cycles_through(&rs.tri, VertexId(u), VertexId(v));
+        if truth != Some(rs.count[v as usize] as usize) {
+            spec_fail!(
+                rs,
+                "Proposition 11 at Alg. 4.6 l.12",
+                "c({v}) = {} but [{u}, {v}] lies on {truth:?} critical cycles",
+                rs.count[v as usize]
+            );
+        }
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, u, v);
+}
+
+/// Alg. 4.3 decrements (l.8–22): the decremented edge `[u, w]` is in `lte` and its
+/// counter is positive (a counter never goes below the true count, Prop. 11).
+#[inline]
+pub(crate) fn rs_decrement(rs: &Rs, w: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    {
+        let u = rs.current;
+        if !rs.lists.contains(crate::irreducible::rs::LTE, w) || rs.count[w as usize] == 0 {
+            spec_fail!(
+                rs,
+                "Alg. 4.3 / Proposition 11 (decrement)",
+                "decrementing c({w}) = {} of [{u}, {w}] (in lte: {})",
+                rs.count[w as usize],
+                rs.lists.contains(crate::irreducible::rs::LTE, w)
+            );
+        }
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, w);
 }
 
 /// Each check fails on a state that violates its statement: a consistent RS state (vertex
@@ -487,7 +564,52 @@ mod tests {
             critical_cycles_through(&rs.tri, VertexId(0), VertexId(6)),
             Some(0)
         );
-        let before = Prop7Before(vec![6]);
+        let before = Prop7Before(vec![(6, 1)]);
         assert_fails("Proposition 7", || rs_prop7(&rs, before, &rec));
+    }
+    #[test]
+    fn theorem_3_contraction_of_a_non_contractible_edge() {
+        let rs = state();
+        rs_before_contraction(&rs, 0, 6); // contractible: passes
+        assert_fails("Theorem 3 (contraction of a contractible edge)", || {
+            rs_before_contraction(&rs, 0, 2)
+        });
+    }
+
+    #[test]
+    fn proposition_11_stale_counter_at_alg_4_6_line_12() {
+        let mut rs = state();
+        to_lte(&mut rs, 2, 1);
+        rs_at_alg46_line_12(&rs, 0, 2);
+        rs.count[2] = 0;
+        assert_fails("Proposition 11 at Alg. 4.6 l.12", || {
+            rs_at_alg46_line_12(&rs, 0, 2)
+        });
+    }
+
+    #[test]
+    fn decrement_of_a_zero_counter_or_outside_lte() {
+        let mut rs = state();
+        assert_fails("(decrement)", || rs_decrement(&rs, 2)); // 2 is in lue
+        to_lte(&mut rs, 2, 1);
+        rs_decrement(&rs, 2);
+        rs.count[2] = 0;
+        assert_fails("(decrement)", || rs_decrement(&rs, 2));
+    }
+
+    #[test]
+    fn proposition_7_edge_that_was_on_two_critical_cycles() {
+        let mut rs = state();
+        // Contract the degree-3 vertex 6: [0, 2] (in lk(6)) loses the cycle (0, 2, 4).
+        assert!(rs.tri.link_condition_naive(VertexId(0), VertexId(6)));
+        let rec = rs
+            .tri
+            .contract_tested(VertexId(0), VertexId(6), &mut rs.history);
+        assert_eq!(rec.degree_v, 3);
+        assert!(rec.link.contains(&VertexId(2)));
+        rs_prop7(&rs, Prop7Before(vec![(2, 1)]), &rec); // as Prop. 7 says: passes
+        assert_fails("Proposition 7", || {
+            rs_prop7(&rs, Prop7Before(vec![(2, 2)]), &rec)
+        });
     }
 }

@@ -1,16 +1,18 @@
-//! The search that found the witnesses of erratum E4 (`spec/ERRATA.md`): RS with the
-//! printed loop exit of Alg. 4.2 l.34 (`Variant::printed_loop_exit`) on random small
-//! surfaces (genus 1–4, cross-caps 1–4, 20–170 faces) under random vertex orders.
+//! The search that found the witnesses of errata E1 and E4 (`spec/ERRATA.md`): RS with a
+//! printed form of the pseudo-code — `e4`: the loop exit of Alg. 4.2 l.34
+//! (`Variant::printed_loop_exit`); `e1`: the strict stamp of Alg. 4.3 l.13
+//! (`Variant::printed_strict_stamp`) — on random small surfaces (genus 1–4, cross-caps
+//! 1–4, 20–170 faces) under random vertex orders.
 //!
-//! A run fails when a specification check fires (built with `--features invariants`:
-//! Definition 4 catches the loose vertex) or, with the checks compiled out, when the
-//! output is reducible by the naive test. The first failure is shrunk by contracting
+//! A run fails when a specification check fires (built with `--features invariants`)
+//! or, with the checks compiled out, when the output is reducible by the naive test. The first failure is shrunk by contracting
 //! edges (keeping the relative vertex order) while it keeps failing, then printed.
 //! Deterministic: the inputs come from the documented RNG stream of seed 12345.
 //!
 //! ```text
-//! cargo run --release --features invariants --example e4_search -- 180
-//! cargo run --release --example e4_search -- 600
+//! cargo run --release --features invariants --example errata_search -- e4 180
+//! cargo run --release --example errata_search -- e4 600
+//! cargo run --release --example errata_search -- e1 240
 //! ```
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -20,18 +22,30 @@ use contractible::irreducible::Options;
 use contractible::rng::Rng;
 use contractible::{History, Triangulation};
 
+/// The printed variant named by the first argument.
 fn printed() -> Variant {
-    Variant {
-        printed_loop_exit: true,
-        ..Variant::default()
+    match std::env::args().nth(1).as_deref() {
+        Some("e1") => Variant {
+            printed_strict_stamp: true,
+            ..Variant::default()
+        },
+        Some("e4") => Variant {
+            printed_loop_exit: true,
+            ..Variant::default()
+        },
+        _ => {
+            eprintln!("usage: errata_search e1|e4 [SECONDS]");
+            std::process::exit(2)
+        }
     }
 }
 
 fn main() {
     // Failures are expected panics; keep the output to the summary.
     std::panic::set_hook(Box::new(|_| {}));
+    printed(); // validates the argument before searching
     let secs: u64 = std::env::args()
-        .nth(1)
+        .nth(2)
         .and_then(|s| s.parse().ok())
         .unwrap_or(60);
     let start = std::time::Instant::now();
