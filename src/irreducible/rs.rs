@@ -272,6 +272,7 @@ impl Rs {
             // l.22–30
             crate::spec::rs_at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
             while let Some(v) = self.lists.pop_front(LUE) {
+                crate::spec::rs_leaving_lue(self, v);
                 self.t[v as usize] = self.ts;
                 if self.degree(v) == 3 || (self.variant.degree3_path_up_to_4 && self.degree(v) == 4)
                 {
@@ -361,6 +362,7 @@ impl Rs {
         }
         crate::spec::rs_degree3(self, u, v);
         let [x, y] = self.contract(u, v);
+        crate::spec::rs_degree3_untested(self, x, y);
         if self.variant.skip_degree3_decrement {
             return;
         }
@@ -490,6 +492,7 @@ impl Rs {
         pi.extend((2..d - 1).map(|k| self.scratch[(i + k) % d]));
         self.ts += 1;
         for &z in &pi {
+            crate::spec::rs_new_neighbour(self, z);
             let zi = z as usize;
             self.nbr[zi] = u;
             self.count[zi] = 0;

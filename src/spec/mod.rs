@@ -21,5 +21,6 @@ pub(crate) mod rs;
 
 pub(crate) use rs::{
     rs_after_contraction, rs_after_test, rs_at_alg46_line_12, rs_at_line_22, rs_at_line_32,
-    rs_before_contraction, rs_decrement, rs_degree3, rs_prop7, rs_prop7_before, rs_vertex_trapped,
+    rs_before_contraction, rs_decrement, rs_degree3, rs_degree3_untested, rs_leaving_lue,
+    rs_new_neighbour, rs_prop7, rs_prop7_before, rs_vertex_trapped,
 };

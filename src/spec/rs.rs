@@ -396,6 +396,66 @@ pub(crate) fn rs_decrement(rs: &Rs, w: u32) {
     let _ = (rs, w);
 }
 
+/// Sec. 4.3 (the time stamps): while `u` is processed, `t(v)` is set at most once — when
+/// `[u, v]` leaves `lue` (Alg. 4.2 l.24), so it is still −1 then.
+#[inline]
+pub(crate) fn rs_leaving_lue(rs: &Rs, v: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    if rs.t[v as usize] != NIL {
+        spec_fail!(
+            rs,
+            "Sec. 4.3 (t set at most once)",
+            "[{}, {v}] leaves lue with t({v}) = {} already set",
+            rs.current,
+            rs.t[v as usize]
+        );
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, v);
+}
+
+/// Sec. 4.3 (the time stamps): `o(z)` changes once while `u` is processed — when `z`
+/// becomes a neighbour of `u` (Alg. 4.5 l.8), so `z` was not one before (`n(z) ≠ u`).
+#[inline]
+pub(crate) fn rs_new_neighbour(rs: &Rs, z: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    if rs.nbr[z as usize] == rs.current {
+        spec_fail!(
+            rs,
+            "Sec. 4.3 (o set once)",
+            "{z} becomes a neighbour of {} again (o({z}) = {})",
+            rs.current,
+            rs.o[z as usize]
+        );
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, z);
+}
+
+/// Sec. 4.3, Alg. 4.3 cases: after contracting a degree-3 `v`, a link vertex `w ∈ {x, y}`
+/// with `t(w) = −1` is unprocessed and `[u, w]` is in `lue` (`[v, w]` was contractible by
+/// Prop. 6, so `w` was not trapped, hence not processed, by Lemma 5).
+#[inline]
+pub(crate) fn rs_degree3_untested(rs: &Rs, x: u32, y: u32) {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    for w in [x, y] {
+        let wi = w as usize;
+        if rs.t[wi] == NIL
+            && (rs.processed[wi] || !rs.lists.contains(crate::irreducible::rs::LUE, w))
+        {
+            spec_fail!(
+                rs,
+                "Sec. 4.3 (Alg. 4.3, t = -1 case)",
+                "untested link vertex {w} of the degree-3 contraction: processed {}, in lue {}",
+                rs.processed[wi],
+                rs.lists.contains(crate::irreducible::rs::LUE, w)
+            );
+        }
+    }
+    #[cfg(not(any(debug_assertions, feature = "invariants")))]
+    let _ = (rs, x, y);
+}
+
 /// Each check fails on a state that violates its statement: a consistent RS state (vertex
 /// 0 of a stellar-subdivided octahedron, right after Alg. 4.2 l.8–19) with one attribute
 /// corrupted per test. Together with the algorithm mutations of `tests/rs_variants.rs`
@@ -610,6 +670,31 @@ mod tests {
         rs_prop7(&rs, Prop7Before(vec![(2, 1)]), &rec); // as Prop. 7 says: passes
         assert_fails("Proposition 7", || {
             rs_prop7(&rs, Prop7Before(vec![(2, 2)]), &rec)
+        });
+    }
+
+    #[test]
+    fn stamps_set_twice() {
+        let mut rs = state();
+        rs_leaving_lue(&rs, 6);
+        rs_new_neighbour(&rs, 1); // 1 is not a neighbour of 0
+        rs.t[6] = 0;
+        assert_fails("Sec. 4.3 (t set at most once)", || rs_leaving_lue(&rs, 6));
+        assert_fails("Sec. 4.3 (o set once)", || rs_new_neighbour(&rs, 2));
+    }
+
+    #[test]
+    fn untested_link_vertex_of_a_degree_3_contraction_already_processed() {
+        let mut rs = state();
+        rs.lists.remove(6);
+        let rec = rs
+            .tri
+            .contract_tested(VertexId(0), VertexId(6), &mut rs.history);
+        let [x, y] = rec.link.map(|w| w.0);
+        rs_degree3_untested(&rs, x, y); // both untested, unprocessed, in lue
+        rs.processed[x as usize] = true;
+        assert_fails("Sec. 4.3 (Alg. 4.3, t = -1 case)", || {
+            rs_degree3_untested(&rs, x, y)
         });
     }
 }
