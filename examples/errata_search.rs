@@ -13,6 +13,7 @@
 //! cargo run --release --features invariants --example errata_search -- e4 180
 //! cargo run --release --example errata_search -- e4 600
 //! cargo run --release --example errata_search -- e1 240
+//! cargo run --release --example errata_search -- e1 240 orientable
 //! ```
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
@@ -48,6 +49,16 @@ fn main() {
         .nth(2)
         .and_then(|s| s.parse().ok())
         .unwrap_or(60);
+    // Optional third argument: `orientable` or `non-orientable` restricts the surfaces.
+    let only = match std::env::args().nth(3).as_deref() {
+        None => None,
+        Some("orientable") => Some(true),
+        Some("non-orientable") => Some(false),
+        Some(other) => {
+            eprintln!("unknown surface filter {other:?} (orientable | non-orientable)");
+            std::process::exit(2)
+        }
+    };
     let start = std::time::Instant::now();
     let mut runs = 0u64;
     let mut rng = Rng::new(12345);
@@ -58,6 +69,9 @@ fn main() {
         } else {
             SurfaceKind::NonOrientable(k - 3)
         };
+        if only.is_some_and(|o| o != matches!(surface, SurfaceKind::Orientable(_))) {
+            continue;
+        }
         let t = random(&RandomParams {
             surface,
             min_faces: 20 + rng.below(150) as usize,
