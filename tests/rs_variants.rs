@@ -238,17 +238,13 @@ const E4_GENUS_4: [[u32; 3]; 62] = [
     [2, 17, 0],
 ];
 
-const PRINTED_LOOP_EXIT: Variant = Variant {
-    printed_loop_exit: true,
-    printed_strict_stamp: false,
-    printed_no_counter_reset: false,
-    skip_degree3_decrement: false,
-    count_link_vertices: false,
-    degree3_path_up_to_4: false,
-    mark_link_vertex_processed: false,
-    single_pass: false,
-    no_move_on_increment: false,
-};
+/// The printed loop exit of Alg. 4.2 l.34 (erratum E4).
+fn printed_loop_exit() -> Variant {
+    Variant {
+        printed_loop_exit: true,
+        ..Variant::default()
+    }
+}
 
 /// Runs `printed` on `faces`: returns the message of the check that fired when the
 /// checks are compiled in, and whether the output is irreducible otherwise.
@@ -272,7 +268,7 @@ fn run_printed(printed: Variant, faces: &[[u32; 3]], n: usize) -> Result<bool, S
 
 #[test]
 fn erratum_e4_printed_loop_exit_leaves_a_vertex_loose() {
-    let res = run_printed(PRINTED_LOOP_EXIT, &E4_KLEIN_BOTTLE, 16);
+    let res = run_printed(printed_loop_exit(), &E4_KLEIN_BOTTLE, 16);
     if cfg!(any(debug_assertions, feature = "invariants")) {
         let msg = res.expect_err("the printed loop exit is caught");
         assert!(
@@ -287,7 +283,7 @@ fn erratum_e4_printed_loop_exit_leaves_a_vertex_loose() {
 
 #[test]
 fn erratum_e4_printed_loop_exit_returns_a_reducible_triangulation() {
-    let res = run_printed(PRINTED_LOOP_EXIT, &E4_GENUS_4, 25);
+    let res = run_printed(printed_loop_exit(), &E4_GENUS_4, 25);
     if cfg!(any(debug_assertions, feature = "invariants")) {
         let msg = res.expect_err("the printed loop exit is caught");
         assert!(msg.contains("Definition 4"), "{msg}");
