@@ -15,7 +15,8 @@ pub mod rng;
 pub mod spec;
 
 pub use crate::core::{
-    BuildError, Component, ContractError, ContractionRecord, Corner, FaceId, FlipError, History,
-    LinkTester, SplitError, Surfaces, Triangulation, ValidationError, VertexId,
+    BuildError, Component, ContractError, ContractionRecord, Corner, Edge, EdgeId, EdgeNumbering,
+    FaceId, FlipError, FlipRecord, History, Journal, LinkTester, SplitError, Surfaces,
+    Triangulation, UndoError, ValidationError, VertexId,
 };
 pub use mesh::{Mesh, QuadMesh, TriMesh};

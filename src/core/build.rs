@@ -1,7 +1,7 @@
 //! Construction of a [`Triangulation`] from a face list, with full validation.
 
 use super::ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES, NONE};
-use super::tri::Triangulation;
+use super::tri::{StateStamp, Triangulation};
 use crate::mesh::TriMesh;
 
 /// Why a face list is not a closed surface triangulation. Every variant says where:
@@ -152,11 +152,8 @@ fn check_sizes(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError
     Ok(())
 }
 
-/// Validates every face and builds `opposite` by bucketing each corner's opposite edge
-/// under its smaller endpoint. O(F) plus sorting the buckets (each of size ~degree).
-fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
-    check_sizes(vertex_count, faces)?;
-    let nf = faces.len();
+/// Phase 1, per face: every index in range, no repeated vertex. O(F).
+fn check_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
     for (i, f) in faces.iter().enumerate() {
         for &v in f {
             if v as usize >= vertex_count {
@@ -174,12 +171,21 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
             });
         }
     }
-    let corner_vertex: Vec<u32> = faces.iter().flat_map(|f| f.iter().copied()).collect();
-    let nc = corner_vertex.len();
+    Ok(())
+}
 
-    // Bucket the edge opposite each corner under its smaller endpoint; each entry packs
-    // (larger endpoint, corner) into a u64 so a bucket sorts without indirection.
-    let mut start = vec![0u32; vertex_count + 1];
+/// Phase 2 output: the edge opposite each corner, bucketed under its smaller endpoint.
+/// Bucket `lo` is `entries[start[lo]..start[lo + 1]]`; each entry packs
+/// `(larger endpoint << 32) | corner` so a bucket sorts without indirection.
+struct EdgeBuckets {
+    start: Vec<u32>,
+    entries: Vec<u64>,
+}
+
+/// Phase 2: buckets every corner's opposite edge (a counting sort by smaller endpoint).
+/// O(F + V).
+fn bucket_edges(vertex_count: usize, corner_vertex: &[u32]) -> EdgeBuckets {
+    let nc = corner_vertex.len();
     let edge_of = |c: usize| {
         let a = corner_vertex[Corner(c as u32).next().index()];
         let b = corner_vertex[Corner(c as u32).prev().index()];
@@ -189,6 +195,7 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
             (b, a)
         }
     };
+    let mut start = vec![0u32; vertex_count + 1];
     for c in 0..nc {
         start[edge_of(c).0 as usize + 1] += 1;
     }
@@ -196,22 +203,67 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
         start[i + 1] += start[i];
     }
     let mut fill = start.clone();
-    let mut bucket = vec![0u64; nc];
+    let mut entries = vec![0u64; nc];
     for c in 0..nc {
         let (lo, hi) = edge_of(c);
         let slot = &mut fill[lo as usize];
-        bucket[*slot as usize] = ((hi as u64) << 32) | c as u64;
+        entries[*slot as usize] = ((hi as u64) << 32) | c as u64;
         *slot += 1;
     }
-    drop(fill);
+    EdgeBuckets { start, entries }
+}
 
-    let mut opposite = vec![NONE; nc];
-    // The first problem of each kind, reported in a fixed order of precedence below.
-    let mut duplicate: Option<BuildError> = None;
-    let mut bad_edge: Option<BuildError> = None;
-    let mut boundary: Option<BuildError> = None;
-    for lo in 0..vertex_count {
-        let b = &mut bucket[start[lo] as usize..start[lo + 1] as usize];
+/// How many faces hold one pair of endpoints, as phase 3 classifies it.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub(crate) enum EdgeClass {
+    /// Two faces: an interior edge of a surface (glued in `opposite`).
+    Interior,
+    /// One face: a boundary edge (an error for closed surfaces; the classified case a
+    /// surface-with-boundary builder keeps).
+    Boundary,
+    /// An odd number ≥ 3 of faces: non-manifold.
+    NonManifold,
+    /// An even number ≥ 4 of faces: several edges with the same endpoints.
+    Multiple,
+}
+
+impl EdgeClass {
+    fn of(faces: usize) -> Self {
+        match faces {
+            2 => EdgeClass::Interior,
+            1 => EdgeClass::Boundary,
+            n if n % 2 == 1 => EdgeClass::NonManifold,
+            _ => EdgeClass::Multiple,
+        }
+    }
+}
+
+/// Phase 3 output: the gluing of interior edges, the corners of boundary edges, and the
+/// first problem of each kind (reported in a fixed order of precedence by the caller).
+struct Classified {
+    opposite: Vec<u32>,
+    /// Corners opposite a boundary edge (their `opposite` entry stays `NONE`), in
+    /// bucket order.
+    boundary: Vec<u32>,
+    duplicate: Option<BuildError>,
+    bad_edge: Option<BuildError>,
+    first_boundary: Option<BuildError>,
+}
+
+/// Phase 3: sorts each bucket, groups equal endpoint pairs, glues interior edges and
+/// classifies the rest ([`EdgeClass`]); also detects duplicate faces (two faces on one
+/// edge with the same third vertex). O(F) plus sorting the buckets (each ~degree).
+fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]]) -> Classified {
+    let EdgeBuckets { start, mut entries } = buckets;
+    let mut out = Classified {
+        opposite: vec![NONE; corner_vertex.len()],
+        boundary: Vec::new(),
+        duplicate: None,
+        bad_edge: None,
+        first_boundary: None,
+    };
+    for lo in 0..start.len() - 1 {
+        let b = &mut entries[start[lo] as usize..start[lo + 1] as usize];
         if b.len() > 1 {
             b.sort_unstable();
         }
@@ -222,93 +274,88 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
             while j < b.len() && b[j] >> 32 == hi {
                 j += 1;
             }
-            let run = &b[i..j];
-            let corner = |k: usize| (run[k] & 0xffff_ffff) as usize;
-            // Two faces on the same edge with the same third vertex are the same face.
-            if duplicate.is_none() {
-                'dup: for p in 0..run.len() {
-                    for q in p + 1..run.len() {
-                        if corner_vertex[corner(p)] == corner_vertex[corner(q)] {
-                            let (f1, f2) = (corner(p) / 3, corner(q) / 3);
-                            let (first, face) = (f1.min(f2), f1.max(f2));
-                            duplicate = Some(BuildError::DuplicateFace {
-                                face,
-                                first,
-                                vertices: faces[face],
-                            });
-                            break 'dup;
-                        }
-                    }
-                }
-            }
-            let first_face = (0..run.len()).map(|k| corner(k) / 3).min().unwrap_or(0);
-            let (a, b2) = (lo as u32, hi as u32);
-            match run.len() {
-                2 => {
-                    let (p, q) = (corner(0), corner(1));
-                    opposite[p] = q as u32;
-                    opposite[q] = p as u32;
-                }
-                1 => {
-                    if boundary.is_none() {
-                        boundary = Some(BuildError::BoundaryEdge {
-                            a,
-                            b: b2,
-                            face: first_face,
-                        });
-                    }
-                }
-                n if n % 2 == 1 => {
-                    if bad_edge.is_none() {
-                        bad_edge = Some(BuildError::NonManifoldEdge {
-                            a,
-                            b: b2,
-                            faces: n,
-                            face: first_face,
-                        });
-                    }
-                }
-                n => {
-                    if bad_edge.is_none() {
-                        bad_edge = Some(BuildError::MultipleEdges {
-                            a,
-                            b: b2,
-                            edges: n / 2,
-                            faces: n,
-                            face: first_face,
-                        });
-                    }
-                }
-            }
+            classify_run(
+                &b[i..j],
+                (lo as u32, hi as u32),
+                corner_vertex,
+                faces,
+                &mut out,
+            );
             i = j;
         }
     }
-    drop(bucket);
-    drop(start);
-    if let Some(e) = duplicate.or(bad_edge).or(boundary) {
-        return Err(e);
-    }
+    out
+}
 
-    // Every edge is now in exactly two faces. Walk each vertex's star once: its link is
-    // one cycle iff the walk from any corner visits all the vertex's corners.
-    let mut corner_count = vec![0u32; vertex_count];
-    let mut vertex_corner = vec![NONE; vertex_count];
-    for (c, &v) in corner_vertex.iter().enumerate() {
-        corner_count[v as usize] += 1;
-        if vertex_corner[v as usize] == NONE {
-            vertex_corner[v as usize] = c as u32;
+/// Phase 3 for one endpoint pair `[a, b]` held by the corners of `run`.
+fn classify_run(
+    run: &[u64],
+    (a, b): (u32, u32),
+    corner_vertex: &[u32],
+    faces: &[[u32; 3]],
+    out: &mut Classified,
+) {
+    let corner = |k: usize| (run[k] & 0xffff_ffff) as usize;
+    if out.duplicate.is_none() {
+        'dup: for p in 0..run.len() {
+            for q in p + 1..run.len() {
+                if corner_vertex[corner(p)] == corner_vertex[corner(q)] {
+                    let (f1, f2) = (corner(p) / 3, corner(q) / 3);
+                    let (first, face) = (f1.min(f2), f1.max(f2));
+                    out.duplicate = Some(BuildError::DuplicateFace {
+                        face,
+                        first,
+                        vertices: faces[face],
+                    });
+                    break 'dup;
+                }
+            }
         }
     }
-    let used: Vec<bool> = vertex_corner.iter().map(|&c| c != NONE).collect();
-    let mut tri = Triangulation {
-        corner_vertex,
-        opposite,
-        vertex_corner,
-        degree: corner_count,
-        live_vertices: 0,
-        live_faces: nf,
-    };
-    tri.live_vertices = used.iter().filter(|&&u| u).count();
+    let first_face = (0..run.len()).map(|k| corner(k) / 3).min().unwrap_or(0);
+    match EdgeClass::of(run.len()) {
+        EdgeClass::Interior => {
+            let (p, q) = (corner(0), corner(1));
+            out.opposite[p] = q as u32;
+            out.opposite[q] = p as u32;
+        }
+        EdgeClass::Boundary => {
+            out.boundary.push(corner(0) as u32);
+            if out.first_boundary.is_none() {
+                out.first_boundary = Some(BuildError::BoundaryEdge {
+                    a,
+                    b,
+                    face: first_face,
+                });
+            }
+        }
+        EdgeClass::NonManifold => {
+            if out.bad_edge.is_none() {
+                out.bad_edge = Some(BuildError::NonManifoldEdge {
+                    a,
+                    b,
+                    faces: run.len(),
+                    face: first_face,
+                });
+            }
+        }
+        EdgeClass::Multiple => {
+            if out.bad_edge.is_none() {
+                out.bad_edge = Some(BuildError::MultipleEdges {
+                    a,
+                    b,
+                    edges: run.len() / 2,
+                    faces: run.len(),
+                    face: first_face,
+                });
+            }
+        }
+    }
+}
+
+/// Phase 4: with every edge in exactly two faces, each used vertex's star walk must
+/// visit all its corners (its link is one cycle) and there must be at least 3. O(F).
+fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildError> {
     for (v, &is_used) in used.iter().enumerate() {
         if !is_used {
             continue;
@@ -318,7 +365,7 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
         if walked != total {
             return Err(BuildError::VertexLinkNotCycle {
                 vertex: v as u32,
-                cycles: count_fans(&tri, v as u32),
+                cycles: count_fans(tri, v as u32),
                 faces: total,
             });
         }
@@ -329,6 +376,48 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
             });
         }
     }
+    Ok(())
+}
+
+/// Validates a face list as a possibly disconnected closed surface and builds its corner
+/// table, in four phases: sizes and faces, edge bucketing, edge classification (gluing),
+/// vertex links. Errors are reported in a fixed precedence: the first face error, then
+/// duplicate faces, then non-manifold or multiple edges, then boundary edges, then
+/// vertex links.
+fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
+    check_sizes(vertex_count, faces)?;
+    check_faces(vertex_count, faces)?;
+    let corner_vertex: Vec<u32> = faces.iter().flat_map(|f| f.iter().copied()).collect();
+    let buckets = bucket_edges(vertex_count, &corner_vertex);
+    let classified = classify_edges(buckets, &corner_vertex, faces);
+    if let Some(e) = classified
+        .duplicate
+        .or(classified.bad_edge)
+        .or(classified.first_boundary)
+    {
+        return Err(e);
+    }
+    debug_assert!(classified.boundary.is_empty());
+
+    let mut corner_count = vec![0u32; vertex_count];
+    let mut vertex_corner = vec![NONE; vertex_count];
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        corner_count[v as usize] += 1;
+        if vertex_corner[v as usize] == NONE {
+            vertex_corner[v as usize] = c as u32;
+        }
+    }
+    let used: Vec<bool> = vertex_corner.iter().map(|&c| c != NONE).collect();
+    let tri = Triangulation {
+        corner_vertex,
+        opposite: classified.opposite,
+        vertex_corner,
+        degree: corner_count,
+        live_vertices: used.iter().filter(|&&u| u).count(),
+        live_faces: faces.len(),
+        state: StateStamp::fresh(),
+    };
+    check_vertex_links(&tri, &used)?;
     Ok(Checked { tri, used })
 }
 
@@ -510,6 +599,7 @@ fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Component> {
                 degree,
                 live_vertices: nv,
                 live_faces,
+                state: StateStamp::fresh(),
             },
             vertex_origin,
             face_origin: origin,

@@ -2,7 +2,12 @@
 
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::link::LinkTester;
-use super::tri::Triangulation;
+use super::tri::{StateStamp, Triangulation};
+
+/// Degree product up to which [`Triangulation::contract_tested`] re-checks the link
+/// condition naively in debug builds (the naive test costs O(d_u · d_v); RS contracts
+/// edges at a vertex of degree in the millions, so an unbounded check is quadratic).
+const DEBUG_NAIVE_CHECK_WORK: usize = 64 * 64;
 
 /// Why a contraction was refused. The triangulation is unchanged.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -16,6 +21,9 @@ pub enum ContractError {
         /// Second endpoint.
         v: VertexId,
     },
+    /// The corner named is not a live corner.
+    #[error("corner {0} is not a live corner")]
+    DeadCorner(Corner),
     /// `[u, v]` fails the link condition (a critical cycle, or the surface is T4).
     #[error("[{u}, {v}] fails the link condition")]
     NotContractible {
@@ -40,13 +48,39 @@ pub struct ContractionRecord {
     /// Degree of `v` before the contraction.
     pub degree_v: u32,
     /// The removed faces' `corner_vertex` and `opposite` entries.
-    saved_vertex: [u32; 6],
-    saved_opposite: [u32; 6],
+    pub(crate) saved_vertex: [u32; 6],
+    pub(crate) saved_opposite: [u32; 6],
     /// `vertex_corner` of u, x, y, v before the contraction.
     saved_vertex_corner: [u32; 4],
     /// The range of [`History`]'s renamed-corner arena holding the corners that moved
     /// from `v` to `u`.
     renamed: (u32, u32),
+    /// The triangulation's state stamp before and after the contraction (the undo guard).
+    state_before: StateStamp,
+    state_after: StateStamp,
+}
+
+/// Why [`History::try_undo`] refused. Nothing was changed.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum UndoError {
+    /// The triangulation is not in the state the newest record left it in: something
+    /// (a flip, a split, a contraction recorded elsewhere) changed it since, or it is
+    /// another triangulation. Slot-exact undo would corrupt it.
+    #[error(
+        "the triangulation changed since the operation on [{u}, {v}] was recorded \
+         (state {found:?}, expected {expected:?}); undo would corrupt it"
+    )]
+    Modified {
+        /// First vertex of the newest record (a contraction's survivor, a flip's edge).
+        u: VertexId,
+        /// Second vertex of the newest record.
+        v: VertexId,
+        /// The state the record left.
+        expected: StateStamp,
+        /// The triangulation's current state.
+        found: StateStamp,
+    },
 }
 
 impl ContractionRecord {
@@ -74,15 +108,49 @@ impl ContractionRecord {
     pub fn renamed_len(&self) -> usize {
         (self.renamed.1 - self.renamed.0) as usize
     }
+
+    /// The corner of the first removed face that was opposite `[u, v]` (its corner at
+    /// `x`); dead after the contraction, it names the contracted edge in per-corner
+    /// tables such as [`crate::core::EdgeNumbering`].
+    pub fn corner_opposite_uv(&self) -> Corner {
+        let [x, _] = self.link;
+        let slot = (0..3)
+            .find(|&s| self.saved_vertex[s] == x.0)
+            .expect("the first removed face holds x");
+        self.faces[0].corner(slot as u32)
+    }
+
+    /// The triangulation's state stamp right after this contraction.
+    pub fn state_after(&self) -> StateStamp {
+        self.state_after
+    }
 }
 
 /// The contraction stack `S` (Alg. 4.5 l.13): records in order plus one flat arena of
 /// renamed corners, so a million contractions cost two allocations, not a million.
-#[derive(Clone, Debug, Default, PartialEq, Eq)]
+///
+/// It also owns the scratch of the link test ([`LinkTester`], one stamp per vertex id,
+/// grown once), so that [`Triangulation::contract`] costs O(d_u + d_v), not O(V).
+///
+/// # Undo guard
+/// Undo is slot-exact: it writes back absolute corner slots. That is only sound on the
+/// very state the newest record left, so each record keeps the triangulation's
+/// [`StateStamp`] and [`Self::try_undo`] refuses any other state ([`UndoError`]). To
+/// interleave flips with contractions and undo them all, use [`crate::core::Journal`].
+#[derive(Clone, Debug, Default)]
 pub struct History {
     records: Vec<ContractionRecord>,
     renamed: Vec<Corner>,
+    tester: Option<LinkTester>,
 }
+
+impl PartialEq for History {
+    /// The same records (the link-test scratch takes no part).
+    fn eq(&self, other: &Self) -> bool {
+        self.records == other.records && self.renamed == other.renamed
+    }
+}
+impl Eq for History {}
 
 impl History {
     /// An empty history.
@@ -107,14 +175,39 @@ impl History {
     }
 
     /// Undoes the most recent contraction by the vertex split that restores exactly the
-    /// previous triangulation: same vertex ids, face ids, corner slots and opposite
-    /// table. O(d_v). Returns the record undone, or `None` if the history is empty.
+    /// previous triangulation: same vertex ids, face ids, corner slots, opposite table
+    /// and state stamp. O(d_v). Returns the record undone, or `None` if the history is
+    /// empty.
     ///
-    /// Precondition: `tri` is the triangulation the contractions were applied to, and
-    /// nothing else changed it since the last one (checked in debug builds by
-    /// [`Triangulation::validate`] in the tests, not here).
+    /// # Panics
+    /// If `tri` is not in the state the newest record left (see [`Self::try_undo`]):
+    /// that is a caller bug, and continuing would corrupt the surface silently.
     pub fn undo(&mut self, tri: &mut Triangulation) -> Option<ContractionRecord> {
-        let r = self.records.pop()?;
+        match self.try_undo(tri) {
+            Ok(r) => r,
+            Err(e) => panic!("History::undo: {e}"),
+        }
+    }
+
+    /// [`Self::undo`], refusing with [`UndoError::Modified`] (and changing nothing) when
+    /// `tri` is not in exactly the state the newest record left: the precondition of a
+    /// slot-exact undo. The check is O(1) (a stamp comparison).
+    pub fn try_undo(
+        &mut self,
+        tri: &mut Triangulation,
+    ) -> Result<Option<ContractionRecord>, UndoError> {
+        let Some(last) = self.records.last() else {
+            return Ok(None);
+        };
+        if tri.state != last.state_after {
+            return Err(UndoError::Modified {
+                u: last.u,
+                v: last.v,
+                expected: last.state_after,
+                found: tri.state,
+            });
+        }
+        let r = self.records.pop().expect("checked non-empty");
         let (lo, hi) = (r.renamed.0 as usize, r.renamed.1 as usize);
         for c in &self.renamed[lo..hi] {
             tri.corner_vertex[c.index()] = r.v.0;
@@ -141,18 +234,30 @@ impl History {
         tri.vertex_corner[r.v.index()] = cv;
         tri.live_vertices += 1;
         tri.live_faces += 2;
-        Some(r)
+        tri.state = r.state_before;
+        Ok(Some(r))
     }
 
     /// Undoes every recorded contraction, newest first.
+    ///
+    /// # Panics
+    /// As [`Self::undo`].
     pub fn undo_all(&mut self, tri: &mut Triangulation) {
         while self.undo(tri).is_some() {}
+    }
+
+    /// The link-test scratch, sized for `tri`.
+    fn tester(&mut self, tri: &Triangulation) -> &mut LinkTester {
+        self.tester
+            .get_or_insert_with(|| LinkTester::new(tri.vertex_capacity()))
     }
 }
 
 impl Triangulation {
     /// Contracts `[u, v]` keeping `u` if it passes the link condition, recording the
-    /// change in `history`. O(d_u + d_v) (the link test marks `lk(u)`).
+    /// change in `history`. O(d_u + d_v): finding the edge walks `u`'s star, the link
+    /// test marks `lk(u)` in the history's scratch (allocated once, never cleared), the
+    /// contraction walks `v`'s star.
     ///
     /// Postconditions on success: `v` is removed, every face that had `v` now has `u`,
     /// faces `[u, v, x]` and `[u, v, y]` are removed, `d(u) += d(v) - 4`, `d(x)` and
@@ -163,14 +268,31 @@ impl Triangulation {
         v: VertexId,
         history: &mut History,
     ) -> Result<ContractionRecord, ContractError> {
-        if !self.has_edge(u, v) {
-            return Err(ContractError::NotAnEdge { u, v });
+        match self.find_edge(u, v) {
+            Some(c) => self.contract_at(self.corner_facing(c, v), history),
+            None => Err(ContractError::NotAnEdge { u, v }),
         }
-        let mut t = LinkTester::new(self.vertex_capacity());
-        if !t.test(self, u, v) {
-            return Err(ContractError::NotContractible { u, v });
+    }
+
+    /// Contracts the edge opposite corner `c` if it passes the link condition, keeping
+    /// its first endpoint: with `[a, b] = `[`Self::edge_endpoints`]`(c)`, `b` is
+    /// identified with `a`. Returns the record, whose [`ContractionRecord::glued`] pairs
+    /// are the corners of the two merged edges. O(d_a + d_b), as [`Self::contract`].
+    ///
+    /// `c` must be a live corner ([`ContractError::DeadCorner`] otherwise).
+    pub fn contract_at(
+        &mut self,
+        c: Corner,
+        history: &mut History,
+    ) -> Result<ContractionRecord, ContractError> {
+        if !self.is_face(c.face()) {
+            return Err(ContractError::DeadCorner(c));
         }
-        Ok(self.contract_tested(u, v, history))
+        let [a, b] = self.edge_endpoints(c);
+        if !history.tester(self).test(self, a, b) {
+            return Err(ContractError::NotContractible { u: a, v: b });
+        }
+        Ok(self.contract_tested(a, b, history))
     }
 
     /// Contracts `[u, v]` keeping `u`, for callers that have already established the
@@ -178,7 +300,9 @@ impl Triangulation {
     ///
     /// # Panics
     /// If `[u, v]` is not an edge (a caller bug, not an input error). Debug builds also
-    /// assert the link condition.
+    /// assert the link condition by the naive test when `d_u · d_v ≤ 4096` (beyond that
+    /// the naive test would dominate; the `invariants` checks of the algorithms cover
+    /// their own contractions by Theorem 3).
     pub fn contract_tested(
         &mut self,
         u: VertexId,
@@ -186,9 +310,11 @@ impl Triangulation {
         history: &mut History,
     ) -> ContractionRecord {
         debug_assert!(
-            self.link_condition_naive(u, v),
+            self.degree(u).saturating_mul(self.degree(v)) > DEBUG_NAIVE_CHECK_WORK
+                || self.link_condition_naive(u, v),
             "contract_tested: [{u}, {v}] fails the link condition"
         );
+        let state_before = self.state;
         // Find a corner at v in a face containing u, walking v's star (O(d_v)).
         // One walk around v: its corners in star order, and where u is. The step whose
         // exit neighbour is u and the step after it are the two faces of [u, v].
@@ -204,11 +330,7 @@ impl Triangulation {
         let p = at_u.expect("contract_tested: [u, v] is not an edge");
         let q = (p + 1) % d;
         let first = history.renamed[start + p];
-        let opp1 = if self.corner_vertex[first.next().index()] == u.0 {
-            first.prev()
-        } else {
-            first.next()
-        };
+        let opp1 = self.corner_facing(first, u);
         let opp2 = self.opposite(opp1);
         let f1 = opp1.face();
         let f2 = opp2.face();
@@ -241,15 +363,8 @@ impl Triangulation {
         // Glue the outer neighbours of each removed face: across [v, x] meets across
         // [u, x] (and the same for y). In face f1, the corner at u is opposite [v, x].
         for f in [f1, f2] {
-            let cs = f.corners();
-            let cu = cs
-                .into_iter()
-                .find(|c| self.corner_vertex[c.index()] == u.0)
-                .expect("face of [u,v] has u");
-            let cv = cs
-                .into_iter()
-                .find(|c| self.corner_vertex[c.index()] == v.0)
-                .expect("face of [u,v] has v");
+            let cu = self.corner_at(f.corner(0), u);
+            let cv = self.corner_at(f.corner(0), v);
             let a = self.opposite[cu.index()];
             let b = self.opposite[cv.index()];
             self.opposite[a as usize] = b;
@@ -281,16 +396,12 @@ impl Triangulation {
                     .find(|&c| saved_at(&saved_vertex, f1, f2, c) == v.0)
                     .expect("face has v");
                 let across = Corner(saved_at(&saved_opposite, f1, f2, c_opp_uw));
-                let cw = if self.corner_vertex[across.next().index()] == w.0 {
-                    across.next()
-                } else {
-                    across.prev()
-                };
-                self.vertex_corner[w.index()] = cw.0;
+                self.vertex_corner[w.index()] = self.corner_at(across, w).0;
             }
         }
         self.live_vertices -= 1;
         self.live_faces -= 2;
+        self.touch();
         let rec = ContractionRecord {
             u,
             v,
@@ -301,6 +412,8 @@ impl Triangulation {
             saved_opposite,
             saved_vertex_corner,
             renamed: (start, end),
+            state_before,
+            state_after: self.state,
         };
         history.records.push(rec);
         rec

@@ -1,7 +1,38 @@
-//! Edge flips (tri-quad paper, Def. 3.3).
+//! Edge flips (tri-quad paper, Def. 3.3), corner-addressed, with a record that undoes
+//! them slot-exactly.
 
-use super::ids::{Corner, VertexId};
-use super::tri::Triangulation;
+use super::ids::{Corner, FaceId, VertexId};
+use super::tri::{StateStamp, Triangulation};
+
+/// What one flip changed: the corners of the new edge, and enough to restore the
+/// previous state exactly ([`Triangulation::unflip`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FlipRecord {
+    /// The endpoints `[a, b]` of the edge that was flipped.
+    pub old_edge: [VertexId; 2],
+    /// The endpoints `[c, d]` of the new edge (`c` at `moved[0]`, `d` at `moved[1]`).
+    pub new_edge: [VertexId; 2],
+    /// The two corners opposite the new edge `[c, d]` (one per face, first in the face of
+    /// `moved[0]`).
+    pub new_corners: [Corner; 2],
+    /// The two corners that were opposite `[a, b]`; afterwards they face `[a, d]` and
+    /// `[b, c]` respectively.
+    pub moved: [Corner; 2],
+    /// The two faces (ids kept by the flip).
+    pub faces: [FaceId; 2],
+    saved_vertex: [u32; 6],
+    saved_opposite: [u32; 6],
+    saved_vertex_corner: [u32; 2],
+    state_before: StateStamp,
+    state_after: StateStamp,
+}
+
+impl FlipRecord {
+    /// The triangulation's state stamp right after this flip.
+    pub fn state_after(&self) -> StateStamp {
+        self.state_after
+    }
+}
 
 /// Why a flip was refused. The triangulation is unchanged.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -13,6 +44,19 @@ pub enum FlipError {
         /// First endpoint.
         u: VertexId,
         /// Second endpoint.
+        v: VertexId,
+    },
+    /// The corner named is not a live corner.
+    #[error("corner {0} is not a live corner")]
+    DeadCorner(Corner),
+    /// [`Triangulation::unflip`]: the triangulation is not in the state the flip left.
+    #[error(
+        "the triangulation changed since flip [{u}, {v}] was recorded; unflip would corrupt it"
+    )]
+    Modified {
+        /// First endpoint of the flipped edge.
+        u: VertexId,
+        /// Second endpoint of the flipped edge.
         v: VertexId,
     },
     /// The flipped edge `[w, z]` already exists, so the flip would not give a
@@ -47,30 +91,102 @@ impl Triangulation {
     /// agreement with the neighbours is preserved. O(d_u + min(d_w, d_z)) for the check,
     /// O(1) for the change. Flipping `[w, z]` afterwards restores the same face set.
     pub fn flip(&mut self, u: VertexId, v: VertexId) -> Result<(), FlipError> {
-        let Some([k1, k2]) = self.edge_corners(u, v) else {
+        let Some([k1, _]) = self.edge_corners(u, v) else {
             return Err(FlipError::NotAnEdge { u, v });
         };
+        match self.flip_at(k1) {
+            Ok(_) => Ok(()),
+            // Report the edge in the caller's order.
+            Err(FlipError::NotFlippable { w, z, .. }) => {
+                Err(FlipError::NotFlippable { u, v, w, z })
+            }
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Flips the edge opposite corner `c` if it is flippable (Def. 3.3), keeping both
+    /// face ids. Returns the record: the new edge's corners and what
+    /// [`Self::unflip`] needs. O(min(d_w, d_z)) for the check, O(1) for the change.
+    pub fn flip_at(&mut self, c: Corner) -> Result<FlipRecord, FlipError> {
+        if !self.is_face(c.face()) {
+            return Err(FlipError::DeadCorner(c));
+        }
+        let k1 = c;
+        let k2 = self.opposite(k1);
+        let [u, v] = self.edge_endpoints(k1);
         let w = self.vertex(k1);
         let z = self.vertex(k2);
         if self.has_edge(w, z) {
             return Err(FlipError::NotFlippable { u, v, w, z });
         }
-        self.flip_corners(k1, k2);
+        let (f1, f2) = (k1.face(), k2.face());
+        let mut saved_vertex = [0u32; 6];
+        let mut saved_opposite = [0u32; 6];
+        for (k, f) in [f1, f2].iter().enumerate() {
+            for s in 0..3 {
+                let i = f.corner(s as u32).index();
+                saved_vertex[3 * k + s] = self.corner_vertex[i];
+                saved_opposite[3 * k + s] = self.opposite[i];
+            }
+        }
+        let saved_vertex_corner = [self.vertex_corner[u.index()], self.vertex_corner[v.index()]];
+        let state_before = self.state;
+        let new_corners = self.flip_corners(k1, k2);
+        self.touch();
+        Ok(FlipRecord {
+            old_edge: [u, v],
+            new_edge: [w, z],
+            new_corners,
+            moved: [k1, k2],
+            faces: [f1, f2],
+            saved_vertex,
+            saved_opposite,
+            saved_vertex_corner,
+            state_before,
+            state_after: self.state,
+        })
+    }
+
+    /// Undoes the flip `rec` exactly (same slots, opposite table, vertex corners, degrees
+    /// and state stamp), provided the triangulation is in the state the flip left
+    /// ([`FlipError::Modified`] otherwise, nothing changed). O(1).
+    pub fn unflip(&mut self, rec: &FlipRecord) -> Result<(), FlipError> {
+        if self.state != rec.state_after {
+            let [u, v] = rec.old_edge;
+            return Err(FlipError::Modified { u, v });
+        }
+        for (k, f) in rec.faces.iter().enumerate() {
+            for s in 0..3 {
+                let c = f.corner(s as u32).index();
+                self.corner_vertex[c] = rec.saved_vertex[3 * k + s];
+                let o = rec.saved_opposite[3 * k + s];
+                self.opposite[c] = o;
+                self.opposite[o as usize] = c as u32;
+            }
+        }
+        let [a, b] = rec.old_edge;
+        let [c, d] = rec.new_edge;
+        self.degree[a.index()] += 1;
+        self.degree[b.index()] += 1;
+        self.degree[c.index()] -= 1;
+        self.degree[d.index()] -= 1;
+        self.vertex_corner[a.index()] = rec.saved_vertex_corner[0];
+        self.vertex_corner[b.index()] = rec.saved_vertex_corner[1];
+        self.state = rec.state_before;
         Ok(())
     }
 
     /// The flip given the two corners `k1`, `k2` opposite the edge (no checks but debug).
-    pub(crate) fn flip_corners(&mut self, k1: Corner, k2: Corner) {
+    /// Returns the two corners opposite the new edge, `k1`'s face first. Does not touch
+    /// the state stamp (the caller does).
+    pub(crate) fn flip_corners(&mut self, k1: Corner, k2: Corner) -> [Corner; 2] {
         debug_assert_eq!(self.opposite(k1), k2);
         // f1 = [a, b, c] with k1 at c; f2 = [a, b, d] with k2 at d.
         let (c1a, c1b) = (k1.next(), k1.prev());
         let a = self.corner_vertex[c1a.index()];
         let b = self.corner_vertex[c1b.index()];
-        let (c2a, c2b) = if self.corner_vertex[k2.next().index()] == a {
-            (k2.next(), k2.prev())
-        } else {
-            (k2.prev(), k2.next())
-        };
+        let c2a = self.corner_at(k2, VertexId(a));
+        let c2b = self.corner_at(k2, VertexId(b));
         let c = self.corner_vertex[k1.index()];
         let d = self.corner_vertex[k2.index()];
         let n_ad = self.opposite[c2b.index()];
@@ -92,5 +208,6 @@ impl Triangulation {
         self.degree[d as usize] += 1;
         self.vertex_corner[a as usize] = c1a.0;
         self.vertex_corner[b as usize] = c2b.0;
+        [c1a, c2b]
     }
 }

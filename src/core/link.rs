@@ -57,11 +57,40 @@ impl Triangulation {
         !eu.iter().any(|e| ev.contains(e))
     }
 
-    /// The link condition as [`Triangulation::is_contractible`] decides it, with
-    /// per-call marking: O(d_u + d_v). See [`LinkTester`] for the O(d_v) form.
+    /// Whether `[u, v]` is an edge that passes the link condition, without any scratch:
+    /// the smaller link is collected and sorted, the larger one looked up in it. O((d_u +
+    /// d_v) · log min(d_u, d_v)) time, O(min(d_u, d_v)) memory, never O(V). For loops of
+    /// tests, [`Self::is_contractible_with`] with a kept [`LinkTester`] is O(d_u + d_v).
     pub fn is_contractible(&self, u: VertexId, v: VertexId) -> bool {
-        let mut t = LinkTester::new(self.vertex_capacity());
-        t.test(self, u, v)
+        if !self.is_vertex(u) || !self.is_vertex(v) || u == v {
+            return false;
+        }
+        let (s, l) = if self.degree(u) <= self.degree(v) {
+            (u, v)
+        } else {
+            (v, u)
+        };
+        let mut small: Vec<VertexId> = self.link(s).collect();
+        small.sort_unstable();
+        if small.binary_search(&l).is_err() {
+            return false; // not an edge
+        }
+        if self.degree(s) == 3 && self.degree(l) == 3 {
+            return false; // T4 (Prop. 6)
+        }
+        // Exactly the two link vertices of [s, l] are common neighbours (no critical
+        // cycle); with that, lk(s) ∩ lk(l) can only hold the edge [x, y] on T4.
+        self.link(l)
+            .filter(|w| small.binary_search(w).is_ok())
+            .count()
+            == 2
+    }
+
+    /// The link condition with a caller-kept scratch (as petgraph's `DfsSpace`): marks
+    /// `lk(u)` in `tester`, then counts in `lk(v)`. O(d_u + d_v); the scratch grows to the
+    /// vertex capacity once and is never cleared.
+    pub fn is_contractible_with(&self, u: VertexId, v: VertexId, tester: &mut LinkTester) -> bool {
+        tester.test(self, u, v)
     }
 
     /// Whether no edge passes the link condition (naive test on every edge). O(Σ d_u·d_v).

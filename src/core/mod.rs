@@ -2,23 +2,29 @@
 //!
 //! One module per concern: [`ids`] (newtype indices), `tri` (the structure and its
 //! traversals), `build` (construction and validation from face lists, components),
-//! `link` (the link condition, naive and marked), `contract` (contraction and its exact
-//! undo), `split` (the general vertex split), `flip` (edge flips), `validate`.
+//! `link` (the link condition, naive and marked), `contract` (contraction and its exact,
+//! guarded undo), `split` (the general vertex split), `flip` (edge flips with exact
+//! undo), `edge` (edge handles and dense edge numbers that survive changes), `journal`
+//! (undo of interleaved contractions and flips), `validate`.
 
 mod build;
 mod contract;
+mod edge;
 mod flip;
 pub mod ids;
+mod journal;
 mod link;
 mod split;
 mod tri;
 mod validate;
 
 pub use build::{BuildError, Component, Surfaces};
-pub use contract::{ContractError, ContractionRecord, History};
-pub use flip::FlipError;
+pub use contract::{ContractError, ContractionRecord, History, UndoError};
+pub use edge::{Edge, EdgeId, EdgeNumbering};
+pub use flip::{FlipError, FlipRecord};
 pub use ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES};
+pub use journal::{Journal, Op};
 pub use link::LinkTester;
 pub use split::SplitError;
-pub use tri::{Star, StarStep, Triangulation};
-pub use validate::ValidationError;
+pub use tri::{Star, StarStep, StateStamp, Triangulation};
+pub use validate::{GluingProblem, LinkProblem, ValidationError};

@@ -66,18 +66,10 @@ impl Triangulation {
         let moved: Vec<Corner> = (1..=((j + d - i) % d))
             .map(|k| steps[(i + k) % d].corner)
             .collect();
-        let third = |tri: &Triangulation, c: Corner, a: u32| -> Corner {
-            // The corner of c's face at neither c's vertex nor `a`.
-            if tri.corner_vertex[c.next().index()] == a {
-                c.prev()
-            } else {
-                c.next()
-            }
-        };
         // P1 = first moved face (has edge [u, x]); p1 is its corner opposite [u, x].
-        let p1 = third(self, moved[0], x.0);
+        let p1 = self.corner_facing(moved[0], x);
         let q1 = self.opposite(p1);
-        let p2 = third(self, *moved.last().expect("nonempty"), y.0);
+        let p2 = self.corner_facing(*moved.last().expect("nonempty"), y);
         let q2 = self.opposite(p2);
 
         for c in &moved {
@@ -123,6 +115,7 @@ impl Triangulation {
         self.vertex_corner[u.index()] = t1.corner(slot(&o1, u.0)).0;
         self.live_vertices += 1;
         self.live_faces += 2;
+        self.touch();
         Ok(v)
     }
 }

@@ -25,7 +25,14 @@ use super::ids::{Corner, FaceId, VertexId, NONE};
 /// involution on live corners, and `c`, `opposite[c]` see the same two edge endpoints;
 /// each vertex link is one simple cycle of length `degree[v] >= 3`; no two faces have the
 /// same vertex set; no two edges have the same endpoints; the surface is connected.
-#[derive(Clone, Debug, PartialEq, Eq)]
+///
+/// # State stamp
+/// Besides the arrays, a triangulation carries a *state stamp* ([`Self::state`]): a
+/// process-unique number that every mutating operation replaces with a fresh one (and
+/// that [`crate::History::undo`] sets back to the stamp of the state it restores). Slot-
+/// exact undo records compare it to refuse a triangulation that changed in between. It is
+/// not part of the surface: `==` compares the arrays only.
+#[derive(Clone, Debug)]
 pub struct Triangulation {
     pub(crate) corner_vertex: Vec<u32>,
     pub(crate) opposite: Vec<u32>,
@@ -33,7 +40,40 @@ pub struct Triangulation {
     pub(crate) degree: Vec<u32>,
     pub(crate) live_vertices: usize,
     pub(crate) live_faces: usize,
+    pub(crate) state: StateStamp,
 }
+
+/// Identifies one state of one [`Triangulation`]: see [`Triangulation::state`].
+///
+/// Stamps come from one process-wide counter, so two states that were not reached from
+/// each other by exact undo never share a stamp (not even states of two different
+/// triangulations); a clone shares its original's stamp until either changes.
+#[derive(Copy, Clone, PartialEq, Eq, Hash, Debug)]
+pub struct StateStamp(u64);
+
+impl StateStamp {
+    /// A stamp no other state has had in this process.
+    pub(crate) fn fresh() -> Self {
+        use std::sync::atomic::{AtomicU64, Ordering};
+        // Relaxed: only uniqueness matters, not ordering with other memory.
+        static NEXT: AtomicU64 = AtomicU64::new(1);
+        StateStamp(NEXT.fetch_add(1, Ordering::Relaxed))
+    }
+}
+
+impl PartialEq for Triangulation {
+    /// Equal arrays and counts: the same surface with the same ids and corner slots. The
+    /// state stamp is bookkeeping and takes no part.
+    fn eq(&self, other: &Self) -> bool {
+        self.corner_vertex == other.corner_vertex
+            && self.opposite == other.opposite
+            && self.vertex_corner == other.vertex_corner
+            && self.degree == other.degree
+            && self.live_vertices == other.live_vertices
+            && self.live_faces == other.live_faces
+    }
+}
+impl Eq for Triangulation {}
 
 /// Which of the two other corners of a face is opposite the edge a star walk leaves by.
 #[derive(Copy, Clone, PartialEq, Eq, Debug)]
@@ -185,6 +225,60 @@ impl Triangulation {
         Corner(self.vertex_corner[v.index()])
     }
 
+    /// The stamp of the current state: replaced by a fresh one by every change
+    /// (contraction, flip, split), restored by exact undo. O(1).
+    #[inline]
+    pub fn state(&self) -> StateStamp {
+        self.state
+    }
+
+    /// Marks the triangulation as changed (a fresh [`StateStamp`]).
+    #[inline]
+    pub(crate) fn touch(&mut self) {
+        self.state = StateStamp::fresh();
+    }
+
+    /// The corner of `c`'s face that faces edge `[vertex(c), z]`: given a corner at `w`
+    /// whose face also contains `z`, the third corner of that face, opposite the edge
+    /// `[w, z]`. O(1).
+    ///
+    /// This is the one place that decides between `next` and `prev` by looking at the
+    /// vertices: on a non-orientable surface the two faces of an edge may list it in the
+    /// same order, so slot parity says nothing (see the type's documentation).
+    ///
+    /// Debug builds assert that `z` is in the face and is not `vertex(c)`.
+    #[inline]
+    pub fn corner_facing(&self, c: Corner, z: VertexId) -> Corner {
+        if self.corner_vertex[c.next().index()] == z.0 {
+            c.prev()
+        } else {
+            debug_assert_eq!(
+                self.corner_vertex[c.prev().index()],
+                z.0,
+                "{z} not in {c}'s face"
+            );
+            c.next()
+        }
+    }
+
+    /// The corner of `c`'s face at vertex `w` (which must be one of its three vertices;
+    /// debug builds assert it). O(1).
+    #[inline]
+    pub fn corner_at(&self, c: Corner, w: VertexId) -> Corner {
+        if self.corner_vertex[c.index()] == w.0 {
+            c
+        } else if self.corner_vertex[c.next().index()] == w.0 {
+            c.next()
+        } else {
+            debug_assert_eq!(
+                self.corner_vertex[c.prev().index()],
+                w.0,
+                "{w} not in {c}'s face"
+            );
+            c.prev()
+        }
+    }
+
     /// Given the corner `o` entered across an edge at `centre`, the corner at `centre` in
     /// `o`'s face and which side the walk leaves that face by.
     #[inline]
@@ -250,12 +344,7 @@ impl Triangulation {
     /// The two corners opposite edge `[u, v]` (one in each face of the edge), or `None`.
     pub fn edge_corners(&self, u: VertexId, v: VertexId) -> Option<[Corner; 2]> {
         let c = self.find_edge(u, v)?;
-        // The corner of the face that is neither u's nor v's is opposite [u, v].
-        let opp = if self.corner_vertex[c.next().index()] == v.0 {
-            c.prev()
-        } else {
-            c.next()
-        };
+        let opp = self.corner_facing(c, v);
         Some([opp, self.opposite(opp)])
     }
 

@@ -5,15 +5,218 @@ use std::collections::{HashMap, HashSet};
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::tri::Triangulation;
 
-/// A violated structural invariant, with the element involved.
+/// A violated structural invariant of a [`Triangulation`], naming the element involved
+/// (corner, face and vertex numbers are ids of the triangulation).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("invalid triangulation: {0}")]
-pub struct ValidationError(pub String);
+#[non_exhaustive]
+pub enum ValidationError {
+    /// The flat arrays have inconsistent lengths.
+    #[error("invalid triangulation: {array} has {len} entries, expected {expected}")]
+    ArrayShape {
+        /// Which array.
+        array: &'static str,
+        /// Its length.
+        len: usize,
+        /// The length the other arrays imply.
+        expected: usize,
+    },
+    /// A removed face still has vertices or gluings.
+    #[error("invalid triangulation: removed face {face} has live data")]
+    RemovedFaceHasData {
+        /// The face id.
+        face: usize,
+    },
+    /// A face names a vertex id beyond the vertex arrays.
+    #[error("invalid triangulation: face {face}: vertex {vertex} out of range")]
+    VertexOutOfRange {
+        /// The face id.
+        face: usize,
+        /// The vertex id.
+        vertex: u32,
+    },
+    /// A live face uses a removed vertex.
+    #[error("invalid triangulation: face {face}: vertex {vertex} is removed")]
+    RemovedVertexInFace {
+        /// The face id.
+        face: usize,
+        /// The vertex id.
+        vertex: u32,
+    },
+    /// A face repeats a vertex.
+    #[error("invalid triangulation: face {face} is degenerate: {vertices:?}")]
+    DegenerateFace {
+        /// The face id.
+        face: usize,
+        /// Its vertices.
+        vertices: [u32; 3],
+    },
+    /// The stored live face or vertex count disagrees with the arrays.
+    #[error("invalid triangulation: live {what} count {recorded} but {actual} are live")]
+    LiveCount {
+        /// `"face"` or `"vertex"`.
+        what: &'static str,
+        /// The stored count.
+        recorded: usize,
+        /// The count in the arrays.
+        actual: usize,
+    },
+    /// No live face.
+    #[error("invalid triangulation: no faces")]
+    NoFaces,
+    /// `opposite` is not a fixed-point-free involution on live corners of other faces,
+    /// or a corner and its opposite see different edges.
+    #[error("invalid triangulation: corner {corner}: {problem}")]
+    Gluing {
+        /// The corner.
+        corner: usize,
+        /// What is wrong with its opposite.
+        problem: GluingProblem,
+    },
+    /// An edge (endpoint pair) lies in a number of faces other than two.
+    #[error("invalid triangulation: edge {edge:?} lies in {faces} faces")]
+    EdgeFaceCount {
+        /// The endpoints, smaller first.
+        edge: [u32; 2],
+        /// The number of faces.
+        faces: u32,
+    },
+    /// A removed vertex is still used by faces.
+    #[error("invalid triangulation: removed vertex {vertex} is used by {faces} faces")]
+    RemovedVertexUsed {
+        /// The vertex id.
+        vertex: usize,
+        /// The faces using it.
+        faces: u32,
+    },
+    /// A vertex's stored corner is not at it.
+    #[error("invalid triangulation: vertex {vertex}: its corner {corner} is not at it")]
+    VertexCorner {
+        /// The vertex id.
+        vertex: usize,
+        /// Its stored corner.
+        corner: u32,
+    },
+    /// A stored degree disagrees with the faces, or is below 3.
+    #[error("invalid triangulation: vertex {vertex}: degree {degree} but {faces} faces")]
+    Degree {
+        /// The vertex id.
+        vertex: usize,
+        /// The stored degree.
+        degree: u32,
+        /// The faces at it.
+        faces: u32,
+    },
+    /// A vertex's link is not one simple cycle through all its faces.
+    #[error("invalid triangulation: vertex {vertex}: link is not one simple cycle ({problem})")]
+    Link {
+        /// The vertex id.
+        vertex: usize,
+        /// How the star walk failed.
+        problem: LinkProblem,
+    },
+    /// Two faces have the same vertex set.
+    #[error("invalid triangulation: face {face} duplicates another face {vertices:?}")]
+    DuplicateFace {
+        /// The later face id.
+        face: FaceId,
+        /// The sorted vertex set.
+        vertices: [u32; 3],
+    },
+    /// The dual graph is not connected.
+    #[error(
+        "invalid triangulation: not connected: {reached} of {faces} faces reachable from {from}"
+    )]
+    Disconnected {
+        /// Faces reached.
+        reached: usize,
+        /// Live faces.
+        faces: usize,
+        /// The start face.
+        from: FaceId,
+    },
+}
+
+/// What is wrong with a corner's `opposite` entry ([`ValidationError::Gluing`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum GluingProblem {
+    /// The opposite is not a live corner.
+    NotLive {
+        /// The opposite entry.
+        opposite: u32,
+    },
+    /// The opposite is in the same face.
+    SameFace {
+        /// The opposite entry.
+        opposite: u32,
+    },
+    /// `opposite[opposite[c]] != c`.
+    NotInvolution {
+        /// The opposite entry.
+        opposite: u32,
+        /// Its opposite.
+        back: u32,
+    },
+    /// The two corners see different edges.
+    DifferentEdges {
+        /// The edge seen from the corner.
+        edge: [u32; 2],
+        /// The edge seen from its opposite.
+        other: [u32; 2],
+    },
+}
+
+impl std::fmt::Display for GluingProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            GluingProblem::NotLive { opposite } => {
+                write!(f, "opposite {opposite} is not a live corner")
+            }
+            GluingProblem::SameFace { opposite } => {
+                write!(f, "opposite {opposite} in the same face")
+            }
+            GluingProblem::NotInvolution { opposite, back } => {
+                write!(f, "opposite({opposite}) = {back} is not the corner")
+            }
+            GluingProblem::DifferentEdges { edge, other } => {
+                write!(
+                    f,
+                    "it and its opposite see different edges {edge:?} / {other:?}"
+                )
+            }
+        }
+    }
+}
+
+/// How a vertex's star walk failed ([`ValidationError::Link`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LinkProblem {
+    /// The walk did not come back within the vertex's face count.
+    DoesNotClose,
+    /// The link visits a vertex twice.
+    Repeats(VertexId),
+    /// The walk closed after `walked` of the vertex's `faces` faces.
+    Short {
+        /// Faces walked.
+        walked: u32,
+        /// Faces at the vertex.
+        faces: u32,
+    },
+}
+
+impl std::fmt::Display for LinkProblem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            LinkProblem::DoesNotClose => write!(f, "the star walk does not close"),
+            LinkProblem::Repeats(w) => write!(f, "it repeats {w}"),
+            LinkProblem::Short { walked, faces } => write!(f, "{walked} of {faces} faces"),
+        }
+    }
+}
 
 macro_rules! ensure {
-    ($cond:expr, $($fmt:tt)*) => {
+    ($cond:expr, $err:expr) => {
         if !$cond {
-            return Err(ValidationError(format!($($fmt)*)));
+            return Err($err);
         }
     };
 }
@@ -29,17 +232,27 @@ impl Triangulation {
         let nv = self.vertex_corner.len();
         ensure!(
             nc % 3 == 0,
-            "corner array length {nc} is not a multiple of 3"
+            ValidationError::ArrayShape {
+                array: "corner_vertex",
+                len: nc,
+                expected: nc / 3 * 3,
+            }
         );
         ensure!(
             self.opposite.len() == nc,
-            "opposite has {} entries, corners {nc}",
-            self.opposite.len()
+            ValidationError::ArrayShape {
+                array: "opposite",
+                len: self.opposite.len(),
+                expected: nc,
+            }
         );
         ensure!(
             self.degree.len() == nv,
-            "degree has {} entries, vertices {nv}",
-            self.degree.len()
+            ValidationError::ArrayShape {
+                array: "degree",
+                len: self.degree.len(),
+                expected: nv,
+            }
         );
 
         let mut live_faces = 0;
@@ -50,62 +263,91 @@ impl Triangulation {
                 ensure!(
                     vs.iter().all(|&v| v == NONE)
                         && self.opposite[3 * f..3 * f + 3].iter().all(|&o| o == NONE),
-                    "removed face {f} has live data"
+                    ValidationError::RemovedFaceHasData { face: f }
                 );
                 continue;
             }
             live_faces += 1;
             for &v in vs {
-                ensure!((v as usize) < nv, "face {f}: vertex {v} out of range");
+                ensure!(
+                    (v as usize) < nv,
+                    ValidationError::VertexOutOfRange { face: f, vertex: v }
+                );
                 ensure!(
                     self.vertex_corner[v as usize] != NONE,
-                    "face {f}: vertex {v} is removed"
+                    ValidationError::RemovedVertexInFace { face: f, vertex: v }
                 );
                 corners_at[v as usize] += 1;
             }
             ensure!(
                 vs[0] != vs[1] && vs[1] != vs[2] && vs[0] != vs[2],
-                "face {f} is degenerate: {vs:?}"
+                ValidationError::DegenerateFace {
+                    face: f,
+                    vertices: [vs[0], vs[1], vs[2]],
+                }
             );
         }
         ensure!(
             live_faces == self.live_faces,
-            "live face count {} but {live_faces} faces are live",
-            self.live_faces
+            ValidationError::LiveCount {
+                what: "face",
+                recorded: self.live_faces,
+                actual: live_faces,
+            }
         );
-        ensure!(live_faces > 0, "no faces");
+        ensure!(live_faces > 0, ValidationError::NoFaces);
 
         let endpoints = |c: usize| {
             let a = self.corner_vertex[Corner(c as u32).next().index()];
             let b = self.corner_vertex[Corner(c as u32).prev().index()];
-            (a.min(b), a.max(b))
+            [a.min(b), a.max(b)]
         };
-        let mut edge_faces: HashMap<(u32, u32), u32> = HashMap::new();
+        let gluing = |corner: usize, problem| ValidationError::Gluing { corner, problem };
+        let mut edge_faces: HashMap<[u32; 2], u32> = HashMap::new();
         for c in 0..nc {
             if self.corner_vertex[c] == NONE {
                 continue;
             }
             let o = self.opposite[c] as usize;
+            let opposite = o as u32;
             ensure!(
                 o < nc && self.corner_vertex[o] != NONE,
-                "corner {c}: opposite {o} is not a live corner"
+                gluing(c, GluingProblem::NotLive { opposite })
             );
-            ensure!(o / 3 != c / 3, "corner {c}: opposite {o} in the same face");
+            ensure!(
+                o / 3 != c / 3,
+                gluing(c, GluingProblem::SameFace { opposite })
+            );
             ensure!(
                 self.opposite[o] as usize == c,
-                "corner {c}: opposite({o}) = {} is not {c}",
-                self.opposite[o]
+                gluing(
+                    c,
+                    GluingProblem::NotInvolution {
+                        opposite,
+                        back: self.opposite[o]
+                    }
+                )
             );
             ensure!(
                 endpoints(c) == endpoints(o),
-                "corner {c} and its opposite {o} see different edges {:?} / {:?}",
-                endpoints(c),
-                endpoints(o)
+                gluing(
+                    c,
+                    GluingProblem::DifferentEdges {
+                        edge: endpoints(c),
+                        other: endpoints(o)
+                    }
+                )
             );
             *edge_faces.entry(endpoints(c)).or_insert(0) += 1;
         }
         for (e, n) in &edge_faces {
-            ensure!(*n == 2, "edge {e:?} lies in {n} faces");
+            ensure!(
+                *n == 2,
+                ValidationError::EdgeFaceCount {
+                    edge: *e,
+                    faces: *n
+                }
+            );
         }
 
         let mut live_vertices = 0;
@@ -113,47 +355,54 @@ impl Triangulation {
             if c == NONE {
                 ensure!(
                     corners_at[v] == 0,
-                    "removed vertex {v} is used by {} faces",
-                    corners_at[v]
+                    ValidationError::RemovedVertexUsed {
+                        vertex: v,
+                        faces: corners_at[v]
+                    }
                 );
                 continue;
             }
             live_vertices += 1;
             ensure!(
                 (c as usize) < nc && self.corner_vertex[c as usize] == v as u32,
-                "vertex {v}: its corner {c} is not at it"
+                ValidationError::VertexCorner {
+                    vertex: v,
+                    corner: c
+                }
             );
-            ensure!(
-                self.degree[v] == corners_at[v],
-                "vertex {v}: degree {} but {} faces",
-                self.degree[v],
-                corners_at[v]
-            );
-            ensure!(self.degree[v] >= 3, "vertex {v}: degree {}", self.degree[v]);
+            let degree_error = ValidationError::Degree {
+                vertex: v,
+                degree: self.degree[v],
+                faces: corners_at[v],
+            };
+            ensure!(self.degree[v] == corners_at[v], degree_error);
+            ensure!(self.degree[v] >= 3, degree_error);
+            let link = |problem| ValidationError::Link { vertex: v, problem };
             let mut seen = HashSet::new();
             let mut walked = 0u32;
             for s in self.star(VertexId(v as u32)) {
                 walked += 1;
-                ensure!(
-                    walked <= corners_at[v],
-                    "vertex {v}: star walk does not close"
-                );
+                ensure!(walked <= corners_at[v], link(LinkProblem::DoesNotClose));
                 ensure!(
                     seen.insert(s.neighbour),
-                    "vertex {v}: link repeats {}",
-                    s.neighbour
+                    link(LinkProblem::Repeats(s.neighbour))
                 );
             }
             ensure!(
                 walked == corners_at[v],
-                "vertex {v}: link is not one cycle ({walked} of {} faces)",
-                corners_at[v]
+                link(LinkProblem::Short {
+                    walked,
+                    faces: corners_at[v]
+                })
             );
         }
         ensure!(
             live_vertices == self.live_vertices,
-            "live vertex count {} but {live_vertices} vertices are live",
-            self.live_vertices
+            ValidationError::LiveCount {
+                what: "vertex",
+                recorded: self.live_vertices,
+                actual: live_vertices,
+            }
         );
 
         let mut face_sets = HashSet::new();
@@ -162,7 +411,10 @@ impl Triangulation {
             k.sort_unstable();
             ensure!(
                 face_sets.insert(k),
-                "face {f} duplicates another face {k:?}"
+                ValidationError::DuplicateFace {
+                    face: f,
+                    vertices: k
+                }
             );
         }
 
@@ -183,9 +435,12 @@ impl Triangulation {
         }
         ensure!(
             reached == live_faces,
-            "not connected: {reached} of {live_faces} faces reachable from {first}"
+            ValidationError::Disconnected {
+                reached,
+                faces: live_faces,
+                from: first,
+            }
         );
-        let _ = FaceId(0);
         Ok(())
     }
 }

@@ -17,12 +17,12 @@
 //! input's.
 //!
 //! # Edge identity
-//! Edges are numbered in [`Triangulation::edges`] order and keep their number across
-//! contractions exactly as [`super::RetestCounter`] defines identity: a renamed edge
+//! Edges are numbered by [`EdgeNumbering`] (in [`Triangulation::edges`] order) and keep
+//! their number across contractions as it defines identity: a renamed edge
 //! `[v, z] → [u, z]` keeps its number; the merged edge `[u, x]` keeps the number of the
 //! old `[u, x]`, while `[u, v]`, `[v, x]` and `[v, y]` die (like the DCEL record removed
-//! by Alg. 4.7). Each edge number stores one live corner opposite it, moved when a
-//! gluing ([`crate::core::ContractionRecord::glued`]) kills the corner it held.
+//! by Alg. 4.7). The edge stored as number `e` is tested through the live corner
+//! [`EdgeNumbering::corner`] gives for it.
 //!
 //! # Which endpoint survives
 //! The edge stored as corner `c` is contracted as [`Triangulation::contract_tested`]`(a,
@@ -44,7 +44,7 @@
 use std::time::Instant;
 
 use super::{Algorithm, Options, Reduction, RetestCounter};
-use crate::core::{Corner, History, LinkTester, Triangulation};
+use crate::core::{EdgeId, EdgeNumbering, History, LinkTester, Triangulation};
 use crate::rng::Rng;
 
 /// Runs BF on `tri` (see the module documentation).
@@ -55,28 +55,17 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
     let mut counter = RetestCounter::new(&tri, options.count_retests);
     let mut tester = LinkTester::new(tri.vertex_capacity());
 
-    // Edge numbers: per corner, and one live corner per edge.
-    let mut edge_of_corner = vec![u32::MAX; 3 * tri.face_capacity()];
-    let mut corner_of_edge: Vec<Corner> = Vec::with_capacity(tri.edge_count());
-    for (_, _, c) in tri.edges() {
-        let e = corner_of_edge.len() as u32;
-        edge_of_corner[c.index()] = e;
-        edge_of_corner[tri.opposite(c).index()] = e;
-        corner_of_edge.push(c);
-    }
-    let mut alive = vec![true; corner_of_edge.len()];
-
-    let mut current: Vec<u32> = (0..corner_of_edge.len() as u32).collect();
+    let mut numbers = EdgeNumbering::new(&tri);
+    let mut current: Vec<u32> = (0..numbers.capacity() as u32).collect();
     Rng::new(options.seed).shuffle(&mut current);
     let mut failed: Vec<u32> = Vec::with_capacity(current.len());
 
     loop {
         let mut contracted_in_pass = false;
         for &e in &current {
-            if !alive[e as usize] {
-                continue;
-            }
-            let c = corner_of_edge[e as usize];
+            let Some(c) = numbers.corner(EdgeId(e)) else {
+                continue; // removed by an earlier contraction
+            };
             debug_assert!(tri.is_face(c.face()), "live edge {e} holds a dead corner");
             let [a, b] = tri.edge_endpoints(c);
             stats.link_tests += 1;
@@ -87,17 +76,8 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
             }
             let rec = tri.contract_tested(a, b, &mut history);
             counter.contracted(&rec);
+            numbers.contracted(&rec);
             contracted_in_pass = true;
-            alive[e as usize] = false;
-            for (dying, kept) in rec.glued() {
-                // `dying` was across [b, x] (that edge dies), `kept` across [a, x]; they
-                // are now the two corners of the merged edge, which stays [a, x].
-                let dead_edge = edge_of_corner[dying.index()];
-                let merged = edge_of_corner[kept.index()];
-                alive[dead_edge as usize] = false;
-                edge_of_corner[dying.index()] = merged;
-                corner_of_edge[merged as usize] = kept;
-            }
         }
         if !contracted_in_pass {
             break;

@@ -15,7 +15,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::core::{ContractionRecord, Corner, History, Triangulation};
+use crate::core::{ContractionRecord, Corner, EdgeNumbering, History, Triangulation};
 
 pub mod brute;
 pub mod rs;
@@ -125,16 +125,13 @@ pub fn reduce(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Re
     }
 }
 
-/// Persistent edge identities over contractions, to count ε (edges tested more than
-/// once). Each corner maps to the id of the edge opposite it; ids are assigned in
-/// [`Triangulation::edges`] order; after a contraction the merged edges keep the ids of
-/// `[u, x]` and `[u, y]` ([`ContractionRecord::glued`]).
+/// Counts ε (edges tested more than once) over contractions, with the edge identity of
+/// [`EdgeNumbering`] (the DCEL of the paper: the merged `[u, x]` keeps its identity).
 #[derive(Clone, Debug, Default)]
 pub struct RetestCounter {
-    edge_of_corner: Vec<u32>,
+    numbers: Option<EdgeNumbering>,
     tests: Vec<u8>,
     more_than_once: u64,
-    enabled: bool,
 }
 
 impl RetestCounter {
@@ -143,29 +140,21 @@ impl RetestCounter {
         if !enabled {
             return RetestCounter::default();
         }
-        let mut edge_of_corner = vec![u32::MAX; 3 * tri.face_capacity()];
-        let mut n = 0u32;
-        for (_, _, c) in tri.edges() {
-            edge_of_corner[c.index()] = n;
-            edge_of_corner[tri.opposite(c).index()] = n;
-            n += 1;
-        }
+        let numbers = EdgeNumbering::new(tri);
         RetestCounter {
-            edge_of_corner,
-            tests: vec![0; n as usize],
+            tests: vec![0; numbers.capacity()],
+            numbers: Some(numbers),
             more_than_once: 0,
-            enabled: true,
         }
     }
 
     /// Records one link test of the edge opposite corner `c`.
     #[inline]
     pub fn tested(&mut self, c: Corner) {
-        if !self.enabled {
+        let Some(numbers) = &self.numbers else {
             return;
-        }
-        let e = self.edge_of_corner[c.index()] as usize;
-        let t = &mut self.tests[e];
+        };
+        let t = &mut self.tests[numbers.id(c).index()];
         if *t == 1 {
             self.more_than_once += 1;
         }
@@ -175,17 +164,14 @@ impl RetestCounter {
     /// Updates identities after a contraction.
     #[inline]
     pub fn contracted(&mut self, rec: &ContractionRecord) {
-        if !self.enabled {
-            return;
-        }
-        for (a, b) in rec.glued() {
-            self.edge_of_corner[a.index()] = self.edge_of_corner[b.index()];
+        if let Some(numbers) = &mut self.numbers {
+            numbers.contracted(rec);
         }
     }
 
     /// Whether identities are tracked.
     pub fn is_enabled(&self) -> bool {
-        self.enabled
+        self.numbers.is_some()
     }
 
     /// ε so far.

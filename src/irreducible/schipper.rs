@@ -80,13 +80,7 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
         let u = VertexId(u_raw);
         edges.clear();
         for s in tri.star(u) {
-            let c = s.corner;
-            let opp = if tri.vertex(c.next()) == s.neighbour {
-                c.prev()
-            } else {
-                c.next()
-            };
-            edges.push((s.neighbour, opp));
+            edges.push((s.neighbour, tri.corner_facing(s.corner, s.neighbour)));
         }
         let mut contracted = false;
         for &(w, c) in &edges {

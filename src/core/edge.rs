@@ -1,0 +1,298 @@
+//! Edges as first-class handles: [`Edge`] (an edge of the current state, named by its
+//! canonical corner) and [`EdgeNumbering`] (dense edge numbers that survive contractions
+//! and flips).
+//!
+//! The core has no edge array: an edge is the pair of corners opposite it, one in each of
+//! its two faces. [`Edge`] picks the smaller of the two, so equal handles mean equal
+//! edges *within one state*. A contraction or a flip re-pairs corners, so handles are not
+//! stable across changes; [`EdgeNumbering`] is the structure for identities that must
+//! survive them (pairings under flips, edge queues under contraction, the ε counter).
+
+use super::contract::ContractionRecord;
+use super::flip::FlipRecord;
+use super::ids::{Corner, FaceId, VertexId, NONE};
+use super::tri::Triangulation;
+use std::fmt;
+
+/// An edge of a [`Triangulation`] in its current state, named by the smaller of its two
+/// opposite corners. Two handles of the same state are equal iff they name the same
+/// edge; a contraction or flip may change which corner is canonical.
+#[derive(Copy, Clone, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Edge(Corner);
+
+impl Edge {
+    /// The canonical corner: the smaller of the two corners opposite the edge.
+    #[inline]
+    pub fn corner(self) -> Corner {
+        self.0
+    }
+}
+
+impl fmt::Debug for Edge {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "e{}", self.0 .0)
+    }
+}
+
+impl Triangulation {
+    /// The edge opposite corner `c` (a live corner). O(1).
+    #[inline]
+    pub fn edge_at(&self, c: Corner) -> Edge {
+        Edge(c.min(self.opposite(c)))
+    }
+
+    /// The edge `[u, v]`, or `None` if it is not an edge. O(min(d_u, d_v)).
+    pub fn edge_between(&self, u: VertexId, v: VertexId) -> Option<Edge> {
+        let (s, l) = if self.is_vertex(u) && self.is_vertex(v) && self.degree(u) > self.degree(v) {
+            (v, u)
+        } else {
+            (u, v)
+        };
+        let c = self.find_edge(s, l)?;
+        Some(self.edge_at(self.corner_facing(c, l)))
+    }
+
+    /// Both corners opposite `e`, the canonical one first. O(1).
+    #[inline]
+    pub fn edge_corners_of(&self, e: Edge) -> [Corner; 2] {
+        [e.0, self.opposite(e.0)]
+    }
+
+    /// The endpoints of `e`, as [`Self::edge_endpoints`] of its canonical corner. O(1).
+    #[inline]
+    pub fn endpoints(&self, e: Edge) -> [VertexId; 2] {
+        self.edge_endpoints(e.0)
+    }
+
+    /// The two faces of `e`, the canonical corner's first. O(1).
+    #[inline]
+    pub fn edge_faces(&self, e: Edge) -> [FaceId; 2] {
+        [e.0.face(), self.opposite(e.0).face()]
+    }
+
+    /// The link `{x, y}` of `e`: the vertices at its two opposite corners. O(1).
+    #[inline]
+    pub fn edge_link_of(&self, e: Edge) -> [VertexId; 2] {
+        [self.vertex(e.0), self.vertex(self.opposite(e.0))]
+    }
+
+    /// Every edge once, in increasing canonical-corner order (the order of
+    /// [`Self::edges`]). O(F).
+    pub fn edge_handles(&self) -> impl Iterator<Item = Edge> + '_ {
+        self.edges().map(|(_, _, c)| Edge(c))
+    }
+}
+
+/// A dense edge number, `0..`[`EdgeNumbering::capacity`].
+#[derive(Copy, Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
+pub struct EdgeId(pub u32);
+
+impl EdgeId {
+    /// The number as an array index.
+    #[inline]
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+impl fmt::Debug for EdgeId {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "#{}", self.0)
+    }
+}
+
+/// Dense edge numbers that stay attached to "the same edge" across contractions and
+/// flips, for per-edge arrays (`Vec<T>` indexed by [`EdgeId`]) instead of hash maps.
+///
+/// # Identity (the DCEL of the RS paper, Alg. 4.7)
+/// - Numbers are assigned `0, 1, …` in [`Triangulation::edges`] order at construction.
+/// - Contracting `[u, v]` (keeping `u`, link `{x, y}`): every edge `[v, z]` renamed
+///   `[u, z]` keeps its number; the merged edge `[u, x]` keeps the number of the old
+///   `[u, x]` (likewise for `y`); the numbers of `[u, v]`, `[v, x]` and `[v, y]` die.
+/// - Flipping `[a, b]` into `[c, d]`: the new edge takes the number of the old one (the
+///   same dual edge between the same two face ids); every other edge keeps its number.
+///
+/// - Undoing a contraction ([`crate::History::undo`], the vertex split of the tri-quad
+///   expansion) revives the three numbers it killed; undoing a flip swaps back.
+///
+/// Dead numbers are never reused. The caller reports every change, in order, through
+/// [`Self::contracted`], [`Self::flipped`], [`Self::uncontracted`] and
+/// [`Self::unflipped`]; the numbering is then exact, and [`Self::check`] verifies it from
+/// scratch.
+///
+/// # Cost
+/// 4 bytes per corner plus 4 bytes per edge number; O(1) per operation.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeNumbering {
+    of_corner: Vec<u32>,
+    corner_of: Vec<u32>,
+    live: usize,
+}
+
+impl EdgeNumbering {
+    /// Numbers the edges of `tri` in [`Triangulation::edges`] order. O(F).
+    pub fn new(tri: &Triangulation) -> Self {
+        let mut of_corner = vec![NONE; 3 * tri.face_capacity()];
+        let mut corner_of = Vec::with_capacity(tri.edge_count());
+        for (_, _, c) in tri.edges() {
+            let e = corner_of.len() as u32;
+            of_corner[c.index()] = e;
+            of_corner[tri.opposite(c).index()] = e;
+            corner_of.push(c.0);
+        }
+        let live = corner_of.len();
+        EdgeNumbering {
+            of_corner,
+            corner_of,
+            live,
+        }
+    }
+
+    /// One more than the largest number ever given (live or dead).
+    #[inline]
+    pub fn capacity(&self) -> usize {
+        self.corner_of.len()
+    }
+
+    /// Number of live edges.
+    #[inline]
+    pub fn live_count(&self) -> usize {
+        self.live
+    }
+
+    /// The number of the edge opposite live corner `c`. O(1).
+    #[inline]
+    pub fn id(&self, c: Corner) -> EdgeId {
+        EdgeId(self.of_corner[c.index()])
+    }
+
+    /// A live corner opposite edge `e`, or `None` if `e` died. O(1).
+    #[inline]
+    pub fn corner(&self, e: EdgeId) -> Option<Corner> {
+        match self.corner_of.get(e.index()) {
+            Some(&c) if c != NONE => Some(Corner(c)),
+            _ => None,
+        }
+    }
+
+    /// Whether edge `e` is alive.
+    #[inline]
+    pub fn is_alive(&self, e: EdgeId) -> bool {
+        self.corner(e).is_some()
+    }
+
+    /// Updates the numbers after `rec` was applied to the triangulation (which must have
+    /// been numbered before it). Returns the three numbers that died: `[u, v]`, `[v, x]`,
+    /// `[v, y]`. O(1).
+    ///
+    /// The removed faces' corners keep their numbers: their slots stay dead until an
+    /// exact undo revives those very faces, and then they are what
+    /// [`Self::uncontracted`] reads back, so undo support costs no memory.
+    pub fn contracted(&mut self, rec: &ContractionRecord) -> [EdgeId; 3] {
+        let uv = EdgeId(self.of_corner[rec.corner_opposite_uv().index()]);
+        self.kill(uv);
+        let mut dead = [uv; 3];
+        for (k, (dying, kept)) in rec.glued().into_iter().enumerate() {
+            // `dying` was across [v, x] (that edge dies), `kept` across [u, x]; they are
+            // now the two corners of the merged edge, which keeps [u, x]'s number.
+            let dead_edge = EdgeId(self.of_corner[dying.index()]);
+            let merged = self.of_corner[kept.index()];
+            self.kill(dead_edge);
+            self.of_corner[dying.index()] = merged;
+            self.corner_of[merged as usize] = kept.0;
+            dead[k + 1] = dead_edge;
+        }
+        dead
+    }
+
+    /// Updates the numbers after the exact undo of `rec` ([`crate::History::undo`], the
+    /// vertex split of the tri-quad expansion), which must be the newest contraction
+    /// reported to [`Self::contracted`] and not yet undone: `[u, v]`, `[v, x]` and
+    /// `[v, y]` get their numbers back; the merged edges split again, keeping their
+    /// numbers on `[u, x]` and `[u, y]`. O(1).
+    pub fn uncontracted(&mut self, rec: &ContractionRecord) {
+        for (k, f) in rec.faces.into_iter().enumerate() {
+            for s in 0..3 {
+                let c = f.corner(s as u32);
+                let w = rec.saved_vertex[3 * k + s];
+                let id = self.of_corner[c.index()];
+                if w == rec.u.0 {
+                    // c faces [v, x] (resp. [v, y]), the edge that died; its outer corner
+                    // had taken the merged number and gets this one back.
+                    let across = rec.saved_opposite[3 * k + s] as usize;
+                    self.of_corner[across] = id;
+                    self.revive(id, c);
+                } else if w != rec.v.0 && k == 0 {
+                    self.revive(id, c); // c faces [u, v]
+                }
+            }
+        }
+    }
+
+    /// Updates the numbers after the flip `rec` was applied. O(1).
+    pub fn flipped(&mut self, rec: &FlipRecord) {
+        // Before the flip: `new[0]` faced [b, c] and `new[1]` faced [a, d]; afterwards
+        // they face the new edge [c, d], and `moved[0]` / `moved[1]` face [a, d] / [b, c].
+        let [k1, k2] = rec.moved;
+        let [n1, n2] = rec.new_corners;
+        let old = self.of_corner[k1.index()];
+        let bc = self.of_corner[n1.index()];
+        let ad = self.of_corner[n2.index()];
+        self.of_corner[n1.index()] = old;
+        self.of_corner[n2.index()] = old;
+        self.of_corner[k1.index()] = ad;
+        self.of_corner[k2.index()] = bc;
+        self.corner_of[old as usize] = n1.0;
+        self.corner_of[ad as usize] = k1.0;
+        self.corner_of[bc as usize] = k2.0;
+    }
+
+    fn revive(&mut self, e: u32, c: Corner) {
+        debug_assert_eq!(
+            self.corner_of[e as usize], NONE,
+            "revived edge {e} is alive"
+        );
+        self.corner_of[e as usize] = c.0;
+        self.live += 1;
+    }
+
+    fn kill(&mut self, e: EdgeId) {
+        if self.corner_of[e.index()] != NONE {
+            self.corner_of[e.index()] = NONE;
+            self.live -= 1;
+        }
+    }
+
+    /// Checks the numbering against `tri` from scratch: both corners of every live edge
+    /// carry one number, distinct edges carry distinct numbers, every live number's corner
+    /// is one of its edge's corners, and the live count matches. O(F). For tests.
+    pub fn check(&self, tri: &Triangulation) -> Result<(), String> {
+        if self.live != tri.edge_count() {
+            return Err(format!(
+                "{} live numbers, {} edges",
+                self.live,
+                tri.edge_count()
+            ));
+        }
+        let mut owner = vec![NONE; self.corner_of.len()];
+        for (_, _, c) in tri.edges() {
+            let o = tri.opposite(c);
+            let (e, eo) = (self.of_corner[c.index()], self.of_corner[o.index()]);
+            if e != eo {
+                return Err(format!("edge at {c}/{o} has numbers {e} and {eo}"));
+            }
+            let Some(slot) = owner.get_mut(e as usize) else {
+                return Err(format!("edge at {c} has number {e} out of range"));
+            };
+            if *slot != NONE {
+                return Err(format!("number {e} on two edges ({slot} and {c})"));
+            }
+            *slot = c.0;
+            let held = self.corner_of[e as usize];
+            if held != c.0 && held != o.0 {
+                return Err(format!("number {e} holds corner {held}, not {c} or {o}"));
+            }
+        }
+        Ok(())
+    }
+}
