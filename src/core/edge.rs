@@ -222,7 +222,13 @@ impl EdgeNumbering {
                     let across = rec.saved_opposite[3 * k + s] as usize;
                     self.of_corner[across] = id;
                     self.revive(id, c);
-                } else if w != rec.v.0 && k == 0 {
+                } else if w == rec.v.0 {
+                    // c faces [u, x] (resp. [u, y]), the merged edge: its number may hold
+                    // the corner that now faces [v, x] again, so point it at the outer
+                    // corner that faced [u, x] before and after.
+                    let across = rec.saved_opposite[3 * k + s];
+                    self.corner_of[id as usize] = across;
+                } else if k == 0 {
                     self.revive(id, c); // c faces [u, v]
                 }
             }
@@ -245,6 +251,22 @@ impl EdgeNumbering {
         self.corner_of[old as usize] = n1.0;
         self.corner_of[ad as usize] = k1.0;
         self.corner_of[bc as usize] = k2.0;
+    }
+
+    /// Updates the numbers after [`crate::Triangulation::unflip`]`(rec)`. O(1).
+    pub fn unflipped(&mut self, rec: &FlipRecord) {
+        let [k1, k2] = rec.moved;
+        let [n1, n2] = rec.new_corners;
+        let flipped = self.of_corner[n1.index()];
+        let ad = self.of_corner[k1.index()];
+        let bc = self.of_corner[k2.index()];
+        self.of_corner[k1.index()] = flipped;
+        self.of_corner[k2.index()] = flipped;
+        self.of_corner[n1.index()] = bc;
+        self.of_corner[n2.index()] = ad;
+        self.corner_of[flipped as usize] = k1.0;
+        self.corner_of[bc as usize] = n1.0;
+        self.corner_of[ad as usize] = n2.0;
     }
 
     fn revive(&mut self, e: u32, c: Corner) {

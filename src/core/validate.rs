@@ -444,3 +444,79 @@ impl Triangulation {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gen::octahedron;
+
+    fn octa() -> Triangulation {
+        let m = octahedron();
+        Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron")
+    }
+
+    #[test]
+    fn the_octahedron_is_valid() {
+        assert_eq!(octa().validate(), Ok(()));
+    }
+
+    #[test]
+    fn each_corruption_is_named_with_its_element() {
+        let mut t = octa();
+        t.degree[2] += 1;
+        assert!(matches!(
+            t.validate(),
+            Err(ValidationError::Degree { vertex: 2, .. })
+        ));
+
+        let mut t = octa();
+        t.live_faces += 1;
+        assert!(matches!(
+            t.validate(),
+            Err(ValidationError::LiveCount { what: "face", .. })
+        ));
+
+        let mut t = octa();
+        let o = t.opposite[0];
+        t.opposite[o as usize] = 1; // opposite[opposite[0]] != 0
+        assert!(matches!(
+            t.validate(),
+            Err(ValidationError::Gluing {
+                corner: 0,
+                problem: GluingProblem::NotInvolution { .. }
+            }) | Err(ValidationError::Gluing {
+                problem: GluingProblem::SameFace { .. },
+                ..
+            })
+        ));
+
+        let mut t = octa();
+        t.corner_vertex[0] = t.corner_vertex[1];
+        assert!(matches!(
+            t.validate(),
+            Err(ValidationError::DegenerateFace { face: 0, .. })
+        ));
+
+        let mut t = octa();
+        t.vertex_corner[3] = 0;
+        if t.corner_vertex[0] != 3 {
+            assert!(matches!(
+                t.validate(),
+                Err(ValidationError::VertexCorner {
+                    vertex: 3,
+                    corner: 0
+                })
+            ));
+        }
+
+        let mut t = octa();
+        t.opposite.pop();
+        assert!(matches!(
+            t.validate(),
+            Err(ValidationError::ArrayShape {
+                array: "opposite",
+                ..
+            })
+        ));
+    }
+}
