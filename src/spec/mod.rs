@@ -17,10 +17,3 @@ pub const FULL_CHECK_DEGREE: usize = 64;
 pub const ENABLED: bool = cfg!(any(debug_assertions, feature = "invariants"));
 
 pub mod oracle;
-pub(crate) mod rs;
-
-pub(crate) use rs::{
-    rs_after_contraction, rs_after_test, rs_at_alg46_line_12, rs_at_line_22, rs_at_line_32,
-    rs_before_contraction, rs_decrement, rs_degree3, rs_degree3_untested, rs_leaving_lue,
-    rs_new_neighbour, rs_prop7, rs_prop7_before, rs_vertex_trapped,
-};

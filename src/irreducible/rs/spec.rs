@@ -3,10 +3,10 @@
 
 #![cfg_attr(not(any(debug_assertions, feature = "invariants")), allow(unused))]
 
-use super::oracle::{contractible_by_theorem_3, critical_cycles_through, is_trapped_naive};
-use super::FULL_CHECK_DEGREE;
+use crate::spec::oracle::{contractible_by_theorem_3, critical_cycles_through, is_trapped_naive};
+use crate::spec::FULL_CHECK_DEGREE;
 use crate::core::{ContractionRecord, VertexId};
-use crate::irreducible::rs::Rs;
+use super::Rs;
 
 const NIL: u32 = u32::MAX;
 

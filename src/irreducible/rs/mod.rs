@@ -28,6 +28,8 @@ use std::time::Instant;
 use super::{finish, start_stats, Algorithm, Options, Reduction, RetestCounter};
 use crate::core::{History, Triangulation, VertexId};
 
+mod spec;
+
 /// "−1" of the paper for the time stamps `o` and `t`, and "nil" for `n`.
 const NIL: u32 = u32::MAX;
 
@@ -270,9 +272,9 @@ impl Rs {
         self.begin(u);
         loop {
             // l.22–30
-            crate::spec::rs_at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
+            spec::rs_at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
             while let Some(v) = self.lists.pop_front(LUE) {
-                crate::spec::rs_leaving_lue(self, v);
+                spec::rs_leaving_lue(self, v);
                 self.t[v as usize] = self.ts;
                 if self.degree(v) == 3 || (self.variant.degree3_path_up_to_4 && self.degree(v) == 4)
                 {
@@ -280,10 +282,10 @@ impl Rs {
                 } else {
                     self.test(u, v);
                 }
-                crate::spec::rs_at_line_22(self, 2);
+                spec::rs_at_line_22(self, 2);
             }
             // l.31–33 (Prop. 11 holds here).
-            crate::spec::rs_at_line_32(self);
+            spec::rs_at_line_32(self);
             if self.lists.is_empty(LTE) || self.variant.single_pass {
                 break;
             }
@@ -304,7 +306,7 @@ impl Rs {
             self.contractions_first_vertex = (self.history.len() - before) as u64;
         }
         self.processed_count += 1;
-        crate::spec::rs_vertex_trapped(self, u);
+        spec::rs_vertex_trapped(self, u);
     }
 
     /// Alg. 4.2 l.8–19: makes `u` current and puts its unprocessed neighbours in `lue`
@@ -347,7 +349,7 @@ impl Rs {
             if self.count[v as usize] == 0 {
                 // l.12: c(v) = 0 must still mean "contractible" here, after the counter
                 // updates since l.32 (the paper states Prop. 11 at l.32 only).
-                crate::spec::rs_at_alg46_line_12(self, u, v);
+                spec::rs_at_alg46_line_12(self, u, v);
                 self.lists.remove(v);
                 self.contract(u, v);
             }
@@ -357,12 +359,12 @@ impl Rs {
     /// Alg. 4.3: `d(v) = 3`, so `[u, v]` is contractible unless K is T4 (Prop. 6).
     fn degree3(&mut self, u: u32, v: u32) {
         if self.degree(u) == 3 {
-            crate::spec::rs_degree3(self, u, v);
+            spec::rs_degree3(self, u, v);
             return; // K is T4: nothing is contractible.
         }
-        crate::spec::rs_degree3(self, u, v);
+        spec::rs_degree3(self, u, v);
         let [x, y] = self.contract(u, v);
-        crate::spec::rs_degree3_untested(self, x, y);
+        spec::rs_degree3_untested(self, x, y);
         if self.variant.skip_degree3_decrement {
             return;
         }
@@ -391,7 +393,7 @@ impl Rs {
 
     /// c(w) ← c(w) − 1 for `[u, w]` in `lte`; a counter reaching 0 moves to the front.
     fn decrement(&mut self, w: u32) {
-        crate::spec::rs_decrement(self, w);
+        spec::rs_decrement(self, w);
         let c = &mut self.count[w as usize];
         *c = c.saturating_sub(1);
         if *c == 0 {
@@ -464,7 +466,7 @@ impl Rs {
             }
         }
         self.count[v as usize] = cv;
-        crate::spec::rs_after_test(self, u, v, cv);
+        spec::rs_after_test(self, u, v, cv);
         if cv == 0 {
             // `scratch` still holds lk(v) with u at position i.
             self.contract_with_link(u, v, Some(i));
@@ -492,26 +494,26 @@ impl Rs {
         pi.extend((2..d - 1).map(|k| self.scratch[(i + k) % d]));
         self.ts += 1;
         for &z in &pi {
-            crate::spec::rs_new_neighbour(self, z);
+            spec::rs_new_neighbour(self, z);
             let zi = z as usize;
             self.nbr[zi] = u;
             self.count[zi] = 0;
             self.o[zi] = self.ts;
             self.t[zi] = NIL;
         }
-        crate::spec::rs_before_contraction(self, u, v);
+        spec::rs_before_contraction(self, u, v);
         self.processed[v as usize] = true;
         if self.variant.mark_link_vertex_processed {
             // `scratch` is still lk(v) with u at i: its cyclic successor is a link vertex.
             let x = self.scratch[(i + 1) % d];
             self.processed[x as usize] = true;
         }
-        let before = crate::spec::rs_prop7_before(self);
+        let before = spec::rs_prop7_before(self);
         let rec = self
             .tri
             .contract_tested(VertexId(u), VertexId(v), &mut self.history);
         self.counter.contracted(&rec);
-        crate::spec::rs_after_contraction(self, &rec, &pi);
+        spec::rs_after_contraction(self, &rec, &pi);
         let [x, y] = rec.link.map(|w| w.0);
         // l.19–24: keep degree-3 endpoints at the front of lue (Prop. 8(2)).
         for w in [x, y] {
@@ -541,7 +543,7 @@ impl Rs {
             }
         }
         self.scratch2 = pi;
-        crate::spec::rs_prop7(self, before, &rec);
+        spec::rs_prop7(self, before, &rec);
         [x, y]
     }
 }
