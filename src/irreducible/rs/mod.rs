@@ -22,6 +22,7 @@
 //! `c(v)` of the initial neighbours; and the processing of `u` ends only when `lue` is
 //! empty *and* the front of `lte` is not contractible (the printed `until lue = ∅` can
 //! stop with a contractible edge left in `lte`).
+
 use std::fmt;
 use std::time::Instant;
 
