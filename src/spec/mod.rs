@@ -1,26 +1,46 @@
-//! The executable specification: the RS paper's lemmas and propositions as runtime
-//! checks, called by the algorithms at the points the statements name.
+//! The executable specification: the shared oracles, the switch and the cost bound of the
+//! runtime checks, and the catalogue of which statement of the RS paper is checked where.
 //!
-//! Compiled in under `debug_assertions` or the cargo feature `invariants`; otherwise
-//! every hook is an empty inline function and costs nothing. A failing check panics with
+//! The checks themselves live beside the algorithm they check (for RS:
+//! `irreducible::rs::spec`, a child module that reads the algorithm's private state).
+//! Every hook begins with `if !ENABLED { return }`, so the checks are type-checked in
+//! every build and cost nothing when [`ENABLED`] is false. A failing check panics with
 //! the statement's name, the vertices involved and the time stamp `ts`.
 //!
 //! Cost policy: checks are local to the operation (the processed vertex and its
 //! neighbourhood). Where a check would be quadratic in a degree, it runs in full when the
 //! degree is at most [`FULL_CHECK_DEGREE`] and on a bounded prefix otherwise; the
 //! full-graph oracles (petgraph critical cycles, naive irreducibility) run in the tests.
+//!
+//! # Catalogue
+//!
+//! The statements, their sources and extents, and the tests that show each check can
+//! fail are tabulated in `spec/README.md`; the runtime checks are these functions of
+//! `irreducible::rs::spec`:
+//!
+//! | statement | RS paper | check | called at |
+//! |---|---|---|---|
+//! | S1, S2 | Eq. 1, Theorem 3 | `after_test` | Alg. 4.4, every link test |
+//! | S2′ | Theorem 3 | `before_contraction` | Alg. 4.5, every contraction |
+//! | S3 | Lemma 5 | `after_contraction` | Alg. 4.5, after the collapse |
+//! | S4 | Proposition 6 | `degree3` | Alg. 4.3 |
+//! | S5 | Proposition 7 | `prop7_before`, `prop7` | Alg. 4.5 |
+//! | S6, S8, S9 | Propositions 8(1)–(6), 9(2), 10 | `at_line_22` | Alg. 4.2 l.22 |
+//! | S8, S9, S10 | Propositions 9(2), 10, 11 | `at_line_32` | Alg. 4.2 l.32 |
+//! | S10′ | Proposition 11 | `at_alg46_line_12`, `decrement` | Alg. 4.6 l.12, Alg. 4.3 |
+//! | S11 | Definition 4 | `vertex_trapped` | end of the processing of `u` |
+//! | S13 | Sec. 4.3 | `new_neighbour`, `leaving_lue` | Alg. 4.5 l.8, Alg. 4.2 l.24 |
+//! | S14 | Sec. 4.3 | `degree3_untested` | Alg. 4.3, after the contraction |
+//!
+//! S7 (ε = 0) and S12 (genus 0: one processed vertex does every contraction) are test
+//! assertions over whole runs (`tests/rs_algorithm.rs`); [`oracle`] holds the
+//! independent definitions the checks and the tests compare against.
 
 /// Degree (or list length) up to which a local check runs in full.
 pub const FULL_CHECK_DEGREE: usize = 64;
 
-/// Whether the checks are compiled in.
+/// Whether the checks run: under `debug_assertions` or the cargo feature `invariants`.
+/// A `const`, so a hook's `if !ENABLED { return }` is resolved at compile time.
 pub const ENABLED: bool = cfg!(any(debug_assertions, feature = "invariants"));
 
 pub mod oracle;
-pub(crate) mod rs;
-
-pub(crate) use rs::{
-    rs_after_contraction, rs_after_test, rs_at_alg46_line_12, rs_at_line_22, rs_at_line_32,
-    rs_before_contraction, rs_decrement, rs_degree3, rs_degree3_untested, rs_leaving_lue,
-    rs_new_neighbour, rs_prop7, rs_prop7_before, rs_vertex_trapped,
-};

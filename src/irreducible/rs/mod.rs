@@ -23,21 +23,116 @@
 //! empty *and* the front of `lte` is not contractible (the printed `until lue = ∅` can
 //! stop with a contractible edge left in `lte`).
 
+use std::fmt;
 use std::time::Instant;
 
 use super::{finish, start_stats, Algorithm, Options, Reduction, RetestCounter};
-use crate::core::{History, Triangulation, VertexId};
+use crate::core::{Corner, History, Triangulation, VertexId};
 
-/// "−1" of the paper for the time stamps `o` and `t`, and "nil" for `n`.
+mod spec;
+
+/// "nil" in the link arrays of [`Lists`]: never a vertex id (the core reserves
+/// `u32::MAX`, see [`crate::core::MAX_VERTICES`]).
 const NIL: u32 = u32::MAX;
 
-pub(crate) const LUE: usize = 0;
-pub(crate) const LTE: usize = 1;
+const LUE: usize = 0;
+const LTE: usize = 1;
+
+/// A value of the global time stamp `ts` of Sec. 4.3: how many contractions RS has made.
+/// Always below `u32::MAX` (there are fewer contractions than vertices, and the core
+/// reserves `u32::MAX`), which [`Stamp`] uses for the paper's −1.
+#[derive(Copy, Clone, Debug, PartialEq, Eq, PartialOrd, Ord)]
+struct Time(u32);
+
+impl Time {
+    const START: Time = Time(0);
+
+    /// The time stamp after one more contraction.
+    #[inline]
+    fn next(self) -> Time {
+        Time(self.0 + 1)
+    }
+}
+
+impl fmt::Display for Time {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
+
+/// A time stamp `o(v)` or `t(v)` of Table 1: a [`Time`], or unset (the paper's −1). Four
+/// bytes, like the raw `u32` it replaces, so the per-vertex arrays stay flat: unset is
+/// stored as `u32::MAX`, which no [`Time`] reaches.
+#[derive(Copy, Clone, PartialEq, Eq)]
+struct Stamp(u32);
+
+impl Stamp {
+    /// −1 of the paper.
+    const UNSET: Stamp = Stamp(u32::MAX);
+
+    /// The stamp holding `time`.
+    #[inline]
+    fn at(time: Time) -> Stamp {
+        Stamp(time.0)
+    }
+
+    /// The time held, or `None` for −1.
+    #[inline]
+    fn get(self) -> Option<Time> {
+        self.is_set().then_some(Time(self.0))
+    }
+
+    /// Whether the stamp holds a time (is not −1).
+    #[inline]
+    fn is_set(self) -> bool {
+        self != Stamp::UNSET
+    }
+
+    /// Whether the stamp is set and earlier than `time`. One comparison: unset is stored
+    /// above every [`Time`].
+    #[inline]
+    fn is_before(self, time: Time) -> bool {
+        self.0 < time.0
+    }
+}
+
+/// Shows −1 for an unset stamp, as the paper writes it.
+impl fmt::Display for Stamp {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.get() {
+            Some(t) => write!(f, "{t}"),
+            None => write!(f, "-1"),
+        }
+    }
+}
+
+/// `n(v)` of Table 1: the vertex `v` was last found to be a neighbour of, or nil. Four
+/// bytes (nil is [`NIL`], never a vertex id) so the per-vertex array stays flat; the
+/// algorithm only ever asks whether it is the vertex being processed.
+#[derive(Copy, Clone, PartialEq, Eq)]
+struct NeighbourOf(u32);
+
+impl NeighbourOf {
+    const NIL: NeighbourOf = NeighbourOf(NIL);
+
+    /// `n(v) = u`.
+    #[inline]
+    fn of(u: VertexId) -> NeighbourOf {
+        NeighbourOf(u.0)
+    }
+
+    /// Whether `n(v) = u` (never for nil).
+    #[inline]
+    fn is(self, u: VertexId) -> bool {
+        self.0 == u.0
+    }
+}
 
 /// Two intrusive doubly-linked lists over vertex ids sharing `next`/`prev` arrays; a
-/// vertex is in at most one of them (`tag`). All operations O(1).
+/// vertex is in at most one of them (`tag`). All operations O(1). The arrays hold raw ids
+/// with [`NIL`] as the end marker; the interface takes and gives [`VertexId`]s.
 #[derive(Clone, Debug)]
-pub(crate) struct Lists {
+struct Lists {
     next: Vec<u32>,
     prev: Vec<u32>,
     tag: Vec<u8>,
@@ -58,54 +153,57 @@ impl Lists {
         }
     }
     #[inline]
-    pub(crate) fn contains(&self, l: usize, z: u32) -> bool {
-        self.tag[z as usize] == l as u8 + 1
+    fn contains(&self, l: usize, z: VertexId) -> bool {
+        self.tag[z.index()] == l as u8 + 1
     }
     #[inline]
-    pub(crate) fn front(&self, l: usize) -> Option<u32> {
-        (self.head[l] != NIL).then_some(self.head[l])
+    fn front(&self, l: usize) -> Option<VertexId> {
+        (self.head[l] != NIL).then_some(VertexId(self.head[l]))
     }
     #[inline]
     fn is_empty(&self, l: usize) -> bool {
         self.head[l] == NIL
     }
     #[inline]
-    pub(crate) fn push_front(&mut self, l: usize, z: u32) {
-        debug_assert_eq!(self.tag[z as usize], 0);
+    fn push_front(&mut self, l: usize, z: VertexId) {
+        let (z, zi) = (z.0, z.index());
+        debug_assert_eq!(self.tag[zi], 0);
         let h = self.head[l];
-        self.next[z as usize] = h;
-        self.prev[z as usize] = NIL;
+        self.next[zi] = h;
+        self.prev[zi] = NIL;
         if h == NIL {
             self.tail[l] = z;
         } else {
             self.prev[h as usize] = z;
         }
         self.head[l] = z;
-        self.tag[z as usize] = l as u8 + 1;
+        self.tag[zi] = l as u8 + 1;
         self.len[l] += 1;
     }
     #[inline]
-    pub(crate) fn push_back(&mut self, l: usize, z: u32) {
-        debug_assert_eq!(self.tag[z as usize], 0);
+    fn push_back(&mut self, l: usize, z: VertexId) {
+        let (z, zi) = (z.0, z.index());
+        debug_assert_eq!(self.tag[zi], 0);
         let t = self.tail[l];
-        self.prev[z as usize] = t;
-        self.next[z as usize] = NIL;
+        self.prev[zi] = t;
+        self.next[zi] = NIL;
         if t == NIL {
             self.head[l] = z;
         } else {
             self.next[t as usize] = z;
         }
         self.tail[l] = z;
-        self.tag[z as usize] = l as u8 + 1;
+        self.tag[zi] = l as u8 + 1;
         self.len[l] += 1;
     }
     #[inline]
-    pub(crate) fn remove(&mut self, z: u32) {
-        let l = match self.tag[z as usize] {
+    fn remove(&mut self, z: VertexId) {
+        let zi = z.index();
+        let l = match self.tag[zi] {
             0 => return,
             k => (k - 1) as usize,
         };
-        let (p, n) = (self.prev[z as usize], self.next[z as usize]);
+        let (p, n) = (self.prev[zi], self.next[zi]);
         if p == NIL {
             self.head[l] = n;
         } else {
@@ -116,11 +214,11 @@ impl Lists {
         } else {
             self.prev[n as usize] = p;
         }
-        self.tag[z as usize] = 0;
+        self.tag[zi] = 0;
         self.len[l] -= 1;
     }
     #[inline]
-    pub(crate) fn pop_front(&mut self, l: usize) -> Option<u32> {
+    fn pop_front(&mut self, l: usize) -> Option<VertexId> {
         let z = self.front(l)?;
         self.remove(z);
         Some(z)
@@ -131,14 +229,13 @@ impl Lists {
     /// The members of list `l` in order, lazily (for the specification checks, which
     /// look at a bounded prefix: collecting a list of a million entries per check would
     /// make the checks quadratic).
-    #[cfg_attr(not(any(debug_assertions, feature = "invariants")), allow(dead_code))]
-    pub(crate) fn iter(&self, l: usize) -> impl Iterator<Item = u32> + '_ {
+    fn iter(&self, l: usize) -> impl Iterator<Item = VertexId> + '_ {
         let mut z = self.head[l];
         std::iter::from_fn(move || {
             (z != NIL).then(|| {
                 let here = z;
                 z = self.next[z as usize];
-                here
+                VertexId(here)
             })
         })
     }
@@ -171,33 +268,34 @@ pub struct Variant {
 }
 
 /// The state of Alg. 4.2: the triangulation K, the stack S, the vertex attributes of
-/// Table 1 (`d` is the core's degree) and the two lists.
-pub(crate) struct Rs {
-    pub(crate) tri: Triangulation,
-    pub(crate) history: History,
+/// Table 1 (`d` is the core's degree) and the two lists. The fields are private to this
+/// module; the checks of [`spec`] read them as its child module.
+struct Rs {
+    tri: Triangulation,
+    history: History,
     /// p: processed (or removed).
-    pub(crate) processed: Vec<bool>,
+    processed: Vec<bool>,
     /// n: the vertex whose neighbour this vertex was last found to be.
-    pub(crate) nbr: Vec<u32>,
+    nbr: Vec<NeighbourOf>,
     /// c: critical cycles through `[u, v]` (exact for edges in `lte` at Alg. 4.2 l.32).
-    pub(crate) count: Vec<u32>,
+    count: Vec<u32>,
     /// o: when v became a neighbour of u.
-    pub(crate) o: Vec<u32>,
+    o: Vec<Stamp>,
     /// t: when `[u, v]` left `lue`.
-    pub(crate) t: Vec<u32>,
-    pub(crate) lists: Lists,
+    t: Vec<Stamp>,
+    lists: Lists,
     /// ts: the global time stamp, incremented by each contraction.
-    pub(crate) ts: u32,
-    pub(crate) link_tests: u64,
+    ts: Time,
+    link_tests: u64,
     counter: RetestCounter,
     variant: Variant,
-    /// The vertex being processed and its index in processing order.
-    pub(crate) current: u32,
-    pub(crate) processed_count: u64,
+    /// The vertex being processed (none before the first) and how many were processed.
+    current: Option<VertexId>,
+    processed_count: u64,
     /// Contractions made while processing the first processed vertex.
-    pub(crate) contractions_first_vertex: u64,
-    scratch: Vec<u32>,
-    scratch2: Vec<u32>,
+    contractions_first_vertex: u64,
+    scratch: Vec<VertexId>,
+    scratch2: Vec<VertexId>,
 }
 
 /// Runs RS on `tri`. See the module documentation.
@@ -223,25 +321,25 @@ pub fn reduce_variant(tri: Triangulation, options: &Options, variant: Variant) -
 }
 
 impl Rs {
-    pub(crate) fn new(tri: Triangulation, options: &Options, variant: Variant) -> Self {
+    fn new(tri: Triangulation, options: &Options, variant: Variant) -> Self {
         let n = tri.vertex_capacity();
         let counter = RetestCounter::new(&tri, options.count_retests);
         Rs {
             // Alg. 4.1: p = false, n = nil, c = 0, o = t = −1 (removed ids count as
             // processed so the queue skips them).
             processed: (0..n).map(|v| !tri.is_vertex(VertexId(v as u32))).collect(),
-            nbr: vec![NIL; n],
+            nbr: vec![NeighbourOf::NIL; n],
             count: vec![0; n],
-            o: vec![NIL; n],
-            t: vec![NIL; n],
+            o: vec![Stamp::UNSET; n],
+            t: vec![Stamp::UNSET; n],
             lists: Lists::new(n),
             tri,
             history: History::new(),
-            ts: 0,
+            ts: Time::START,
             link_tests: 0,
             counter,
             variant,
-            current: NIL,
+            current: None,
             processed_count: 0,
             contractions_first_vertex: 0,
             scratch: Vec::new(),
@@ -250,14 +348,15 @@ impl Rs {
     }
 
     #[inline]
-    fn degree(&self, v: u32) -> usize {
-        self.tri.degree(VertexId(v))
+    fn degree(&self, v: VertexId) -> usize {
+        self.tri.degree(v)
     }
 
     /// Alg. 4.2: the queue Q is the vertex ids in increasing order.
     fn run(&mut self) {
         for u in 0..self.tri.vertex_capacity() as u32 {
-            if self.processed[u as usize] {
+            let u = VertexId(u);
+            if self.processed[u.index()] {
                 continue;
             }
             self.process(u);
@@ -265,32 +364,32 @@ impl Rs {
     }
 
     /// Alg. 4.2 l.6–36: processes `u` until it is trapped.
-    fn process(&mut self, u: u32) {
+    fn process(&mut self, u: VertexId) {
         let before = self.history.len();
         self.begin(u);
         loop {
             // l.22–30
-            crate::spec::rs_at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
+            spec::at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
             while let Some(v) = self.lists.pop_front(LUE) {
-                crate::spec::rs_leaving_lue(self, v);
-                self.t[v as usize] = self.ts;
+                spec::leaving_lue(self, v);
+                self.t[v.index()] = Stamp::at(self.ts);
                 if self.degree(v) == 3 || (self.variant.degree3_path_up_to_4 && self.degree(v) == 4)
                 {
                     self.degree3(u, v);
                 } else {
                     self.test(u, v);
                 }
-                crate::spec::rs_at_line_22(self, 2);
+                spec::at_line_22(self, 2);
             }
             // l.31–33 (Prop. 11 holds here).
-            crate::spec::rs_at_line_32(self);
+            spec::at_line_32(self);
             if self.lists.is_empty(LTE) || self.variant.single_pass {
                 break;
             }
             self.process_edge_list(u);
             if self.lists.is_empty(LUE) {
                 let more = match self.lists.front(LTE) {
-                    Some(v) => self.degree(v) == 3 || self.count[v as usize] == 0,
+                    Some(v) => self.degree(v) == 3 || self.count[v.index()] == 0,
                     None => false,
                 };
                 if !more || self.variant.printed_loop_exit {
@@ -299,26 +398,26 @@ impl Rs {
             }
         }
         self.lists.clear(LTE);
-        self.processed[u as usize] = true;
+        self.processed[u.index()] = true;
         if self.processed_count == 0 {
             self.contractions_first_vertex = (self.history.len() - before) as u64;
         }
         self.processed_count += 1;
-        crate::spec::rs_vertex_trapped(self, u);
+        spec::vertex_trapped(self, u);
     }
 
     /// Alg. 4.2 l.8–19: makes `u` current and puts its unprocessed neighbours in `lue`
     /// (degree 3 first), stamping `o = ts`, `t = −1`, `c = 0` (the reset is erratum E3).
-    pub(crate) fn begin(&mut self, u: u32) {
-        self.current = u;
+    fn begin(&mut self, u: VertexId) {
+        self.current = Some(u);
         let mut link = std::mem::take(&mut self.scratch);
         link.clear();
-        link.extend(self.tri.link(VertexId(u)).map(|v| v.0));
+        link.extend(self.tri.link(u));
         for &v in &link {
-            let vi = v as usize;
-            self.nbr[vi] = u;
-            self.o[vi] = self.ts;
-            self.t[vi] = NIL;
+            let vi = v.index();
+            self.nbr[vi] = NeighbourOf::of(u);
+            self.o[vi] = Stamp::at(self.ts);
+            self.t[vi] = Stamp::UNSET;
             if !self.variant.printed_no_counter_reset {
                 self.count[vi] = 0;
             }
@@ -335,7 +434,7 @@ impl Rs {
 
     /// Alg. 4.6: contracts degree-3 edges at the front of `lte`, then the front edge if
     /// its counter is 0.
-    fn process_edge_list(&mut self, u: u32) {
+    fn process_edge_list(&mut self, u: VertexId) {
         while let Some(v) = self.lists.front(LTE) {
             if self.degree(v) != 3 {
                 break;
@@ -344,10 +443,10 @@ impl Rs {
             self.degree3(u, v);
         }
         if let Some(v) = self.lists.front(LTE) {
-            if self.count[v as usize] == 0 {
+            if self.count[v.index()] == 0 {
                 // l.12: c(v) = 0 must still mean "contractible" here, after the counter
                 // updates since l.32 (the paper states Prop. 11 at l.32 only).
-                crate::spec::rs_at_alg46_line_12(self, u, v);
+                spec::at_alg46_line_12(self, u, v);
                 self.lists.remove(v);
                 self.contract(u, v);
             }
@@ -355,44 +454,42 @@ impl Rs {
     }
 
     /// Alg. 4.3: `d(v) = 3`, so `[u, v]` is contractible unless K is T4 (Prop. 6).
-    fn degree3(&mut self, u: u32, v: u32) {
+    fn degree3(&mut self, u: VertexId, v: VertexId) {
         if self.degree(u) == 3 {
-            crate::spec::rs_degree3(self, u, v);
+            spec::degree3(self, u, v);
             return; // K is T4: nothing is contractible.
         }
-        crate::spec::rs_degree3(self, u, v);
+        spec::degree3(self, u, v);
         let [x, y] = self.contract(u, v);
-        crate::spec::rs_degree3_untested(self, x, y);
+        spec::degree3_untested(self, x, y);
         if self.variant.skip_degree3_decrement {
             return;
         }
-        let (tx, ty) = (self.t[x as usize], self.t[y as usize]);
         // The critical cycle lk(v) = (u, x, y) is gone (Prop. 7). c(x) counted it iff
         // [u, x] was tested with y already a neighbour (t(x) >= o(y)) or [u, y] was
-        // tested after [u, x] (then both counted it): see spec/ERRATA.md, E1.
-        let counted = |t_a: u32, o_b: u32, strict: bool| {
-            if strict {
-                t_a > o_b
-            } else {
-                t_a >= o_b
-            }
+        // tested after [u, x] (then both counted it): see spec/ERRATA.md, E1. (o(x) and
+        // o(y) are set: x and y are neighbours of u.)
+        let counted = |t_a: Time, o_b: Stamp, strict: bool| {
+            o_b.get()
+                .is_some_and(|o_b| if strict { t_a > o_b } else { t_a >= o_b })
         };
         let strict = self.variant.printed_strict_stamp;
-        if tx != NIL && ty != NIL {
-            self.decrement(x);
-            self.decrement(y);
-        } else if tx != NIL && counted(tx, self.o[y as usize], strict) {
-            self.decrement(x);
-        } else if ty != NIL && counted(ty, self.o[x as usize], false) {
+        match (self.t[x.index()].get(), self.t[y.index()].get()) {
+            (Some(_), Some(_)) => {
+                self.decrement(x);
+                self.decrement(y);
+            }
+            (Some(tx), None) if counted(tx, self.o[y.index()], strict) => self.decrement(x),
             // l.19 is printed with `>=` already; only l.13 is misprinted (E1).
-            self.decrement(y);
+            (None, Some(ty)) if counted(ty, self.o[x.index()], false) => self.decrement(y),
+            _ => {}
         }
     }
 
     /// c(w) ← c(w) − 1 for `[u, w]` in `lte`; a counter reaching 0 moves to the front.
-    fn decrement(&mut self, w: u32) {
-        crate::spec::rs_decrement(self, w);
-        let c = &mut self.count[w as usize];
+    fn decrement(&mut self, w: VertexId) {
+        spec::decrement(self, w);
+        let c = &mut self.count[w.index()];
         *c = c.saturating_sub(1);
         if *c == 0 {
             self.lists.remove(w);
@@ -401,8 +498,8 @@ impl Rs {
     }
 
     /// c(w) ← c(w) + 1 for `[u, w]` in `lte`; a counter leaving 0 moves to the rear.
-    fn increment(&mut self, w: u32) {
-        let c = &mut self.count[w as usize];
+    fn increment(&mut self, w: VertexId) {
+        let c = &mut self.count[w.index()];
         *c += 1;
         if *c == 1 && self.lists.contains(LTE, w) && !self.variant.no_move_on_increment {
             self.lists.remove(w);
@@ -411,9 +508,9 @@ impl Rs {
     }
 
     /// Fills `scratch` with lk(v) and returns the position of `u` in it. O(d_v).
-    fn link_around(&mut self, v: u32, u: u32) -> usize {
+    fn link_around(&mut self, v: VertexId, u: VertexId) -> usize {
         self.scratch.clear();
-        self.scratch.extend(self.tri.link(VertexId(v)).map(|w| w.0));
+        self.scratch.extend(self.tri.link(v));
         self.scratch
             .iter()
             .position(|&w| w == u)
@@ -422,14 +519,14 @@ impl Rs {
 
     /// A corner opposite edge `[u, v]`, found from `v`'s side in O(d_v) (`u`'s degree can
     /// be in the millions while it is processed).
-    fn edge_corner(&self, u: u32, v: u32) -> crate::core::Corner {
+    fn edge_corner(&self, u: VertexId, v: VertexId) -> Corner {
         let c = self
             .tri
-            .star(VertexId(v))
-            .find(|s| s.neighbour.0 == u)
+            .star(v)
+            .find(|s| s.neighbour == u)
             .expect("[u, v] is an edge")
             .corner;
-        if self.tri.vertex(c.next()).0 == u {
+        if self.tri.vertex(c.next()) == u {
             c.prev()
         } else {
             c.next()
@@ -437,7 +534,7 @@ impl Rs {
     }
 
     /// Alg. 4.4: the link test of `[u, v]` with `d(v) > 3`, counting critical cycles.
-    fn test(&mut self, u: u32, v: u32) {
+    fn test(&mut self, u: VertexId, v: VertexId) {
         self.link_tests += 1;
         if self.counter.is_enabled() {
             let c = self.edge_corner(u, v);
@@ -445,7 +542,8 @@ impl Rs {
         }
         let i = self.link_around(v, u);
         let d = self.scratch.len();
-        let ov = self.o[v as usize];
+        // `[u, v]` comes from `lue`, so `o(v)` is set (Prop. 8(4)).
+        let ov = self.o[v.index()].get().expect("o(v) is set");
         let mut cv = 0u32;
         // lk(v) minus u and the link {x, y} of [u, v] (its cyclic neighbours of u) is Π_uv.
         let window = if self.variant.count_link_vertices {
@@ -455,16 +553,15 @@ impl Rs {
         };
         for k in window {
             let z = self.scratch[(i + k) % d];
-            if self.nbr[z as usize] == u {
+            if self.nbr[z.index()].is(u) {
                 cv += 1; // (u, v, z) is a critical cycle
-                let tz = self.t[z as usize];
-                if tz != NIL && tz < ov {
+                if self.t[z.index()].is_before(ov) {
                     self.increment(z);
                 }
             }
         }
-        self.count[v as usize] = cv;
-        crate::spec::rs_after_test(self, u, v, cv);
+        self.count[v.index()] = cv;
+        spec::after_test(self, u, v, cv);
         if cv == 0 {
             // `scratch` still holds lk(v) with u at position i.
             self.contract_with_link(u, v, Some(i));
@@ -475,12 +572,17 @@ impl Rs {
 
     /// Alg. 4.5: contracts `[u, v]` (identifying v with u) and updates the attributes of
     /// the new neighbours, `lue`, and the counters of edges in `lte`. Returns `[x, y]`.
-    fn contract(&mut self, u: u32, v: u32) -> [u32; 2] {
+    fn contract(&mut self, u: VertexId, v: VertexId) -> [VertexId; 2] {
         self.contract_with_link(u, v, None)
     }
 
     /// [`Self::contract`], reusing `scratch = lk(v)` with `u` at `link_pos` when given.
-    fn contract_with_link(&mut self, u: u32, v: u32, link_pos: Option<usize>) -> [u32; 2] {
+    fn contract_with_link(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        link_pos: Option<usize>,
+    ) -> [VertexId; 2] {
         // l.4–11 on Π_uv, collected before the collapse.
         let i = match link_pos {
             Some(i) => i,
@@ -490,39 +592,37 @@ impl Rs {
         let mut pi = std::mem::take(&mut self.scratch2);
         pi.clear();
         pi.extend((2..d - 1).map(|k| self.scratch[(i + k) % d]));
-        self.ts += 1;
+        self.ts = self.ts.next();
         for &z in &pi {
-            crate::spec::rs_new_neighbour(self, z);
-            let zi = z as usize;
-            self.nbr[zi] = u;
+            spec::new_neighbour(self, z);
+            let zi = z.index();
+            self.nbr[zi] = NeighbourOf::of(u);
             self.count[zi] = 0;
-            self.o[zi] = self.ts;
-            self.t[zi] = NIL;
+            self.o[zi] = Stamp::at(self.ts);
+            self.t[zi] = Stamp::UNSET;
         }
-        crate::spec::rs_before_contraction(self, u, v);
-        self.processed[v as usize] = true;
+        spec::before_contraction(self, u, v);
+        self.processed[v.index()] = true;
         if self.variant.mark_link_vertex_processed {
             // `scratch` is still lk(v) with u at i: its cyclic successor is a link vertex.
             let x = self.scratch[(i + 1) % d];
-            self.processed[x as usize] = true;
+            self.processed[x.index()] = true;
         }
-        let before = crate::spec::rs_prop7_before(self);
-        let rec = self
-            .tri
-            .contract_tested(VertexId(u), VertexId(v), &mut self.history);
+        let before = spec::prop7_before(self);
+        let rec = self.tri.contract_tested(u, v, &mut self.history);
         self.counter.contracted(&rec);
-        crate::spec::rs_after_contraction(self, &rec, &pi);
-        let [x, y] = rec.link.map(|w| w.0);
+        spec::after_contraction(self, &rec, &pi);
+        let [x, y] = rec.link;
         // l.19–24: keep degree-3 endpoints at the front of lue (Prop. 8(2)).
         for w in [x, y] {
-            if self.degree(w) == 3 && !self.processed[w as usize] && self.t[w as usize] == NIL {
+            if self.degree(w) == 3 && !self.processed[w.index()] && !self.t[w.index()].is_set() {
                 self.lists.remove(w);
                 self.lists.push_front(LUE, w);
             }
         }
         // l.25–43
         for &z in &pi {
-            if !self.processed[z as usize] {
+            if !self.processed[z.index()] {
                 if self.degree(z) == 3 {
                     self.lists.push_front(LUE, z);
                 } else {
@@ -534,14 +634,14 @@ impl Rs {
                 let dz = self.scratch.len();
                 for k in 2..dz - 1 {
                     let w = self.scratch[(j + k) % dz];
-                    if self.nbr[w as usize] == u && self.t[w as usize] != NIL {
+                    if self.nbr[w.index()].is(u) && self.t[w.index()].is_set() {
                         self.increment(w);
                     }
                 }
             }
         }
         self.scratch2 = pi;
-        crate::spec::rs_prop7(self, before, &rec);
+        spec::prop7(self, before, &rec);
         [x, y]
     }
 }
