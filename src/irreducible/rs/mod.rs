@@ -526,11 +526,7 @@ impl Rs {
             .find(|s| s.neighbour == u)
             .expect("[u, v] is an edge")
             .corner;
-        if self.tri.vertex(c.next()) == u {
-            c.prev()
-        } else {
-            c.next()
-        }
+        self.tri.corner_facing(c, u)
     }
 
     /// Alg. 4.4: the link test of `[u, v]` with `d(v) > 3`, counting critical cycles.
