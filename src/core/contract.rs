@@ -268,10 +268,23 @@ impl Triangulation {
         v: VertexId,
         history: &mut History,
     ) -> Result<ContractionRecord, ContractError> {
-        match self.find_edge(u, v) {
-            Some(c) => self.contract_at(self.corner_facing(c, v), history),
-            None => Err(ContractError::NotAnEdge { u, v }),
+        if self.find_edge(u, v).is_none() {
+            return Err(ContractError::NotAnEdge { u, v });
         }
+        self.contract_if_contractible(u, v, history)
+    }
+
+    /// The link test in the history's scratch, then [`Self::contract_tested`].
+    fn contract_if_contractible(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        history: &mut History,
+    ) -> Result<ContractionRecord, ContractError> {
+        if !history.tester(self).test(self, u, v) {
+            return Err(ContractError::NotContractible { u, v });
+        }
+        Ok(self.contract_tested(u, v, history))
     }
 
     /// Contracts the edge opposite corner `c` if it passes the link condition, keeping
@@ -289,10 +302,7 @@ impl Triangulation {
             return Err(ContractError::DeadCorner(c));
         }
         let [a, b] = self.edge_endpoints(c);
-        if !history.tester(self).test(self, a, b) {
-            return Err(ContractError::NotContractible { u: a, v: b });
-        }
-        Ok(self.contract_tested(a, b, history))
+        self.contract_if_contractible(a, b, history)
     }
 
     /// Contracts `[u, v]` keeping `u`, for callers that have already established the
