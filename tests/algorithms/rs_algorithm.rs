@@ -1,7 +1,7 @@
 //! The RS algorithm against independent checks: naive irreducibility, topology, exact
 //! expansion, ℓ ≤ E and ε = 0, Sec. 4.6 for genus 0.
 
-mod common;
+use crate::common;
 
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::irreducible::rs::{reduce_variant, Variant};
