@@ -13,9 +13,11 @@ pub mod irreducible;
 pub mod mesh;
 pub mod rng;
 pub mod spec;
+pub mod topology;
 
 pub use crate::core::{
     BuildError, Component, ContractError, ContractionRecord, Corner, FaceId, FlipError, History,
     LinkTester, SplitError, Surfaces, Triangulation, ValidationError, VertexId,
 };
 pub use mesh::{Mesh, QuadMesh, TriMesh};
+pub use topology::SurfaceType;
