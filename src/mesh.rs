@@ -107,7 +107,8 @@ impl TriMesh {
     /// increasing original index order, with their original `positions`.
     ///
     /// Each part is a triangulation with its map to the mesh's vertex indices
-    /// (`origin[v]` for vertex id `v`), as in a [`Component`]: `(&c.tri, &c.vertex_origin)`.
+    /// (`origin[v]` for vertex id `v`), as in a [`Component`]:
+    /// `(&c.tri, &c.vertex_origin[..])`.
     /// The triangulation may have been reduced since (contraction keeps ids), which is how
     /// the command line writes the irreducible components of a mesh with their original
     /// coordinates. Faces come part by part, each in increasing face id order.
