@@ -113,18 +113,6 @@ fn fails(faces: &[[u32; 3]]) -> bool {
     }
 }
 
-/// Renumbers the used vertices `0..k` keeping their relative order (RS processes
-/// vertices in id order).
-fn compact(faces: &[[u32; 3]]) -> Vec<[u32; 3]> {
-    let mut used: Vec<u32> = faces.iter().flatten().copied().collect();
-    used.sort_unstable();
-    used.dedup();
-    faces
-        .iter()
-        .map(|f| f.map(|x| used.partition_point(|&u| u < x) as u32))
-        .collect()
-}
-
 /// Greedily contracts edges (first that keeps the failure, repeat) until none does.
 fn shrink(mut faces: Vec<[u32; 3]>) -> Vec<[u32; 3]> {
     'outer: loop {
@@ -137,7 +125,8 @@ fn shrink(mut faces: Vec<[u32; 3]>) -> Vec<[u32; 3]> {
             for (x, y) in [(a, b), (b, a)] {
                 let mut smaller = t.clone();
                 if smaller.contract(x, y, &mut History::new()).is_ok() {
-                    let f = compact(&smaller.face_list());
+                    // Renumbered 0..V keeping the relative vertex order, which RS follows.
+                    let f = smaller.to_mesh().faces;
                     if fails(&f) {
                         faces = f;
                         continue 'outer;

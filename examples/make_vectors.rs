@@ -3,7 +3,7 @@
 //! `cargo run --example make_vectors [OUT_DIR]` (default `spec/vectors` of this checkout).
 //! Reads the published small surfaces from `../shared/irreducible/*.txt`, generates the
 //! rest, runs RS, Schipper and the brute force (seed 0) on each and writes one JSON-lines
-//! file per group. `tests/vectors.rs` checks that the library still reproduces them.
+//! file per group. `tests/algorithms/vectors.rs` checks that the library still reproduces them.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};

@@ -7,8 +7,8 @@
 //! - under Kani (`#[cfg(kani)]` entry points at the bottom of this file), where the
 //!   surface is chosen by `kani::any()` among the 57 embedded surfaces of
 //!   [`crate::surfaces::SURFACES`] and the indices are symbolic;
-//! - under `cargo test --test proofs`, whose exhaustive twins call the same function for
-//!   every value of the bounded input (see `tests/proofs.rs`).
+//! - under `cargo test --test core proofs::`, whose exhaustive twins call the same
+//!   function for every value of the bounded input (see `tests/core/proofs.rs`).
 //!
 //! Every statement is checked against references that share no logic with the code under
 //! test beyond the vertex-link walk: the naive link condition (by definition,

@@ -3,7 +3,7 @@
 //! of that file in order, embedded for the Kani harnesses of `proofs/harnesses.rs`.
 //!
 //! Regenerate with
-//! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test proofs surfaces_table_matches_shared_file`;
+//! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_shared_file`;
 //! without the variable that test fails if this file and the shared list differ.
 #![allow(dead_code)]
 

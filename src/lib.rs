@@ -13,6 +13,7 @@ pub mod irreducible;
 pub mod mesh;
 pub mod rng;
 pub mod spec;
+pub mod topology;
 
 pub use crate::core::{
     BuildError, Component, ContractError, ContractionRecord, Corner, Edge, EdgeId, EdgeNumbering,
@@ -20,3 +21,4 @@ pub use crate::core::{
     Triangulation, UndoError, ValidationError, VertexId,
 };
 pub use mesh::{Mesh, QuadMesh, TriMesh};
+pub use topology::SurfaceType;

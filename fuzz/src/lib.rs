@@ -1,5 +1,5 @@
 //! The fuzz harness of `contractible`: input types and checks shared by the cargo-fuzz
-//! targets in `fuzz_targets/` and by the main crate's `tests/fuzz_regressions.rs` (which
+//! targets in `fuzz_targets/` and by the main crate's `tests/core/fuzz_regressions.rs` (which
 //! includes this file with `#[path]`), so a crash input replays through exactly the same
 //! code in a plain `cargo test`.
 //!

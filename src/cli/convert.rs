@@ -25,7 +25,13 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
     } else {
         Some(meshio::build(&mesh, &a.input, ui)?.0.components.len())
     };
-    let (out, dropped) = meshio::compact(&mesh);
+    // The readers reject out-of-range indices and give one position per vertex.
+    let (out, dropped) = mesh.compacted().ok_or_else(|| {
+        CliError::Failure(format!(
+            "{}: inconsistent mesh after reading",
+            a.input.display()
+        ))
+    })?;
     if a.no_validate && dropped > 0 {
         ui.warn(&format!(
             "{}: {dropped} unused vertices dropped",

@@ -8,7 +8,6 @@ use contractible::{Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::DemoArgs;
-use super::gen::tri_to_mesh;
 use super::info::Report;
 use super::progress::spinner;
 use super::reduce::{reduce_all, ReduceStats};
@@ -36,12 +35,13 @@ struct DemoReport {
 fn inputs(seed: u64, ui: Ui) -> Vec<(String, TriMesh)> {
     let pb = spinner(ui, "generating the demo surfaces");
     let random = |surface, min_faces| {
-        tri_to_mesh(&gen::random(&RandomParams {
+        gen::random(&RandomParams {
             surface,
             min_faces,
             flip_percent: 30,
             seed,
-        }))
+        })
+        .to_mesh()
     };
     let v = vec![
         (

@@ -4,25 +4,12 @@ use std::path::Path;
 
 use contractible::core::MAX_FACES;
 use contractible::gen::{self, BrickParams, RandomParams, SurfaceKind};
-use contractible::{Surfaces, TriMesh, Triangulation};
+use contractible::{Surfaces, TriMesh};
 
 use super::args::{BrickArgs, GenArgs, GenKind, RandomArgs, SubdivideArgs};
 use super::info::Report;
 use super::progress::spinner;
 use super::{meshio, print_json, CliError, Ui};
-
-/// The faces of `t` with vertex ids compacted to `0..V` (in id order), no positions.
-pub fn tri_to_mesh(t: &Triangulation) -> TriMesh {
-    let mut map = vec![u32::MAX; t.vertex_capacity()];
-    for (i, v) in t.vertices().enumerate() {
-        map[v.index()] = i as u32;
-    }
-    let faces = t
-        .faces()
-        .map(|f| t.face_vertices(f).map(|v| map[v.index()]))
-        .collect();
-    TriMesh::combinatorial(t.vertex_count(), faces)
-}
 
 fn too_large(what: &str, faces: u64) -> CliError {
     CliError::Input(format!(
@@ -62,7 +49,7 @@ fn random_mesh(a: &RandomArgs, ui: Ui) -> Result<TriMesh, CliError> {
         seed: a.seed,
     });
     pb.finish_and_clear();
-    Ok(tri_to_mesh(&t))
+    Ok(t.to_mesh())
 }
 
 /// Parses `B7`, `c3`, `D0` into the paper's group and index.
@@ -130,7 +117,13 @@ fn brick_mesh(a: &BrickArgs, ui: Ui) -> Result<TriMesh, CliError> {
 fn subdivide_mesh(a: &SubdivideArgs, ui: Ui) -> Result<TriMesh, CliError> {
     let (mesh, _) = meshio::read(&a.input, ui)?;
     meshio::build(&mesh, &a.input, ui)?;
-    let (mesh, _) = meshio::compact(&mesh);
+    // `build` accepted every face index, and the readers give one position per vertex.
+    let (mesh, _) = mesh.compacted().ok_or_else(|| {
+        CliError::Failure(format!(
+            "{}: inconsistent mesh after validation",
+            a.input.display()
+        ))
+    })?;
     let faces = (mesh.faces.len() as u128) << (2 * a.levels.min(32));
     if a.levels > 32 || faces > MAX_FACES as u128 {
         return Err(CliError::Input(format!(
@@ -190,7 +183,7 @@ pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
             report
                 .component_list
                 .first()
-                .map(|c| c.surface_name())
+                .map(|c| c.surface.name())
                 .unwrap_or_default()
         );
     }

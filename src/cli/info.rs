@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use contractible::{Surfaces, Triangulation};
+use contractible::{SurfaceType, Surfaces, Triangulation};
 use serde::Serialize;
 
 use super::args::InfoArgs;
@@ -14,12 +14,10 @@ pub struct ComponentInfo {
     pub vertices: usize,
     pub edges: usize,
     pub faces: usize,
-    pub euler_characteristic: i64,
-    pub orientable: bool,
-    /// Orientable genus; `null` for a non-orientable surface.
-    pub genus: Option<i64>,
-    /// `2 - χ`: twice the genus, or the number of cross-caps.
-    pub euler_genus: i64,
+    /// Printed as `euler_characteristic`, `orientable`, `genus` (orientable genus, `null`
+    /// for a non-orientable surface) and `euler_genus` (`2 - χ`).
+    #[serde(flatten)]
+    pub surface: SurfaceType,
     pub degree_min: usize,
     pub degree_max: usize,
     pub degree_mean: f64,
@@ -32,38 +30,15 @@ impl ComponentInfo {
         let hist = t.degree_histogram();
         let degree_min = hist.iter().position(|&n| n > 0).unwrap_or(0);
         let degree_max = hist.len().saturating_sub(1);
-        let orientable = t.is_orientable();
-        let euler_genus = t.euler_genus();
         ComponentInfo {
             vertices: t.vertex_count(),
             edges: t.edge_count(),
             faces: t.face_count(),
-            euler_characteristic: t.euler_characteristic(),
-            orientable,
-            genus: orientable.then_some(euler_genus / 2),
-            euler_genus,
+            surface: SurfaceType::of(t),
             degree_min,
             degree_max,
             degree_mean: 2.0 * t.edge_count() as f64 / t.vertex_count().max(1) as f64,
             degree_histogram: hist,
-        }
-    }
-
-    /// "sphere", "genus 2", "non-orientable genus 1 (projective plane)"...
-    pub fn surface_name(&self) -> String {
-        match self.genus {
-            Some(0) => "sphere (genus 0)".into(),
-            Some(1) => "torus (genus 1)".into(),
-            Some(g) => format!("orientable genus {g}"),
-            None => {
-                let h = self.euler_genus;
-                let what = match h {
-                    1 => " (projective plane)",
-                    2 => " (Klein bottle)",
-                    _ => "",
-                };
-                format!("non-orientable genus {h}{what}")
-            }
         }
     }
 }
@@ -99,8 +74,8 @@ impl Report {
             edges: e,
             faces: f,
             components: list.len(),
-            euler_characteristic: list.iter().map(|c| c.euler_characteristic).sum(),
-            orientable: list.iter().all(|c| c.orientable),
+            euler_characteristic: list.iter().map(|c| c.surface.euler_characteristic()).sum(),
+            orientable: list.iter().all(|c| c.surface.is_orientable()),
             dropped_vertices: s.dropped_vertices.len(),
             component_list: list,
             seconds_read,
@@ -134,8 +109,8 @@ impl Report {
                 c.vertices,
                 c.edges,
                 c.faces,
-                c.euler_characteristic,
-                c.surface_name(),
+                c.surface.euler_characteristic(),
+                c.surface,
                 c.degree_min,
                 c.degree_max,
                 c.degree_mean
@@ -144,7 +119,7 @@ impl Report {
         if self.components > max_rows {
             let mut kinds: Vec<(String, usize)> = Vec::new();
             for c in &self.component_list[max_rows..] {
-                let n = c.surface_name();
+                let n = c.surface.name();
                 match kinds.iter_mut().find(|(k, _)| *k == n) {
                     Some((_, count)) => *count += 1,
                     None => kinds.push((n, 1)),

@@ -91,38 +91,3 @@ pub fn write(out: &Path, mesh: &TriMesh, ui: Ui) -> Result<f64, CliError> {
     }
     Ok(t.elapsed().as_secs_f64())
 }
-
-/// The mesh restricted to the vertices its faces use, renumbered compactly in index
-/// order (positions kept), and the number of vertices dropped.
-pub fn compact(mesh: &TriMesh) -> (TriMesh, usize) {
-    let mut map = vec![u32::MAX; mesh.vertex_count];
-    for f in &mesh.faces {
-        for &v in f {
-            if let Some(m) = map.get_mut(v as usize) {
-                *m = 0;
-            }
-        }
-    }
-    let mut next = 0u32;
-    let mut positions = Vec::new();
-    for (v, m) in map.iter_mut().enumerate() {
-        if *m == 0 {
-            *m = next;
-            next += 1;
-            if let Some(p) = &mesh.positions {
-                positions.push(p[v]);
-            }
-        }
-    }
-    let faces = mesh
-        .faces
-        .iter()
-        .map(|f| f.map(|v| map[v as usize]))
-        .collect();
-    let out = TriMesh {
-        vertex_count: next as usize,
-        positions: mesh.positions.as_ref().map(|_| positions),
-        faces,
-    };
-    (out, mesh.vertex_count - next as usize)
-}

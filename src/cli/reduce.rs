@@ -3,7 +3,7 @@
 use std::path::Path;
 
 use contractible::irreducible::{self, Algorithm, Options, Reduction};
-use contractible::{Surfaces, TriMesh, Triangulation};
+use contractible::{SurfaceType, Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::ReduceArgs;
@@ -38,18 +38,18 @@ pub struct ReduceStats {
 }
 
 impl ReduceStats {
-    fn of(r: &Reduction, orientable: bool, irreducible: Option<bool>) -> Self {
+    /// The counters of `r`, the reduction of a surface of type `input`.
+    fn of(r: &Reduction, input: SurfaceType, irreducible: Option<bool>) -> Self {
         let s = &r.stats;
-        let chi = s.vertices_in as i64 - s.edges_in as i64 + s.faces_in as i64;
         ReduceStats {
             algo: r.algorithm.name(),
             vertices_in: s.vertices_in,
             edges_in: s.edges_in,
             faces_in: s.faces_in,
-            euler_characteristic: chi,
-            orientable,
-            genus: orientable.then_some((2 - chi) / 2),
-            euler_genus: 2 - chi,
+            euler_characteristic: input.euler_characteristic(),
+            orientable: input.is_orientable(),
+            genus: input.orientable_genus(),
+            euler_genus: input.euler_genus(),
             vertices_out: s.vertices_out,
             edges_out: r.tri.edge_count(),
             faces_out: s.faces_out,
@@ -124,37 +124,15 @@ pub fn reduce_all(
     let mut reductions = Vec::with_capacity(n);
     let mut stats = Vec::with_capacity(n);
     for c in &surfaces.components {
-        let orientable = c.tri.is_orientable();
+        let input = SurfaceType::of(&c.tri);
         let r = irreducible::reduce(c.tri.clone(), algo, &options);
         let irr = verify.then(|| r.tri.is_irreducible_naive());
-        stats.push(ReduceStats::of(&r, orientable, irr));
+        stats.push(ReduceStats::of(&r, input, irr));
         reductions.push(r);
         pb.inc(1);
     }
     pb.finish_and_clear();
     (reductions, stats)
-}
-
-/// The union of the reduced components as a mesh over the original vertices (original
-/// coordinates), restricted to the surviving vertices and renumbered compactly in
-/// original index order. `parts` pairs each reduced component with its `vertex_origin`.
-pub fn output_mesh(
-    vertex_count: usize,
-    positions: Option<Vec<[f64; 3]>>,
-    parts: &[(Triangulation, Vec<u32>)],
-) -> TriMesh {
-    let mut faces = Vec::new();
-    for (t, origin) in parts {
-        for f in t.faces() {
-            faces.push(t.face_vertices(f).map(|v| origin[v.index()]));
-        }
-    }
-    let full = TriMesh {
-        vertex_count,
-        positions,
-        faces,
-    };
-    meshio::compact(&full).0
 }
 
 fn print_table(stats: &[ReduceStats], totals: &ReduceStats, max_rows: usize) {
@@ -219,17 +197,24 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
     let mut parts = Vec::with_capacity(n);
     let mut stats = Vec::with_capacity(n);
     for c in surfaces.components {
-        let orientable = c.tri.is_orientable();
+        let input = SurfaceType::of(&c.tri);
         let r = irreducible::reduce(c.tri, algo, &options);
         let irr = (!a.no_verify).then(|| r.tri.is_irreducible_naive());
-        stats.push(ReduceStats::of(&r, orientable, irr));
+        stats.push(ReduceStats::of(&r, input, irr));
         parts.push((r.tri, c.vertex_origin));
         pb.inc(1);
     }
     pb.finish_and_clear();
     let totals = ReduceStats::total(algo, &stats);
     if let Some(out) = &a.output {
-        let m = output_mesh(vertex_count, positions, &parts);
+        // The survivors keep their original coordinates, renumbered in original order.
+        let parts = parts.iter().map(|(t, origin)| (t, &origin[..]));
+        let m = TriMesh::reassemble(vertex_count, positions, parts).ok_or_else(|| {
+            CliError::Failure(format!(
+                "{}: inconsistent mesh after validation",
+                a.input.display()
+            ))
+        })?;
         meshio::write(out, &m, ui)?;
     }
     let report = ReduceReport {

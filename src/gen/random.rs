@@ -4,7 +4,8 @@ use crate::core::{Triangulation, VertexId};
 use crate::rng::Rng;
 
 /// Which closed surface to triangulate.
-#[derive(Copy, Clone, Debug, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
 pub enum SurfaceKind {
     /// The orientable surface of genus `g` (sphere for 0, torus for 1, ...).
     Orientable(u32),

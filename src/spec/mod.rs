@@ -33,7 +33,7 @@
 //! | S14 | Sec. 4.3 | `degree3_untested` | Alg. 4.3, after the contraction |
 //!
 //! S7 (ε = 0) and S12 (genus 0: one processed vertex does every contraction) are test
-//! assertions over whole runs (`tests/rs_algorithm.rs`); [`oracle`] holds the
+//! assertions over whole runs (`tests/algorithms/rs_algorithm.rs`); [`oracle`] holds the
 //! independent definitions the checks and the tests compare against.
 
 /// Degree (or list length) up to which a local check runs in full.

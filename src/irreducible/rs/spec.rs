@@ -436,7 +436,7 @@ pub(super) fn degree3_untested(rs: &Rs, x: VertexId, y: VertexId) {
 
 /// Each check fails on a state that violates its statement: a consistent RS state (vertex
 /// 0 of a stellar-subdivided octahedron, right after Alg. 4.2 l.8–19) with one attribute
-/// corrupted per test. Together with the algorithm mutations of `tests/rs_variants.rs`
+/// corrupted per test. Together with the algorithm mutations of `tests/algorithms/rs_variants.rs`
 /// this shows that no check is vacuous. With the checks off ([`ENABLED`] false) the tests
 /// still build and run the uncorrupted paths, and skip the expected failures.
 #[cfg(test)]

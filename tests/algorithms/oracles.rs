@@ -23,7 +23,7 @@
 //!   and on random surfaces of every kind (Petersen's theorem: a bridgeless cubic graph
 //!   has a perfect matching).
 
-mod common;
+use crate::common;
 
 use std::collections::{HashMap, HashSet};
 

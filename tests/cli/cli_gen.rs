@@ -1,6 +1,6 @@
 //! `gen` → `info` round trips for every generator kind, and `convert` round trips.
 
-mod cli_common;
+use crate::cli_common;
 
 use std::ffi::OsStr;
 

@@ -7,7 +7,7 @@
 //! Case counts are kept moderate (32 per proptest property) so the file stays well under
 //! a minute in debug builds.
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeSet;
 

@@ -1,7 +1,7 @@
 //! The core's local operations against independent checks: the naive link condition,
 //! from-scratch validation, and the published small surfaces of `../shared/irreducible`.
 
-mod common;
+use crate::common;
 
 use contractible::gen::{random, seed_surface, RandomParams, SurfaceKind};
 use contractible::rng::Rng;

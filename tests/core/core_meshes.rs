@@ -2,7 +2,7 @@
 //! component and orientability; both link-condition implementations agree on every edge;
 //! every invalid mesh is rejected with the error kind its manifest note names.
 
-mod common;
+use crate::common;
 
 use contractible::{BuildError, LinkTester, Surfaces};
 

@@ -2,8 +2,8 @@
 //! binary, must report exactly the manifest's counts, components, genera, χ and
 //! orientability.
 
-mod cli_common;
-mod common;
+use crate::cli_common;
+use crate::common;
 
 use cli_common::{int, meshes, run, run_json, run_ok};
 use common::{manifest, ManifestRow};

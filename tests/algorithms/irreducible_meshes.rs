@@ -6,7 +6,7 @@
 //! The largest meshes make this slow in debug builds; `cargo test --release --test
 //! irreducible_meshes` runs it in seconds.
 
-mod common;
+use crate::common;
 
 use common::{algorithms, check};
 use contractible::irreducible::reduce;

@@ -15,12 +15,8 @@
 //! Each twin prints how many cases it covered and asserts a lower bound on the number of
 //! non-vacuous ones, so it cannot silently cover nothing.
 
-#[path = "../proofs/harnesses.rs"]
-mod harnesses;
-#[path = "../proofs/surfaces.rs"]
-mod surfaces;
-
-mod common;
+use crate::common;
+use crate::{harnesses, surfaces};
 
 use std::collections::{BTreeSet, HashMap};
 
@@ -44,7 +40,7 @@ fn render_surfaces_table() -> String {
          //! of that file in order, embedded for the Kani harnesses of `proofs/harnesses.rs`.\n\
          //!\n\
          //! Regenerate with\n\
-         //! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test proofs surfaces_table_matches_shared_file`;\n\
+         //! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_shared_file`;\n\
          //! without the variable that test fails if this file and the shared list differ.\n\
          #![allow(dead_code)]\n\
          \n\
@@ -101,7 +97,7 @@ fn surfaces_table_matches_shared_file() {
     assert!(
         have == want,
         "proofs/surfaces.rs differs from {SURFACES_FILE}: regenerate it \
-         (CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test proofs surfaces_table_matches_shared_file)"
+         (CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_shared_file)"
     );
     // And the compiled table is what the file says.
     let list = common::read_surface_list(SURFACES_FILE);

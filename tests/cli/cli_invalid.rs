@@ -1,8 +1,8 @@
 //! Invalid and malformed inputs: exit code 2, one clean located message on stderr; the
 //! library's error kind for each shared invalid mesh matches the manifest's notes.
 
-mod cli_common;
-mod common;
+use crate::cli_common;
+use crate::common;
 
 use std::ffi::OsStr;
 

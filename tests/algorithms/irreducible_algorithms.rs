@@ -9,7 +9,7 @@
 //! `CONTRACTIBLE_TEST_ALGORITHMS` (comma-separated `rs`, `schipper`, `brute`) to
 //! restrict the run. The checks themselves are `common::check`.
 
-mod common;
+use crate::common;
 
 use common::{algorithms, check, options};
 use contractible::gen::{random, RandomParams, SurfaceKind};

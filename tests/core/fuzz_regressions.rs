@@ -10,7 +10,7 @@
 //! - a crash found by a campaign gets its own test here, with the input inline.
 
 #[allow(dead_code)]
-#[path = "../fuzz/src/lib.rs"]
+#[path = "../../fuzz/src/lib.rs"]
 mod harness;
 
 use std::path::PathBuf;

@@ -2,7 +2,7 @@
 //! coordinates, irreducible per component by the naive test, same χ per component).
 //! Every algorithm (`rs`, `schipper`, `brute`) is exercised.
 
-mod cli_common;
+use crate::cli_common;
 
 use std::ffi::OsStr;
 use std::path::Path;

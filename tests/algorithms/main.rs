@@ -1,0 +1,13 @@
+//! Integration tests of the irreducible-triangulation algorithms: outputs, the RS
+//! specification and its variants, independent oracles and the conformance vectors. One
+//! test target per area, so that the test binaries are linked once, not once per file.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod irreducible_algorithms;
+mod irreducible_meshes;
+mod oracles;
+mod rs_algorithm;
+mod rs_variants;
+mod vectors;

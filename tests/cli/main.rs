@@ -1,0 +1,11 @@
+//! Integration tests that run the `contractible` binary (needs the `cli` feature). One
+//! test target per area, so that the test binaries are linked once, not once per file.
+
+mod cli_common;
+#[path = "../common/mod.rs"]
+mod common;
+
+mod cli_gen;
+mod cli_info;
+mod cli_invalid;
+mod cli_reduce;
