@@ -35,7 +35,10 @@ pub enum ContractError {
 }
 
 /// What one contraction changed, enough for [`History::undo`] to restore it exactly.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+///
+/// `==` compares what the contraction did, not the state stamps it carries for the undo
+/// guard (two runs of a deterministic algorithm give equal records).
+#[derive(Clone, Copy, Debug)]
 pub struct ContractionRecord {
     /// The surviving vertex.
     pub u: VertexId,
@@ -59,6 +62,21 @@ pub struct ContractionRecord {
     state_before: StateStamp,
     state_after: StateStamp,
 }
+
+impl PartialEq for ContractionRecord {
+    fn eq(&self, o: &Self) -> bool {
+        self.u == o.u
+            && self.v == o.v
+            && self.link == o.link
+            && self.faces == o.faces
+            && self.degree_v == o.degree_v
+            && self.saved_vertex == o.saved_vertex
+            && self.saved_opposite == o.saved_opposite
+            && self.saved_vertex_corner == o.saved_vertex_corner
+            && self.renamed == o.renamed
+    }
+}
+impl Eq for ContractionRecord {}
 
 /// Why [`History::try_undo`] refused. Nothing was changed.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

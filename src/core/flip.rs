@@ -5,8 +5,8 @@ use super::ids::{Corner, FaceId, VertexId};
 use super::tri::{StateStamp, Triangulation};
 
 /// What one flip changed: the corners of the new edge, and enough to restore the
-/// previous state exactly ([`Triangulation::unflip`]).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// previous state exactly ([`Triangulation::unflip`]). `==` ignores the state stamps.
+#[derive(Clone, Copy, Debug)]
 pub struct FlipRecord {
     /// The endpoints `[a, b]` of the edge that was flipped.
     pub old_edge: [VertexId; 2],
@@ -26,6 +26,20 @@ pub struct FlipRecord {
     state_before: StateStamp,
     state_after: StateStamp,
 }
+
+impl PartialEq for FlipRecord {
+    fn eq(&self, o: &Self) -> bool {
+        self.old_edge == o.old_edge
+            && self.new_edge == o.new_edge
+            && self.new_corners == o.new_corners
+            && self.moved == o.moved
+            && self.faces == o.faces
+            && self.saved_vertex == o.saved_vertex
+            && self.saved_opposite == o.saved_opposite
+            && self.saved_vertex_corner == o.saved_vertex_corner
+    }
+}
+impl Eq for FlipRecord {}
 
 impl FlipRecord {
     /// The triangulation's state stamp right after this flip.

@@ -1,0 +1,332 @@
+//! Tri-quad conversion (Lemos–Ramaswami–Siqueira): a perfect pairing of edge-adjacent
+//! triangles of a closed triangulation, so that every pair is a quadrilateral on the
+//! same vertices. One module per algorithm, sharing the result type [`Quadrangulation`]:
+//!
+//! - [`greedy`]: the simple greedy SG (Sec. 3.1), random edge order;
+//! - [`pulli_segal`]: the Pulli–Segal greedy PS (Sec. 3.1), four priority sets;
+//! - [`augment`]: completion of any pairing into a perfect one by augmenting paths with
+//!   blossoms (multi-source Edmonds on flat arrays), used by every algorithm;
+//! - [`matching`]: the graph route, Edmonds on the whole dual graph;
+//! - [`lrs`]: the paper's contraction/expansion algorithm with edge flips.
+//!
+//! A pairing exists on every closed triangulation (the dual graph is cubic and
+//! bridgeless, so Petersen's theorem gives a perfect matching), so every algorithm's
+//! output is perfect; only LRS changes the triangulation (by flips), the others pair the
+//! input `K = T` itself.
+
+use crate::core::{FaceId, Triangulation};
+use crate::mesh::QuadMesh;
+
+/// Which algorithm to run.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+pub enum Algorithm {
+    /// The paper's contraction/expansion algorithm ([`lrs`]).
+    Lrs,
+    /// Pulli–Segal greedy ([`pulli_segal`]).
+    Ps,
+    /// Simple greedy ([`greedy`]).
+    Sg,
+    /// Edmonds on the whole dual graph ([`matching`]).
+    Matching,
+}
+
+impl Algorithm {
+    /// The short name used on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Algorithm::Lrs => "lrs",
+            Algorithm::Ps => "ps",
+            Algorithm::Sg => "sg",
+            Algorithm::Matching => "matching",
+        }
+    }
+}
+
+/// Options shared by the algorithms.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub struct Options {
+    /// Seed of the documented stream ([`crate::rng`]) for the randomised orders of SG and
+    /// PS (the paper randomises both, Sec. 4). LRS and matching are deterministic.
+    pub seed: u64,
+}
+
+/// Counters and timings of one conversion: the columns of the paper's Tables 4.3–4.4,
+/// (a) initial pairing time, (b) % paired, (c) unpaired count, (d) completion time,
+/// (e) total, plus the work of each step.
+#[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Stats {
+    /// Triangles of the input (and of `K`).
+    pub faces: usize,
+    /// (a) Seconds of the initial pairing step (for LRS: contraction and expansion).
+    pub initial_seconds: f64,
+    /// (b) Percentage of the triangles paired by the initial step.
+    pub initial_paired_percent: f64,
+    /// (c) Triangles left unpaired by the initial step.
+    pub initial_unpaired: usize,
+    /// (d) Seconds of the completion by augmenting paths.
+    pub completion_seconds: f64,
+    /// (e) Total seconds (a + d).
+    pub total_seconds: f64,
+    /// Edge flips (LRS only; `K` differs from the input exactly by these).
+    pub flips: usize,
+    /// Augmenting paths applied by the completion.
+    pub augmenting_paths: usize,
+    /// Phases of the completion (searches from all unpaired triangles at once).
+    pub phases: usize,
+}
+
+/// The result of a conversion: the triangulation `K` that is paired (the input itself,
+/// or for LRS the input with some edges flipped: same vertex ids, same counts), a
+/// perfect pairing of `K`, and the statistics.
+#[derive(Clone, Debug)]
+pub struct Quadrangulation {
+    /// Which algorithm produced it.
+    pub algorithm: Algorithm,
+    /// The paired triangulation.
+    pub tri: Triangulation,
+    /// A perfect pairing of `tri`.
+    pub pairing: Pairing,
+    /// Counters.
+    pub stats: Stats,
+}
+
+impl Quadrangulation {
+    /// The quad mesh over `tri`'s vertex ids ([`quad_mesh`]).
+    pub fn quad_mesh(&self) -> QuadMesh {
+        quad_mesh(&self.tri, &self.pairing).expect("the pairing of a Quadrangulation is perfect")
+    }
+}
+
+/// The statistics (a)–(c) of an initial pairing `initial` of `tri` computed in
+/// `seconds`; the completion fields are zero.
+pub fn initial_stats(tri: &Triangulation, initial: &Pairing, seconds: f64) -> Stats {
+    let faces = tri.face_count();
+    let paired = 2 * initial.len();
+    Stats {
+        faces,
+        initial_seconds: seconds,
+        initial_paired_percent: if faces == 0 {
+            100.0
+        } else {
+            100.0 * paired as f64 / faces as f64
+        },
+        initial_unpaired: faces - paired,
+        ..Stats::default()
+    }
+}
+
+/// No mate.
+const UNPAIRED: u32 = u32::MAX;
+
+/// A set of disjoint pairs of edge-adjacent faces of one triangulation (a matching of its
+/// dual graph), stored as one mate per face id. O(1) per query and change.
+///
+/// Guarantees: `mate(f) == Some(g)` iff `mate(g) == Some(f)`; a face is never its own
+/// mate. Whether mates share an edge is the caller's invariant ([`Self::check`] verifies
+/// it against a triangulation).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Pairing {
+    mate: Vec<u32>,
+    pairs: usize,
+}
+
+impl Pairing {
+    /// The empty pairing for face ids `0..face_capacity`.
+    pub fn new(face_capacity: usize) -> Self {
+        Pairing {
+            mate: vec![UNPAIRED; face_capacity],
+            pairs: 0,
+        }
+    }
+
+    /// The mate of `f`, if paired.
+    #[inline]
+    pub fn mate(&self, f: FaceId) -> Option<FaceId> {
+        match self.mate.get(f.index()) {
+            Some(&m) if m != UNPAIRED => Some(FaceId(m)),
+            _ => None,
+        }
+    }
+
+    /// Whether `f` is paired.
+    #[inline]
+    pub fn is_paired(&self, f: FaceId) -> bool {
+        self.mate(f).is_some()
+    }
+
+    /// Pairs `f` and `g`, both unpaired and distinct (debug-asserted).
+    #[inline]
+    pub fn pair(&mut self, f: FaceId, g: FaceId) {
+        debug_assert!(f != g && !self.is_paired(f) && !self.is_paired(g));
+        self.mate[f.index()] = g.0;
+        self.mate[g.index()] = f.0;
+        self.pairs += 1;
+    }
+
+    /// Unpairs `f` and its mate; returns the mate.
+    #[inline]
+    pub fn unpair(&mut self, f: FaceId) -> Option<FaceId> {
+        let g = self.mate(f)?;
+        self.mate[f.index()] = UNPAIRED;
+        self.mate[g.index()] = UNPAIRED;
+        self.pairs -= 1;
+        Some(g)
+    }
+
+    /// Number of pairs.
+    #[inline]
+    pub fn len(&self) -> usize {
+        self.pairs
+    }
+
+    /// Whether there is no pair.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.pairs == 0
+    }
+
+    /// One more than the largest face id the pairing can hold.
+    pub fn face_capacity(&self) -> usize {
+        self.mate.len()
+    }
+
+    /// The pairs `(f, g)` with `f < g`, in increasing `f`.
+    pub fn pairs(&self) -> impl Iterator<Item = (FaceId, FaceId)> + '_ {
+        self.mate
+            .iter()
+            .enumerate()
+            .filter(|&(f, &g)| g != UNPAIRED && (f as u32) < g)
+            .map(|(f, &g)| (FaceId(f as u32), FaceId(g)))
+    }
+
+    /// The live faces of `tri` that are unpaired, in increasing id.
+    pub fn unpaired<'a>(&'a self, tri: &'a Triangulation) -> impl Iterator<Item = FaceId> + 'a {
+        tri.faces().filter(move |&f| !self.is_paired(f))
+    }
+
+    /// Whether every live face of `tri` is paired.
+    pub fn is_perfect(&self, tri: &Triangulation) -> bool {
+        2 * self.pairs == tri.face_count()
+    }
+
+    /// Checks the pairing against `tri` from scratch: mates are symmetric, live, distinct
+    /// and share an edge of `tri`; the pair count is right. O(F).
+    pub fn check(&self, tri: &Triangulation) -> Result<(), String> {
+        if self.mate.len() < tri.face_capacity() {
+            return Err(format!(
+                "pairing holds {} faces, the triangulation {}",
+                self.mate.len(),
+                tri.face_capacity()
+            ));
+        }
+        let mut paired = 0;
+        for (f, &m) in self.mate.iter().enumerate() {
+            if m == UNPAIRED {
+                continue;
+            }
+            let (f, g) = (FaceId(f as u32), FaceId(m));
+            if !tri.is_face(f) || !tri.is_face(g) {
+                return Err(format!("pair ({f}, {g}) holds a removed face"));
+            }
+            if self.mate(g) != Some(f) {
+                return Err(format!(
+                    "{f} is paired with {g}, which is not paired with it"
+                ));
+            }
+            if !tri.face_neighbours(f).contains(&g) {
+                return Err(format!("{f} and {g} are paired but share no edge"));
+            }
+            paired += 1;
+        }
+        if paired != 2 * self.pairs {
+            return Err(format!(
+                "{} pairs recorded, {paired} faces paired",
+                self.pairs
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The quad of the pair `(f, g)` (mates sharing an edge `[a, b]`, with third vertices `c`
+/// in `f` and `d` in `g`): the cycle `[c, a, d, b]`, starting at `f`'s third vertex and
+/// following `f`'s slot order, so a consistently oriented `f` gives a consistently
+/// oriented quad. `None` if the two faces share no edge.
+pub fn quad_of(tri: &Triangulation, f: FaceId, g: FaceId) -> Option<[u32; 4]> {
+    let k = f
+        .corners()
+        .into_iter()
+        .find(|&c| tri.opposite(c).face() == g)?;
+    let d = tri.vertex(tri.opposite(k));
+    // f = (c, a, b) in slot order from k: c at k, a at next, b at prev.
+    let (c, a, b) = (tri.vertex(k), tri.vertex(k.next()), tri.vertex(k.prev()));
+    Some([c.0, a.0, d.0, b.0])
+}
+
+/// The quad mesh of a perfect pairing of `tri`: one quad per pair ([`quad_of`]), in
+/// increasing order of the pair's smaller face id; vertex ids are `tri`'s. `None` if the
+/// pairing is not a perfect pairing of `tri`.
+pub fn quad_faces(tri: &Triangulation, pairing: &Pairing) -> Option<Vec<[u32; 4]>> {
+    if !pairing.is_perfect(tri) {
+        return None;
+    }
+    pairing.pairs().map(|(f, g)| quad_of(tri, f, g)).collect()
+}
+
+/// A quad mesh over `tri`'s vertex ids (`vertex_count = tri.vertex_capacity()`, no
+/// positions): see [`quad_faces`].
+pub fn quad_mesh(tri: &Triangulation, pairing: &Pairing) -> Option<QuadMesh> {
+    Some(QuadMesh::combinatorial(
+        tri.vertex_capacity(),
+        quad_faces(tri, pairing)?,
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gen::octahedron;
+
+    #[test]
+    fn a_perfect_pairing_of_the_octahedron_gives_six_quads_less_two() {
+        let m = octahedron();
+        let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron");
+        let mut p = Pairing::new(t.face_capacity());
+        // Pair greedily along each face's first free neighbour.
+        for f in t.faces() {
+            if p.is_paired(f) {
+                continue;
+            }
+            if let Some(g) = t.face_neighbours(f).into_iter().find(|&g| !p.is_paired(g)) {
+                p.pair(f, g);
+            }
+        }
+        assert_eq!(p.check(&t), Ok(()));
+        let stats = initial_stats(&t, &p, 0.0);
+        assert_eq!(stats.initial_unpaired, 8 - 2 * p.len());
+        if p.is_perfect(&t) {
+            let quads = quad_faces(&t, &p).expect("perfect");
+            assert_eq!(quads.len(), 4);
+            for q in quads {
+                let mut s = q;
+                s.sort_unstable();
+                assert!(s.windows(2).all(|w| w[0] != w[1]), "4 distinct vertices");
+            }
+        }
+        let f = FaceId(0);
+        if let Some(g) = p.unpair(f) {
+            assert!(!p.is_paired(g) && p.check(&t).is_ok());
+            // Faces that share no edge are reported by the check.
+            let far = t
+                .faces()
+                .find(|&h| h != f && !t.face_neighbours(f).contains(&h) && !p.is_paired(h));
+            if let Some(h) = far {
+                p.pair(f, h);
+                assert!(p.check(&t).is_err());
+            }
+        }
+    }
+}
