@@ -14,6 +14,9 @@ use contractible::{ContractError, FaceId, History, Surfaces, Triangulation, Vert
 
 /// At most this many operations of an input are applied (the rest are ignored).
 pub const MAX_OPS: usize = 2000;
+/// Steps of `journal_ops` taken from one input (each is followed by a from-scratch
+/// validation, so fewer than [`MAX_OPS`]).
+pub const JOURNAL_STEPS: usize = 300;
 /// Full [`Triangulation::validate`] every this many applied operations (it is O(F)).
 pub const VALIDATE_EVERY: usize = 128;
 
@@ -85,6 +88,39 @@ pub struct ContractInput {
     /// `(vertex, k)`: contract `[vertex, link(vertex)[k]]` (ids mod capacity, `k` mod
     /// degree); `k = 255` instead tries a vertex that is *not* a neighbour.
     pub picks: Vec<(u16, u8)>,
+}
+
+/// One step of `journal_ops`: a contraction or flip of the edge opposite corner
+/// `corner` (mod 3 × face capacity, moved to the next live corner), or an undo.
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum JournalStep {
+    /// `Journal::contract_at` (must succeed exactly when the naive link condition holds).
+    Contract {
+        /// Corner index.
+        corner: u16,
+    },
+    /// `Journal::flip_at` (must succeed exactly when the edge is flippable).
+    Flip {
+        /// Corner index.
+        corner: u16,
+    },
+    /// `Journal::undo` of the newest operation.
+    Undo,
+    /// A flip behind the journal's back: the next undo must be refused, without change;
+    /// the flip is then undone exactly so the journal can go on.
+    Sneak {
+        /// Corner index.
+        corner: u16,
+    },
+}
+
+/// The input of `journal_ops`.
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct JournalInput {
+    /// The surface to start from.
+    pub base: SurfaceInput,
+    /// The steps (at most [`JOURNAL_STEPS`]).
+    pub steps: Vec<JournalStep>,
 }
 
 /// Decodes fuzz bytes exactly as `libfuzzer_sys::fuzz_target!` does.
@@ -400,6 +436,104 @@ pub fn check_contract_undo(input: &ContractInput) {
         tri == start,
         "undo of all contractions != the pre-contraction triangulation"
     );
+}
+
+/// A live corner near `index` (the first live one at or after it, cyclically).
+fn live_corner_near(tri: &Triangulation, index: u16) -> contractible::Corner {
+    let n = 3 * tri.face_capacity();
+    let mut c = usize::from(index) % n;
+    while !tri.is_face(contractible::Corner(c as u32).face()) {
+        c = (c + 3) % n;
+    }
+    contractible::Corner(c as u32)
+}
+
+/// `journal_ops`: contractions, flips and undos in the fuzzer's interleaving through a
+/// `Journal`, with an `EdgeNumbering` in lockstep. After every step the triangulation
+/// validates from scratch and the numbering checks; a contraction or flip succeeds
+/// exactly when the naive test says it may; a change behind the journal's back makes the
+/// next undo refuse without changing anything; undoing everything restores the start
+/// exactly (arrays and state stamp) and every edge number.
+pub fn check_journal(input: &JournalInput) {
+    use contractible::core::{Journal, Op as JOp};
+    use contractible::EdgeNumbering;
+    let start = build_surface(&input.base);
+    let mut tri = start.clone();
+    let mut journal = Journal::new();
+    let mut numbers = EdgeNumbering::new(&tri);
+    for &step in input.steps.iter().take(JOURNAL_STEPS) {
+        match step {
+            JournalStep::Contract { corner } => {
+                let c = live_corner_near(&tri, corner);
+                let [a, b] = tri.edge_endpoints(c);
+                let naive = tri.link_condition_naive(a, b);
+                let before = tri.clone();
+                match journal.contract_at(&mut tri, c) {
+                    Ok(rec) => {
+                        assert!(naive, "contracted [{a}, {b}] failing the naive test");
+                        assert_eq!((rec.u, rec.v), (a, b));
+                        numbers.contracted(&rec);
+                    }
+                    Err(e) => {
+                        assert!(!naive, "refused [{a}, {b}] passing the naive test: {e}");
+                        assert!(tri == before, "a refused contraction changed the surface");
+                    }
+                }
+            }
+            JournalStep::Flip { corner } => {
+                let c = live_corner_near(&tri, corner);
+                let [a, b] = tri.edge_endpoints(c);
+                let flippable = tri.is_flippable(a, b);
+                match journal.flip_at(&mut tri, c) {
+                    Ok(rec) => {
+                        assert!(flippable, "flipped [{a}, {b}], not flippable");
+                        numbers.flipped(&rec);
+                    }
+                    Err(_) => assert!(!flippable, "refused a flippable [{a}, {b}]"),
+                }
+            }
+            JournalStep::Undo => match journal.undo(&mut tri).expect("journal undo") {
+                Some(JOp::Contraction(rec)) => numbers.uncontracted(&rec),
+                Some(JOp::Flip(rec)) => numbers.unflipped(&rec),
+                None => assert!(tri == start),
+            },
+            JournalStep::Sneak { corner } => {
+                let c = live_corner_near(&tri, corner);
+                let Ok(rec) = tri.flip_at(c) else {
+                    continue;
+                };
+                let snapshot = tri.clone();
+                if !journal.is_empty() {
+                    assert!(journal.undo(&mut tri).is_err(), "undo after a sneaked flip");
+                    assert!(tri == snapshot, "a refused undo changed the surface");
+                }
+                tri.unflip(&rec).expect("unflip of the sneaked flip");
+            }
+        }
+        tri.validate().unwrap_or_else(|e| panic!("invalid: {e}"));
+        numbers
+            .check(&tri)
+            .unwrap_or_else(|e| panic!("edge numbering: {e}"));
+    }
+    while let Some(op) = journal.undo(&mut tri).expect("journal undo") {
+        match op {
+            JOp::Contraction(rec) => numbers.uncontracted(&rec),
+            JOp::Flip(rec) => numbers.unflipped(&rec),
+        }
+    }
+    assert!(
+        tri == start,
+        "undoing the journal did not restore the start"
+    );
+    assert_eq!(tri.state(), start.state(), "state stamp not restored");
+    let fresh = EdgeNumbering::new(&start);
+    for c in (0..3 * start.face_capacity() as u32).map(contractible::Corner) {
+        assert_eq!(
+            numbers.id(c),
+            fresh.id(c),
+            "edge number at {c} not restored"
+        );
+    }
 }
 
 /// `parse_*`: the reader must not panic; a parsed mesh goes to [`Surfaces::from_mesh`]

@@ -17,7 +17,7 @@ use std::path::PathBuf;
 
 use contractible::io::Format;
 use contractible::rng::Rng;
-use harness::{ContractInput, Op, Surface, SurfaceInput};
+use harness::{ContractInput, JournalInput, JournalStep, Op, Surface, SurfaceInput};
 
 fn files(dir: &str, target: &str) -> Vec<(PathBuf, Vec<u8>)> {
     let d = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
@@ -71,6 +71,12 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
         }
     });
     assert!(n >= 5, "contract_split corpus missing");
+    let n = replay("journal_ops", |b| {
+        if let Some(i) = harness::decode::<JournalInput>(b) {
+            harness::check_journal(&i);
+        }
+    });
+    assert!(n >= 5, "journal_ops corpus missing");
 }
 
 #[test]
@@ -169,6 +175,33 @@ fn every_start_surface_contract_and_undo() {
             picks,
         };
         harness::check_contract_undo(&input);
+    }
+}
+
+#[test]
+fn every_start_surface_journal_of_contractions_flips_and_undos() {
+    for (k, surface) in surfaces().into_iter().enumerate() {
+        let mut rng = Rng::new(200 + k as u64);
+        let steps = (0..300)
+            .map(|_| {
+                let corner = rng.below(1 << 16) as u16;
+                match rng.below(20) {
+                    0..=7 => JournalStep::Contract { corner },
+                    8..=13 => JournalStep::Flip { corner },
+                    14..=18 => JournalStep::Undo,
+                    _ => JournalStep::Sneak { corner },
+                }
+            })
+            .collect();
+        let input = JournalInput {
+            base: SurfaceInput {
+                surface,
+                ops: ops(70 + k as u64, 150),
+                seed: 0,
+            },
+            steps,
+        };
+        harness::check_journal(&input);
     }
 }
 
