@@ -134,10 +134,12 @@ fn random_surfaces_of_every_kind() {
             let paired = run_both(&t, seeds, &format!("{surface:?} F={}", t.face_count()));
             let pct = paired.map(|p| 100.0 * p as f64 / (runs * t.face_count() as f64));
             if min_faces == 20_000 {
-                // Random surfaces are far less regular than scanned meshes (random
-                // splits and flips): the bands are wider than the paper's.
-                assert!((80.0..=92.0).contains(&pct[0]), "SG {surface:?}: {pct:?}");
-                assert!(pct[1] >= 98.0, "PS {surface:?}: {pct:?}");
+                // SG is insensitive to the input: the paper's band holds here too.
+                assert!((85.0..=90.0).contains(&pct[0]), "SG {surface:?}: {pct:?}");
+                // PS is not: these surfaces are far less regular than scanned meshes
+                // (about 19% degree-3 vertices), and PS pairs 98.07–98.34% of them, below
+                // the paper's 99% (see spec/quad.md). 97.5% is a regression guard.
+                assert!(pct[1] >= 97.5, "PS {surface:?}: {pct:?}");
                 rows.push((surface, t.face_count(), pct));
             }
         }
