@@ -113,7 +113,7 @@ fn run_both(t: &Triangulation, seeds: std::ops::Range<u64>, label: &str) -> [usi
                 distinct.push(p);
             }
         }
-        if seeds.end - seeds.start >= 3 && t.face_count() >= 100 {
+        if seeds.end - seeds.start >= 2 && t.face_count() >= 100 {
             assert!(
                 distinct.len() >= 2,
                 "{name} {label}: every seed gave the same pairing"
