@@ -17,6 +17,9 @@
 use crate::core::{FaceId, Triangulation};
 use crate::mesh::QuadMesh;
 
+pub mod greedy;
+pub mod pulli_segal;
+
 /// Which algorithm to run.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
