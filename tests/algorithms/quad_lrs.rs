@@ -11,7 +11,8 @@ use std::collections::HashSet;
 use crate::common;
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::quad::lrs::{initial_pairing, initial_pairing_variant, Expansion, Variant};
-use contractible::{FaceId, Surfaces, Triangulation};
+use contractible::rng::Rng;
+use contractible::{Surfaces, Triangulation, VertexId};
 
 /// The edge set of a face list, as sorted vertex pairs.
 fn edge_set(faces: &[[u32; 3]]) -> HashSet<(u32, u32)> {
@@ -106,12 +107,40 @@ fn check(input: &Triangulation, ex: &Expansion, label: &str) -> usize {
     if input.euler_genus() == 0 {
         assert_eq!(unpaired, 4, "{label}: genus 0 leaves the tetrahedron's 4");
     }
+    // One split per contraction: 2 faces and 3 edges each (Lemma 3.4 counts n_e − n'_e).
     assert_eq!(
-        ex.cases.splits,
-        (k.face_count() - ex.reduced_faces) / 2,
+        2 * ex.cases.splits,
+        k.face_count() - ex.reduced_faces,
+        "{label}"
+    );
+    assert_eq!(
+        3 * ex.cases.splits,
+        k.edge_count() - 3 * ex.reduced_faces / 2,
         "{label}"
     );
     unpaired
+}
+
+/// On small inputs, petgraph's dual graph and maximum matching as a second reference:
+/// every pair is an edge of the dual of `K` (adjacency computed by petgraph's graph,
+/// not by our face lists), and the dual of `K` has a perfect matching (Petersen), so the
+/// completion has something to reach; ours is no larger.
+fn check_with_petgraph(ex: &Expansion, label: &str) {
+    let g = common::dual_graph(&ex.tri);
+    let node_of: std::collections::HashMap<_, _> = g.node_indices().map(|n| (g[n], n)).collect();
+    for (f, h) in ex.pairing.pairs() {
+        assert!(
+            g.find_edge(node_of[&f], node_of[&h]).is_some(),
+            "{label}: pair ({f}, {h}) is not a dual edge"
+        );
+    }
+    let max = petgraph::algo::maximum_matching(&g);
+    assert_eq!(
+        2 * max.len(),
+        ex.tri.face_count(),
+        "{label}: K's dual has a perfect matching"
+    );
+    assert!(ex.pairing.len() <= max.len(), "{label}");
 }
 
 fn surfaces() -> Vec<SurfaceKind> {
@@ -148,4 +177,162 @@ fn random_surfaces() {
         }
     }
     eprintln!("{total:?}");
+}
+
+/// Runs `variant` on the input it is pinned to (the first input of
+/// [`random_surfaces`]' order that trips it) and asserts the statement its panic names.
+fn assert_variant_caught(
+    variant: Variant,
+    surface: SurfaceKind,
+    min_faces: usize,
+    statement: &str,
+) {
+    if !contractible::spec::ENABLED {
+        return; // the checks are compiled out
+    }
+    let t = random(&RandomParams {
+        surface,
+        min_faces,
+        flip_percent: if min_faces == 200 { 0 } else { 30 },
+        seed: 0,
+    });
+    let err = std::panic::catch_unwind(|| initial_pairing_variant(t, variant))
+        .expect_err("the mutation must be caught");
+    let msg = err
+        .downcast_ref::<String>()
+        .cloned()
+        .unwrap_or_else(|| "non-string panic".into());
+    assert!(
+        msg.starts_with("specification violated: ") && msg.contains(statement),
+        "expected {statement}, got {msg}"
+    );
+}
+
+#[test]
+fn mutation_skipping_the_unflip_of_alg_3_2_is_caught() {
+    assert_variant_caught(
+        Variant {
+            skip_unflip: true,
+            ..Variant::default()
+        },
+        SurfaceKind::Orientable(0),
+        200,
+        "L3 (Prop. 3.3 (ii)): the inserted edge is not flipped",
+    );
+}
+
+#[test]
+fn mutation_ignoring_the_flags_at_degree_4_is_caught() {
+    assert_variant_caught(
+        Variant {
+            degree4_ignores_flags: true,
+            ..Variant::default()
+        },
+        SurfaceKind::Orientable(0),
+        600,
+        "L1 (Alg. 3.1): one new edge in M per split",
+    );
+}
+
+#[test]
+fn mutation_materialising_k_in_reverse_flag_order_is_caught() {
+    // The flags do not commute (spec/ERRATA.md T6): K is the flips in the order made.
+    assert_variant_caught(
+        Variant {
+            materialise_reversed: true,
+            ..Variant::default()
+        },
+        SurfaceKind::Orientable(0),
+        200,
+        "L7 (Claim 3.1 (ii)): M* is a matching of K_i",
+    );
+}
+
+/// Grows `t` by `splits` random vertex splits (a random vertex, two distinct random
+/// neighbours), seeded.
+fn random_splits(mut t: Triangulation, splits: usize, seed: u64) -> Triangulation {
+    let mut rng = Rng::new(seed);
+    for _ in 0..splits {
+        let vs: Vec<VertexId> = t.vertices().collect();
+        let u = vs[rng.index(vs.len())];
+        let link: Vec<VertexId> = t.link(u).collect();
+        let i = rng.index(link.len());
+        let j = (i + 1 + rng.index(link.len() - 1)) % link.len();
+        t.split_vertex(u, link[i], link[j])
+            .expect("distinct neighbours");
+    }
+    t
+}
+
+#[test]
+fn every_small_surface_and_random_splits_of_it() {
+    let mut irreducible = 0;
+    for file in [
+        "surfaces-upto-8-vertices.txt",
+        "torus.txt",
+        "projective-plane.txt",
+    ] {
+        for s in common::read_surface_list(file) {
+            let t = Triangulation::from_faces(s.vertex_count, &s.faces)
+                .unwrap_or_else(|e| panic!("{}: {e}", s.name));
+            let label = format!("{file}: {}", s.name);
+            let ex = initial_pairing(t.clone());
+            check(&t, &ex, &label);
+            check_with_petgraph(&ex, &label);
+            // Published irreducible surfaces: nothing to expand, nothing paired.
+            let is_irreducible = !s.name.contains("_red_");
+            if is_irreducible {
+                irreducible += 1;
+                assert_eq!(ex.cases.splits, 0, "{label}");
+                assert_eq!((ex.flips, ex.pairing.len()), (0, 0), "{label}");
+                assert_eq!(ex.reduced_faces, t.face_count(), "{label}");
+                assert_eq!(ex.tri.face_list(), t.face_list(), "{label}: K = T");
+            } else {
+                assert!(ex.cases.splits > 0, "{label}: a reducible surface expands");
+            }
+            for seed in 0..8u64 {
+                for splits in [1usize, 5, 40] {
+                    let grown = random_splits(t.clone(), splits, seed);
+                    let label = format!("{label} + {splits} splits (seed {seed})");
+                    let ex = initial_pairing(grown.clone());
+                    check(&grown, &ex, &label);
+                    if splits <= 5 {
+                        check_with_petgraph(&ex, &label);
+                    }
+                }
+            }
+        }
+    }
+    assert_eq!(irreducible, 14 + 21 + 2, "irreducible surfaces seen");
+}
+
+#[test]
+fn every_closed_mesh_component() {
+    let dir = common::shared_dir().join("meshes/closed");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.expect("directory entry").path())
+        .collect();
+    files.sort();
+    assert!(!files.is_empty(), "no meshes in {}", dir.display());
+    let mut components = 0;
+    let mut flips = 0;
+    for path in &files {
+        let name = path
+            .file_name()
+            .expect("file")
+            .to_string_lossy()
+            .to_string();
+        let mesh = contractible::io::read_tri_mesh(path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let surfaces = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+        for (k, comp) in surfaces.components.iter().enumerate() {
+            let label = format!("{name} component {k}");
+            let ex = initial_pairing(comp.tri.clone());
+            check(&comp.tri, &ex, &label);
+            flips += ex.flips;
+            components += 1;
+        }
+    }
+    assert!(components >= files.len());
+    eprintln!("{components} components, {flips} flips");
 }

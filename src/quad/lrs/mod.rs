@@ -129,6 +129,9 @@ pub struct Variant {
     pub skip_unflip: bool,
     /// Mutation: Alg. 3.1 l.12 ignores the flags (degree 4 always goes to Alg. 3.3).
     pub degree4_ignores_flags: bool,
+    /// Mutation: `K` is materialised by flipping the flagged edges in the reverse of the
+    /// order the flags were set (as if "T plus the flags" determined `K`).
+    pub materialise_reversed: bool,
 }
 
 /// Runs the contraction step (RS) and the expansion step (Alg. 3.1–3.4) on `tri`
@@ -159,6 +162,8 @@ struct Split {
     flagged: [Option<EdgeId>; 2],
     /// `|M|` before the split.
     m_before: usize,
+    /// Alg. 3.2 ran with both split edges in `M` and `[x, y]` not flagged.
+    case21_both_unflipped: bool,
 }
 
 /// The edges around a split that Alg. 3.1–3.4 read (numbers in `T_ij`).
@@ -210,6 +215,8 @@ struct Expander {
     group_m: Vec<EdgeId>,
     reduced_faces: usize,
     cases: Cases,
+    /// See [`Split::case21_both_unflipped`] (set by the current split).
+    case21_both_unflipped: bool,
     variant: Variant,
 }
 
@@ -246,6 +253,7 @@ impl Expander {
             group_flags: Vec::new(),
             group_m: Vec::new(),
             cases: Cases::default(),
+            case21_both_unflipped: false,
             variant,
         }
     }
@@ -291,6 +299,7 @@ impl Expander {
         self.cases.splits += 1;
         let m_before = self.m_len;
         let flags_before = self.cases.flags_set;
+        self.case21_both_unflipped = false;
         let inserted = self.expand_match(&rec);
         let mut flagged = [None; 2];
         let new_flags = self.cases.flags_set - flags_before;
@@ -307,6 +316,7 @@ impl Expander {
             inserted,
             flagged,
             m_before,
+            case21_both_unflipped: self.case21_both_unflipped,
         };
         spec::after_split(self, &split, new_flags);
         if self.history.is_empty() {
@@ -360,6 +370,9 @@ impl Expander {
             // Alg. 3.2; `x_far` is [x, y] (the face across [v, x] is [v, x, y]).
             self.cases.degree3 += 1;
             let xy = a.x_far;
+            // The proof of Prop. 3.3 (Case 2.1) says both split edges are in M only if
+            // [x, y] is flipped in K_{i(j-1)}; the specification checks it.
+            self.case21_both_unflipped = ux_in && uy_in && !self.flipped[xy.index()];
             if self.flipped[xy.index()] && !self.variant.skip_unflip {
                 self.unflag(xy); // l.2–4
             }
@@ -403,12 +416,18 @@ impl Expander {
     }
 
     /// The flagged edges in the order their flags were set (latest setting counts).
-    fn flags_in_order(&self) -> impl Iterator<Item = EdgeId> + '_ {
-        self.flag_log
+    fn flags_in_order(&self) -> Vec<EdgeId> {
+        let mut order: Vec<EdgeId> = self
+            .flag_log
             .iter()
             .enumerate()
             .filter(|&(k, e)| self.flipped[e.index()] && self.flag_time[e.index()] == k as u32)
             .map(|(_, &e)| e)
+            .collect();
+        if self.variant.materialise_reversed {
+            order.reverse();
+        }
+        order
     }
 
     /// `K` from `T` and the flags: a copy of `T` with the flagged edges flipped in flag

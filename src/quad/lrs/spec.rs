@@ -16,6 +16,7 @@
 //! | L5 every flagged edge joins two expanded vertices and is flippable in `T_i` | Claim 3.1 (i), Prop. 3.3 (i) | `after_vertex` |
 //! | L6 every edge of `M` is unflipped and safe in `T_i` | Claim 3.1 (ii) | `after_vertex` |
 //! | L7 `K_i` is `T_i` with the flags flipped (each flip valid), `M*` is a matching of `K_i` leaving exactly `n'_f` faces | Claim 3.1, Prop. 3.3 | `after_vertex` (small `T_i`), `at_end` (always) |
+//! | L8 at degree 3, both split edges in `M` only if `[x, y]` is flagged | proof of Prop. 3.3, Case 2.1 | `after_split` |
 //!
 //! Cost: `after_split` is O(d_v). `after_vertex` checks every flag and every edge of `M`
 //! while `T_i` has at most [`SMALL_FACES`] faces, and otherwise only those set during
@@ -94,6 +95,13 @@ pub(super) fn after_split(ex: &Expander, s: &Split, new_flags: usize) {
             );
         }
     }
+    if s.case21_both_unflipped {
+        spec_fail!(
+            ex,
+            "L8 (proof of Prop. 3.3, Case 2.1): both split edges are in M only if [x, y] is flipped",
+            "splitting {v} from {u} (degree 3) with [x, y] in K"
+        );
+    }
     let e = s.inserted;
     let Some([a, b]) = endpoints(ex, e) else {
         spec_fail!(ex, "L3 (Prop. 3.3 (ii))", "inserted edge {e:?} is dead");
@@ -153,6 +161,30 @@ pub(super) fn after_vertex(ex: &Expander, u: VertexId) {
     }
     let small = ex.t.face_count() <= SMALL_FACES;
     let all_edges = || (0..ex.numbers.capacity()).map(|i| EdgeId(i as u32));
+    let m: Box<dyn Iterator<Item = EdgeId>> = if small {
+        Box::new(all_edges().filter(|e| ex.in_m[e.index()]))
+    } else {
+        Box::new(ex.group_m.iter().copied())
+    };
+    for e in m {
+        let Some([a, b]) = endpoints(ex, e) else {
+            spec_fail!(ex, "L6 (Claim 3.1 (ii))", "edge {e:?} of M is dead");
+        };
+        if ex.flipped[e.index()] {
+            spec_fail!(
+                ex,
+                "L6 (Claim 3.1 (ii)): an edge of M is not flipped",
+                "[{a}, {b}] is in M and flagged"
+            );
+        }
+        if processed_before(ex, a, u) || processed_before(ex, b, u) {
+            spec_fail!(
+                ex,
+                "L6 (Claim 3.1 (ii)): an edge of M is safe in T_i",
+                "[{a}, {b}] is in M"
+            );
+        }
+    }
     let flags: Box<dyn Iterator<Item = EdgeId>> = if small {
         Box::new(all_edges().filter(|e| ex.flipped[e.index()]))
     } else {
@@ -177,30 +209,6 @@ pub(super) fn after_vertex(ex: &Expander, u: VertexId) {
                 ex,
                 "L5 (Claim 3.1 (i)): a flagged edge is flippable in T_i",
                 "[{a}, {b}] is flagged"
-            );
-        }
-    }
-    let m: Box<dyn Iterator<Item = EdgeId>> = if small {
-        Box::new(all_edges().filter(|e| ex.in_m[e.index()]))
-    } else {
-        Box::new(ex.group_m.iter().copied())
-    };
-    for e in m {
-        let Some([a, b]) = endpoints(ex, e) else {
-            spec_fail!(ex, "L6 (Claim 3.1 (ii))", "edge {e:?} of M is dead");
-        };
-        if ex.flipped[e.index()] {
-            spec_fail!(
-                ex,
-                "L6 (Claim 3.1 (ii)): an edge of M is not flipped",
-                "[{a}, {b}] is in M and flagged"
-            );
-        }
-        if processed_before(ex, a, u) || processed_before(ex, b, u) {
-            spec_fail!(
-                ex,
-                "L6 (Claim 3.1 (ii)): an edge of M is safe in T_i",
-                "[{a}, {b}] is in M"
             );
         }
     }
@@ -243,4 +251,256 @@ pub(super) fn at_end(ex: &Expander, flip_error: Option<&str>, pair_error: Option
         return;
     }
     check_k(ex, Some(flip_error), Some(pair_error));
+}
+
+/// Each check shown able to fail: a state reached by the real algorithm (a random torus,
+/// stopped when `u_1`, the vertex processed last, is fully expanded) passes every hook;
+/// each test corrupts one thing and asserts the panic names the statement. With the
+/// checks off ([`ENABLED`] false) the expected failures are skipped.
+#[cfg(test)]
+mod tests {
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+
+    use super::super::{Expander, Split, Variant};
+    use super::*;
+    use crate::gen::{random, RandomParams, SurfaceKind};
+
+    /// The state when `u_1` is fully expanded (before its `after_vertex`), and the last
+    /// split.
+    fn state() -> (Expander, Split) {
+        let t = random(&RandomParams {
+            surface: SurfaceKind::Orientable(1),
+            min_faces: 300,
+            flip_percent: 30,
+            seed: 0,
+        });
+        let mut ex = Expander::new(t, Variant::default());
+        let first = ex.history.records().last().expect("a reducible input").u;
+        let mut last = None;
+        while ex.history.records().last().map(|r| r.u) == Some(first) {
+            last = ex.step();
+        }
+        assert!(!ex.history.is_empty(), "more than one vertex to expand");
+        (ex, last.expect("u_1 has splits"))
+    }
+
+    fn new_flags(s: &Split) -> usize {
+        s.flagged.iter().flatten().count()
+    }
+
+    fn failure(check: impl FnOnce()) -> String {
+        let err = catch_unwind(AssertUnwindSafe(check)).expect_err("the check must fail");
+        err.downcast_ref::<String>()
+            .cloned()
+            .unwrap_or_else(|| "non-string panic".into())
+    }
+
+    fn assert_fails(statement: &str, check: impl FnOnce()) {
+        if !ENABLED {
+            return;
+        }
+        let msg = failure(check);
+        assert!(
+            msg.starts_with("specification violated: ") && msg.contains(statement),
+            "expected {statement}, got {msg}"
+        );
+    }
+
+    fn all_edges(ex: &Expander) -> Vec<(EdgeId, [VertexId; 2])> {
+        (0..ex.numbers.capacity())
+            .filter_map(|i| {
+                let e = EdgeId(i as u32);
+                endpoints(ex, e).map(|ab| (e, ab))
+            })
+            .collect()
+    }
+
+    fn pending(ex: &Expander, w: VertexId) -> bool {
+        processed_before(ex, w, ex.current.expect("current"))
+    }
+
+    #[test]
+    fn the_uncorrupted_state_passes_every_check() {
+        let (ex, s) = state();
+        after_split(&ex, &s, new_flags(&s));
+        after_vertex(&ex, ex.current.expect("current"));
+        check_k(&ex, None, None);
+        // The state is one the corruptions below can reach: u_1 has later vertices.
+        assert!(all_edges(&ex)
+            .iter()
+            .any(|(_, [a, b])| pending(&ex, *a) || pending(&ex, *b)));
+    }
+
+    #[test]
+    fn l1_a_split_that_adds_no_edge_to_m() {
+        let (mut ex, s) = state();
+        ex.m_len -= 1;
+        assert_fails("L1 (Alg. 3.1)", || after_split(&ex, &s, new_flags(&s)));
+        let u = ex.current.expect("current");
+        assert_fails("L1 (Alg. 3.1)", || after_vertex(&ex, u));
+    }
+
+    #[test]
+    fn l2_three_flips_or_a_flip_away_from_v() {
+        let (ex, s) = state();
+        assert_fails("L2 (Prop. 3.3): at most two", || after_split(&ex, &s, 3));
+        let v = s.rec.v;
+        let (far, _) = *all_edges(&ex)
+            .iter()
+            .find(|(_, [a, b])| *a != v && *b != v)
+            .expect("an edge away from v");
+        let mut bad = s;
+        bad.flagged = [Some(far), None];
+        assert_fails("L2 (Prop. 3.3): a flip is [v_ij, v_ik]", || {
+            after_split(&ex, &bad, 1)
+        });
+    }
+
+    #[test]
+    fn l3_a_flipped_or_misplaced_edge_inserted() {
+        let (mut ex, s) = state();
+        ex.flipped[s.inserted.index()] = true;
+        assert_fails(
+            "L3 (Prop. 3.3 (ii)): the inserted edge is not flipped",
+            || after_split(&ex, &s, new_flags(&s)),
+        );
+        ex.flipped[s.inserted.index()] = false;
+        let v = s.rec.v;
+        let (far, _) = *all_edges(&ex)
+            .iter()
+            .find(|(e, [a, b])| *a != v && *b != v && !ex.flipped[e.index()])
+            .expect("an unflagged edge away from v");
+        let mut bad = s;
+        bad.inserted = far;
+        assert_fails("L3 (Prop. 3.3 (ii)): the inserted edge is [u_l", || {
+            after_split(&ex, &bad, new_flags(&bad))
+        });
+    }
+
+    #[test]
+    fn l8_both_split_edges_in_m_with_x_y_unflipped() {
+        let (ex, mut s) = state();
+        s.case21_both_unflipped = true;
+        assert_fails("L8 (proof of Prop. 3.3, Case 2.1)", || {
+            after_split(&ex, &s, new_flags(&s))
+        });
+    }
+
+    #[test]
+    fn l4_u_i_with_splits_left() {
+        let (mut ex, _) = state();
+        let u = ex.current.expect("current");
+        ex.remaining[u.index()] = 1;
+        assert_fails("L4 (Sec. 3.3.1): the splits of u_i are contiguous", || {
+            after_vertex(&ex, u)
+        });
+    }
+
+    #[test]
+    fn l6_a_flipped_edge_in_m() {
+        let (mut ex, s) = state();
+        ex.flipped[s.inserted.index()] = true;
+        let u = ex.current.expect("current");
+        assert_fails("L6 (Claim 3.1 (ii)): an edge of M is not flipped", || {
+            after_vertex(&ex, u)
+        });
+    }
+
+    #[test]
+    fn l6_an_unsafe_edge_in_m() {
+        let (mut ex, s) = state();
+        let (bad, _) = *all_edges(&ex)
+            .iter()
+            .find(|(e, [a, b])| !ex.in_m[e.index()] && (pending(&ex, *a) || pending(&ex, *b)))
+            .expect("an edge at a vertex still to be expanded");
+        ex.in_m[s.inserted.index()] = false;
+        ex.in_m[bad.index()] = true;
+        let u = ex.current.expect("current");
+        assert_fails("L6 (Claim 3.1 (ii)): an edge of M is safe", || {
+            after_vertex(&ex, u)
+        });
+    }
+
+    #[test]
+    fn l5_a_flag_at_a_vertex_of_t_prime() {
+        let (mut ex, _) = state();
+        let (bad, _) = *all_edges(&ex)
+            .iter()
+            .find(|(e, [a, b])| {
+                !ex.in_m[e.index()] && (ex.reduced[a.index()] || ex.reduced[b.index()])
+            })
+            .expect("an edge at a vertex of T'");
+        ex.flipped[bad.index()] = true;
+        let u = ex.current.expect("current");
+        assert_fails("L5 (Prop. 3.3 (i))", || after_vertex(&ex, u));
+    }
+
+    #[test]
+    fn l5_a_flag_on_an_edge_that_is_not_flippable() {
+        let (mut ex, _) = state();
+        let (bad, _) = *all_edges(&ex)
+            .iter()
+            .find(|(e, [a, b])| {
+                !ex.in_m[e.index()]
+                    && !ex.reduced[a.index()]
+                    && !ex.reduced[b.index()]
+                    && !ex.t.is_flippable(*a, *b)
+            })
+            .expect("a non-flippable edge between expanded vertices");
+        ex.flipped[bad.index()] = true;
+        let u = ex.current.expect("current");
+        assert_fails("L5 (Claim 3.1 (i)): a flagged edge is flippable", || {
+            after_vertex(&ex, u)
+        });
+    }
+
+    #[test]
+    fn l7_a_triangle_paired_twice() {
+        let (mut ex, _) = state();
+        // An edge sharing a face with an edge of M, safe and unflagged, replaces
+        // another edge of M (so |M| stays right and only the matching is wrong).
+        let safe_outside_m = |e: EdgeId| {
+            let [a, b] = endpoints(&ex, e).expect("live");
+            !ex.in_m[e.index()] && !ex.flipped[e.index()] && !pending(&ex, a) && !pending(&ex, b)
+        };
+        let (first, twin) = (0..ex.in_m.len())
+            .map(|i| EdgeId(i as u32))
+            .filter(|e| ex.in_m[e.index()])
+            .find_map(|e| {
+                let c = ex.numbers.corner(e).expect("live");
+                [c.next(), c.prev()]
+                    .into_iter()
+                    .map(|k| ex.numbers.id(k))
+                    .find(|&t| safe_outside_m(t))
+                    .map(|t| (e, t))
+            })
+            .expect("a safe edge outside M sharing a face with an edge of M");
+        let other = (0..ex.in_m.len())
+            .map(|i| EdgeId(i as u32))
+            .find(|e| ex.in_m[e.index()] && *e != first)
+            .expect("a second edge of M");
+        ex.in_m[other.index()] = false;
+        ex.in_m[twin.index()] = true;
+        let u = ex.current.expect("current");
+        assert_fails("L7 (Claim 3.1 (ii)): M* is a matching", || {
+            after_vertex(&ex, u)
+        });
+    }
+
+    #[test]
+    fn l7_too_many_unpaired_faces() {
+        let (mut ex, _) = state();
+        ex.reduced_faces -= 2;
+        assert_fails("L7 (Prop. 3.3): M* matches all expanded triangles", || {
+            check_k(&ex, None, None)
+        });
+    }
+
+    #[test]
+    fn l7_a_flag_that_cannot_be_flipped_in_k() {
+        let (ex, _) = state();
+        assert_fails("L7 (Claim 3.1 (i))", || {
+            check_k(&ex, Some(Some("flagged edge #0: not flippable")), None)
+        });
+    }
 }
