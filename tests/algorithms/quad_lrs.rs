@@ -336,3 +336,47 @@ fn every_closed_mesh_component() {
     assert!(components >= files.len());
     eprintln!("{components} components, {flips} flips");
 }
+
+/// Erratum T7 (`spec/ERRATA.md`): Lemma 3.4's proof says the unmatched faces of `K` are
+/// "the faces in T', which are also in K". As triangles (vertex triples) most are not:
+/// splits hand `T'`'s faces to split-off vertices and flips change them (Alg. 3.2 l.8,
+/// the proof's own Case 2.1: "[x, y, z] stays unmatched"). What holds exactly is the
+/// face-record reading: the unmatched faces are the face ids of `T'`.
+#[test]
+fn erratum_unmatched_faces_of_k_are_not_the_faces_of_t_prime() {
+    let (mut unmatched, mut not_in_t_prime, mut ids_not_in_t_prime) = (0usize, 0usize, 0usize);
+    for surface in surfaces() {
+        for seed in 0..3u64 {
+            let t = random(&RandomParams {
+                surface,
+                min_faces: 600,
+                flip_percent: 30,
+                seed,
+            });
+            let reduced = contractible::irreducible::rs::reduce(
+                t.clone(),
+                &contractible::irreducible::Options::default(),
+            );
+            let tp: HashSet<[u32; 3]> = reduced
+                .tri
+                .face_list()
+                .into_iter()
+                .map(|mut f| {
+                    f.sort_unstable();
+                    f
+                })
+                .collect();
+            let ex = initial_pairing(t);
+            for f in ex.pairing.unpaired(&ex.tri) {
+                ids_not_in_t_prime += usize::from(!reduced.tri.is_face(f));
+                let mut vs = ex.tri.face_vertices(f).map(|v| v.0);
+                vs.sort_unstable();
+                unmatched += 1;
+                not_in_t_prime += usize::from(!tp.contains(&vs));
+            }
+        }
+    }
+    eprintln!("{not_in_t_prime} of {unmatched} unmatched faces are not faces of T' ({ids_not_in_t_prime} by id)");
+    assert!(not_in_t_prime > 0);
+    assert_eq!(ids_not_in_t_prime, 0);
+}

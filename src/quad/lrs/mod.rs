@@ -77,7 +77,9 @@
 //!
 //! The runtime checks of Claim 3.1 / Prop. 3.3 are in the child module `spec`.
 
-use crate::core::{ContractionRecord, EdgeId, EdgeNumbering, History, Triangulation, VertexId};
+use crate::core::{
+    ContractionRecord, EdgeId, EdgeNumbering, FaceId, History, Triangulation, VertexId,
+};
 use crate::irreducible::{rs, Options as ReduceOptions};
 
 use super::Pairing;
@@ -205,6 +207,8 @@ struct Expander {
     remaining: Vec<u32>,
     /// Whether the vertex is a vertex of `T'`.
     reduced: Vec<bool>,
+    /// Whether the face id is a face of `T'` (exact undo revives the other ids).
+    reduced_face: Vec<bool>,
     /// For a vertex split off `u_i`, the id of `u_i`; [`NONE`] for `T'` vertices and
     /// vertices not yet split off.
     expanded_from: Vec<u32>,
@@ -235,6 +239,9 @@ impl Expander {
             remaining[rec.u.index()] += 1;
         }
         let reduced = (0..nv).map(|v| t.is_vertex(VertexId(v as u32))).collect();
+        let reduced_face = (0..t.face_capacity())
+            .map(|f| t.is_face(FaceId(f as u32)))
+            .collect();
         let ne = numbers.capacity();
         Expander {
             reduced_faces: t.face_count(),
@@ -248,6 +255,7 @@ impl Expander {
             m_len: 0,
             remaining,
             reduced,
+            reduced_face,
             expanded_from: vec![NONE; nv],
             current: None,
             group_flags: Vec::new(),

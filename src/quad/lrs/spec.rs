@@ -15,7 +15,7 @@
 //! | L4 expansion order: the splits of `u_i` are contiguous, `u_{i+1}` processed before `u_i` | Sec. 3.3.1 | `after_vertex` |
 //! | L5 every flagged edge joins two expanded vertices and is flippable in `T_i` | Claim 3.1 (i), Prop. 3.3 (i) | `after_vertex` |
 //! | L6 every edge of `M` is unflipped and safe in `T_i` | Claim 3.1 (ii) | `after_vertex` |
-//! | L7 `K_i` is `T_i` with the flags flipped (each flip valid), `M*` is a matching of `K_i` leaving exactly `n'_f` faces | Claim 3.1, Prop. 3.3 | `after_vertex` (small `T_i`), `at_end` (always) |
+//! | L7 `K_i` is `T_i` with the flags flipped (each flip valid), `M*` is a matching of `K_i` leaving exactly the `n'_f` faces with ids of `T'` unmatched | Claim 3.1, Prop. 3.3 | `after_vertex` (small `T_i`), `at_end` (always) |
 //! | L8 at degree 3, both split edges in `M` only if `[x, y]` is flagged | proof of Prop. 3.3, Case 2.1 | `after_split` |
 //!
 //! Cost: `after_split` is O(d_v). `after_vertex` checks every flag and every edge of `M`
@@ -233,6 +233,19 @@ fn check_k(ex: &Expander, flip_error: Option<Option<&str>>, pair_error: Option<O
     let pair_error = pair_error.unwrap_or(own_pair.as_deref());
     if let Some(err) = pair_error {
         spec_fail!(ex, "L7 (Claim 3.1 (ii)): M* is a matching of K_i", "{err}");
+    }
+    // "Expanded triangles" made exact: the face records a split created (revived ids),
+    // whatever vertices splits and flips have since given them.
+    if let Some(f) = p
+        .unpaired(&k)
+        .find(|f| !ex.reduced_face.get(f.index()).copied().unwrap_or(false))
+    {
+        spec_fail!(
+            ex,
+            "L7 (Prop. 3.3): M* matches all expanded triangles",
+            "face {f} = {:?} was created by a split and is unmatched",
+            k.face_vertices(f)
+        );
     }
     let unpaired = k.face_count() - 2 * p.len();
     if unpaired != ex.reduced_faces {
@@ -484,6 +497,18 @@ mod tests {
         let u = ex.current.expect("current");
         assert_fails("L7 (Claim 3.1 (ii)): M* is a matching", || {
             after_vertex(&ex, u)
+        });
+    }
+
+    #[test]
+    fn l7_an_expanded_triangle_left_unmatched() {
+        let (mut ex, s) = state();
+        // Pretend the face across the inserted edge is a face of T' no more: its record
+        // was created by a split, so dropping the edge from M leaves it unmatched...
+        ex.in_m[s.inserted.index()] = false;
+        ex.reduced_faces += 2; // ...with the count adjusted, only the identity is wrong.
+        assert_fails("L7 (Prop. 3.3): M* matches all expanded triangles", || {
+            check_k(&ex, None, None)
         });
     }
 
