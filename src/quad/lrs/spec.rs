@@ -370,6 +370,34 @@ mod tests {
     }
 
     #[test]
+    fn l2_a_flag_that_is_not_flippable_in_t_ij() {
+        if !ENABLED {
+            return;
+        }
+        // Walk the real expansion to a split whose new vertex v has an edge [v, w],
+        // w ∈ V_i, that is not flippable in T_ij, and claim the split flagged it.
+        let (mut ex, _) = state();
+        let mut found = None;
+        while let Some(s) = ex.step() {
+            let (u, v) = (s.rec.u, s.rec.v);
+            let w =
+                ex.t.link(v)
+                    .find(|&w| ex.expanded_from[w.index()] == u.0 && !ex.t.is_flippable(v, w));
+            if let Some([c, _]) = w.and_then(|w| ex.t.edge_corners(v, w)) {
+                let mut bad = s;
+                bad.flagged = [Some(ex.numbers.id(c)), None];
+                found = Some(bad);
+                break;
+            }
+        }
+        let bad = found.expect("a split with a non-flippable [v, w], w in V_i");
+        assert_fails(
+            "L2 (Lemma 3.2): a flagged edge is flippable in T_ij",
+            || after_split(&ex, &bad, 1),
+        );
+    }
+
+    #[test]
     fn l3_a_flipped_or_misplaced_edge_inserted() {
         let (mut ex, s) = state();
         ex.flipped[s.inserted.index()] = true;
