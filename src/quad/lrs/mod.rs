@@ -19,9 +19,10 @@
 //! **Complexity.** The contraction step is RS: O(g² + g·n). The expansion is O(n): each
 //! split is one exact undo (O(d_v)) plus O(1) work for Alg. 3.1–3.4 (at most two flags
 //! set or one cleared, one edge added to `M`); `K` is materialised with one O(1) flip per
-//! flagged edge (a flag costs O(min degree) to re-check flippability in
-//! [`Triangulation::flip_at`]). Memory: three bytes and a `u32` per edge number, one
-//! `u32` per vertex, plus the RS history.
+//! flagged edge (the flippability re-check of [`Triangulation::flip_at`] costs
+//! O(min degree)), in place of `T`. Memory on top of RS's history: per edge number two
+//! flags and a `u32` (flag time), per flag a `u32` (the flag log), per vertex two `u32`s
+//! and a flag, per face a flag.
 //!
 //! **Determinism.** No randomness: the output is a function of the input (face list and
 //! vertex ids), because RS is deterministic (vertices processed in id order) and every
@@ -438,71 +439,103 @@ impl Expander {
         order
     }
 
-    /// `K` from `T` and the flags: a copy of `T` with the flagged edges flipped in flag
-    /// order, and its numbering. The error names the first flag that cannot be flipped
-    /// (the flip is then skipped).
+    /// `K` from `T` and the flags, as a copy: see [`flip_in_order`].
     fn materialise(&self) -> (Triangulation, EdgeNumbering, usize, Option<String>) {
         let mut k = self.t.clone();
         let mut kn = self.numbers.clone();
-        let mut flips = 0;
-        let mut error = None;
-        for e in self.flags_in_order() {
-            let Some(c) = kn.corner(e) else {
-                error.get_or_insert_with(|| format!("flagged edge {e:?} is dead"));
-                continue;
-            };
-            match k.flip_at(c) {
-                Ok(rec) => {
-                    kn.flipped(&rec);
-                    flips += 1;
-                }
-                Err(err) => {
-                    error.get_or_insert_with(|| format!("flagged edge {e:?}: {err}"));
-                }
-            }
-        }
+        let (flips, error) = flip_in_order(&self.flags_in_order(), &mut k, &mut kn);
         (k, kn, flips, error)
     }
 
-    /// `M*` on `K`: the two faces of each edge of `M`, in edge-number order. The error
-    /// names the first edge of `M` that is not an edge of `K` or claims a paired face
-    /// (that edge is then skipped).
+    /// `M*` on `K`: see [`pair_edges`].
     fn pair_m(&self, k: &Triangulation, kn: &EdgeNumbering) -> (Pairing, Option<String>) {
-        let mut p = Pairing::new(k.face_capacity());
-        let mut error = None;
-        for (i, _) in self.in_m.iter().enumerate().filter(|&(_, &b)| b) {
-            let e = EdgeId(i as u32);
-            let Some(c) = kn.corner(e) else {
-                error.get_or_insert_with(|| format!("edge {e:?} of M is dead"));
-                continue;
-            };
-            if self.flipped[i] {
-                error.get_or_insert_with(|| format!("edge {e:?} of M is flagged"));
-                continue;
-            }
-            let (f, g) = (c.face(), k.opposite(c).face());
-            if p.is_paired(f) || p.is_paired(g) {
-                let [a, b] = k.edge_endpoints(c);
-                error.get_or_insert_with(|| {
-                    format!("edge {e:?} = [{a}, {b}] of M claims an already paired face")
-                });
-                continue;
-            }
-            p.pair(f, g);
-        }
-        (p, error)
+        pair_edges(&self.in_m, &self.flipped, k, kn)
     }
 
+    /// Materialises `K` in place of `T` (no copy) and pairs `M*` on it. The
+    /// specification checks the same state first, on its own copy (L7).
     fn finish(self) -> Expansion {
-        let (k, kn, flips, flip_error) = self.materialise();
-        let (pairing, pair_error) = self.pair_m(&k, &kn);
-        spec::at_end(&self, flip_error.as_deref(), pair_error.as_deref());
+        spec::at_end(&self);
+        let order = self.flags_in_order();
+        let Expander {
+            t: mut k,
+            numbers: mut kn,
+            in_m,
+            flipped,
+            reduced_faces,
+            cases,
+            ..
+        } = self;
+        let (flips, _) = flip_in_order(&order, &mut k, &mut kn);
+        let (pairing, _) = pair_edges(&in_m, &flipped, &k, &kn);
         Expansion {
             tri: k,
             pairing,
             flips,
-            reduced_faces: self.reduced_faces,
-            cases: self.cases,
+            reduced_faces,
+            cases,
         }
     }
+}
+
+/// Turns `k` (numbered by `kn`) into `K` by flipping the edges of `order` in turn. Returns
+/// the flips made and an error naming the first edge that could not be flipped (that
+/// flip is skipped, so `k` stays a triangulation).
+fn flip_in_order(
+    order: &[EdgeId],
+    k: &mut Triangulation,
+    kn: &mut EdgeNumbering,
+) -> (usize, Option<String>) {
+    let mut flips = 0;
+    let mut error = None;
+    for &e in order {
+        let Some(c) = kn.corner(e) else {
+            error.get_or_insert_with(|| format!("flagged edge {e:?} is dead"));
+            continue;
+        };
+        match k.flip_at(c) {
+            Ok(rec) => {
+                kn.flipped(&rec);
+                flips += 1;
+            }
+            Err(err) => {
+                error.get_or_insert_with(|| format!("flagged edge {e:?}: {err}"));
+            }
+        }
+    }
+    (flips, error)
+}
+
+/// `M*` on `K`: the two faces of each edge of `M` (`in_m`), in edge-number order. The
+/// error names the first edge of `M` that is dead, flagged or claims a paired face (that
+/// edge is then skipped, so the pairing stays valid).
+fn pair_edges(
+    in_m: &[bool],
+    flipped: &[bool],
+    k: &Triangulation,
+    kn: &EdgeNumbering,
+) -> (Pairing, Option<String>) {
+    let mut p = Pairing::new(k.face_capacity());
+    let mut error = None;
+    for (i, _) in in_m.iter().enumerate().filter(|&(_, &b)| b) {
+        let e = EdgeId(i as u32);
+        let Some(c) = kn.corner(e) else {
+            error.get_or_insert_with(|| format!("edge {e:?} of M is dead"));
+            continue;
+        };
+        if flipped[i] {
+            error.get_or_insert_with(|| format!("edge {e:?} of M is flagged"));
+            continue;
+        }
+        let (f, g) = (c.face(), k.opposite(c).face());
+        if p.is_paired(f) || p.is_paired(g) {
+            let [a, b] = k.edge_endpoints(c);
+            error.get_or_insert_with(|| {
+                format!("edge {e:?} = [{a}, {b}] of M claims an already paired face")
+            });
+            continue;
+        }
+        p.pair(f, g);
+    }
+    (p, error)
 }
