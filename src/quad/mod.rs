@@ -15,6 +15,8 @@
 //! input `K = T` itself.
 
 use crate::core::{FaceId, Triangulation};
+
+pub mod lrs;
 use crate::mesh::QuadMesh;
 
 pub mod greedy;
