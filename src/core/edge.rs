@@ -210,6 +210,11 @@ impl EdgeNumbering {
     /// reported to [`Self::contracted`] and not yet undone: `[u, v]`, `[v, x]` and
     /// `[v, y]` get their numbers back; the merged edges split again, keeping their
     /// numbers on `[u, x]` and `[u, y]`. O(1).
+    ///
+    /// The numbering must have seen `rec` through [`Self::contracted`]: the revived
+    /// numbers are read back from the removed faces' corners, which a numbering made
+    /// afterwards (by [`Self::new`] on the contracted surface) never numbered. To number
+    /// the edges of a replayed history, number the input and feed it every record.
     pub fn uncontracted(&mut self, rec: &ContractionRecord) {
         for (k, f) in rec.faces.into_iter().enumerate() {
             for s in 0..3 {
