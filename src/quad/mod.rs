@@ -14,6 +14,9 @@
 //! output is perfect; only LRS changes the triangulation (by flips), the others pair the
 //! input `K = T` itself.
 
+pub mod augment;
+pub mod matching;
+
 use crate::core::{FaceId, Triangulation};
 use crate::mesh::QuadMesh;
 
