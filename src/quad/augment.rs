@@ -47,7 +47,11 @@
 //! stated above. A port that follows the rules above reproduces the pairs exactly.
 //!
 //! # Complexity
-//! Memory: about 28 bytes per face slot (`face_capacity`), plus the queue. Time: the
+//! Memory: one 32-byte record per face slot (`face_capacity`: the three neighbours, the
+//! mate and the search state of a face in one aligned record, so that a visit costs one
+//! cache miss), plus a list of the live faces and the queue: about 40 bytes per face,
+//! 170 MB at 4.2M triangles. Face ids must stay below 2^30 (the BFS depth shares a word
+//! with the label). The mates are copied in and written back, O(F) each. Time: the
 //! linear pass is O(F). Each phase scans every vertex at most once as an even vertex (3
 //! edge visits) plus blossom work that is linear up to the inverse Ackermann factor, so a
 //! phase is O(F·α(F)); every phase augments at least once (if it found no path the
@@ -82,140 +86,215 @@ pub struct Completion {
 /// be re-paired. Returns the counters.
 ///
 /// # Panics
-/// If `pairing` is not a pairing of `tri` ([`Pairing::check`], verified first in O(F)):
-/// completing it would otherwise read faces that are not there.
+/// If `pairing` is not a pairing of `tri` (what [`Pairing::check`] verifies; checked
+/// while the search records are built, in O(F)): completing it would otherwise read
+/// faces that are not there. If `tri.face_capacity() >= 2^30`.
 pub fn complete(tri: &Triangulation, pairing: &mut Pairing) -> Completion {
     run(tri, pairing).0
 }
 
 /// [`complete`], also returning the number of blossoms shrunk (for tests).
 pub(crate) fn run(tri: &Triangulation, pairing: &mut Pairing) -> (Completion, u64) {
-    if let Err(e) = pairing.check(tri) {
-        panic!("augment::complete: the input is not a pairing of the triangulation: {e}");
-    }
-    let mut search = Search::new(tri, pairing);
+    let mut search = match Search::new(tri, pairing) {
+        Ok(s) => s,
+        Err(e) => {
+            panic!("augment::complete: the input is not a pairing of the triangulation: {e}")
+        }
+    };
     search.linear_pass();
     let mut roots: Vec<u32> = search.unpaired();
     while !roots.is_empty() {
-        search.phase(&roots);
-        roots.retain(|&r| !search.pairing.is_paired(FaceId(r)));
-        if search.last_phase_paths == 0 {
+        let paths = search.phase(&roots);
+        roots.retain(|&r| search.node[r as usize].mate == NONE);
+        if paths == 0 {
             // A maximum matching that is not perfect: impossible on a closed
-            // triangulation (Petersen), so only a broken input gets here; stop rather
-            // than loop.
+            // triangulation (Petersen), so only a broken input could get here; stop
+            // rather than loop.
             debug_assert!(false, "a phase found no augmenting path");
             break;
         }
     }
-    debug_assert!(search.pairing.check(tri).is_ok());
+    search.write_back(pairing);
+    debug_assert!(pairing.check(tri).is_ok());
     (search.counters, search.blossoms)
 }
 
-/// No vertex / no link.
+/// No vertex / no link / no mate.
 const NONE: u32 = u32::MAX;
-/// Labels of the alternating forest.
-const UNREACHED: u8 = 0;
-const EVEN: u8 = 1;
-const ODD: u8 = 2;
+/// Labels of the alternating forest (the low two bits of [`Node::dl`]).
+const UNREACHED: u32 = 0;
+const EVEN: u32 = 1;
+const ODD: u32 = 2;
+const LABEL: u32 = 3;
 
-/// Search state of one dual vertex (face), array-of-structs so that a visit touches one
-/// cache line: `link` is the flower link (the even parent of an odd vertex, or the
-/// cross edge recorded when a blossom is shrunk), `base` the union–find parent over
-/// blossom bases, `dep` the BFS depth (set for odd vertices too: a vertex turned even by a
-/// blossom passes it on), `tree` the root of its tree. Only meaningful while `label` is
-/// not `UNREACHED`; every field is written when the vertex is labelled.
+/// Everything the search reads or writes about one dual vertex (face), in one 32-byte
+/// cache-line-aligned record, so that a visit costs one cache miss rather than one per
+/// array (the dual of a 4M-triangle mesh does not fit in cache):
+/// - `adj`: the three neighbouring faces (a copy of `face_neighbours`), `mate`: the
+///   current mate or `NONE` (the search works on this copy, written back at the end);
+/// - `link`: the flower link (the even parent of an odd vertex, or the cross edge
+///   recorded when a blossom is shrunk); `base`: the union–find parent over blossom
+///   bases; `dl`: BFS depth × 4 + label (the depth is set for odd vertices too: a vertex
+///   turned even by a blossom passes it on); `tree`: the index of its root in the phase's
+///   root list. Those four are meaningful only while the label is not `UNREACHED`, and
+///   all are written when the vertex is labelled.
 #[derive(Clone, Copy)]
+#[repr(C, align(32))]
 struct Node {
+    adj: [u32; 3],
+    mate: u32,
     link: u32,
     base: u32,
-    dep: u32,
+    dl: u32,
     tree: u32,
-    label: u8,
 }
 
-const FRESH: Node = Node {
-    link: NONE,
-    base: NONE,
-    dep: 0,
-    tree: NONE,
-    label: UNREACHED,
-};
+impl Node {
+    #[inline]
+    fn label(&self) -> u32 {
+        self.dl & LABEL
+    }
+    #[inline]
+    fn dep(&self) -> u32 {
+        self.dl >> 2
+    }
+}
 
-struct Search<'a> {
-    tri: &'a Triangulation,
-    pairing: &'a mut Pairing,
+struct Search {
     node: Vec<Node>,
-    /// `frozen[root] == phase`: the tree of `root` augmented in this phase.
-    frozen: Vec<u32>,
+    /// Live faces in increasing id.
+    live: Vec<u32>,
+    /// `frozen[tree]`: that tree augmented in this phase (indexed by root position).
+    frozen: Vec<bool>,
     /// BFS queue of even vertices (reused across phases; also the list of the even
     /// vertices to reset).
     queue: Vec<u32>,
     /// Odd vertices labelled in this phase (to reset).
     odd: Vec<u32>,
-    phase: u32,
-    last_phase_paths: usize,
     counters: Completion,
     blossoms: u64,
 }
 
-impl<'a> Search<'a> {
-    fn new(tri: &'a Triangulation, pairing: &'a mut Pairing) -> Self {
+impl Search {
+    /// Copies the dual graph and the mates into the search records, checking on the way
+    /// that `pairing` is a pairing of `tri` (what [`Pairing::check`] checks, at no extra
+    /// pass).
+    fn new(tri: &Triangulation, pairing: &Pairing) -> Result<Self, String> {
         let n = tri.face_capacity();
-        Search {
-            tri,
-            pairing,
-            node: vec![FRESH; n],
-            frozen: vec![0; n],
+        if pairing.face_capacity() < n {
+            return Err(format!(
+                "pairing holds {} faces, the triangulation {n}",
+                pairing.face_capacity()
+            ));
+        }
+        if n >= 1 << 30 {
+            // The depth shares a word with the label (module documentation, memory).
+            return Err(format!("{n} face ids exceed the 2^30 the search supports"));
+        }
+        let blank = Node {
+            adj: [NONE; 3],
+            mate: NONE,
+            link: NONE,
+            base: NONE,
+            dl: UNREACHED,
+            tree: NONE,
+        };
+        let mut node = vec![blank; n];
+        let mut live = Vec::with_capacity(tri.face_count());
+        let mut paired = 0usize;
+        for f in tri.faces() {
+            let adj = tri.face_neighbours(f).map(|g| g.0);
+            let mate = match pairing.mate(f) {
+                Some(g) => {
+                    if !adj.contains(&g.0) {
+                        return Err(format!("{f} and {g} are paired but share no edge"));
+                    }
+                    paired += 1;
+                    g.0
+                }
+                None => NONE,
+            };
+            node[f.index()].adj = adj;
+            node[f.index()].mate = mate;
+            live.push(f.0);
+        }
+        // Live faces pair only with live neighbours (above) and mates are symmetric
+        // (Pairing's invariant), so this catches pairs holding removed faces.
+        if paired != 2 * pairing.len() {
+            return Err(format!(
+                "{} pairs recorded, {paired} live faces paired",
+                pairing.len()
+            ));
+        }
+        Ok(Search {
+            node,
+            live,
+            frozen: Vec::new(),
             queue: Vec::new(),
             odd: Vec::new(),
-            phase: 0,
-            last_phase_paths: 0,
             counters: Completion::default(),
             blossoms: 0,
+        })
+    }
+
+    /// Makes `pairing` hold the search's mates: first unpairs every face whose mate
+    /// changed, then pairs the new pairs. Two linear passes.
+    fn write_back(&self, pairing: &mut Pairing) {
+        for &f in &self.live {
+            let m = self.node[f as usize].mate;
+            if pairing.mate(FaceId(f)).map_or(NONE, |g| g.0) != m {
+                pairing.unpair(FaceId(f));
+            }
+        }
+        for &f in &self.live {
+            let m = self.node[f as usize].mate;
+            if m != NONE && f < m && !pairing.is_paired(FaceId(f)) {
+                pairing.pair(FaceId(f), FaceId(m));
+            }
         }
     }
 
     /// The live unpaired faces, in increasing id.
     fn unpaired(&self) -> Vec<u32> {
-        self.pairing.unpaired(self.tri).map(|f| f.0).collect()
+        self.live
+            .iter()
+            .copied()
+            .filter(|&f| self.node[f as usize].mate == NONE)
+            .collect()
     }
 
     #[inline]
-    fn neighbours(&self, f: u32) -> [u32; 3] {
-        self.tri.face_neighbours(FaceId(f)).map(|g| g.0)
-    }
-
-    #[inline]
-    fn mate(&self, f: u32) -> u32 {
-        self.pairing.mate(FaceId(f)).map_or(NONE, |g| g.0)
+    fn set_pair(&mut self, a: u32, b: u32) {
+        self.node[a as usize].mate = b;
+        self.node[b as usize].mate = a;
     }
 
     /// Augmenting paths of length 1 and 3 from every unpaired face, in one scan (module
     /// documentation, step 1).
     fn linear_pass(&mut self) {
-        for f in 0..self.tri.face_capacity() as u32 {
-            if !self.tri.is_face(FaceId(f)) || self.pairing.is_paired(FaceId(f)) {
+        for i in 0..self.live.len() {
+            let f = self.live[i];
+            if self.node[f as usize].mate != NONE {
                 continue;
             }
-            let nb = self.neighbours(f);
+            let nb = self.node[f as usize].adj;
             let mut done = false;
             for &g in &nb {
                 self.counters.edge_visits += 1;
-                if !self.pairing.is_paired(FaceId(g)) {
-                    self.pairing.pair(FaceId(f), FaceId(g));
+                if self.node[g as usize].mate == NONE {
+                    self.set_pair(f, g);
                     done = true;
                     break;
                 }
             }
             if !done {
                 'three: for &v in &nb {
-                    let w = self.mate(v);
-                    for x in self.neighbours(w) {
+                    let w = self.node[v as usize].mate;
+                    for x in self.node[w as usize].adj {
                         self.counters.edge_visits += 1;
-                        if x != f && !self.pairing.is_paired(FaceId(x)) {
-                            self.pairing.unpair(FaceId(v));
-                            self.pairing.pair(FaceId(f), FaceId(v));
-                            self.pairing.pair(FaceId(w), FaceId(x));
+                        if x != f && self.node[x as usize].mate == NONE {
+                            self.set_pair(f, v);
+                            self.set_pair(w, x);
                             done = true;
                             break 'three;
                         }
@@ -245,68 +324,65 @@ impl<'a> Search<'a> {
     /// Labels `v` odd (child of `u`) and its mate `w` even; queues `w`.
     #[inline]
     fn grow(&mut self, u: u32, v: u32, w: u32) {
-        let Node { dep, tree, .. } = self.node[u as usize];
-        self.node[v as usize] = Node {
-            link: u,
-            base: v,
-            dep: dep + 1,
-            tree,
-            label: ODD,
-        };
-        self.node[w as usize] = Node {
-            link: NONE,
-            base: w,
-            dep: dep + 2,
-            tree,
-            label: EVEN,
-        };
+        let Node { dl, tree, .. } = self.node[u as usize];
+        let dep = dl >> 2;
+        let nv = &mut self.node[v as usize];
+        nv.link = u;
+        nv.base = v;
+        nv.dl = ((dep + 1) << 2) | ODD;
+        nv.tree = tree;
+        let nw = &mut self.node[w as usize];
+        nw.link = NONE;
+        nw.base = w;
+        nw.dl = ((dep + 2) << 2) | EVEN;
+        nw.tree = tree;
         self.odd.push(v);
         self.queue.push(w);
     }
 
     /// One phase from `roots` (all unpaired faces): module documentation, step 2.
-    fn phase(&mut self, roots: &[u32]) {
-        self.phase += 1;
+    /// Returns the number of augmenting paths found.
+    fn phase(&mut self, roots: &[u32]) -> usize {
         self.counters.phases += 1;
-        self.last_phase_paths = 0;
-        let phase = self.phase;
+        let mut paths = 0;
         self.queue.clear();
         self.odd.clear();
-        for &r in roots {
-            self.node[r as usize] = Node {
-                link: NONE,
-                base: r,
-                dep: 0,
-                tree: r,
-                label: EVEN,
-            };
+        self.frozen.clear();
+        self.frozen.resize(roots.len(), false);
+        for (k, &r) in roots.iter().enumerate() {
+            let nr = &mut self.node[r as usize];
+            nr.link = NONE;
+            nr.base = r;
+            nr.dl = EVEN;
+            nr.tree = k as u32;
             self.queue.push(r);
         }
         let mut head = 0;
         while head < self.queue.len() {
             let u = self.queue[head];
             head += 1;
-            let tu = self.node[u as usize].tree;
-            if self.frozen[tu as usize] == phase {
+            let Node { adj, tree: tu, .. } = self.node[u as usize];
+            if self.frozen[tu as usize] {
                 continue;
             }
-            for v in self.neighbours(u) {
+            for v in adj {
                 self.counters.edge_visits += 1;
                 let nv = self.node[v as usize];
-                match nv.label {
+                match nv.label() {
                     UNREACHED => {
-                        let w = self.mate(v);
-                        if w == NONE {
+                        if nv.mate == NONE {
                             // Unreachable (every unpaired face is a root), but a free
                             // unreached face would just end an augmenting path.
                             self.augment(u, v);
+                            paths += 1;
                             break;
                         }
-                        self.grow(u, v, w);
+                        self.grow(u, v, nv.mate);
                     }
-                    EVEN if self.frozen[nv.tree as usize] != phase => {
+                    EVEN if !self.frozen[nv.tree as usize] => {
                         if nv.tree != tu {
                             self.augment(u, v);
+                            paths += 1;
                             break;
                         }
                         let (bu, bv) = (self.find(u), self.find(v));
@@ -323,12 +399,13 @@ impl<'a> Search<'a> {
         }
         for i in 0..self.queue.len() {
             let x = self.queue[i];
-            self.node[x as usize].label = UNREACHED;
+            self.node[x as usize].dl = UNREACHED;
         }
         for i in 0..self.odd.len() {
             let x = self.odd[i];
-            self.node[x as usize].label = UNREACHED;
+            self.node[x as usize].dl = UNREACHED;
         }
+        paths
     }
 
     /// The base of the smallest blossom containing the bases `a` and `b` of one tree:
@@ -337,10 +414,10 @@ impl<'a> Search<'a> {
     fn lca(&mut self, mut a: u32, mut b: u32) -> u32 {
         let mut steps = 0usize;
         while a != b {
-            if self.node[a as usize].dep < self.node[b as usize].dep {
+            if self.node[a as usize].dep() < self.node[b as usize].dep() {
                 std::mem::swap(&mut a, &mut b);
             }
-            let m = self.mate(a);
+            let m = self.node[a as usize].mate;
             debug_assert!(m != NONE, "a root is never deeper than another base");
             let up = self.node[m as usize].link;
             a = self.find(up);
@@ -357,9 +434,10 @@ impl<'a> Search<'a> {
         let mut steps = 0usize;
         while self.find(x) != p {
             self.node[x as usize].link = y;
-            y = self.mate(x);
-            if self.node[y as usize].label == ODD {
-                self.node[y as usize].label = EVEN;
+            y = self.node[x as usize].mate;
+            let ny = &mut self.node[y as usize];
+            if ny.label() == ODD {
+                ny.dl = (ny.dl & !LABEL) | EVEN;
                 self.queue.push(y);
             }
             if self.find(x) == x {
@@ -377,37 +455,34 @@ impl<'a> Search<'a> {
     /// Pairs the even `u` with `v` (even in another tree, or unpaired) and flips the
     /// alternating paths from both back to their roots; freezes both trees.
     fn augment(&mut self, u: u32, v: u32) {
-        let mu = self.pairing.unpair(FaceId(u));
-        let mv = self.pairing.unpair(FaceId(v));
-        self.pairing.pair(FaceId(u), FaceId(v));
-        if let Some(m) = mu {
-            self.flip(m.0);
+        let (mu, mv) = (self.node[u as usize].mate, self.node[v as usize].mate);
+        self.set_pair(u, v);
+        if mu != NONE {
+            self.flip(mu);
         }
-        if let Some(m) = mv {
-            self.flip(m.0);
+        if mv != NONE {
+            self.flip(mv);
         }
-        let phase = self.phase;
         let (tu, nv) = (self.node[u as usize].tree, self.node[v as usize]);
-        self.frozen[tu as usize] = phase;
-        if nv.label != UNREACHED {
-            self.frozen[nv.tree as usize] = phase;
+        self.frozen[tu as usize] = true;
+        if nv.label() != UNREACHED {
+            self.frozen[nv.tree as usize] = true;
         }
         self.counters.augmenting_paths += 1;
-        self.last_phase_paths += 1;
     }
 
-    /// Flips the alternating path that starts at the unpaired `x` (whose former mate was
-    /// just re-paired) and follows flower links to its root.
+    /// Flips the alternating path that starts at `x` (whose former mate was just
+    /// re-paired, so `x` is momentarily unpaired) and follows flower links to its root.
     fn flip(&mut self, mut x: u32) {
         let mut steps = 0usize;
         loop {
             let y = self.node[x as usize].link;
-            let t = self.pairing.unpair(FaceId(y));
-            self.pairing.pair(FaceId(x), FaceId(y));
-            match t {
-                None => break,
-                Some(t) => x = t.0,
+            let t = self.node[y as usize].mate;
+            self.set_pair(x, y);
+            if t == NONE {
+                break;
             }
+            x = t;
             steps += 1;
             debug_assert!(steps <= self.node.len(), "flip does not terminate");
         }
@@ -417,6 +492,9 @@ impl<'a> Search<'a> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    const UNREACHED: u8 = 0;
+    const EVEN: u8 = 1;
+    const ODD: u8 = 2;
     use crate::gen::{icosahedron, octahedron, random, tetrahedron, RandomParams, SurfaceKind};
 
     fn tri(m: &crate::TriMesh) -> Triangulation {
