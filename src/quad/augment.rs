@@ -171,6 +171,9 @@ struct Search {
     queue: Vec<u32>,
     /// Odd vertices labelled in this phase (to reset).
     odd: Vec<u32>,
+    /// Faces whose mate was set by the search (with repetitions): the only ones the
+    /// write-back has to look at.
+    changed: Vec<u32>,
     counters: Completion,
     blossoms: u64,
 }
@@ -232,23 +235,25 @@ impl Search {
             frozen: Vec::new(),
             queue: Vec::new(),
             odd: Vec::new(),
+            changed: Vec::new(),
             counters: Completion::default(),
             blossoms: 0,
         })
     }
 
-    /// Makes `pairing` hold the search's mates: first unpairs every face whose mate
-    /// changed, then pairs the new pairs. Two linear passes.
+    /// Makes `pairing` hold the search's mates: first unpairs every changed face whose
+    /// mate differs, then pairs the new pairs (a face left unpaired by the first pass has
+    /// a new mate that was changed too, hence also unpaired). Linear in the changes.
     fn write_back(&self, pairing: &mut Pairing) {
-        for &f in &self.live {
+        for &f in &self.changed {
             let m = self.node[f as usize].mate;
             if pairing.mate(FaceId(f)).map_or(NONE, |g| g.0) != m {
                 pairing.unpair(FaceId(f));
             }
         }
-        for &f in &self.live {
+        for &f in &self.changed {
             let m = self.node[f as usize].mate;
-            if m != NONE && f < m && !pairing.is_paired(FaceId(f)) {
+            if m != NONE && !pairing.is_paired(FaceId(f)) {
                 pairing.pair(FaceId(f), FaceId(m));
             }
         }
@@ -267,6 +272,8 @@ impl Search {
     fn set_pair(&mut self, a: u32, b: u32) {
         self.node[a as usize].mate = b;
         self.node[b as usize].mate = a;
+        self.changed.push(a);
+        self.changed.push(b);
     }
 
     /// Augmenting paths of length 1 and 3 from every unpaired face, in one scan (module
@@ -361,6 +368,7 @@ impl Search {
         while head < self.queue.len() {
             let u = self.queue[head];
             head += 1;
+
             let Node { adj, tree: tu, .. } = self.node[u as usize];
             if self.frozen[tu as usize] {
                 continue;
