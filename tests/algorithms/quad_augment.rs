@@ -315,6 +315,28 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     );
     assert_perfect(&t, &p, "C0");
     assert!(per_face < 8.0, "{per_face:.2} edge visits per face");
+    // Calibration: one plain BFS sweep of the dual (3 visits per face) on this machine.
+    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let mut seen = vec![false; t.face_capacity()];
+    let mut queue: Vec<FaceId> = t.faces().take(1).collect();
+    seen[queue[0].index()] = true;
+    let mut head = 0;
+    while head < queue.len() {
+        let f = queue[head];
+        head += 1;
+        for g in t.face_neighbours(f) {
+            if !seen[g.index()] {
+                seen[g.index()] = true;
+                queue.push(g);
+            }
+        }
+    }
+    assert_eq!(queue.len(), t.face_count());
+    eprintln!(
+        "C0 plain BFS sweep: {:.3} s wall, {:.2} s CPU",
+        clock.elapsed().as_secs_f64(),
+        thread_cpu_seconds() - cpu
+    );
     let mut q = matching::initial_pairing(&t);
     let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
     let c = complete(&t, &mut q);
@@ -326,4 +348,44 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
         thread_cpu_seconds() - cpu
     );
     assert_perfect(&t, &q, "C0 from empty");
+}
+
+/// Two unpaired faces far apart: a perfect pairing in which one pair is freed and the
+/// freedom of one end is then pushed along a long random alternating walk (re-pairing
+/// as it goes), so the only way back is a long augmenting path through whatever blossoms
+/// lie between. The completion must find it (one path).
+#[test]
+fn long_augmenting_paths_are_found() {
+    for (k, kind) in [SurfaceKind::Orientable(0), SurfaceKind::NonOrientable(5)]
+        .into_iter()
+        .enumerate()
+    {
+        let t = random(&RandomParams {
+            surface: kind,
+            min_faces: 20_000,
+            flip_percent: 30,
+            seed: 40 + k as u64,
+        });
+        let mut p = matching::initial_pairing(&t);
+        complete(&t, &mut p);
+        assert_perfect(&t, &p, "base");
+        let mut rng = Rng::new(k as u64);
+        let a = t.faces().nth(rng.index(t.face_count())).expect("a face");
+        let mut e = p.unpair(a).expect("perfect");
+        let mut steps = 0;
+        for _ in 0..5_000 {
+            // e is free: pair it with a random neighbour y (not a), freeing y's mate.
+            let y = t.face_neighbours(e)[rng.index(3)];
+            if y == a {
+                continue;
+            }
+            let Some(z) = p.unpair(y) else { continue };
+            p.pair(e, y);
+            e = z;
+            steps += 1;
+        }
+        assert!(steps > 1_000 && !p.is_paired(a) && !p.is_paired(e));
+        let c = complete_checked(&t, &p, &format!("{kind:?} walk"));
+        assert_eq!(c.augmenting_paths, 1);
+    }
 }
