@@ -14,12 +14,15 @@
 //! output is perfect; only LRS changes the triangulation (by flips), the others pair the
 //! input `K = T` itself.
 
-use crate::core::{FaceId, Triangulation};
+use std::time::Instant;
 
-pub mod lrs;
+use crate::core::{FaceId, Triangulation};
 use crate::mesh::QuadMesh;
 
+pub mod augment;
 pub mod greedy;
+pub mod lrs;
+pub mod matching;
 pub mod pulli_segal;
 
 /// Which algorithm to run.
@@ -120,6 +123,51 @@ pub fn initial_stats(tri: &Triangulation, initial: &Pairing, seconds: f64) -> St
         },
         initial_unpaired: faces - paired,
         ..Stats::default()
+    }
+}
+
+/// Runs `algorithm` on `tri` (consumed: LRS flips in place): the initial pairing step,
+/// timed as (a), then the completion by [`augment::complete`], timed as (d). The output
+/// pairing is perfect (a closed triangulation's dual is cubic and bridgeless, so a
+/// perfect matching exists, and the completion finds one); only LRS changes the
+/// triangulation, by the flips it counts.
+///
+/// Deterministic: the result (all but the timings) is a function of the input (ids and
+/// corner slots included), the algorithm and `options.seed`.
+pub fn convert(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Quadrangulation {
+    let started = Instant::now();
+    let (tri, pairing, flips) = match algorithm {
+        Algorithm::Lrs => {
+            let e = lrs::initial_pairing(tri);
+            (e.tri, e.pairing, e.flips)
+        }
+        Algorithm::Ps => {
+            let p = pulli_segal::initial_pairing(&tri, options);
+            (tri, p, 0)
+        }
+        Algorithm::Sg => {
+            let p = greedy::initial_pairing(&tri, options);
+            (tri, p, 0)
+        }
+        Algorithm::Matching => {
+            let p = matching::initial_pairing(&tri);
+            (tri, p, 0)
+        }
+    };
+    let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
+    stats.flips = flips;
+    let mut pairing = pairing;
+    let completion_started = Instant::now();
+    let work = augment::complete(&tri, &mut pairing);
+    stats.completion_seconds = completion_started.elapsed().as_secs_f64();
+    stats.total_seconds = stats.initial_seconds + stats.completion_seconds;
+    stats.augmenting_paths = work.augmenting_paths;
+    stats.phases = work.phases;
+    Quadrangulation {
+        algorithm,
+        tri,
+        pairing,
+        stats,
     }
 }
 

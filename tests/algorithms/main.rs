@@ -8,6 +8,7 @@ mod common;
 mod irreducible_algorithms;
 mod irreducible_meshes;
 mod oracles;
+mod quad_augment;
 mod quad_greedy;
 mod quad_lrs;
 mod rs_algorithm;

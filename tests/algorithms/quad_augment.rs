@@ -1,0 +1,391 @@
+//! `quad::augment::complete` and `quad::matching`: every completion is checked by code
+//! independent of the completion (pairs share an edge by their vertex sets, every live face
+//! is in exactly one pair), and on small inputs its size is compared with petgraph's
+//! maximum matching of the dual graph.
+//!
+//! The biggest shared meshes are slow in debug builds; the README's test command is
+//! `cargo test --release --features invariants,cli`.
+
+use std::collections::BTreeSet;
+
+use contractible::gen::{random, RandomParams, SurfaceKind};
+use contractible::quad::augment::{complete, Completion};
+use contractible::quad::{matching, Pairing};
+use contractible::rng::Rng;
+use contractible::{FaceId, Surfaces, Triangulation};
+
+use crate::common;
+
+/// Independent check that `p` is a perfect pairing of `t`: every live face has exactly one
+/// mate among the pairs listed by `pairs()`, mates are live, distinct and share exactly
+/// two vertices (an edge: two faces of a closed surface that share two vertices share
+/// the edge between them, as no two edges have the same endpoints), and there are F/2
+/// pairs.
+fn assert_perfect(t: &Triangulation, p: &Pairing, label: &str) {
+    let mut seen = vec![0u8; t.face_capacity()];
+    let mut pairs = 0usize;
+    for (f, g) in p.pairs() {
+        assert!(
+            t.is_face(f) && t.is_face(g) && f != g,
+            "{label}: bad pair ({f}, {g})"
+        );
+        let a: BTreeSet<u32> = t.face_vertices(f).iter().map(|v| v.0).collect();
+        let b: BTreeSet<u32> = t.face_vertices(g).iter().map(|v| v.0).collect();
+        assert_eq!(
+            a.intersection(&b).count(),
+            2,
+            "{label}: ({f}, {g}) share no edge"
+        );
+        seen[f.index()] += 1;
+        seen[g.index()] += 1;
+        pairs += 1;
+    }
+    for f in t.faces() {
+        assert_eq!(
+            seen[f.index()],
+            1,
+            "{label}: face {f} in {} pairs",
+            seen[f.index()]
+        );
+    }
+    assert_eq!(2 * pairs, t.face_count(), "{label}: pair count");
+    assert!(p.is_perfect(t), "{label}: is_perfect");
+}
+
+/// A random greedy maximal pairing, the simple greedy SG of the paper (§3.1) in dual
+/// terms: the edges in a seeded shuffled order, each joining two unpaired faces pairs
+/// them. A stand-in for `quad::greedy`, leaving about 12–13% unpaired on mesh duals.
+fn greedy(t: &Triangulation, seed: u64) -> Pairing {
+    let mut edges: Vec<(FaceId, FaceId)> = t
+        .edges()
+        .map(|(_, _, c)| (c.face(), t.opposite(c).face()))
+        .collect();
+    Rng::new(seed).shuffle(&mut edges);
+    let mut p = Pairing::new(t.face_capacity());
+    for (f, g) in edges {
+        if !p.is_paired(f) && !p.is_paired(g) {
+            p.pair(f, g);
+        }
+    }
+    p
+}
+
+/// A random sparse, generally non-maximal pairing: each pair of a greedy pairing is kept
+/// with probability 1/4.
+fn sparse(t: &Triangulation, seed: u64) -> Pairing {
+    let g = greedy(t, seed);
+    let mut rng = Rng::new(seed ^ 0x5eed);
+    let mut p = Pairing::new(t.face_capacity());
+    for (a, b) in g.pairs() {
+        if rng.chance(1, 4) {
+            p.pair(a, b);
+        }
+    }
+    p
+}
+
+/// Completes `start` and checks the result independently; returns the counters.
+fn complete_checked(t: &Triangulation, start: &Pairing, label: &str) -> Completion {
+    let mut p = start.clone();
+    let c = complete(t, &mut p);
+    assert_perfect(t, &p, label);
+    assert_eq!(
+        c.augmenting_paths,
+        t.face_count() / 2 - start.len(),
+        "{label}: one pair per augmenting path"
+    );
+    // Deterministic: the same input gives the same output.
+    let mut again = start.clone();
+    assert_eq!(complete(t, &mut again), c, "{label}: counters differ");
+    assert!(again == p, "{label}: output differs between runs");
+    c
+}
+
+/// The starts used on every input: empty, two random greedy maximal, two random sparse.
+fn starts(t: &Triangulation, seed: u64) -> Vec<(String, Pairing)> {
+    vec![
+        ("empty".into(), matching::initial_pairing(t)),
+        ("greedy".into(), greedy(t, seed)),
+        ("greedy'".into(), greedy(t, seed + 1000)),
+        ("sparse".into(), sparse(t, seed)),
+        ("sparse'".into(), sparse(t, seed + 1000)),
+    ]
+}
+
+fn petgraph_matching_size(t: &Triangulation) -> usize {
+    petgraph::algo::maximum_matching(&common::dual_graph(t)).len()
+}
+
+fn kinds() -> Vec<SurfaceKind> {
+    (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable))
+        .collect()
+}
+
+#[test]
+fn small_random_surfaces_are_completed_to_maximum_matchings() {
+    for kind in kinds() {
+        for seed in 0..3u64 {
+            for min_faces in [60, 400, 1_500] {
+                let t = random(&RandomParams {
+                    surface: kind,
+                    min_faces,
+                    flip_percent: 40,
+                    seed,
+                });
+                if t.face_count() > 2_000 {
+                    continue;
+                }
+                assert_eq!(petgraph_matching_size(&t), t.face_count() / 2);
+                for (name, start) in starts(&t, seed) {
+                    let label = format!("{kind:?} seed {seed} F {} {name}", t.face_count());
+                    complete_checked(&t, &start, &label);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn medium_random_surfaces_are_completed_in_near_linear_work() {
+    for kind in kinds() {
+        for seed in 0..2u64 {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces: 30_000,
+                flip_percent: 30,
+                seed: 100 + seed,
+            });
+            for (name, start) in starts(&t, seed) {
+                let label = format!("{kind:?} seed {seed} F {} {name}", t.face_count());
+                let c = complete_checked(&t, &start, &label);
+                // A few BFS sweeps (3 visits per face each) at most: the design's point.
+                let per_face = c.edge_visits as f64 / t.face_count() as f64;
+                assert!(
+                    per_face < 15.0,
+                    "{label}: {per_face:.2} edge visits per face"
+                );
+            }
+        }
+    }
+}
+
+/// Faces removed by contractions leave holes in the face ids; the completion must work
+/// on the live faces only.
+#[test]
+fn triangulations_with_removed_faces_are_completed() {
+    for kind in [
+        SurfaceKind::Orientable(2),
+        SurfaceKind::NonOrientable(3),
+        SurfaceKind::Orientable(5),
+    ] {
+        let t = random(&RandomParams {
+            surface: kind,
+            min_faces: 800,
+            flip_percent: 30,
+            seed: 9,
+        });
+        let r = contractible::irreducible::rs::reduce(t, &Default::default());
+        let t = r.tri;
+        assert!(
+            t.face_capacity() > t.face_count(),
+            "{kind:?}: no holes made"
+        );
+        assert_eq!(petgraph_matching_size(&t), t.face_count() / 2);
+        for (name, start) in starts(&t, 4) {
+            complete_checked(&t, &start, &format!("{kind:?} reduced {name}"));
+        }
+    }
+}
+
+#[test]
+fn every_shared_closed_mesh_component_is_completed() {
+    let dir = common::shared_dir().join("meshes").join("closed");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
+        .map(|e| e.expect("directory entry").path())
+        .filter(|p| p.to_string_lossy().ends_with(".off.gz"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 90, "{} closed meshes", files.len());
+    let (mut faces, mut visits) = (0usize, 0u64);
+    for path in files {
+        let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
+        let name = name.unwrap_or_default();
+        let mesh = contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+        for (k, comp) in s.components.iter().enumerate() {
+            let t = &comp.tri;
+            if t.face_count() <= 2_000 {
+                assert_eq!(petgraph_matching_size(t), t.face_count() / 2, "{name}#{k}");
+            }
+            for (start_name, start) in starts(t, k as u64).into_iter().take(4) {
+                let c = complete_checked(t, &start, &format!("{name}#{k} {start_name}"));
+                if start_name == "greedy" {
+                    faces += t.face_count();
+                    visits += c.edge_visits;
+                }
+            }
+        }
+    }
+    let per_face = visits as f64 / faces as f64;
+    eprintln!("closed meshes, greedy starts: {per_face:.2} edge visits per face");
+    assert!(per_face < 10.0, "{per_face:.2} edge visits per face");
+}
+
+/// Every small published surface, from empty and from every single-pair start (every
+/// edge of the triangulation as the one initial pair).
+#[test]
+fn every_small_published_surface_from_every_single_pair_start() {
+    let mut count = 0;
+    for file in [
+        "surfaces-upto-8-vertices.txt",
+        "torus.txt",
+        "projective-plane.txt",
+    ] {
+        for s in common::read_surface_list(file) {
+            let t = Triangulation::from_faces(s.vertex_count, &s.faces)
+                .unwrap_or_else(|e| panic!("{}: {e}", s.name));
+            assert_eq!(petgraph_matching_size(&t), t.face_count() / 2, "{}", s.name);
+            complete_checked(&t, &matching::initial_pairing(&t), &s.name);
+            for (_, _, c) in t.edges() {
+                let (f, g) = (c.face(), t.opposite(c).face());
+                let mut start = Pairing::new(t.face_capacity());
+                start.pair(f, g);
+                complete_checked(&t, &start, &format!("{} from ({f}, {g})", s.name));
+                count += 1;
+            }
+        }
+    }
+    assert!(count > 1_000, "{count} single-pair starts");
+}
+
+/// The matching route computes the whole pairing from empty.
+#[test]
+fn the_matching_route_is_the_completion_from_empty() {
+    let t = random(&RandomParams {
+        surface: SurfaceKind::Orientable(4),
+        min_faces: 5_000,
+        flip_percent: 30,
+        seed: 1,
+    });
+    let start = matching::initial_pairing(&t);
+    assert!(start.is_empty() && start.face_capacity() == t.face_capacity());
+    let c = complete_checked(&t, &start, "matching");
+    assert_eq!(c.augmenting_paths, t.face_count() / 2);
+}
+
+/// CPU seconds of the calling thread (user + system, from `/proc/thread-self/stat`;
+/// 0 where that file does not exist): the wall clock means little on a shared machine.
+fn thread_cpu_seconds() -> f64 {
+    let Ok(stat) = std::fs::read_to_string("/proc/thread-self/stat") else {
+        return 0.0;
+    };
+    // Fields after the parenthesised command name; utime and stime are fields 14 and 15.
+    let rest = stat.rsplit(')').next().unwrap_or("");
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
+    (ticks(11) + ticks(12)) / 100.0
+}
+
+/// The performance case: SG-like leftovers (~13% unpaired) on the paper's C0
+/// (4.2M triangles, genus 3,500). Ignored by default (it builds a 4.2M-triangle surface);
+/// run with `cargo test --release --features invariants --test algorithms -- --ignored
+/// c0 --nocapture`. Asserts perfection and the near-linear work; prints the time.
+#[test]
+#[ignore]
+fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
+    let mesh = contractible::gen::paper_family('C', 0);
+    let t = Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("C0");
+    let start = greedy(&t, 1);
+    let unpaired = t.face_count() - 2 * start.len();
+    let mut p = start.clone();
+    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let c = complete(&t, &mut p);
+    let seconds = clock.elapsed().as_secs_f64();
+    let cpu = thread_cpu_seconds() - cpu;
+    let per_face = c.edge_visits as f64 / t.face_count() as f64;
+    eprintln!(
+        "C0: F {} unpaired {} ({:.2}%), {:?}, {per_face:.2} edge visits per face, {seconds:.3} s wall, {cpu:.2} s CPU",
+        t.face_count(),
+        unpaired,
+        100.0 * unpaired as f64 / t.face_count() as f64,
+        c
+    );
+    assert_perfect(&t, &p, "C0");
+    assert!(per_face < 8.0, "{per_face:.2} edge visits per face");
+    // Calibration: one plain BFS sweep of the dual (3 visits per face) on this machine.
+    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let mut seen = vec![false; t.face_capacity()];
+    let mut queue: Vec<FaceId> = t.faces().take(1).collect();
+    seen[queue[0].index()] = true;
+    let mut head = 0;
+    while head < queue.len() {
+        let f = queue[head];
+        head += 1;
+        for g in t.face_neighbours(f) {
+            if !seen[g.index()] {
+                seen[g.index()] = true;
+                queue.push(g);
+            }
+        }
+    }
+    assert_eq!(queue.len(), t.face_count());
+    eprintln!(
+        "C0 plain BFS sweep: {:.3} s wall, {:.2} s CPU",
+        clock.elapsed().as_secs_f64(),
+        thread_cpu_seconds() - cpu
+    );
+    let mut q = matching::initial_pairing(&t);
+    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let c = complete(&t, &mut q);
+    eprintln!(
+        "C0 from empty: {:?}, {:.2} edge visits per face, {:.3} s wall, {:.2} s CPU",
+        c,
+        c.edge_visits as f64 / t.face_count() as f64,
+        clock.elapsed().as_secs_f64(),
+        thread_cpu_seconds() - cpu
+    );
+    assert_perfect(&t, &q, "C0 from empty");
+}
+
+/// Two unpaired faces far apart: a perfect pairing in which one pair is freed and the
+/// freedom of one end is then pushed along a long random alternating walk (re-pairing
+/// as it goes), so the only way back is a long augmenting path through whatever blossoms
+/// lie between. The completion must find it (one path).
+#[test]
+fn long_augmenting_paths_are_found() {
+    for (k, kind) in [SurfaceKind::Orientable(0), SurfaceKind::NonOrientable(5)]
+        .into_iter()
+        .enumerate()
+    {
+        let t = random(&RandomParams {
+            surface: kind,
+            min_faces: 20_000,
+            flip_percent: 30,
+            seed: 40 + k as u64,
+        });
+        let mut p = matching::initial_pairing(&t);
+        complete(&t, &mut p);
+        assert_perfect(&t, &p, "base");
+        let mut rng = Rng::new(k as u64);
+        let a = t.faces().nth(rng.index(t.face_count())).expect("a face");
+        let mut e = p.unpair(a).expect("perfect");
+        let mut steps = 0;
+        for _ in 0..5_000 {
+            // e is free: pair it with a random neighbour y (not a), freeing y's mate.
+            let y = t.face_neighbours(e)[rng.index(3)];
+            if y == a {
+                continue;
+            }
+            let Some(z) = p.unpair(y) else { continue };
+            p.pair(e, y);
+            e = z;
+            steps += 1;
+        }
+        assert!(steps > 1_000 && !p.is_paired(a) && !p.is_paired(e));
+        let c = complete_checked(&t, &p, &format!("{kind:?} walk"));
+        assert_eq!(c.augmenting_paths, 1);
+    }
+}
