@@ -31,6 +31,9 @@ pub enum Command {
     Convert(ConvertArgs),
     /// Contract edges until every component is irreducible.
     Reduce(ReduceArgs),
+    /// Pair the triangles of every component into quads on the same vertices (tri-quad
+    /// conversion): always a perfect pairing, checked before writing.
+    Quad(QuadArgs),
     /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
     /// and the brute force, verify.
     Demo(DemoArgs),
@@ -183,6 +186,51 @@ pub struct ReduceArgs {
     /// Skip the independent check that every output component is irreducible.
     #[arg(long)]
     pub no_verify: bool,
+}
+
+/// The tri-quad algorithms.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum QuadAlgo {
+    /// Lemos–Ramaswami–Siqueira: RS contraction, expansion with flips, completion.
+    Lrs,
+    /// Pulli–Segal greedy, then completion.
+    Ps,
+    /// Simple greedy, then completion.
+    Sg,
+    /// Edmonds' matching on the whole dual graph.
+    Matching,
+}
+
+impl From<QuadAlgo> for contractible::quad::Algorithm {
+    fn from(a: QuadAlgo) -> Self {
+        use contractible::quad::Algorithm;
+        match a {
+            QuadAlgo::Lrs => Algorithm::Lrs,
+            QuadAlgo::Ps => Algorithm::Ps,
+            QuadAlgo::Sg => Algorithm::Sg,
+            QuadAlgo::Matching => Algorithm::Matching,
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct QuadArgs {
+    /// Input mesh (closed triangulated surfaces).
+    pub input: PathBuf,
+    /// Write the quad mesh here (the input's vertices and positions, one quad per pair).
+    #[arg(short, long)]
+    pub output: Option<PathBuf>,
+    /// Algorithm.
+    #[arg(long, value_enum, default_value_t = QuadAlgo::Lrs)]
+    pub algo: QuadAlgo,
+    /// Seed of the randomised orders of SG and PS.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Write one line per quad with the two input face indices it joins (0-based, in the
+    /// order of the quads in the output). For LRS the faces are those of the flipped
+    /// triangulation K, which keeps the input's face indices.
+    #[arg(long)]
+    pub pairs: Option<PathBuf>,
 }
 
 #[derive(Args, Debug)]

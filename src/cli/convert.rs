@@ -51,7 +51,7 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
-        println!(
+        outln!(
             "wrote {}: {} vertices, {} faces{}",
             report.output,
             report.vertices,

@@ -73,9 +73,14 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
         let info = Report::of(Path::new(&name), &surfaces, 0.0, 0.0);
         if ui.human() {
             info.print_human(5);
-            println!(
+            outln!(
                 "  {:<9} {:>9} {:>6} {:>12} {:>7} {:>10}",
-                "algorithm", "ℓ", "ε", "contractions", "V out", "seconds"
+                "algorithm",
+                "ℓ",
+                "ε",
+                "contractions",
+                "V out",
+                "seconds"
             );
         }
         let mut runs = Vec::new();
@@ -90,7 +95,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             let ok = s.irreducible == Some(true) && same_topology;
             report.verified &= ok;
             if ui.human() {
-                println!(
+                outln!(
                     "  {:<9} {:>9} {:>6} {:>12} {:>7} {:>10.4}{}",
                     algo.name(),
                     s.link_tests,
@@ -104,14 +109,14 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             runs.push(s);
         }
         if ui.human() {
-            println!();
+            outln!();
         }
         report.inputs.push(DemoInput { name, info, runs });
     }
     if ui.json {
         print_json(&report)?;
     } else if ui.human() && report.verified {
-        println!(
+        outln!(
             "all outputs verified irreducible by the naive link test (χ and orientability kept)"
         );
     }

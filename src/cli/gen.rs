@@ -172,7 +172,7 @@ pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
-        println!(
+        outln!(
             "wrote {}: V={} E={} F={} χ={} components={} {}",
             out.display(),
             report.vertices,

@@ -86,7 +86,7 @@ impl Report {
     /// Human-readable summary; lists at most `max_rows` components one per line and
     /// groups the rest by surface.
     pub fn print_human(&self, max_rows: usize) {
-        println!(
+        outln!(
             "{}: V={} E={} F={} χ={} components={} {}",
             self.file,
             self.vertices,
@@ -101,10 +101,10 @@ impl Report {
             }
         );
         if self.dropped_vertices > 0 {
-            println!("  unused vertices dropped: {}", self.dropped_vertices);
+            outln!("  unused vertices dropped: {}", self.dropped_vertices);
         }
         for (i, c) in self.component_list.iter().enumerate().take(max_rows) {
-            println!(
+            outln!(
                 "  component {i}: V={} E={} F={} χ={} {}; degree min {} max {} mean {:.2}",
                 c.vertices,
                 c.edges,
@@ -126,7 +126,7 @@ impl Report {
                 }
             }
             let rest: Vec<String> = kinds.iter().map(|(k, n)| format!("{n} × {k}")).collect();
-            println!(
+            outln!(
                 "  ... {} more components: {}",
                 self.components - max_rows,
                 rest.join(", ")

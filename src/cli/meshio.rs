@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use contractible::io::{self, Location, ReadError, WriteError};
-use contractible::{BuildError, Surfaces, TriMesh};
+use contractible::{BuildError, Mesh, Surfaces, TriMesh};
 
 use super::progress::spinner;
 use super::{CliError, Ui};
@@ -77,7 +77,7 @@ pub fn check_output(out: &Path) -> Result<(), CliError> {
 
 /// Writes `mesh` to `out` (format by extension) through a temporary file renamed into
 /// place, so that a failed write leaves no partial output.
-pub fn write(out: &Path, mesh: &TriMesh, ui: Ui) -> Result<f64, CliError> {
+pub fn write<const N: usize>(out: &Path, mesh: &Mesh<N>, ui: Ui) -> Result<f64, CliError> {
     let t = Instant::now();
     check_output(out)?;
     let pb = spinner(ui, format!("writing {}", out.display()));

@@ -3,6 +3,18 @@
 //! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
 //! a disjoint union of closed surfaces, bad arguments); 1 any other failure.
 
+/// `println!` for stdout that never panics: a closed stdout (the reader of a pipe went
+/// away, as with `| head`) ends the process quietly with exit code 1 instead of the
+/// panic `println!` gives.
+macro_rules! outln {
+    () => {
+        $crate::cli::write_stdout_line(format_args!(""))
+    };
+    ($($arg:tt)*) => {
+        $crate::cli::write_stdout_line(format_args!($($arg)*))
+    };
+}
+
 mod args;
 mod convert;
 mod demo;
@@ -10,6 +22,7 @@ mod gen;
 mod info;
 mod meshio;
 mod progress;
+mod quad;
 mod reduce;
 
 use std::process::ExitCode;
@@ -69,8 +82,22 @@ impl Ui {
 pub fn print_json<T: serde::Serialize>(value: &T) -> Result<(), CliError> {
     let s = serde_json::to_string_pretty(value)
         .map_err(|e| CliError::Failure(format!("cannot encode JSON: {e}")))?;
-    println!("{s}");
+    outln!("{s}");
     Ok(())
+}
+
+/// Writes one line to stdout (see `outln!`). Any write error other than a closed pipe
+/// is reported on stderr; both end the process with exit code 1, since the output the
+/// user asked for cannot be delivered.
+pub fn write_stdout_line(args: std::fmt::Arguments<'_>) {
+    use std::io::Write;
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = writeln!(out, "{args}").and_then(|()| out.flush()) {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            eprintln!("error: cannot write to stdout: {e}");
+        }
+        std::process::exit(1);
+    }
 }
 
 /// Parses the command line, runs it and maps the result to an exit code.
@@ -85,6 +112,7 @@ pub fn main() -> ExitCode {
         args::Command::Gen(a) => gen::run(&a, ui),
         args::Command::Convert(a) => convert::run(&a, ui),
         args::Command::Reduce(a) => reduce::run(&a, ui),
+        args::Command::Quad(a) => quad::run(&a, ui),
         args::Command::Demo(a) => demo::run(&a, ui),
     };
     match result {

@@ -136,9 +136,17 @@ pub fn reduce_all(
 }
 
 fn print_table(stats: &[ReduceStats], totals: &ReduceStats, max_rows: usize) {
-    println!(
+    outln!(
         "{:>9} {:>10} {:>9} {:>9} {:>10} {:>6} {:>12} {:>9} {:>10}",
-        "component", "surface", "V in", "V out", "ℓ", "ε", "contractions", "seconds", "irreducible"
+        "component",
+        "surface",
+        "V in",
+        "V out",
+        "ℓ",
+        "ε",
+        "contractions",
+        "seconds",
+        "irreducible"
     );
     let surface = |s: &ReduceStats| match s.genus {
         Some(g) => format!("g={g}"),
@@ -150,7 +158,7 @@ fn print_table(stats: &[ReduceStats], totals: &ReduceStats, max_rows: usize) {
         None => "-",
     };
     let row = |name: String, s: &ReduceStats| {
-        println!(
+        outln!(
             "{:>9} {:>10} {:>9} {:>9} {:>10} {:>6} {:>12} {:>9.4} {:>10}",
             name,
             surface(s),
@@ -167,7 +175,7 @@ fn print_table(stats: &[ReduceStats], totals: &ReduceStats, max_rows: usize) {
         row(i.to_string(), s);
     }
     if stats.len() > max_rows {
-        println!("{:>9}", format!("({} more)", stats.len() - max_rows));
+        outln!("{:>9}", format!("({} more)", stats.len() - max_rows));
     }
     row("total".into(), totals);
 }
@@ -231,10 +239,10 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
-        println!("{} ({}):", report.file, algo.name());
+        outln!("{} ({}):", report.file, algo.name());
         print_table(&report.components, &report.totals, 20);
         if let Some(o) = &report.output {
-            println!("wrote {o}");
+            outln!("wrote {o}");
         }
     }
     if report.totals.irreducible == Some(false) {

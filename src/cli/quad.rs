@@ -1,0 +1,254 @@
+//! `contractible quad IN [-o OUT] [--pairs FILE]`: tri-quad conversion per component.
+
+use std::io::Write;
+use std::path::Path;
+
+use contractible::quad::{self, Algorithm, Options, Quadrangulation};
+use contractible::{QuadMesh, SurfaceType, TriMesh};
+use serde::Serialize;
+
+use super::args::QuadArgs;
+use super::progress::bar;
+use super::{meshio, print_json, CliError, Ui};
+
+/// Counters of one conversion (one component, or the totals): the paper's Table 4.3
+/// columns (a)–(e) plus the work of each step.
+#[derive(Serialize, Debug, Clone)]
+pub struct QuadStats {
+    pub algo: &'static str,
+    pub faces: usize,
+    pub quads: usize,
+    pub euler_characteristic: i64,
+    pub orientable: bool,
+    /// (a) seconds of the initial pairing.
+    pub initial_seconds: f64,
+    /// (b) % of the triangles paired by the initial step.
+    pub initial_paired_percent: f64,
+    /// (c) triangles left unpaired by the initial step.
+    pub initial_unpaired: usize,
+    /// (d) seconds of the completion.
+    pub completion_seconds: f64,
+    /// (e) total seconds.
+    pub total_seconds: f64,
+    pub flips: usize,
+    pub augmenting_paths: usize,
+    pub phases: usize,
+    /// Whether the independent check passed (perfect, pairs share an edge of K, K a valid
+    /// triangulation of the input's surface with the input's counts).
+    pub verified: bool,
+}
+
+impl QuadStats {
+    fn of(q: &Quadrangulation, input: SurfaceType, verified: bool) -> Self {
+        let s = &q.stats;
+        QuadStats {
+            algo: q.algorithm.name(),
+            faces: s.faces,
+            quads: q.pairing.len(),
+            euler_characteristic: input.euler_characteristic(),
+            orientable: input.is_orientable(),
+            initial_seconds: s.initial_seconds,
+            initial_paired_percent: s.initial_paired_percent,
+            initial_unpaired: s.initial_unpaired,
+            completion_seconds: s.completion_seconds,
+            total_seconds: s.total_seconds,
+            flips: s.flips,
+            augmenting_paths: s.augmenting_paths,
+            phases: s.phases,
+            verified,
+        }
+    }
+
+    fn total(algo: Algorithm, parts: &[QuadStats]) -> Self {
+        let sum = |f: fn(&QuadStats) -> usize| parts.iter().map(f).sum::<usize>();
+        let sumf = |f: fn(&QuadStats) -> f64| parts.iter().map(f).sum::<f64>();
+        let faces = sum(|p| p.faces);
+        let unpaired = sum(|p| p.initial_unpaired);
+        QuadStats {
+            algo: algo.name(),
+            faces,
+            quads: sum(|p| p.quads),
+            euler_characteristic: parts.iter().map(|p| p.euler_characteristic).sum(),
+            orientable: parts.iter().all(|p| p.orientable),
+            initial_seconds: sumf(|p| p.initial_seconds),
+            initial_paired_percent: if faces == 0 {
+                100.0
+            } else {
+                100.0 * (faces - unpaired) as f64 / faces as f64
+            },
+            initial_unpaired: unpaired,
+            completion_seconds: sumf(|p| p.completion_seconds),
+            total_seconds: sumf(|p| p.total_seconds),
+            flips: sum(|p| p.flips),
+            augmenting_paths: sum(|p| p.augmenting_paths),
+            phases: parts.iter().map(|p| p.phases).max().unwrap_or(0),
+            verified: parts.iter().all(|p| p.verified),
+        }
+    }
+}
+
+/// The JSON result of `quad`: totals at the top level plus one entry per component.
+#[derive(Serialize, Debug)]
+pub struct QuadReport {
+    pub file: String,
+    pub output: Option<String>,
+    pub pairs: Option<String>,
+    pub seed: u64,
+    pub component_count: usize,
+    pub dropped_vertices: usize,
+    #[serde(flatten)]
+    pub totals: QuadStats,
+    pub components: Vec<QuadStats>,
+    pub seconds_read: f64,
+    pub seconds_build: f64,
+}
+
+/// The independent check of a conversion of `input`: `K` validates from scratch, has the
+/// input's vertex set and counts and surface type, and the pairing is perfect with every
+/// pair sharing an edge of `K` (checked on `K`'s face lists, not by the pairing's own
+/// bookkeeping).
+fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool {
+    let k = &q.tri;
+    if k.validate().is_err()
+        || k.vertex_count() != input.vertex_count()
+        || k.face_count() != input.face_count()
+        || !k.vertices().eq(input.vertices())
+        || SurfaceType::of(k) != SurfaceType::of(input)
+        || 2 * q.pairing.len() != k.face_count()
+    {
+        return false;
+    }
+    let mut seen = vec![false; k.face_capacity()];
+    for (f, g) in q.pairing.pairs() {
+        if !k.is_face(f) || !k.is_face(g) || seen[f.index()] || seen[g.index()] {
+            return false;
+        }
+        seen[f.index()] = true;
+        seen[g.index()] = true;
+        let (a, b) = (k.face_vertices(f), k.face_vertices(g));
+        if a.iter().filter(|v| b.contains(v)).count() != 2 {
+            return false;
+        }
+    }
+    true
+}
+
+pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
+    for out in a.output.iter() {
+        meshio::check_output(out)?;
+    }
+    let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
+    let (surfaces, seconds_build) = meshio::build(&mesh, &a.input, ui)?;
+    let TriMesh {
+        vertex_count,
+        positions,
+        faces,
+    } = mesh;
+    drop(faces);
+    let dropped_vertices = surfaces.dropped_vertices.len();
+    let algo: Algorithm = a.algo.into();
+    let options = Options { seed: a.seed };
+    let n = surfaces.components.len();
+    let pb = bar(ui, n as u64, format!("pairing ({})", algo.name()));
+    let mut stats = Vec::with_capacity(n);
+    let mut quads: Vec<[u32; 4]> = Vec::new();
+    let mut pair_lines: Vec<(usize, usize)> = Vec::new();
+    for c in surfaces.components {
+        let input = SurfaceType::of(&c.tri);
+        let q = quad::convert(c.tri.clone(), algo, &options);
+        let ok = verify(&c.tri, &q);
+        stats.push(QuadStats::of(&q, input, ok));
+        if ok {
+            for (f, g) in q.pairing.pairs() {
+                let quad = quad::quad_of(&q.tri, f, g).expect("verified pair shares an edge");
+                quads.push(quad.map(|v| c.vertex_origin[v as usize]));
+                pair_lines.push((
+                    c.face_origin[f.index()] as usize,
+                    c.face_origin[g.index()] as usize,
+                ));
+            }
+        }
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    let totals = QuadStats::total(algo, &stats);
+    if !totals.verified {
+        let bad: Vec<String> = stats
+            .iter()
+            .enumerate()
+            .filter(|(_, s)| !s.verified)
+            .map(|(i, _)| i.to_string())
+            .collect();
+        return Err(CliError::Failure(format!(
+            "{}: the pairing of component(s) {} failed the independent check; nothing written",
+            a.input.display(),
+            bad.join(", ")
+        )));
+    }
+    if let Some(out) = &a.output {
+        let m = QuadMesh {
+            vertex_count,
+            positions,
+            faces: quads,
+        };
+        meshio::write(out, &m, ui)?;
+    }
+    if let Some(path) = &a.pairs {
+        write_pairs(path, &pair_lines)?;
+    }
+    let report = QuadReport {
+        file: a.input.display().to_string(),
+        output: a.output.as_deref().map(|p: &Path| p.display().to_string()),
+        pairs: a.pairs.as_deref().map(|p: &Path| p.display().to_string()),
+        seed: a.seed,
+        component_count: stats.len(),
+        dropped_vertices,
+        totals,
+        components: stats,
+        seconds_read,
+        seconds_build,
+    };
+    if ui.json {
+        print_json(&report)?;
+    } else if !ui.quiet {
+        let t = &report.totals;
+        outln!(
+            "{} ({}): {} triangles -> {} quads; initial {:.4} s, {:.3} % paired ({} unpaired); \
+             completion {:.4} s ({} augmenting paths, {} phases); total {:.4} s; {} flips",
+            report.file,
+            algo.name(),
+            t.faces,
+            t.quads,
+            t.initial_seconds,
+            t.initial_paired_percent,
+            t.initial_unpaired,
+            t.completion_seconds,
+            t.augmenting_paths,
+            t.phases,
+            t.total_seconds,
+            t.flips
+        );
+        for o in [&report.output, &report.pairs].into_iter().flatten() {
+            outln!("wrote {o}");
+        }
+    }
+    Ok(())
+}
+
+/// Writes the pairs file atomically (temporary file renamed into place).
+fn write_pairs(path: &Path, lines: &[(usize, usize)]) -> Result<(), CliError> {
+    let tmp = path.with_extension("contractible-tmp");
+    let r = (|| -> std::io::Result<()> {
+        let mut w = std::io::BufWriter::new(std::fs::File::create(&tmp)?);
+        for (f, g) in lines {
+            writeln!(w, "{f} {g}")?;
+        }
+        w.flush()?;
+        drop(w);
+        std::fs::rename(&tmp, path)
+    })();
+    r.map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        CliError::Failure(format!("{}: {e}", path.display()))
+    })
+}
