@@ -4,12 +4,14 @@ use std::path::Path;
 
 use contractible::gen::{self, RandomParams, SurfaceKind};
 use contractible::irreducible::Algorithm;
+use contractible::quad;
 use contractible::{Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::DemoArgs;
 use super::info::Report;
 use super::progress::spinner;
+use super::quad::{quad_all, QuadStats};
 use super::reduce::{reduce_all, ReduceStats};
 use super::{print_json, CliError, Ui};
 
@@ -18,14 +20,16 @@ struct DemoInput {
     name: String,
     info: Report,
     runs: Vec<ReduceStats>,
+    /// Tri-quad conversions of the same input, one per algorithm.
+    quads: Vec<QuadStats>,
 }
 
 #[derive(Serialize)]
 struct DemoReport {
     seed: u64,
     inputs: Vec<DemoInput>,
-    /// Every output passed the naive link test (no contractible edge) and kept χ and
-    /// orientability.
+    /// Every reduction passed the naive link test (no contractible edge) and kept χ and
+    /// orientability, and every tri-quad conversion passed its independent check.
     verified: bool,
 }
 
@@ -109,20 +113,68 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             runs.push(s);
         }
         if ui.human() {
+            outln!(
+                "  {:<9} {:>9} {:>9} {:>10} {:>9} {:>10} {:>9}",
+                "tri-quad",
+                "quads",
+                "% paired",
+                "unpaired",
+                "flips",
+                "aug.paths",
+                "seconds"
+            );
+        }
+        let mut quads = Vec::new();
+        for algo in [
+            quad::Algorithm::Lrs,
+            quad::Algorithm::Ps,
+            quad::Algorithm::Sg,
+            quad::Algorithm::Matching,
+        ] {
+            let s = QuadStats::total(algo, &quad_all(&surfaces, algo, a.seed, ui));
+            report.verified &= s.verified;
+            if ui.human() {
+                outln!(
+                    "  {:<9} {:>9} {:>9.3} {:>10} {:>9} {:>10} {:>9.4}{}",
+                    algo.name(),
+                    s.quads,
+                    s.initial_paired_percent,
+                    s.initial_unpaired,
+                    s.flips,
+                    s.augmenting_paths,
+                    s.total_seconds,
+                    if s.verified {
+                        ""
+                    } else {
+                        "  FAILED VERIFICATION"
+                    }
+                );
+            }
+            quads.push(s);
+        }
+        if ui.human() {
             outln!();
         }
-        report.inputs.push(DemoInput { name, info, runs });
+        report.inputs.push(DemoInput {
+            name,
+            info,
+            runs,
+            quads,
+        });
     }
     if ui.json {
         print_json(&report)?;
     } else if ui.human() && report.verified {
         outln!(
-            "all outputs verified irreducible by the naive link test (χ and orientability kept)"
+            "all reductions verified irreducible by the naive link test (χ and orientability \
+             kept); all tri-quad pairings perfect, on the input's vertices and surface"
         );
     }
     if !report.verified {
         return Err(CliError::Failure(
-            "an output failed verification (reducible, or topology changed)".into(),
+            "an output failed verification (reducible, topology changed, or an imperfect or\
+             invalid pairing)"
+                .into(),
         ));
     }
     Ok(())

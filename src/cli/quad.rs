@@ -4,7 +4,7 @@ use std::io::Write;
 use std::path::Path;
 
 use contractible::quad::{self, Algorithm, Options, Quadrangulation};
-use contractible::{QuadMesh, SurfaceType, TriMesh};
+use contractible::{QuadMesh, SurfaceType, Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::QuadArgs;
@@ -39,7 +39,7 @@ pub struct QuadStats {
 }
 
 impl QuadStats {
-    fn of(q: &Quadrangulation, input: SurfaceType, verified: bool) -> Self {
+    pub fn of(q: &Quadrangulation, input: SurfaceType, verified: bool) -> Self {
         let s = &q.stats;
         QuadStats {
             algo: q.algorithm.name(),
@@ -59,7 +59,7 @@ impl QuadStats {
         }
     }
 
-    fn total(algo: Algorithm, parts: &[QuadStats]) -> Self {
+    pub fn total(algo: Algorithm, parts: &[QuadStats]) -> Self {
         let sum = |f: fn(&QuadStats) -> usize| parts.iter().map(f).sum::<usize>();
         let sumf = |f: fn(&QuadStats) -> f64| parts.iter().map(f).sum::<f64>();
         let faces = sum(|p| p.faces);
@@ -107,7 +107,7 @@ pub struct QuadReport {
 /// input's vertex set and counts and surface type, and the pairing is perfect with every
 /// pair sharing an edge of `K` (checked on `K`'s face lists, not by the pairing's own
 /// bookkeeping).
-fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool {
+pub fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool {
     let k = &q.tri;
     if k.validate().is_err()
         || k.vertex_count() != input.vertex_count()
@@ -131,6 +131,26 @@ fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool {
         }
     }
     true
+}
+
+/// Converts (a copy of) every component of `surfaces` with `algo`, each checked by
+/// [`verify`]; returns the per-component counters.
+pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<QuadStats> {
+    let n = surfaces.components.len();
+    let pb = bar(ui, n as u64, format!("pairing ({})", algo.name()));
+    let options = Options { seed };
+    let mut stats = Vec::with_capacity(n);
+    for c in &surfaces.components {
+        let q = quad::convert(c.tri.clone(), algo, &options);
+        stats.push(QuadStats::of(
+            &q,
+            SurfaceType::of(&c.tri),
+            verify(&c.tri, &q),
+        ));
+        pb.inc(1);
+    }
+    pb.finish_and_clear();
+    stats
 }
 
 pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {

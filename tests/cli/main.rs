@@ -8,4 +8,5 @@ mod common;
 mod cli_gen;
 mod cli_info;
 mod cli_invalid;
+mod cli_quad;
 mod cli_reduce;
