@@ -231,15 +231,7 @@ impl History {
             tri.corner_vertex[c.index()] = r.v.0;
         }
         self.renamed.truncate(lo);
-        for (k, f) in r.faces.iter().enumerate() {
-            for s in 0..3 {
-                let c = f.corner(s as u32).index();
-                tri.corner_vertex[c] = r.saved_vertex[3 * k + s];
-                let o = r.saved_opposite[3 * k + s];
-                tri.opposite[c] = o;
-                tri.opposite[o as usize] = c as u32;
-            }
-        }
+        tri.restore_faces(r.faces, &r.saved_vertex, &r.saved_opposite);
         let [x, y] = r.link;
         tri.degree[r.u.index()] = tri.degree[r.u.index()] + 4 - r.degree_v;
         tri.degree[r.v.index()] = r.degree_v;
@@ -371,15 +363,7 @@ impl Triangulation {
         let start = start as u32;
         let end = history.renamed.len() as u32;
 
-        let mut saved_vertex = [0u32; 6];
-        let mut saved_opposite = [0u32; 6];
-        for (k, f) in [f1, f2].iter().enumerate() {
-            for s in 0..3 {
-                let c = f.corner(s as u32).index();
-                saved_vertex[3 * k + s] = self.corner_vertex[c];
-                saved_opposite[3 * k + s] = self.opposite[c];
-            }
-        }
+        let (saved_vertex, saved_opposite) = self.save_faces([f1, f2]);
         let degree_v = self.degree[v.index()];
         let saved_vertex_corner = [
             self.vertex_corner[u.index()],

@@ -134,15 +134,7 @@ impl Triangulation {
             return Err(FlipError::NotFlippable { u, v, w, z });
         }
         let (f1, f2) = (k1.face(), k2.face());
-        let mut saved_vertex = [0u32; 6];
-        let mut saved_opposite = [0u32; 6];
-        for (k, f) in [f1, f2].iter().enumerate() {
-            for s in 0..3 {
-                let i = f.corner(s as u32).index();
-                saved_vertex[3 * k + s] = self.corner_vertex[i];
-                saved_opposite[3 * k + s] = self.opposite[i];
-            }
-        }
+        let (saved_vertex, saved_opposite) = self.save_faces([f1, f2]);
         let saved_vertex_corner = [self.vertex_corner[u.index()], self.vertex_corner[v.index()]];
         let state_before = self.state;
         let new_corners = self.flip_corners(k1, k2);
@@ -169,15 +161,7 @@ impl Triangulation {
             let [u, v] = rec.old_edge;
             return Err(FlipError::Modified { u, v });
         }
-        for (k, f) in rec.faces.iter().enumerate() {
-            for s in 0..3 {
-                let c = f.corner(s as u32).index();
-                self.corner_vertex[c] = rec.saved_vertex[3 * k + s];
-                let o = rec.saved_opposite[3 * k + s];
-                self.opposite[c] = o;
-                self.opposite[o as usize] = c as u32;
-            }
-        }
+        self.restore_faces(rec.faces, &rec.saved_vertex, &rec.saved_opposite);
         let [a, b] = rec.old_edge;
         let [c, d] = rec.new_edge;
         self.degree[a.index()] += 1;

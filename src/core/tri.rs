@@ -232,6 +232,40 @@ impl Triangulation {
         self.state
     }
 
+    /// The `corner_vertex` and `opposite` entries of two faces, for slot-exact undo
+    /// records ([`Self::restore_faces`] writes them back).
+    pub(crate) fn save_faces(&self, faces: [FaceId; 2]) -> ([u32; 6], [u32; 6]) {
+        let mut vertex = [0u32; 6];
+        let mut opposite = [0u32; 6];
+        for (k, f) in faces.iter().enumerate() {
+            for s in 0..3 {
+                let c = f.corner(s as u32).index();
+                vertex[3 * k + s] = self.corner_vertex[c];
+                opposite[3 * k + s] = self.opposite[c];
+            }
+        }
+        (vertex, opposite)
+    }
+
+    /// Writes back what [`Self::save_faces`] saved, re-gluing each saved opposite corner
+    /// to its face's corner (the neighbours' side of each gluing too).
+    pub(crate) fn restore_faces(
+        &mut self,
+        faces: [FaceId; 2],
+        vertex: &[u32; 6],
+        opposite: &[u32; 6],
+    ) {
+        for (k, f) in faces.iter().enumerate() {
+            for s in 0..3 {
+                let c = f.corner(s as u32).index();
+                self.corner_vertex[c] = vertex[3 * k + s];
+                let o = opposite[3 * k + s];
+                self.opposite[c] = o;
+                self.opposite[o as usize] = c as u32;
+            }
+        }
+    }
+
     /// Marks the triangulation as changed (a fresh [`StateStamp`]).
     #[inline]
     pub(crate) fn touch(&mut self) {
