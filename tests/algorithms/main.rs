@@ -9,6 +9,7 @@ mod irreducible_algorithms;
 mod irreducible_meshes;
 mod oracles;
 mod quad_augment;
+mod quad_convert;
 mod quad_greedy;
 mod quad_lrs;
 mod rs_algorithm;
