@@ -695,10 +695,18 @@ pub fn check_quadrangulation(
         assert_eq!(q.pairing.mate(g), Some(f), "{label}: mate({g})");
         let (vf, vg) = (k.face_vertices(f), k.face_vertices(g));
         let shared = vf.iter().filter(|v| vg.contains(v)).count();
-        assert_eq!(shared, 2, "{label}: pair ({f}, {g}) shares {shared} vertices");
+        assert_eq!(
+            shared, 2,
+            "{label}: pair ({f}, {g}) shares {shared} vertices"
+        );
     }
     for f in k.faces() {
-        assert_eq!(seen[f.index()], 1, "{label}: face {f} in {} pairs", seen[f.index()]);
+        assert_eq!(
+            seen[f.index()],
+            1,
+            "{label}: face {f} in {} pairs",
+            seen[f.index()]
+        );
     }
     assert_eq!(2 * pairs.len(), f_count, "{label}: not perfect");
 
@@ -740,7 +748,10 @@ pub fn check_quadrangulation(
     let k_ids: BTreeSet<u32> = k_vertices.iter().map(|v| v.0).collect();
     assert_eq!(quad_vertices, k_ids, "{label}: vertices of the quads");
     assert_eq!(quad_chi, chi, "{label}: χ of the quad mesh");
-    assert_eq!(quad_orientable, orientable, "{label}: orientability of the quads");
+    assert_eq!(
+        quad_orientable, orientable,
+        "{label}: orientability of the quads"
+    );
     if is_consistently_oriented(&in_faces) {
         // Each directed quad edge once: a consistent orientation carried over.
         let mut directed = BTreeSet::new();
@@ -760,9 +771,11 @@ pub fn check_quadrangulation(
 /// the faces are consistently oriented).
 pub fn is_consistently_oriented(faces: &[[u32; 3]]) -> bool {
     let mut directed = std::collections::HashSet::new();
-    faces
-        .iter()
-        .all(|&[a, b, c]| [(a, b), (b, c), (c, a)].into_iter().all(|e| directed.insert(e)))
+    faces.iter().all(|&[a, b, c]| {
+        [(a, b), (b, c), (c, a)]
+            .into_iter()
+            .all(|e| directed.insert(e))
+    })
 }
 
 /// Checks that `quads` (each with 4 distinct vertices) form a closed 2-manifold: every
@@ -790,7 +803,12 @@ pub fn check_closed_quad_surface(quads: &[[u32; 4]], label: &str) -> (i64, bool)
         }
     }
     for (e, qs) in &edge_quads {
-        assert_eq!(qs.len(), 2, "{label}: quad edge {e:?} in {} quads", qs.len());
+        assert_eq!(
+            qs.len(),
+            2,
+            "{label}: quad edge {e:?} in {} quads",
+            qs.len()
+        );
     }
     // Vertex links: per vertex v, the quad edges [v, w] at v joined through each quad.
     let mut at: BTreeMap<u32, Vec<(u32, u32)>> = BTreeMap::new();
@@ -809,7 +827,12 @@ pub fn check_closed_quad_surface(quads: &[[u32; 4]], label: &str) -> (i64, bool)
             adj.entry(b).or_default().push(a);
         }
         for (w, n) in &adj {
-            assert_eq!(n.len(), 2, "{label}: edge [{v}, {w}] in {} quads at {v}", n.len());
+            assert_eq!(
+                n.len(),
+                2,
+                "{label}: edge [{v}, {w}] in {} quads at {v}",
+                n.len()
+            );
         }
         // Connected (every node of degree 2): the link is one cycle.
         let start = *adj.keys().next().expect("a vertex of a quad has edges");
