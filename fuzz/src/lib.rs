@@ -572,3 +572,319 @@ pub fn check_parse(bytes: &[u8], format: Option<Format>) {
 fn closed_surface_invariants(faces: &[[u32; 3]]) -> (i64, bool) {
     contractible::spec::oracle::euler_and_orientability(faces).expect("a closed surface")
 }
+
+/// The quad algorithms run by [`check_quads`], in this order.
+pub const QUAD_ALGORITHMS: [contractible::quad::Algorithm; 4] = [
+    contractible::quad::Algorithm::Lrs,
+    contractible::quad::Algorithm::Ps,
+    contractible::quad::Algorithm::Sg,
+    contractible::quad::Algorithm::Matching,
+];
+
+/// `quad_ops`: the surface of `input` (as `surface_ops` builds it) converted by every
+/// tri-quad algorithm with `Options { seed: input.seed }`, each result checked by
+/// [`check_quadrangulation`]; LRS must leave exactly the face count of RS's irreducible
+/// output unpaired before the completion (`irreducible::rs::reduce` on the same input).
+pub fn check_quads(input: &SurfaceInput) {
+    let tri = build_surface(input);
+    let reduced = contractible::irreducible::rs::reduce(tri.clone(), &options(input.seed))
+        .tri
+        .face_count();
+    for alg in QUAD_ALGORITHMS {
+        check_quad_algorithm(&tri, alg, input.seed, reduced);
+    }
+}
+
+/// One algorithm of [`check_quads`] on `tri` (also used by the exhaustive twins):
+/// `reduced` is the face count of RS's irreducible output of `tri` (checked against
+/// LRS's `initial_unpaired`).
+pub fn check_quad_algorithm(
+    tri: &Triangulation,
+    alg: contractible::quad::Algorithm,
+    seed: u64,
+    reduced: usize,
+) -> contractible::quad::Quadrangulation {
+    use contractible::quad::{convert, Algorithm as QAlg, Options as QOptions};
+    let label = format!("{}(seed {seed})", alg.name());
+    let q = convert(tri.clone(), alg, &QOptions { seed });
+    check_quadrangulation(tri, &q, &label);
+    if alg == QAlg::Lrs {
+        assert_eq!(
+            q.stats.initial_unpaired, reduced,
+            "{label}: LRS left {} unpaired, RS's irreducible output has {reduced} faces",
+            q.stats.initial_unpaired
+        );
+    } else {
+        assert_eq!(q.stats.flips, 0, "{label}: flips without LRS");
+        assert!(q.tri == *tri, "{label}: K is not the input");
+    }
+    q
+}
+
+/// Checks a conversion of `input` by code that shares nothing with the algorithms (only
+/// the face lists of the input and of `K`, the pairs and the quads are read):
+///
+/// - `K` validates, has the input's live vertex ids, vertex, edge and face counts, and
+///   χ and orientability (by [`contractible::spec::oracle::euler_and_orientability`] on
+///   the face lists); its edge set (vertex pairs) differs from the input's in at most
+///   `stats.flips` edges, the same number removed as added;
+/// - the pairing is perfect: every live face of `K` is in exactly one pair of `pairs()`,
+///   `mate` agrees, the two faces of a pair share exactly two vertices (an edge: two
+///   faces of a closed simplicial surface never share three); `F/2` pairs;
+/// - counters: `faces = F`; every augmenting path adds one pair, so
+///   `initial_unpaired = 2 · augmenting_paths`; the percentage agrees;
+/// - `quad_faces` gives one quad per pair, in `pairs()` order, on the union of the pair's
+///   vertices (4 distinct), with the shared edge as its diagonal `{q[1], q[3]}`; the
+///   quads form a closed 2-manifold ([`check_closed_quad_surface`]) over exactly `K`'s
+///   vertices, with the input's χ (V − E + F of the quad mesh) and orientability.
+pub fn check_quadrangulation(
+    input: &Triangulation,
+    q: &contractible::quad::Quadrangulation,
+    label: &str,
+) {
+    use std::collections::BTreeSet;
+    let k = &q.tri;
+    k.validate()
+        .unwrap_or_else(|e| panic!("{label}: K invalid: {e}"));
+    let in_vertices: Vec<VertexId> = input.vertices().collect();
+    let k_vertices: Vec<VertexId> = k.vertices().collect();
+    assert_eq!(in_vertices, k_vertices, "{label}: vertex set of K");
+    assert_eq!(
+        (k.vertex_count(), k.edge_count(), k.face_count()),
+        (input.vertex_count(), input.edge_count(), input.face_count()),
+        "{label}: counts of K"
+    );
+    let in_faces = input.face_list();
+    let k_faces = k.face_list();
+    let (chi, orientable) = closed_surface_invariants(&in_faces);
+    assert_eq!(
+        closed_surface_invariants(&k_faces),
+        (chi, orientable),
+        "{label}: χ / orientability of K"
+    );
+    let edges = |faces: &[[u32; 3]]| -> BTreeSet<(u32, u32)> {
+        faces
+            .iter()
+            .flat_map(|&[a, b, c]| [(a, b), (b, c), (c, a)])
+            .map(|(x, y)| (x.min(y), x.max(y)))
+            .collect()
+    };
+    let (e_in, e_k) = (edges(&in_faces), edges(&k_faces));
+    let removed = e_in.difference(&e_k).count();
+    let added = e_k.difference(&e_in).count();
+    assert_eq!(removed, added, "{label}: edges removed vs added");
+    assert!(
+        removed <= q.stats.flips,
+        "{label}: K differs in {removed} edges, {} flips",
+        q.stats.flips
+    );
+
+    // The pairing, from `pairs()` and the face vertices alone.
+    let f_count = k.face_count();
+    let mut seen = vec![0u8; k.face_capacity()];
+    let pairs: Vec<(FaceId, FaceId)> = q.pairing.pairs().collect();
+    for &(f, g) in &pairs {
+        for h in [f, g] {
+            assert!(
+                h.index() < k.face_capacity() && k.is_face(h),
+                "{label}: pair ({f}, {g}) holds a face that is not live"
+            );
+            seen[h.index()] += 1;
+        }
+        assert_eq!(q.pairing.mate(f), Some(g), "{label}: mate({f})");
+        assert_eq!(q.pairing.mate(g), Some(f), "{label}: mate({g})");
+        let (vf, vg) = (k.face_vertices(f), k.face_vertices(g));
+        let shared = vf.iter().filter(|v| vg.contains(v)).count();
+        assert_eq!(
+            shared, 2,
+            "{label}: pair ({f}, {g}) shares {shared} vertices"
+        );
+    }
+    for f in k.faces() {
+        assert_eq!(
+            seen[f.index()],
+            1,
+            "{label}: face {f} in {} pairs",
+            seen[f.index()]
+        );
+    }
+    assert_eq!(2 * pairs.len(), f_count, "{label}: not perfect");
+
+    let s = &q.stats;
+    assert_eq!(s.faces, f_count, "{label}: stats.faces");
+    assert_eq!(
+        s.initial_unpaired,
+        2 * s.augmenting_paths,
+        "{label}: each augmenting path pairs two faces"
+    );
+    if f_count > 0 {
+        let percent = 100.0 * (f_count - s.initial_unpaired) as f64 / f_count as f64;
+        assert!(
+            (percent - s.initial_paired_percent).abs() < 1e-9,
+            "{label}: initial_paired_percent"
+        );
+    }
+
+    // The quads: one per pair, on the pair's vertices, the shared edge as a diagonal.
+    let quads = contractible::quad::quad_faces(k, &q.pairing)
+        .unwrap_or_else(|| panic!("{label}: quad_faces refused a perfect pairing"));
+    assert_eq!(quads.len(), pairs.len(), "{label}: one quad per pair");
+    for (quad, &(f, g)) in quads.iter().zip(&pairs) {
+        let (vf, vg) = (k.face_vertices(f), k.face_vertices(g));
+        let mut union: Vec<u32> = vf.iter().chain(&vg).map(|v| v.0).collect();
+        union.sort_unstable();
+        union.dedup();
+        let mut qs = quad.to_vec();
+        qs.sort_unstable();
+        assert_eq!(qs, union, "{label}: quad {quad:?} of ({f}, {g})");
+        let mut diagonal = [quad[1], quad[3]];
+        diagonal.sort_unstable();
+        let mut common: Vec<u32> = vf.iter().filter(|v| vg.contains(v)).map(|v| v.0).collect();
+        common.sort_unstable();
+        assert_eq!(diagonal.to_vec(), common, "{label}: diagonal of {quad:?}");
+    }
+    let (quad_chi, quad_orientable) = check_closed_quad_surface(&quads, label);
+    let quad_vertices: BTreeSet<u32> = quads.iter().flatten().copied().collect();
+    let k_ids: BTreeSet<u32> = k_vertices.iter().map(|v| v.0).collect();
+    assert_eq!(quad_vertices, k_ids, "{label}: vertices of the quads");
+    assert_eq!(quad_chi, chi, "{label}: χ of the quad mesh");
+    assert_eq!(
+        quad_orientable, orientable,
+        "{label}: orientability of the quads"
+    );
+    if is_consistently_oriented(&in_faces) {
+        // Each directed quad edge once: a consistent orientation carried over.
+        let mut directed = BTreeSet::new();
+        for quad in &quads {
+            for i in 0..4 {
+                assert!(
+                    directed.insert((quad[i], quad[(i + 1) % 4])),
+                    "{label}: oriented input, quad edge {:?} used twice in one direction",
+                    (quad[i], quad[(i + 1) % 4])
+                );
+            }
+        }
+    }
+}
+
+/// Whether every directed edge of `faces` occurs at most once (on a closed surface:
+/// the faces are consistently oriented).
+pub fn is_consistently_oriented(faces: &[[u32; 3]]) -> bool {
+    let mut directed = std::collections::HashSet::new();
+    faces.iter().all(|&[a, b, c]| {
+        [(a, b), (b, c), (c, a)]
+            .into_iter()
+            .all(|e| directed.insert(e))
+    })
+}
+
+/// Checks that `quads` (each with 4 distinct vertices) form a closed 2-manifold: every
+/// undirected quad edge lies in exactly two quads, and the quads around each vertex form
+/// a single cycle (the graph whose nodes are the quad edges at `v` and whose links join
+/// the two edges at `v` of each quad at `v` is one cycle). Returns χ = V − E + F of the
+/// quad mesh and its orientability (whether the quads can be oriented so that each edge
+/// is traversed once in each direction: a breadth-first propagation of orientations).
+/// Independent of the library: it reads only the vertex lists.
+pub fn check_closed_quad_surface(quads: &[[u32; 4]], label: &str) -> (i64, bool) {
+    use std::collections::{BTreeMap, BTreeSet};
+    let key = |a: u32, b: u32| (a.min(b), a.max(b));
+    // Undirected edge -> the quads holding it, each with the direction it is used in.
+    let mut edge_quads: BTreeMap<(u32, u32), Vec<(usize, bool)>> = BTreeMap::new();
+    for (i, q) in quads.iter().enumerate() {
+        let mut s = *q;
+        s.sort_unstable();
+        assert!(
+            s.windows(2).all(|w| w[0] != w[1]),
+            "{label}: quad {q:?} repeats a vertex"
+        );
+        for j in 0..4 {
+            let (a, b) = (q[j], q[(j + 1) % 4]);
+            edge_quads.entry(key(a, b)).or_default().push((i, a < b));
+        }
+    }
+    for (e, qs) in &edge_quads {
+        assert_eq!(
+            qs.len(),
+            2,
+            "{label}: quad edge {e:?} in {} quads",
+            qs.len()
+        );
+    }
+    // Vertex links: per vertex v, the quad edges [v, w] at v joined through each quad.
+    let mut at: BTreeMap<u32, Vec<(u32, u32)>> = BTreeMap::new();
+    for q in quads {
+        for j in 0..4 {
+            let v = q[j];
+            at.entry(v)
+                .or_default()
+                .push((q[(j + 3) % 4], q[(j + 1) % 4]));
+        }
+    }
+    for (v, wedges) in &at {
+        let mut adj: BTreeMap<u32, Vec<u32>> = BTreeMap::new();
+        for &(a, b) in wedges {
+            adj.entry(a).or_default().push(b);
+            adj.entry(b).or_default().push(a);
+        }
+        for (w, n) in &adj {
+            assert_eq!(
+                n.len(),
+                2,
+                "{label}: edge [{v}, {w}] in {} quads at {v}",
+                n.len()
+            );
+        }
+        // Connected (every node of degree 2): the link is one cycle.
+        let start = *adj.keys().next().expect("a vertex of a quad has edges");
+        let mut reached = BTreeSet::from([start]);
+        let mut stack = vec![start];
+        while let Some(w) = stack.pop() {
+            for &x in &adj[&w] {
+                if reached.insert(x) {
+                    stack.push(x);
+                }
+            }
+        }
+        assert_eq!(
+            reached.len(),
+            adj.len(),
+            "{label}: the link of vertex {v} is not a single cycle"
+        );
+    }
+    // Orientability: flip[i] says whether quad i is reversed; the two quads of an edge
+    // must use it in opposite directions after the flips.
+    let mut flip: Vec<Option<bool>> = vec![None; quads.len()];
+    let mut neighbours: Vec<Vec<(usize, bool)>> = vec![Vec::new(); quads.len()];
+    for qs in edge_quads.values() {
+        let [(i, di), (j, dj)] = [qs[0], qs[1]];
+        // Same direction: exactly one of the two must be flipped.
+        let differ = di == dj;
+        neighbours[i].push((j, differ));
+        neighbours[j].push((i, differ));
+    }
+    let mut orientable = true;
+    for s in 0..quads.len() {
+        if flip[s].is_some() {
+            continue;
+        }
+        flip[s] = Some(false);
+        let mut stack = vec![s];
+        while let Some(i) = stack.pop() {
+            let fi = flip[i].unwrap_or(false);
+            for &(j, differ) in &neighbours[i] {
+                let want = fi ^ differ;
+                match flip[j] {
+                    None => {
+                        flip[j] = Some(want);
+                        stack.push(j);
+                    }
+                    Some(fj) if fj != want => orientable = false,
+                    Some(_) => {}
+                }
+            }
+        }
+    }
+    let v = at.len() as i64;
+    let e = edge_quads.len() as i64;
+    (v - e + quads.len() as i64, orientable)
+}

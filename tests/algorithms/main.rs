@@ -5,6 +5,11 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+// The fuzz harness (`fuzz/src/lib.rs`): the quad tests reuse its checks.
+#[allow(dead_code)]
+#[path = "../../fuzz/src/lib.rs"]
+mod harness;
+
 mod irreducible_algorithms;
 mod irreducible_meshes;
 mod oracles;
@@ -12,6 +17,7 @@ mod quad_augment;
 mod quad_convert;
 mod quad_greedy;
 mod quad_lrs;
+mod quad_qfuzz;
 mod rs_algorithm;
 mod rs_variants;
 mod vectors;

@@ -270,9 +270,15 @@ fn random_splits(mut t: Triangulation, splits: usize, seed: u64) -> Triangulatio
     t
 }
 
+/// LRS on every small published surface and on random vertex splits of it (1, 5 and 40
+/// splits, 8 seeds). Also the exhaustive twins of the `quad_ops` fuzz target: on the same
+/// surfaces (the published ones and their 1-, 5- and 40-split ones of split seeds 0..3),
+/// every algorithm with seeds 0..4 through the fuzz harness's checks
+/// (`quad_qfuzz::check_every_algorithm`).
 #[test]
 fn every_small_surface_and_random_splits_of_it() {
     let mut irreducible = 0;
+    let mut twins = 0;
     for file in [
         "surfaces-upto-8-vertices.txt",
         "torus.txt",
@@ -285,6 +291,7 @@ fn every_small_surface_and_random_splits_of_it() {
             let ex = initial_pairing(t.clone());
             check(&t, &ex, &label);
             check_with_petgraph(&ex, &label);
+            twins += crate::quad_qfuzz::check_every_algorithm(&t, &label);
             // Published irreducible surfaces: nothing to expand, nothing paired.
             let is_irreducible = !s.name.contains("_red_");
             if is_irreducible {
@@ -305,11 +312,16 @@ fn every_small_surface_and_random_splits_of_it() {
                     if splits <= 5 {
                         check_with_petgraph(&ex, &label);
                     }
+                    if seed < 4 {
+                        twins += crate::quad_qfuzz::check_every_algorithm(&grown, &label);
+                    }
                 }
             }
         }
     }
     assert_eq!(irreducible, 14 + 21 + 2, "irreducible surfaces seen");
+    // 80 surfaces, each published and with 12 grown versions, 4 algorithms x 5 seeds.
+    assert_eq!(twins, 80 * 13 * 20, "conversions checked by the twins");
 }
 
 #[test]

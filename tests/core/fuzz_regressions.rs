@@ -77,6 +77,12 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
         }
     });
     assert!(n >= 5, "journal_ops corpus missing");
+    let n = replay("quad_ops", |b| {
+        if let Some(i) = harness::decode::<SurfaceInput>(b) {
+            harness::check_quads(&i);
+        }
+    });
+    assert!(n >= 5, "quad_ops corpus missing");
 }
 
 #[test]
@@ -156,6 +162,35 @@ fn every_start_surface_with_random_ops_reduces_correctly() {
         };
         harness::check_reductions(&input);
         harness::check_vertex_orders(&input);
+    }
+}
+
+/// `quad_ops` on every start surface: splits and flips, a relabelling, more ops, then every
+/// tri-quad algorithm (two seeds) checked by the harness.
+#[test]
+fn every_start_surface_with_random_ops_converts_to_quads_correctly() {
+    for (k, surface) in surfaces().into_iter().enumerate() {
+        let mut o = ops(300 + k as u64, 240);
+        o.insert(120, Op::Relabel { seed: k as u64 });
+        // The directed-edge check of the quads runs on every orientable input: splits,
+        // flips and relabellings (slot rotations) keep the seed surfaces oriented.
+        let built = harness::build_surface(&SurfaceInput {
+            surface,
+            ops: o.clone(),
+            seed: 0,
+        });
+        assert_eq!(
+            harness::is_consistently_oriented(&built.face_list()),
+            built.is_orientable(),
+            "{surface:?}: orientable inputs are consistently oriented"
+        );
+        for seed in [k as u64, 1000 + k as u64] {
+            harness::check_quads(&SurfaceInput {
+                surface,
+                ops: o.clone(),
+                seed,
+            });
+        }
     }
 }
 
