@@ -44,3 +44,30 @@ pub const FULL_CHECK_DEGREE: usize = 64;
 pub const ENABLED: bool = cfg!(any(debug_assertions, feature = "invariants"));
 
 pub mod oracle;
+
+/// Helpers of the corrupted-state tests that show each check able to fail.
+#[cfg(test)]
+pub(crate) mod testing {
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+
+    /// Runs `check` and returns its panic message; panics if it passed.
+    fn failure(check: impl FnOnce()) -> String {
+        let err = catch_unwind(AssertUnwindSafe(check)).expect_err("the check must fail");
+        err.downcast_ref::<String>()
+            .cloned()
+            .unwrap_or_else(|| "non-string panic".into())
+    }
+
+    /// Asserts that `check` fails with a specification violation naming `statement`
+    /// (a no-op where the checks are compiled out).
+    pub(crate) fn assert_fails(statement: &str, check: impl FnOnce()) {
+        if !super::ENABLED {
+            return;
+        }
+        let msg = failure(check);
+        assert!(
+            msg.starts_with("specification violated: ") && msg.contains(statement),
+            "expected {statement}, got {msg}"
+        );
+    }
+}

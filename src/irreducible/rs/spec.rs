@@ -441,7 +441,7 @@ pub(super) fn degree3_untested(rs: &Rs, x: VertexId, y: VertexId) {
 /// still build and run the uncorrupted paths, and skip the expected failures.
 #[cfg(test)]
 mod tests {
-    use std::panic::{catch_unwind, AssertUnwindSafe};
+    use crate::spec::testing::assert_fails;
 
     use super::super::{Stamp, Time, Variant};
     use super::*;
@@ -470,24 +470,6 @@ mod tests {
     }
 
     /// Runs `check` and returns its panic message (panics if it passed).
-    fn failure(check: impl FnOnce()) -> String {
-        let err = catch_unwind(AssertUnwindSafe(check)).expect_err("the check must fail");
-        err.downcast_ref::<String>()
-            .cloned()
-            .unwrap_or_else(|| "non-string panic".into())
-    }
-
-    fn assert_fails(statement: &str, check: impl FnOnce()) {
-        if !ENABLED {
-            return; // the checks are compiled to nothing
-        }
-        let msg = failure(check);
-        assert!(
-            msg.starts_with("specification violated: ") && msg.contains(statement),
-            "expected {statement}, got {msg}"
-        );
-    }
-
     #[test]
     fn the_uncorrupted_state_passes_every_check() {
         let rs = state();

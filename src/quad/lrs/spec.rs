@@ -273,7 +273,7 @@ pub(super) fn at_end(ex: &Expander) {
 /// checks off ([`ENABLED`] false) the expected failures are skipped.
 #[cfg(test)]
 mod tests {
-    use std::panic::{catch_unwind, AssertUnwindSafe};
+    use crate::spec::testing::assert_fails;
 
     use super::super::{Expander, Split, Variant};
     use super::*;
@@ -300,24 +300,6 @@ mod tests {
 
     fn new_flags(s: &Split) -> usize {
         s.flagged.iter().flatten().count()
-    }
-
-    fn failure(check: impl FnOnce()) -> String {
-        let err = catch_unwind(AssertUnwindSafe(check)).expect_err("the check must fail");
-        err.downcast_ref::<String>()
-            .cloned()
-            .unwrap_or_else(|| "non-string panic".into())
-    }
-
-    fn assert_fails(statement: &str, check: impl FnOnce()) {
-        if !ENABLED {
-            return;
-        }
-        let msg = failure(check);
-        assert!(
-            msg.starts_with("specification violated: ") && msg.contains(statement),
-            "expected {statement}, got {msg}"
-        );
     }
 
     fn all_edges(ex: &Expander) -> Vec<(EdgeId, [VertexId; 2])> {
