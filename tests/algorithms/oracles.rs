@@ -170,19 +170,7 @@ fn surface_kinds() -> Vec<SurfaceKind> {
 }
 
 fn small_lists() -> Vec<(String, Triangulation)> {
-    let mut out = Vec::new();
-    for file in [
-        "surfaces-upto-8-vertices.txt",
-        "torus.txt",
-        "projective-plane.txt",
-    ] {
-        for s in common::read_surface_list(file) {
-            let t = Triangulation::from_faces(s.vertex_count, &s.faces)
-                .unwrap_or_else(|e| panic!("{}: {e}", s.name));
-            out.push((s.name, t));
-        }
-    }
-    out
+    common::small_published_surfaces()
 }
 
 #[test]

@@ -239,23 +239,15 @@ fn every_shared_closed_mesh_component_is_completed() {
 #[test]
 fn every_small_published_surface_from_every_single_pair_start() {
     let mut count = 0;
-    for file in [
-        "surfaces-upto-8-vertices.txt",
-        "torus.txt",
-        "projective-plane.txt",
-    ] {
-        for s in common::read_surface_list(file) {
-            let t = Triangulation::from_faces(s.vertex_count, &s.faces)
-                .unwrap_or_else(|e| panic!("{}: {e}", s.name));
-            assert_eq!(petgraph_matching_size(&t), t.face_count() / 2, "{}", s.name);
-            complete_checked(&t, &matching::initial_pairing(&t), &s.name);
-            for (_, _, c) in t.edges() {
-                let (f, g) = (c.face(), t.opposite(c).face());
-                let mut start = Pairing::new(t.face_capacity());
-                start.pair(f, g);
-                complete_checked(&t, &start, &format!("{} from ({f}, {g})", s.name));
-                count += 1;
-            }
+    for (name, t) in common::small_published_surfaces() {
+        assert_eq!(petgraph_matching_size(&t), t.face_count() / 2, "{name}");
+        complete_checked(&t, &matching::initial_pairing(&t), &name);
+        for (_, _, c) in t.edges() {
+            let (f, g) = (c.face(), t.opposite(c).face());
+            let mut start = Pairing::new(t.face_capacity());
+            start.pair(f, g);
+            complete_checked(&t, &start, &format!("{name} from ({f}, {g})"));
+            count += 1;
         }
     }
     assert!(count > 1_000, "{count} single-pair starts");

@@ -20,13 +20,14 @@
 
 use std::collections::BTreeSet;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::path::PathBuf;
 
 use crate::harness;
 use contractible::irreducible::{rs, Options as ReduceOptions};
 use contractible::quad::{self, Algorithm, Options, Pairing};
 use contractible::{FaceId, Triangulation};
 use serde_json::Value;
+
+use crate::common;
 
 /// The quad vector files and their number of vectors.
 const GROUPS: [(&str, usize); 2] = [("quad-surfaces-upto-8-vertices", 57), ("quad-generated", 7)];
@@ -81,24 +82,11 @@ pub(crate) fn check_every_algorithm(t: &Triangulation, label: &str) -> usize {
 }
 
 fn vectors(group: &str) -> Vec<Value> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("spec/vectors")
-        .join(format!("{group}.jsonl"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    text.lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{group}: {e}")))
-        .collect()
+    common::read_vectors(group)
 }
 
 fn all() -> Vec<Value> {
-    GROUPS
-        .iter()
-        .flat_map(|(g, n)| {
-            let v = vectors(g);
-            assert_eq!(v.len(), *n, "{g}: number of vectors");
-            v
-        })
-        .collect()
+    common::read_vector_groups(&GROUPS)
 }
 
 fn num(v: &Value, key: &str) -> u64 {

@@ -16,6 +16,8 @@ use contractible::irreducible::{reduce, Algorithm, Options, Reduction};
 use contractible::{History, Surfaces, Triangulation, VertexId};
 use serde_json::Value;
 
+use crate::common;
+
 const GROUPS: [(&str, usize); 4] = [
     ("surfaces-upto-8-vertices", 57),
     ("torus", 21),
@@ -23,25 +25,8 @@ const GROUPS: [(&str, usize); 4] = [
     ("generated", 11),
 ];
 
-fn vectors(group: &str) -> Vec<Value> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("spec/vectors")
-        .join(format!("{group}.jsonl"));
-    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    text.lines()
-        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{group}: {e}")))
-        .collect()
-}
-
 fn all() -> Vec<Value> {
-    GROUPS
-        .iter()
-        .flat_map(|(g, n)| {
-            let v = vectors(g);
-            assert_eq!(v.len(), *n, "{g}: number of vectors");
-            v
-        })
-        .collect()
+    common::read_vector_groups(&GROUPS)
 }
 
 fn faces_of(v: &Value) -> Vec<[u32; 3]> {

@@ -392,3 +392,45 @@ pub fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::F
     }
     g
 }
+
+/// The conformance vectors of `spec/vectors/<group>.jsonl`, one JSON value per line.
+/// (Only the test targets that depend on `serde_json` call it.)
+pub fn read_vectors(group: &str) -> Vec<serde_json::Value> {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("spec/vectors")
+        .join(format!("{group}.jsonl"));
+    let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+    text.lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{group}: {e}")))
+        .collect()
+}
+
+/// Every vector of `groups`, each group checked to hold its expected count.
+pub fn read_vector_groups(groups: &[(&str, usize)]) -> Vec<serde_json::Value> {
+    groups
+        .iter()
+        .flat_map(|(g, n)| {
+            let v = read_vectors(g);
+            assert_eq!(v.len(), *n, "{g}: number of vectors");
+            v
+        })
+        .collect()
+}
+
+/// The published small surfaces of `../shared/irreducible/` (every surface with up to 8
+/// vertices, the torus and projective-plane lists), built, with their names.
+pub fn small_published_surfaces() -> Vec<(String, Triangulation)> {
+    let mut out = Vec::new();
+    for file in [
+        "surfaces-upto-8-vertices.txt",
+        "torus.txt",
+        "projective-plane.txt",
+    ] {
+        for s in read_surface_list(file) {
+            let t = Triangulation::from_faces(s.vertex_count, &s.faces)
+                .unwrap_or_else(|e| panic!("{}: {e}", s.name));
+            out.push((s.name, t));
+        }
+    }
+    out
+}
