@@ -59,7 +59,9 @@
 //! ids follow input order as in [`Surfaces::from_mesh`], real vertices and faces before
 //! virtual vertices and cone faces.
 
-use super::build::{check, check_open, face_components, split, BuildError, Checked, Surfaces};
+use super::build::{
+    check, check_open, face_components, split, BuildError, Checked, Component, Surfaces,
+};
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::tri::Triangulation;
 use crate::mesh::TriMesh;
@@ -262,34 +264,22 @@ impl ConedSurfaces {
             .map(|(i, _)| i as u32)
             .collect();
         let (label, count) = face_components(&tri);
-        let components = split(&tri, &label, count)
-            .into_iter()
-            .map(|c| {
-                // Real faces precede cone faces in the input of `split`, and every real
-                // vertex lies on a real face, so real ids come first in each component.
-                let real_vertices = c
-                    .vertex_origin
-                    .iter()
-                    .take_while(|&&v| (v as usize) < vertex_count)
-                    .count();
-                let real_faces = c
-                    .face_origin
-                    .iter()
-                    .take_while(|&&f| (f as usize) < faces.len())
-                    .count();
-                let virtual_count = (c.vertex_origin.len() - real_vertices) as u32;
-                let mut vertex_origin = c.vertex_origin;
-                vertex_origin.truncate(real_vertices);
-                let mut face_origin = c.face_origin;
-                face_origin.truncate(real_faces);
-                ConedComponent {
-                    tri: c.tri,
-                    vertex_origin,
-                    face_origin,
-                    virtual_count,
-                }
-            })
-            .collect();
+        let virtual_count = (tri.vertex_capacity() - vertex_count) as u32;
+        let components = if count == 1 && dropped_vertices.is_empty() {
+            // As in `Surfaces::from_faces`: the mesh's ids are already dense, real ones
+            // first, so the component is the triangulation itself.
+            vec![ConedComponent {
+                vertex_origin: (0..vertex_count as u32).collect(),
+                face_origin: (0..faces.len() as u32).collect(),
+                tri,
+                virtual_count,
+            }]
+        } else {
+            split(&tri, &label, count)
+                .into_iter()
+                .map(|c| coned_component(c, vertex_count, faces.len()))
+                .collect()
+        };
         Ok(ConedSurfaces {
             components,
             dropped_vertices,
@@ -319,6 +309,34 @@ impl Surfaces {
     /// non-manifold (pinched) vertices are located errors. O(F).
     pub fn from_mesh_with_boundary(mesh: &TriMesh) -> Result<ConedSurfaces, BuildError> {
         ConedSurfaces::from_mesh(mesh)
+    }
+}
+
+/// A component of the coned triangulation (as `split` gives it) with the virtual
+/// vertices and cone faces told apart from the real ones.
+fn coned_component(c: Component, vertex_count: usize, face_count: usize) -> ConedComponent {
+    // Real faces precede cone faces in the input of `split`, and every real vertex lies
+    // on a real face, so real ids come first in each component.
+    let real_vertices = c
+        .vertex_origin
+        .iter()
+        .take_while(|&&v| (v as usize) < vertex_count)
+        .count();
+    let real_faces = c
+        .face_origin
+        .iter()
+        .take_while(|&&f| (f as usize) < face_count)
+        .count();
+    let virtual_count = (c.vertex_origin.len() - real_vertices) as u32;
+    let mut vertex_origin = c.vertex_origin;
+    vertex_origin.truncate(real_vertices);
+    let mut face_origin = c.face_origin;
+    face_origin.truncate(real_faces);
+    ConedComponent {
+        tri: c.tri,
+        vertex_origin,
+        face_origin,
+        virtual_count,
     }
 }
 
