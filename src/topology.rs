@@ -292,6 +292,46 @@ mod tests {
     }
 
     #[test]
+    fn surfaces_with_boundary() {
+        let cases = [
+            (1, true, 1, 0, "disc (genus 0, 1 boundary loop)"),
+            (0, true, 2, 0, "annulus (genus 0, 2 boundary loops)"),
+            (
+                0,
+                false,
+                1,
+                1,
+                "Möbius band (non-orientable genus 1, 1 boundary loop)",
+            ),
+            (-1, true, 1, 1, "orientable genus 1, 1 boundary loop"),
+            (-3, true, 5, 0, "orientable genus 0, 5 boundary loops"),
+            (-2, false, 2, 2, "non-orientable genus 2, 2 boundary loops"),
+        ];
+        for (chi, orientable, b, genus, name) in cases {
+            let s = SurfaceType::with_boundary(chi, orientable, b).expect(name);
+            assert_eq!(s.name(), name);
+            assert_eq!(s.genus(), genus, "{name}");
+            assert_eq!(s.euler_genus(), 2 - chi - b as i64, "{name}");
+            assert_eq!(s.boundary_loops(), b);
+            assert!(!s.is_closed());
+            let capped = s.capped();
+            assert!(capped.is_closed());
+            assert_eq!(capped.euler_characteristic(), chi + b as i64);
+            assert_eq!(capped.genus(), genus, "{name}");
+            assert_eq!(capped.with_discs_removed(b), s);
+        }
+        // A disc with a handle's χ but an odd Euler genus; a non-orientable sphere.
+        assert_eq!(SurfaceType::with_boundary(0, true, 1), None);
+        assert_eq!(SurfaceType::with_boundary(1, false, 1), None);
+        assert_eq!(SurfaceType::with_boundary(2, true, 1), None);
+        // No boundary: exactly `new`.
+        assert_eq!(
+            SurfaceType::with_boundary(-2, true, 0),
+            SurfaceType::new(-2, true)
+        );
+    }
+
+    #[test]
     fn generator_kinds_round_trip() {
         for kind in [
             SurfaceKind::Orientable(0),
