@@ -60,7 +60,7 @@
 //! virtual vertices and cone faces.
 
 use super::build::{
-    check, check_open, face_components, split, BuildError, Checked, Component, Surfaces,
+    check, check_open, face_components, split, BuildError, Checked, Component, OpenCheck, Surfaces,
 };
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::tri::Triangulation;
@@ -245,10 +245,12 @@ impl ConedSurfaces {
 
     /// [`Self::from_mesh`] on a bare face list.
     pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
-        let (corner_vertex, boundary, closed) = check_open(vertex_count, faces)?;
-        let checked = match closed {
-            Some(checked) => checked,
-            None => {
+        let checked = match check_open(vertex_count, faces)? {
+            OpenCheck::Closed(checked) => checked,
+            OpenCheck::Open {
+                corner_vertex,
+                boundary,
+            } => {
                 let cones = cone_loops(vertex_count, &corner_vertex, &boundary)?;
                 let mut all = Vec::with_capacity(faces.len() + cones.faces.len());
                 all.extend_from_slice(faces);

@@ -460,10 +460,7 @@ pub(super) fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, 
 /// [`check`] except boundary edges, which are returned as the corners opposite them
 /// (in bucket order). If there are none, the closed surface is finished too (phase 4),
 /// so that a closed mesh costs what [`check`] costs.
-pub(super) fn check_open(
-    vertex_count: usize,
-    faces: &[[u32; 3]],
-) -> Result<(Vec<u32>, Vec<u32>, Option<Checked>), BuildError> {
+pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<OpenCheck, BuildError> {
     let (corner_vertex, classified) = classify(vertex_count, faces)?;
     if classified.boundary.is_empty() {
         let checked = assemble(
@@ -472,9 +469,23 @@ pub(super) fn check_open(
             corner_vertex,
             classified.opposite,
         )?;
-        return Ok((Vec::new(), Vec::new(), Some(checked)));
+        return Ok(OpenCheck::Closed(checked));
     }
-    Ok((corner_vertex, classified.boundary, None))
+    Ok(OpenCheck::Open {
+        corner_vertex,
+        boundary: classified.boundary,
+    })
+}
+
+/// What [`check_open`] found.
+pub(super) enum OpenCheck {
+    /// No boundary edge: the finished closed surface.
+    Closed(Checked),
+    /// Boundary edges: the corner-to-vertex array and the corners opposite them.
+    Open {
+        corner_vertex: Vec<u32>,
+        boundary: Vec<u32>,
+    },
 }
 
 /// Number of separate face cycles around `v` (only called on the error path).
