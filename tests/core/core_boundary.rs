@@ -415,6 +415,23 @@ fn named_small_surfaces_with_boundary() {
     assert_eq!(check_mesh(&t, "punctured torus").1, 1);
     let k = without_stars(&gen::klein_bottle(), &[0]);
     assert_eq!(check_mesh(&k, "punctured klein bottle").1, 1);
+
+    // Several components, closed and open, with vertices shared by none: a tetrahedron,
+    // then the Möbius band shifted past it, then the annulus shifted past both.
+    let shift = |fs: &[[u32; 3]], by: u32| -> Vec<[u32; 3]> {
+        fs.iter().map(|f| f.map(|v| v + by)).collect()
+    };
+    let mut faces = gen::tetrahedron().faces;
+    faces.extend(shift(
+        &without_stars(&gen::projective_plane6(), &[0]).faces,
+        4,
+    ));
+    faces.extend(shift(&a.faces, 10));
+    let mixed = TriMesh::combinatorial(22, faces);
+    assert_eq!(check_mesh(&mixed, "mixed"), (3, 3));
+    let s = Surfaces::from_mesh_with_boundary(&mixed).unwrap();
+    assert!(s.components[0].is_closed() && !s.is_closed());
+    assert_eq!(s.dropped_vertices, vec![4, 10, 10 + far]);
 }
 
 #[test]
@@ -621,6 +638,7 @@ fn boundary_link_condition_matches_the_oracle() {
             for c in &s.components {
                 let faces: Vec<[u32; 3]> =
                     c.face_origin.iter().map(|&f| m.faces[f as usize]).collect();
+                let loops = walk_loops(&faces);
                 for (a, b) in edge_faces(&faces).keys().copied() {
                     let local = |x: u32| {
                         VertexId(c.vertex_origin.iter().position(|&o| o == x).unwrap() as u32)
@@ -633,6 +651,13 @@ fn boundary_link_condition_matches_the_oracle() {
                         "{kind:?} seed {seed}: edge [{a}, {b}]"
                     );
                     if c.tri.is_contractible(la, lb) != expected {
+                        // Only an edge joining two different loops can fool the cone.
+                        let on = |x: u32| loops.iter().position(|l| l.contains(&x));
+                        let (pa, pb) = (on(a), on(b));
+                        assert!(
+                            pa.is_some() && pb.is_some() && pa != pb,
+                            "{kind:?} seed {seed}: cone wrong on [{a}, {b}]"
+                        );
                         cone_alone_wrong += 1;
                     }
                     checked += 1;
