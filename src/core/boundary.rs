@@ -74,8 +74,9 @@ use crate::topology::SurfaceType;
 /// virtual vertices, one per boundary loop (in loop order); its faces
 /// `0..real_face_count()` are the surface's own (in mesh order, each with the mesh's
 /// vertex order), the cone faces follow. Virtual vertices must never be contracted,
-/// split or written; a closed component has none, and then `tri` is exactly the
-/// [`super::Component`] that [`Surfaces::from_mesh`] gives.
+/// split or written. A closed component has none; for a mesh of closed surfaces the
+/// components (`tri` and both origin maps) are exactly the [`super::Component`]s that
+/// [`Surfaces::from_mesh`] gives.
 #[derive(Clone, Debug)]
 pub struct ConedComponent {
     /// The coned, closed surface.
