@@ -256,7 +256,17 @@ impl ConedSurfaces {
                 let mut all = Vec::with_capacity(faces.len() + cones.faces.len());
                 all.extend_from_slice(faces);
                 all.extend_from_slice(&cones.faces);
-                check(vertex_count + cones.loops, &all)?
+                check(vertex_count + cones.loops, &all).map_err(|e| match e {
+                    // Report the faces of the mesh around the vertex, not the cone's.
+                    BuildError::VertexLinkNotCycle { vertex, cycles, .. } => {
+                        BuildError::VertexLinkNotCycle {
+                            vertex,
+                            cycles,
+                            faces: faces.iter().filter(|f| f.contains(&vertex)).count(),
+                        }
+                    }
+                    e => e,
+                })?
             }
         };
         let Checked { tri, used } = checked;

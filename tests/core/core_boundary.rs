@@ -489,6 +489,9 @@ fn random_open_surfaces_match_the_oracle() {
                             .filter(|&f| m.faces[f].contains(&vertex))
                             .collect();
                         assert!(fan_count(&m.faces, vertex, &fs) > 1, "{label}");
+                        if let Err(BuildError::VertexLinkNotCycle { faces, .. }) = r {
+                            assert_eq!(faces, fs.len(), "{label}: the mesh's faces at the vertex");
+                        }
                     }
                     other => panic!("{label}: expected a pinch, got {other:?}"),
                 }
@@ -522,7 +525,7 @@ fn pinched_and_non_manifold_meshes_are_located_errors() {
             BuildError::VertexLinkNotCycle {
                 vertex: 0,
                 cycles: 2,
-                ..
+                faces: 5
             }
         ),
         "{e:?}"
