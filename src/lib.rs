@@ -17,9 +17,9 @@ pub mod spec;
 pub mod topology;
 
 pub use crate::core::{
-    BuildError, Component, ContractError, ContractionRecord, Corner, Edge, EdgeId, EdgeNumbering,
-    FaceId, FlipError, FlipRecord, History, Journal, LinkTester, SplitError, Surfaces,
-    Triangulation, UndoError, ValidationError, VertexId,
+    BuildError, Component, ConedComponent, ConedSurfaces, ContractError, ContractionRecord, Corner,
+    Edge, EdgeId, EdgeNumbering, FaceId, FlipError, FlipRecord, History, Journal, LinkTester,
+    SplitError, Surfaces, Triangulation, UndoError, ValidationError, VertexId,
 };
 pub use mesh::{Mesh, QuadMesh, TriMesh};
 pub use topology::SurfaceType;

@@ -1,21 +1,25 @@
-//! The topological type of a connected closed surface: one description (χ, orientability,
-//! genus, name) shared by every report, so that they all name surfaces the same way.
+//! The topological type of a connected compact surface, closed or with boundary: one
+//! description (χ, orientability, genus, boundary loops, name) shared by every report,
+//! so that they all name surfaces the same way.
 
 use std::fmt;
 
 use crate::core::Triangulation;
 use crate::gen::SurfaceKind;
 
-/// The topological type of a connected closed surface.
+/// The topological type of a connected compact surface, closed or with boundary.
 ///
 /// Guarantees that it describes a surface that exists: by the classification theorem a
-/// connected closed surface is determined by its Euler characteristic χ and its
-/// orientability, with χ = 2 − 2g (g ≥ 0 handles) if orientable and χ = 2 − h (h ≥ 1
-/// cross-caps) if not. Every constructor enforces exactly these constraints.
+/// connected compact surface is determined by its Euler characteristic χ, its
+/// orientability and its number b of boundary loops, with χ = 2 − 2g − b (g ≥ 0
+/// handles) if orientable and χ = 2 − h − b (h ≥ 1 cross-caps) if not. Every
+/// constructor enforces exactly these constraints. A closed surface has b = 0 and is
+/// described, printed and serialised exactly as before boundaries were supported.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Hash)]
 pub struct SurfaceType {
     euler_characteristic: i64,
     orientable: bool,
+    boundary_loops: u32,
 }
 
 impl SurfaceType {
@@ -31,7 +35,54 @@ impl SurfaceType {
         valid.then_some(SurfaceType {
             euler_characteristic,
             orientable,
+            boundary_loops: 0,
         })
+    }
+
+    /// The surface with Euler characteristic `euler_characteristic`, the given
+    /// orientability and `boundary_loops` boundary loops, or `None` if there is none
+    /// (when the closed surface obtained by gluing a disc into every loop, of
+    /// characteristic χ + b, does not exist; see [`Self::new`]).
+    pub fn with_boundary(
+        euler_characteristic: i64,
+        orientable: bool,
+        boundary_loops: usize,
+    ) -> Option<Self> {
+        let b = u32::try_from(boundary_loops).ok()?;
+        let capped = Self::new(euler_characteristic.checked_add(i64::from(b))?, orientable)?;
+        Some(capped.with_discs_removed(b as usize))
+    }
+
+    /// This surface with `loops` more open discs removed (each one lowers χ by 1 and adds
+    /// a boundary loop; orientability and genus are kept). Saturates at `u32::MAX` loops.
+    pub fn with_discs_removed(self, loops: usize) -> Self {
+        let loops = u32::try_from(loops).unwrap_or(u32::MAX);
+        let added = loops.min(u32::MAX - self.boundary_loops);
+        SurfaceType {
+            euler_characteristic: self.euler_characteristic - i64::from(added),
+            orientable: self.orientable,
+            boundary_loops: self.boundary_loops + added,
+        }
+    }
+
+    /// The closed surface obtained by gluing a disc into every boundary loop (the
+    /// surface itself if it is closed).
+    pub fn capped(self) -> Self {
+        SurfaceType {
+            euler_characteristic: self.euler_characteristic + i64::from(self.boundary_loops),
+            orientable: self.orientable,
+            boundary_loops: 0,
+        }
+    }
+
+    /// Number of boundary loops b (0 for a closed surface).
+    pub fn boundary_loops(self) -> usize {
+        self.boundary_loops as usize
+    }
+
+    /// Whether the surface has no boundary.
+    pub fn is_closed(self) -> bool {
+        self.boundary_loops == 0
     }
 
     /// The type of the surface `t` triangulates. O(V + F) (orientability is computed).
@@ -41,10 +92,11 @@ impl SurfaceType {
         SurfaceType {
             euler_characteristic: t.euler_characteristic(),
             orientable: t.is_orientable(),
+            boundary_loops: 0,
         }
     }
 
-    /// Euler characteristic χ = V − E + F.
+    /// Euler characteristic χ = V − E + F (of the surface itself, with its boundary).
     pub fn euler_characteristic(self) -> i64 {
         self.euler_characteristic
     }
@@ -54,9 +106,10 @@ impl SurfaceType {
         self.orientable
     }
 
-    /// Euler genus 2 − χ: twice the genus if orientable, the number of cross-caps if not.
+    /// Euler genus 2 − χ − b: twice the genus if orientable, the number of cross-caps if
+    /// not (2 − χ for a closed surface).
     pub fn euler_genus(self) -> i64 {
-        2 - self.euler_characteristic
+        2 - self.euler_characteristic - i64::from(self.boundary_loops)
     }
 
     /// The genus in the classification: the number of handles g of an orientable
@@ -79,8 +132,8 @@ impl SurfaceType {
         (!self.orientable).then(|| self.euler_genus())
     }
 
-    /// The generator's description of this surface (`None` only if the genus does not
-    /// fit a `u32`).
+    /// The generator's description of this surface, or of its [`Self::capped`] surface if
+    /// it has boundary (`None` only if the genus does not fit a `u32`).
     pub fn kind(self) -> Option<SurfaceKind> {
         let n = u32::try_from(self.genus()).ok()?;
         Some(if self.orientable {
@@ -92,7 +145,10 @@ impl SurfaceType {
 
     /// A short English name: `sphere (genus 0)`, `torus (genus 1)`, `orientable genus g`,
     /// `non-orientable genus 1 (projective plane)`, `non-orientable genus 2 (Klein
-    /// bottle)`, `non-orientable genus h`. The same text as [`fmt::Display`].
+    /// bottle)`, `non-orientable genus h`; with boundary: `disc (genus 0, 1 boundary
+    /// loop)`, `annulus (genus 0, 2 boundary loops)`, `Möbius band (non-orientable genus
+    /// 1, 1 boundary loop)`, otherwise `orientable genus g, b boundary loops` or
+    /// `non-orientable genus h, b boundary loops`. The same text as [`fmt::Display`].
     pub fn name(self) -> String {
         self.to_string()
     }
@@ -101,6 +157,21 @@ impl SurfaceType {
 impl fmt::Display for SurfaceType {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // These strings are part of the command line's output; keep them stable.
+        let b = self.boundary_loops;
+        if b > 0 {
+            let loops = if b == 1 {
+                "1 boundary loop".to_string()
+            } else {
+                format!("{b} boundary loops")
+            };
+            return match (self.orientable, self.genus(), b) {
+                (true, 0, 1) => write!(f, "disc (genus 0, {loops})"),
+                (true, 0, 2) => write!(f, "annulus (genus 0, {loops})"),
+                (false, 1, 1) => write!(f, "Möbius band (non-orientable genus 1, {loops})"),
+                (true, g, _) => write!(f, "orientable genus {g}, {loops}"),
+                (false, h, _) => write!(f, "non-orientable genus {h}, {loops}"),
+            };
+        }
         match (self.orientable, self.genus()) {
             (true, 0) => f.write_str("sphere (genus 0)"),
             (true, 1) => f.write_str("torus (genus 1)"),
@@ -121,10 +192,12 @@ impl From<SurfaceKind> for SurfaceType {
             SurfaceKind::Orientable(g) => SurfaceType {
                 euler_characteristic: 2 - 2 * i64::from(g),
                 orientable: true,
+                boundary_loops: 0,
             },
             SurfaceKind::NonOrientable(h) => SurfaceType {
                 euler_characteristic: 2 - i64::from(h.max(1)),
                 orientable: false,
+                boundary_loops: 0,
             },
         }
     }
@@ -132,17 +205,22 @@ impl From<SurfaceKind> for SurfaceType {
 
 /// Serialised as the four fields the reports print, in this order:
 /// `euler_characteristic`, `orientable`, `genus` (the orientable genus, `null` for a
-/// non-orientable surface) and `euler_genus` (2 − χ). The name is left out: it follows
-/// from these.
+/// non-orientable surface) and `euler_genus` (2 − χ − b), followed, only for a surface
+/// with boundary, by `boundary_loops` (b), so that a closed surface serialises exactly
+/// as before boundaries were supported. The name is left out: it follows from these.
 #[cfg(feature = "serde")]
 impl serde::Serialize for SurfaceType {
     fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeStruct;
-        let mut s = serializer.serialize_struct("SurfaceType", 4)?;
+        let with_boundary = self.boundary_loops > 0;
+        let mut s = serializer.serialize_struct("SurfaceType", 4 + usize::from(with_boundary))?;
         s.serialize_field("euler_characteristic", &self.euler_characteristic)?;
         s.serialize_field("orientable", &self.orientable)?;
         s.serialize_field("genus", &self.orientable_genus())?;
         s.serialize_field("euler_genus", &self.euler_genus())?;
+        if with_boundary {
+            s.serialize_field("boundary_loops", &self.boundary_loops)?;
+        }
         s.end()
     }
 }
@@ -211,6 +289,46 @@ mod tests {
         assert_eq!(SurfaceType::new(2, false), None);
         assert_eq!(SurfaceType::new(4, false), None);
         assert!(SurfaceType::new(-7, false).is_some());
+    }
+
+    #[test]
+    fn surfaces_with_boundary() {
+        let cases = [
+            (1, true, 1, 0, "disc (genus 0, 1 boundary loop)"),
+            (0, true, 2, 0, "annulus (genus 0, 2 boundary loops)"),
+            (
+                0,
+                false,
+                1,
+                1,
+                "Möbius band (non-orientable genus 1, 1 boundary loop)",
+            ),
+            (-1, true, 1, 1, "orientable genus 1, 1 boundary loop"),
+            (-3, true, 5, 0, "orientable genus 0, 5 boundary loops"),
+            (-2, false, 2, 2, "non-orientable genus 2, 2 boundary loops"),
+        ];
+        for (chi, orientable, b, genus, name) in cases {
+            let s = SurfaceType::with_boundary(chi, orientable, b).expect(name);
+            assert_eq!(s.name(), name);
+            assert_eq!(s.genus(), genus, "{name}");
+            assert_eq!(s.euler_genus(), 2 - chi - b as i64, "{name}");
+            assert_eq!(s.boundary_loops(), b);
+            assert!(!s.is_closed());
+            let capped = s.capped();
+            assert!(capped.is_closed());
+            assert_eq!(capped.euler_characteristic(), chi + b as i64);
+            assert_eq!(capped.genus(), genus, "{name}");
+            assert_eq!(capped.with_discs_removed(b), s);
+        }
+        // A disc with a handle's χ but an odd Euler genus; a non-orientable sphere.
+        assert_eq!(SurfaceType::with_boundary(0, true, 1), None);
+        assert_eq!(SurfaceType::with_boundary(1, false, 1), None);
+        assert_eq!(SurfaceType::with_boundary(2, true, 1), None);
+        // No boundary: exactly `new`.
+        assert_eq!(
+            SurfaceType::with_boundary(-2, true, 0),
+            SurfaceType::new(-2, true)
+        );
     }
 
     #[test]

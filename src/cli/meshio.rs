@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use contractible::io::{self, Location, ReadError, WriteError};
-use contractible::{BuildError, Mesh, Surfaces, TriMesh};
+use contractible::{BuildError, ConedSurfaces, Mesh, Surfaces, TriMesh};
 
 use super::progress::spinner;
 use super::{CliError, Ui};
@@ -17,7 +17,8 @@ pub fn read_error_message(path: &Path, e: &ReadError) -> String {
     }
 }
 
-/// `FILE: MESSAGE` for a mesh that is not a union of closed surfaces.
+/// `FILE: MESSAGE` for a mesh that is not a union of closed surfaces (or, for `info`,
+/// of surfaces with boundary).
 pub fn build_error_message(path: &Path, e: &BuildError) -> String {
     format!("{}: {e}", path.display())
 }
@@ -40,14 +41,69 @@ pub fn build(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(Surfaces, f64), Cli
     let r = Surfaces::from_mesh(mesh);
     pb.finish_and_clear();
     let s = r.map_err(|e| CliError::Input(build_error_message(path, &e)))?;
-    if !s.dropped_vertices.is_empty() {
+    warn_dropped(path, s.dropped_vertices.len(), ui);
+    Ok((s, t.elapsed().as_secs_f64()))
+}
+
+/// [`build`] for a command that needs closed surfaces (`command` names it): a mesh
+/// whose only problem is its boundary is refused with a message that says so and how
+/// many boundary loops it has.
+pub fn build_closed(
+    mesh: &TriMesh,
+    path: &Path,
+    ui: Ui,
+    command: &str,
+) -> Result<(Surfaces, f64), CliError> {
+    let t = Instant::now();
+    let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
+    let r = Surfaces::from_mesh(mesh);
+    let r = match r {
+        Err(BuildError::BoundaryEdge { a, b, face }) => {
+            // The boundary edge is the first problem found; say whether the mesh is a
+            // surface with boundary (which `info` describes) or broken in another way.
+            let open = Surfaces::from_mesh_with_boundary(mesh);
+            pb.finish_and_clear();
+            let why = match open {
+                Ok(s) => {
+                    let n = s.loop_count();
+                    let loops = if n == 1 { "loop" } else { "loops" };
+                    format!("this mesh has {n} boundary {loops}; `info` describes it")
+                }
+                Err(e) => format!("nor is it a surface with boundary: {e}"),
+            };
+            return Err(CliError::Input(format!(
+                "{}: edge [{a}, {b}] is a boundary edge (face {face}): `{command}` needs closed surfaces ({why})",
+                path.display()
+            )));
+        }
+        r => r,
+    };
+    pb.finish_and_clear();
+    let s = r.map_err(|e| CliError::Input(build_error_message(path, &e)))?;
+    warn_dropped(path, s.dropped_vertices.len(), ui);
+    Ok((s, t.elapsed().as_secs_f64()))
+}
+
+/// Validates and splits a mesh into compact surfaces that may have boundary, each
+/// closed by coning (with a spinner); returns them and the seconds taken.
+pub fn build_open(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(ConedSurfaces, f64), CliError> {
+    let t = Instant::now();
+    let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
+    let r = Surfaces::from_mesh_with_boundary(mesh);
+    pb.finish_and_clear();
+    let s = r.map_err(|e| CliError::Input(build_error_message(path, &e)))?;
+    warn_dropped(path, s.dropped_vertices.len(), ui);
+    Ok((s, t.elapsed().as_secs_f64()))
+}
+
+fn warn_dropped(path: &Path, dropped: usize, ui: Ui) {
+    if dropped > 0 {
         ui.warn(&format!(
             "{}: {} unused vertices dropped",
             path.display(),
-            s.dropped_vertices.len()
+            dropped
         ));
     }
-    Ok((s, t.elapsed().as_secs_f64()))
 }
 
 /// A temporary path beside `out` that keeps its file name (hence its extension).

@@ -1,7 +1,8 @@
 //! Command-line interface (binary only): argument parsing, dispatch, exit codes.
 //!
 //! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
-//! a disjoint union of closed surfaces, bad arguments); 1 any other failure.
+//! a disjoint union of closed surfaces — for `info`, of surfaces possibly with boundary —
+//! bad arguments); 1 any other failure.
 
 /// `println!` for stdout that never panics: a closed stdout (the reader of a pipe went
 /// away, as with `| head`) ends the process quietly with exit code 1 instead of the

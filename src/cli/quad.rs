@@ -158,7 +158,7 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         meshio::check_output(out)?;
     }
     let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
-    let (surfaces, seconds_build) = meshio::build(&mesh, &a.input, ui)?;
+    let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "quad")?;
     let TriMesh {
         vertex_count,
         positions,

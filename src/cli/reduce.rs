@@ -185,7 +185,7 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         meshio::check_output(out)?;
     }
     let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
-    let (surfaces, seconds_build) = meshio::build(&mesh, &a.input, ui)?;
+    let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "reduce")?;
     // Keep only what the output needs: the big face list and the triangulations are
     // consumed as the components are reduced (peak memory matters on 4M-face inputs).
     let TriMesh {

@@ -101,6 +101,18 @@ pub enum BuildError {
         /// Number of faces containing it.
         faces: usize,
     },
+    /// A vertex of a surface with boundary where more than two boundary edges meet: its
+    /// faces form several fans (two boundary loops touch there, or one loop passes
+    /// through it twice), so the surface is pinched at this vertex.
+    #[error(
+        "vertex {vertex} is pinched: {boundary_edges} boundary edges meet there (a manifold boundary vertex has 2)"
+    )]
+    PinchedBoundaryVertex {
+        /// The vertex id.
+        vertex: u32,
+        /// Number of boundary edges containing it.
+        boundary_edges: usize,
+    },
     /// A vertex has fewer than 3 incident edges.
     #[error("vertex {vertex} has degree {degree} (at least 3 required)")]
     VertexDegreeTooLow {
@@ -126,9 +138,9 @@ pub enum BuildError {
 }
 
 /// Result of the shared validation: a possibly disconnected, possibly sparse corner table.
-struct Checked {
-    tri: Triangulation,
-    used: Vec<bool>,
+pub(super) struct Checked {
+    pub(super) tri: Triangulation,
+    pub(super) used: Vec<bool>,
 }
 
 fn check_sizes(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
@@ -379,26 +391,30 @@ fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildErr
     Ok(())
 }
 
-/// Validates a face list as a possibly disconnected closed surface and builds its corner
-/// table, in four phases: sizes and faces, edge bucketing, edge classification (gluing),
-/// vertex links. Errors are reported in a fixed precedence: the first face error, then
-/// duplicate faces, then non-manifold or multiple edges, then boundary edges, then
-/// vertex links.
-fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
+/// Phases 1-3 on a face list: sizes and faces, edge bucketing, edge classification.
+/// Returns the corner-to-vertex array and the classification; the first face error,
+/// duplicate face or non-manifold / multiple edge is an error here (in that
+/// precedence), boundary edges are left to the caller.
+fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Vec<u32>, Classified), BuildError> {
     check_sizes(vertex_count, faces)?;
     check_faces(vertex_count, faces)?;
     let corner_vertex: Vec<u32> = faces.iter().flat_map(|f| f.iter().copied()).collect();
     let buckets = bucket_edges(vertex_count, &corner_vertex);
-    let classified = classify_edges(buckets, &corner_vertex, faces);
-    if let Some(e) = classified
-        .duplicate
-        .or(classified.bad_edge)
-        .or(classified.first_boundary)
-    {
+    let mut classified = classify_edges(buckets, &corner_vertex, faces);
+    if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {
         return Err(e);
     }
-    debug_assert!(classified.boundary.is_empty());
+    Ok((corner_vertex, classified))
+}
 
+/// Phase 4 on a fully glued corner table (every edge interior): per-vertex corners and
+/// degrees, then the vertex-link check.
+fn assemble(
+    vertex_count: usize,
+    faces: usize,
+    corner_vertex: Vec<u32>,
+    opposite: Vec<u32>,
+) -> Result<Checked, BuildError> {
     let mut corner_count = vec![0u32; vertex_count];
     let mut vertex_corner = vec![NONE; vertex_count];
     for (c, &v) in corner_vertex.iter().enumerate() {
@@ -410,15 +426,66 @@ fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError>
     let used: Vec<bool> = vertex_corner.iter().map(|&c| c != NONE).collect();
     let tri = Triangulation {
         corner_vertex,
-        opposite: classified.opposite,
+        opposite,
         vertex_corner,
         degree: corner_count,
         live_vertices: used.iter().filter(|&&u| u).count(),
-        live_faces: faces.len(),
+        live_faces: faces,
         state: StateStamp::fresh(),
     };
     check_vertex_links(&tri, &used)?;
     Ok(Checked { tri, used })
+}
+
+/// Validates a face list as a possibly disconnected closed surface and builds its corner
+/// table, in four phases: sizes and faces, edge bucketing, edge classification (gluing),
+/// vertex links. Errors are reported in a fixed precedence: the first face error, then
+/// duplicate faces, then non-manifold or multiple edges, then boundary edges, then
+/// vertex links.
+pub(super) fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
+    let (corner_vertex, classified) = classify(vertex_count, faces)?;
+    if let Some(e) = classified.first_boundary {
+        return Err(e);
+    }
+    debug_assert!(classified.boundary.is_empty());
+    assemble(
+        vertex_count,
+        faces.len(),
+        corner_vertex,
+        classified.opposite,
+    )
+}
+
+/// Phases 1-3 for a surface that may have boundary: the face and edge errors of
+/// [`check`] except boundary edges, which are returned as the corners opposite them
+/// (in bucket order). If there are none, the closed surface is finished too (phase 4),
+/// so that a closed mesh costs what [`check`] costs.
+pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<OpenCheck, BuildError> {
+    let (corner_vertex, classified) = classify(vertex_count, faces)?;
+    if classified.boundary.is_empty() {
+        let checked = assemble(
+            vertex_count,
+            faces.len(),
+            corner_vertex,
+            classified.opposite,
+        )?;
+        return Ok(OpenCheck::Closed(checked));
+    }
+    Ok(OpenCheck::Open {
+        corner_vertex,
+        boundary: classified.boundary,
+    })
+}
+
+/// What [`check_open`] found.
+pub(super) enum OpenCheck {
+    /// No boundary edge: the finished closed surface.
+    Closed(Checked),
+    /// Boundary edges: the corner-to-vertex array and the corners opposite them.
+    Open {
+        corner_vertex: Vec<u32>,
+        boundary: Vec<u32>,
+    },
 }
 
 /// Number of separate face cycles around `v` (only called on the error path).
@@ -441,7 +508,7 @@ fn count_fans(tri: &Triangulation, v: u32) -> usize {
 }
 
 /// Connected components of the face graph: `label[f]` and the component count. O(F).
-fn face_components(tri: &Triangulation) -> (Vec<u32>, usize) {
+pub(super) fn face_components(tri: &Triangulation) -> (Vec<u32>, usize) {
     let nf = tri.face_capacity();
     let mut label = vec![NONE; nf];
     let mut count = 0u32;
@@ -554,7 +621,7 @@ impl Surfaces {
 }
 
 /// Extracts each component with dense local ids, in mesh order.
-fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Component> {
+pub(super) fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Component> {
     let nf = tri.face_capacity();
     let mut local_face = vec![NONE; nf];
     let mut face_origin: Vec<Vec<u32>> = vec![Vec::new(); count];

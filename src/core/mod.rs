@@ -2,11 +2,13 @@
 //!
 //! One module per concern: [`ids`] (newtype indices), `tri` (the structure and its
 //! traversals), `build` (construction and validation from face lists, components),
+//! `boundary` (surfaces with boundary, closed by coning each loop to a virtual vertex),
 //! `link` (the link condition, naive and marked), `contract` (contraction and its exact,
 //! guarded undo), `split` (the general vertex split), `flip` (edge flips with exact
 //! undo), `edge` (edge handles and dense edge numbers that survive changes), `journal`
 //! (undo of interleaved contractions and flips), `validate`.
 
+mod boundary;
 mod build;
 mod contract;
 mod edge;
@@ -18,6 +20,7 @@ mod split;
 mod tri;
 mod validate;
 
+pub use boundary::{ConedComponent, ConedSurfaces};
 pub use build::{BuildError, Component, Surfaces};
 pub use contract::{ContractError, ContractionRecord, History, UndoError};
 pub use edge::{Edge, EdgeId, EdgeNumbering};
