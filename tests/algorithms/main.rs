@@ -11,6 +11,7 @@ mod oracles;
 mod quad_augment;
 mod quad_greedy;
 mod quad_lrs;
+mod quad_qbench;
 mod rs_algorithm;
 mod rs_variants;
 mod vectors;
