@@ -5,13 +5,14 @@
 //! every real mesh of `../shared/meshes/closed/` with at least 80,000 triangles.
 //!
 //! Groups (filter with the group name, e.g. `cargo bench --bench quad -- total`):
-//! - `total`: `quad::convert` (initial step + completion, as the CLI runs it; the input is
-//!   cloned outside the timed region);
-//! - `initial`: the initial step alone (for LRS: RS contraction + expansion);
-//! - `completion`: `augment::complete` on the initial pairing of each algorithm
-//!   (computed once, outside the timed region; the pairing is cloned outside it too);
+//! - `total` (5 samples): `quad::convert` (initial step + completion, as the CLI runs it;
+//!   the input is cloned outside the timed region);
+//! - `initial` (3 samples): the initial step alone (for LRS: RS contraction + expansion);
+//! - `completion` (3 samples): `augment::complete` on the initial pairing of each
+//!   algorithm (computed once, outside the timed region; the pairing is cloned outside
+//!   it too);
 //! - `petgraph`: the baseline, `petgraph::algo::maximum_matching` on the dual graph,
-//!   the dual graph build included (as `total` includes ours).
+//!   the dual graph build included (as `total` includes ours); 3 samples.
 //!
 //! Every algorithm uses seed 1. Run: `cargo bench --bench quad > quad.txt` (about
 //! 12 minutes on the 2-core machine), then `python3 docs/quad_bench_table.py quad.txt`.
@@ -141,34 +142,27 @@ fn completion(b: divan::Bencher, name: &str, alg: Algorithm) {
         .bench_local_refs(|p| augment::complete(&t, p));
 }
 
+/// One bench per algorithm of the group (`$name => $alg`), all on [`inputs`].
 macro_rules! group {
-    ($group:ident, $run:ident, $samples:expr) => {
+    ($group:ident, $run:ident, $samples:expr, [$($name:ident => $alg:ident),*]) => {
         #[divan::bench_group(sample_count = $samples, sample_size = 1)]
         mod $group {
             use super::*;
-            #[divan::bench(args = inputs())]
-            fn lrs(b: divan::Bencher, name: &str) {
-                $run(b, name, Algorithm::Lrs)
-            }
-            #[divan::bench(args = inputs())]
-            fn ps(b: divan::Bencher, name: &str) {
-                $run(b, name, Algorithm::Ps)
-            }
-            #[divan::bench(args = inputs())]
-            fn sg(b: divan::Bencher, name: &str) {
-                $run(b, name, Algorithm::Sg)
-            }
-            #[divan::bench(args = inputs())]
-            fn matching(b: divan::Bencher, name: &str) {
-                $run(b, name, Algorithm::Matching)
-            }
+            $(
+                #[divan::bench(args = inputs())]
+                fn $name(b: divan::Bencher, name: &str) {
+                    $run(b, name, Algorithm::$alg)
+                }
+            )*
         }
     };
 }
 
-group!(total, total, 5);
-group!(initial, init, 5);
-group!(completion, completion, 5);
+// The graph route's initial step is the empty pairing and its completion is its total,
+// so it appears in `total` only.
+group!(total, total, 5, [lrs => Lrs, ps => Ps, sg => Sg, matching => Matching]);
+group!(initial, init, 3, [lrs => Lrs, ps => Ps, sg => Sg]);
+group!(completion, completion, 3, [lrs => Lrs, ps => Ps, sg => Sg]);
 
 /// The dual graph as a petgraph `UnGraph` (copied from `tests/common/mod.rs`).
 fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::FaceId, ()> {
