@@ -5,19 +5,21 @@
 //! every real mesh of `../shared/meshes/closed/` with at least 80,000 triangles.
 //!
 //! Groups (filter with the group name, e.g. `cargo bench --bench quad -- total`):
-//! - `total` (5 samples): `quad::convert` (initial step + completion, as the CLI runs it;
+//! - `total` (3 samples): `quad::convert` (initial step + completion, as the CLI runs it;
 //!   the input is cloned outside the timed region);
 //! - `initial` (3 samples): the initial step alone (for LRS: RS contraction + expansion);
 //! - `completion` (3 samples): `augment::complete` on the initial pairing of each
 //!   algorithm (computed once, outside the timed region; the pairing is cloned outside
 //!   it too);
 //! - `petgraph`: the baseline, `petgraph::algo::maximum_matching` on the dual graph,
-//!   the dual graph build included (as `total` includes ours); 3 samples.
+//!   the dual graph build included (as `total` includes ours); 2 samples (seconds each).
 //!
 //! Every algorithm uses seed 1. Run: `cargo bench --bench quad > quad.txt` (about
-//! 12 minutes on the 2-core machine), then `python3 docs/quad_bench_table.py quad.txt`.
-//! The members left out of the default run (B1, B3, B5, B7, B9; C1, C3, C5, C7) are
-//! selected by setting `QUAD_BENCH_ALL=1` (about 5 more minutes).
+//! 4 minutes on the idle 2-core machine, of which petgraph takes half), then
+//! `python3 docs/quad_bench_table.py quad.txt`. The default inputs are B0, B2, B4, C0,
+//! C2, C4 and the meshes; `QUAD_BENCH_ALL=1 cargo bench --bench quad` runs every member
+//! B0–B9 and C0–C7 (about 3 more minutes idle). Filter as usual, e.g.
+//! `cargo bench --bench quad -- total` or `-- petgraph`.
 
 use contractible::gen::paper_family;
 use contractible::quad::{self, augment, greedy, lrs, matching, pulli_segal};
@@ -53,7 +55,7 @@ fn inputs() -> Vec<&'static str> {
             "C4", "C5", "C6", "C7",
         ]
     } else {
-        vec!["B0", "B2", "B4", "B6", "B8", "C0", "C2", "C4", "C6"]
+        vec!["B0", "B2", "B4", "C0", "C2", "C4"]
     };
     v.extend_from_slice(MESHES);
     v
@@ -160,7 +162,7 @@ macro_rules! group {
 
 // The graph route's initial step is the empty pairing and its completion is its total,
 // so it appears in `total` only.
-group!(total, total, 5, [lrs => Lrs, ps => Ps, sg => Sg, matching => Matching]);
+group!(total, total, 3, [lrs => Lrs, ps => Ps, sg => Sg, matching => Matching]);
 group!(initial, init, 3, [lrs => Lrs, ps => Ps, sg => Sg]);
 group!(completion, completion, 3, [lrs => Lrs, ps => Ps, sg => Sg]);
 
@@ -180,7 +182,7 @@ fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::FaceI
 
 /// petgraph's Gabow matching is recursive; it runs on a thread with a 1 GiB stack (the
 /// spawn costs microseconds against seconds of matching).
-#[divan::bench(args = MESHES, sample_count = 3, sample_size = 1)]
+#[divan::bench(args = MESHES, sample_count = 2, sample_size = 1)]
 fn petgraph(b: divan::Bencher, name: &str) {
     let t = input(name);
     b.bench_local(|| {
