@@ -15,7 +15,8 @@
 //!   the dual graph build included (as `total` includes ours); 2 samples (seconds each).
 //!
 //! Every algorithm uses seed 1. Run: `cargo bench --bench quad > quad.txt` (about
-//! 4 minutes on the idle 2-core machine, of which petgraph takes half), then
+//! 11 minutes at load 5-10 on the shared 2-core machine, an estimated 4 idle; petgraph
+//! takes the largest part), then
 //! `python3 docs/quad_bench_table.py quad.txt`. The default inputs are B0, B2, B4, C0,
 //! C2, C4 and the meshes; `QUAD_BENCH_ALL=1 cargo bench --bench quad` runs every member
 //! B0–B9 and C0–C7 (about 3 more minutes idle). Filter as usual, e.g.
