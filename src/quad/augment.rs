@@ -211,10 +211,16 @@ impl Search {
             dl: UNREACHED,
             tree: NONE,
         };
-        let mut node = vec![blank; n];
+        // One pass writes every record once (a blank for dead ids), in increasing id,
+        // so the first violation reported is the same as a scan of `tri.faces()`.
+        let mut node = Vec::with_capacity(n);
         let mut live = Vec::with_capacity(tri.face_count());
         let mut paired = 0usize;
-        for f in tri.faces() {
+        for f in (0..n as u32).map(FaceId) {
+            if !tri.is_face(f) {
+                node.push(blank);
+                continue;
+            }
             let adj = tri.face_neighbours(f).map(|g| g.0);
             let mate = match pairing.mate(f) {
                 Some(g) => {
@@ -228,8 +234,7 @@ impl Search {
                 }
                 None => NONE,
             };
-            node[f.index()].adj = adj;
-            node[f.index()].mate = mate;
+            node.push(Node { adj, mate, ..blank });
             live.push(f.0);
         }
         // Live faces pair only with live neighbours (above) and mates are symmetric

@@ -69,10 +69,10 @@
 //! # Complexity and representation
 //! Θ(F) time: F − 1 draws for the shuffle, then every step pairs two faces or none and
 //! does O(1) work (at most 16 re-evaluations, each O(1)), and every face leaves the sets
-//! once. The four sets are intrusive doubly-linked lists over flat `u32` arrays indexed
-//! by face id (`next`, `prev`, a set tag; four heads and tails), so a relocation is
-//! O(1); 14 bytes per face id of extra space (with the free-edge counts and the shuffled
-//! order) besides the pairing.
+//! once. The four sets are intrusive doubly-linked lists over one 12-byte record per
+//! face id (`next`, `prev`, the set tag and the free-edge count together, so that a
+//! look at a face is one cache miss; four heads and tails), so a relocation is O(1);
+//! 16 bytes per face id of extra space (with the shuffled order) besides the pairing.
 
 use super::{Options, Pairing};
 use crate::core::{FaceId, Triangulation};
@@ -127,14 +127,24 @@ impl Rules {
     ];
 }
 
+/// One face's record: its list links, its set tag and its free-edge count, together so
+/// that looking at a face costs one cache miss rather than one per array (PS visits the
+/// faces in shuffled order, and 4M faces do not fit in cache).
+#[derive(Clone, Copy)]
+struct Slot {
+    next: u32,
+    prev: u32,
+    /// The set of the face, or [`OUT`].
+    set: u8,
+    /// Free edges of the face while unpaired (see [`State`]).
+    free: u8,
+}
+
 /// Four intrusive doubly-linked lists over face ids.
 struct Sets {
     head: [u32; 4],
     tail: [u32; 4],
-    next: Vec<u32>,
-    prev: Vec<u32>,
-    /// The set of each face, or [`OUT`].
-    set: Vec<u8>,
+    slot: Vec<Slot>,
 }
 
 impl Sets {
@@ -142,35 +152,46 @@ impl Sets {
         Sets {
             head: [NIL; 4],
             tail: [NIL; 4],
-            next: vec![NIL; capacity],
-            prev: vec![NIL; capacity],
-            set: vec![OUT; capacity],
+            slot: vec![
+                Slot {
+                    next: NIL,
+                    prev: NIL,
+                    set: OUT,
+                    free: 0,
+                };
+                capacity
+            ],
         }
+    }
+
+    /// The set of `f`, or [`OUT`].
+    #[inline]
+    fn set(&self, f: u32) -> u8 {
+        self.slot[f as usize].set
     }
 
     /// Inserts `f` (in no set) at the front (`front`) or back of set `p`. O(1).
     fn insert(&mut self, f: u32, p: u8, front: bool) {
-        debug_assert_eq!(self.set[f as usize], OUT);
+        debug_assert_eq!(self.set(f), OUT);
         let s = p as usize;
-        self.set[f as usize] = p;
         if front {
             let h = self.head[s];
-            self.prev[f as usize] = NIL;
-            self.next[f as usize] = h;
+            let x = &mut self.slot[f as usize];
+            (x.set, x.prev, x.next) = (p, NIL, h);
             if h == NIL {
                 self.tail[s] = f;
             } else {
-                self.prev[h as usize] = f;
+                self.slot[h as usize].prev = f;
             }
             self.head[s] = f;
         } else {
             let t = self.tail[s];
-            self.next[f as usize] = NIL;
-            self.prev[f as usize] = t;
+            let x = &mut self.slot[f as usize];
+            (x.set, x.prev, x.next) = (p, t, NIL);
             if t == NIL {
                 self.head[s] = f;
             } else {
-                self.next[t as usize] = f;
+                self.slot[t as usize].next = f;
             }
             self.tail[s] = f;
         }
@@ -178,23 +199,27 @@ impl Sets {
 
     /// Removes `f` from its set, if any. O(1).
     fn remove(&mut self, f: u32) {
-        let p = self.set[f as usize];
+        let Slot {
+            next: n,
+            prev: pr,
+            set: p,
+            ..
+        } = self.slot[f as usize];
         if p == OUT {
             return;
         }
         let s = p as usize;
-        let (n, pr) = (self.next[f as usize], self.prev[f as usize]);
         if pr == NIL {
             self.head[s] = n;
         } else {
-            self.next[pr as usize] = n;
+            self.slot[pr as usize].next = n;
         }
         if n == NIL {
             self.tail[s] = pr;
         } else {
-            self.prev[n as usize] = pr;
+            self.slot[n as usize].prev = pr;
         }
-        self.set[f as usize] = OUT;
+        self.slot[f as usize].set = OUT;
     }
 
     /// The front of the highest non-empty set.
@@ -203,13 +228,12 @@ impl Sets {
     }
 }
 
-/// The algorithm's state: the pairing, the free-edge count of every unpaired face, and
-/// the sets.
+/// The algorithm's state: the pairing and the sets, whose records also hold the
+/// free-edge count of every unpaired face (its unpaired neighbours; meaningless once
+/// paired).
 struct State<'a> {
     tri: &'a Triangulation,
     pairing: Pairing,
-    /// Free edges of each unpaired face (unpaired neighbours); meaningless once paired.
-    free: Vec<u8>,
     sets: Sets,
     rules: Rules,
 }
@@ -218,7 +242,7 @@ impl State<'_> {
     /// The priority of the unpaired face `f` by the paper's definition, from the
     /// maintained counts; `None` if it has no free edge.
     fn priority(&self, f: FaceId) -> Option<u8> {
-        match self.free[f.index()] {
+        match self.sets.slot[f.index()].free {
             0 => None,
             1 => Some(3),
             3 => Some(0),
@@ -228,7 +252,7 @@ impl State<'_> {
                     .face_neighbours(f)
                     .into_iter()
                     .filter(|&g| !self.pairing.is_paired(g))
-                    .all(|g| self.free[g.index()] == 3);
+                    .all(|g| self.sets.slot[g.index()].free == 3);
                 Some(if all_zero { 1 } else { 2 })
             }
         }
@@ -238,7 +262,7 @@ impl State<'_> {
     /// if it has no free edge); a face already in the right set keeps its place.
     fn relocate(&mut self, f: FaceId) {
         let want = self.priority(f).unwrap_or(OUT);
-        if self.sets.set[f.index()] != want {
+        if self.sets.set(f.0) != want {
             self.sets.remove(f.0);
             if want != OUT {
                 self.sets.insert(f.0, want, self.rules.lifo);
@@ -261,7 +285,7 @@ impl State<'_> {
                 if self.pairing.is_paired(g) {
                     continue;
                 }
-                let c = &mut self.free[g.index()];
+                let c = &mut self.sets.slot[g.index()].free;
                 was_three[k] = *c == 3;
                 *c -= 1;
                 ring[k] = g;
@@ -282,7 +306,7 @@ impl State<'_> {
                 continue;
             }
             for m in self.tri.face_neighbours(g) {
-                if !self.pairing.is_paired(m) && self.free[m.index()] == 2 {
+                if !self.pairing.is_paired(m) && self.sets.slot[m.index()].free == 2 {
                     self.relocate(m);
                 }
             }
@@ -327,7 +351,7 @@ impl State<'_> {
             .into_iter()
             .filter(|&g| !self.pairing.is_paired(g));
         for f in std::iter::once(t).chain(unpaired_neighbours) {
-            let (have, want) = (self.sets.set[f.index()], prio_of(f));
+            let (have, want) = (self.sets.set(f.0), prio_of(f));
             let exact = !self.rules.second_ring || have == want;
             // Without the second ring only the 1/2 split may be stale.
             let stale_ok = matches!((have, want), (1, 2) | (2, 1));
@@ -337,7 +361,7 @@ impl State<'_> {
                  the definition gives {want}"
             );
         }
-        let s = self.sets.set[t.index()];
+        let s = self.sets.set(t.0);
         assert!(
             self.sets.head[s as usize + 1..].iter().all(|&h| h == NIL),
             "specification violated: PS took {t} from set {s}, a higher set is not empty"
@@ -353,13 +377,12 @@ fn run(tri: &Triangulation, options: &Options, rules: Rules) -> Pairing {
     let mut st = State {
         tri,
         pairing: Pairing::new(cap),
-        free: vec![0; cap],
         sets: Sets::new(cap),
         rules,
     };
     // Set 0 lists the shuffled faces from the front: insert at the back in order.
     for &f in &order {
-        st.free[f.index()] = 3;
+        st.sets.slot[f.index()].free = 3;
         st.sets.insert(f.0, 0, false);
     }
     while let Some(t) = st.sets.top() {
@@ -371,7 +394,7 @@ fn run(tri: &Triangulation, options: &Options, rules: Rules) -> Pairing {
             if st.pairing.is_paired(g) {
                 continue;
             }
-            let p = st.sets.set[g.index()];
+            let p = st.sets.set(g.0);
             if best.is_none_or(|(q, _)| p > q) {
                 best = Some((p, g));
             }
@@ -422,7 +445,7 @@ mod tests {
         let mut f = s.head[0];
         while f != NIL {
             order.push(f);
-            f = s.next[f as usize];
+            f = s.slot[f as usize].next;
         }
         assert_eq!(order, [0, 1, 3]);
         assert_eq!(s.tail[0], 3);

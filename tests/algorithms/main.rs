@@ -17,6 +17,7 @@ mod quad_augment;
 mod quad_convert;
 mod quad_greedy;
 mod quad_lrs;
+mod quad_qbench;
 mod quad_qfuzz;
 mod rs_algorithm;
 mod rs_variants;

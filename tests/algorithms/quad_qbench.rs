@@ -1,0 +1,326 @@
+//! Output pins of the tri-quad conversion for the optimisations of issue 9: every
+//! algorithm's initial pairing and final output (`K`'s face lists and the pairs) on a few
+//! inputs, as 64-bit FNV-1a fingerprints recorded from the implementation *before* any
+//! optimisation (commit b70e3ef, by `examples/quad_profile.rs`). A speed-up that changes
+//! a single pair, flip or face slot changes a fingerprint and fails here. The
+//! fingerprints are computed by this file's own code from the public results only.
+
+use contractible::gen::{paper_family, random, RandomParams, SurfaceKind};
+use contractible::quad::{self, greedy, lrs, matching, pulli_segal};
+use contractible::quad::{Algorithm, Options, Pairing};
+use contractible::{Surfaces, Triangulation};
+
+/// FNV-1a, 64 bits, over little-endian `u32` words.
+struct Fnv(u64);
+
+impl Fnv {
+    fn new() -> Self {
+        Fnv(0xcbf2_9ce4_8422_2325)
+    }
+    fn word(&mut self, w: u32) {
+        for b in w.to_le_bytes() {
+            self.0 ^= u64::from(b);
+            self.0 = self.0.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+}
+
+/// The pairs, each once, in increasing smaller face id (read from the mates directly).
+fn fingerprint_pairing(t: &Triangulation, p: &Pairing) -> u64 {
+    let mut h = Fnv::new();
+    for f in 0..p.face_capacity() as u32 {
+        let f = contractible::FaceId(f);
+        if let Some(g) = p.mate(f) {
+            if f.0 < g.0 {
+                assert!(t.is_face(f) && t.is_face(g), "pair of removed faces");
+                h.word(f.0);
+                h.word(g.0);
+            }
+        }
+    }
+    h.0
+}
+
+/// `K`'s live faces in increasing id (id, then the vertices in slot order), then the
+/// pairing's fingerprint.
+fn fingerprint_output(k: &Triangulation, p: &Pairing) -> u64 {
+    let mut h = Fnv::new();
+    for f in k.faces() {
+        h.word(f.0);
+        for v in k.face_vertices(f) {
+            h.word(v.0);
+        }
+    }
+    let fp = fingerprint_pairing(k, p);
+    h.word(fp as u32);
+    h.word((fp >> 32) as u32);
+    h.0
+}
+
+fn build(name: &str) -> Triangulation {
+    let random_surface = |surface| {
+        random(&RandomParams {
+            surface,
+            min_faces: 3000,
+            flip_percent: 30,
+            seed: 1,
+        })
+    };
+    let mesh = match name {
+        "rand:o3" => return random_surface(SurfaceKind::Orientable(3)),
+        "rand:n5" => return random_surface(SurfaceKind::NonOrientable(5)),
+        "botijo" => {
+            let path = format!(
+                "{}/../shared/meshes/closed/botijo.off.gz",
+                env!("CARGO_MANIFEST_DIR")
+            );
+            contractible::io::read_tri_mesh(path.as_ref()).expect("botijo reads")
+        }
+        "B6" => paper_family('B', 6),
+        "C5" => paper_family('C', 5),
+        _ => panic!("no input {name}"),
+    };
+    Surfaces::from_mesh(&mesh)
+        .expect("closed surface")
+        .components
+        .into_iter()
+        .max_by_key(|c| c.tri.face_count())
+        .expect("a component")
+        .tri
+}
+
+/// (input, algorithm, unpaired after the initial step, augmenting paths, phases,
+/// fingerprint of the initial pairing, fingerprint of the output), seed 1.
+const PINS: &[(&str, Algorithm, usize, usize, usize, u64, u64)] = &[
+    (
+        "rand:o3",
+        Algorithm::Lrs,
+        38,
+        19,
+        1,
+        0xa3d8a66b7f732e15,
+        0x793a0dc37a439a07,
+    ),
+    (
+        "rand:o3",
+        Algorithm::Ps,
+        48,
+        24,
+        2,
+        0x394a772604a0ff7e,
+        0x99b1a1f1a607d50d,
+    ),
+    (
+        "rand:o3",
+        Algorithm::Sg,
+        396,
+        198,
+        2,
+        0xf265c1ef4e84e4bf,
+        0xd59c73eece3d0a76,
+    ),
+    (
+        "rand:o3",
+        Algorithm::Matching,
+        3000,
+        1500,
+        2,
+        0xcbf29ce484222325,
+        0x6a4906c153eb8144,
+    ),
+    (
+        "rand:n5",
+        Algorithm::Lrs,
+        34,
+        17,
+        1,
+        0x6dafee51d2db1ffa,
+        0xb8bd4f0ba946590e,
+    ),
+    (
+        "rand:n5",
+        Algorithm::Ps,
+        48,
+        24,
+        2,
+        0xdf77a5dcfbf59459,
+        0xa48726bed976626a,
+    ),
+    (
+        "rand:n5",
+        Algorithm::Sg,
+        404,
+        202,
+        3,
+        0x5d66124accb6f7d0,
+        0xec24f774a3298a6f,
+    ),
+    (
+        "rand:n5",
+        Algorithm::Matching,
+        3000,
+        1500,
+        3,
+        0xcbf29ce484222325,
+        0x044e443ef766566e,
+    ),
+    (
+        "botijo",
+        Algorithm::Lrs,
+        66,
+        33,
+        1,
+        0x53d666a94cd189fb,
+        0x62e69497006bb02e,
+    ),
+    (
+        "botijo",
+        Algorithm::Ps,
+        6,
+        3,
+        1,
+        0x8055c0e5834fdaa4,
+        0x1636280d87895f22,
+    ),
+    (
+        "botijo",
+        Algorithm::Sg,
+        10314,
+        5157,
+        2,
+        0x71373e06a08c01dd,
+        0xffbdebdae82bfcd0,
+    ),
+    (
+        "botijo",
+        Algorithm::Matching,
+        82332,
+        41166,
+        2,
+        0xcbf29ce484222325,
+        0xfc15a074ff232468,
+    ),
+    (
+        "B6",
+        Algorithm::Lrs,
+        4,
+        2,
+        1,
+        0x264e19cac0527cbf,
+        0xc60aaa97c5fcaebb,
+    ),
+    (
+        "B6",
+        Algorithm::Ps,
+        6,
+        3,
+        2,
+        0xe6ba545746a805cb,
+        0x993c4e6df4d993fc,
+    ),
+    (
+        "B6",
+        Algorithm::Sg,
+        8128,
+        4064,
+        3,
+        0xeaf670bfc64d8c46,
+        0xaf5b671b2ed55c42,
+    ),
+    (
+        "B6",
+        Algorithm::Matching,
+        69552,
+        34776,
+        1,
+        0xcbf29ce484222325,
+        0x39288f3e875294a8,
+    ),
+    (
+        "C5",
+        Algorithm::Lrs,
+        33428,
+        16714,
+        2,
+        0xe81fb35411101b39,
+        0xa7f279aa85336733,
+    ),
+    (
+        "C5",
+        Algorithm::Ps,
+        206,
+        103,
+        1,
+        0x56c573ccceeb9435,
+        0x995350a8ab527b4b,
+    ),
+    (
+        "C5",
+        Algorithm::Sg,
+        23892,
+        11946,
+        2,
+        0xa208040bcb82337a,
+        0xa805ffb98a95f596,
+    ),
+    (
+        "C5",
+        Algorithm::Matching,
+        197056,
+        98528,
+        1,
+        0xcbf29ce484222325,
+        0x42fd99bd4a746e1c,
+    ),
+];
+
+#[test]
+fn outputs_are_those_of_the_unoptimised_implementation() {
+    const OPTIONS: Options = Options { seed: 1 };
+    let mut current: Option<(&str, Triangulation)> = None;
+    for &(name, alg, unpaired, paths, phases, fp_initial, fp_output) in PINS {
+        if current.as_ref().map(|c| c.0) != Some(name) {
+            current = Some((name, build(name)));
+        }
+        let t = &current.as_ref().expect("input").1;
+        let label = format!("{name} {}", alg.name());
+        // The initial step through the module's own entry point.
+        let (k0, p0) = match alg {
+            Algorithm::Lrs => {
+                let e = lrs::initial_pairing(t.clone());
+                (e.tri, e.pairing)
+            }
+            Algorithm::Ps => (t.clone(), pulli_segal::initial_pairing(t, &OPTIONS)),
+            Algorithm::Sg => (t.clone(), greedy::initial_pairing(t, &OPTIONS)),
+            Algorithm::Matching => (t.clone(), matching::initial_pairing(t)),
+        };
+        assert_eq!(
+            k0.face_count() - 2 * p0.len(),
+            unpaired,
+            "{label}: unpaired"
+        );
+        assert_eq!(
+            fingerprint_pairing(&k0, &p0),
+            fp_initial,
+            "{label}: initial pairing changed"
+        );
+        // The whole pipeline, as the CLI runs it.
+        let q = quad::convert(t.clone(), alg, &OPTIONS);
+        assert_eq!(q.pairing.check(&q.tri), Ok(()), "{label}");
+        assert!(q.pairing.is_perfect(&q.tri), "{label}: perfect");
+        assert_eq!(
+            (
+                q.stats.initial_unpaired,
+                q.stats.augmenting_paths,
+                q.stats.phases
+            ),
+            (unpaired, paths, phases),
+            "{label}: counters"
+        );
+        assert_eq!(
+            fingerprint_output(&q.tri, &q.pairing),
+            fp_output,
+            "{label}: output changed"
+        );
+    }
+}
