@@ -8,5 +8,6 @@ mod common;
 mod cli_gen;
 mod cli_info;
 mod cli_invalid;
+mod cli_iso;
 mod cli_quad;
 mod cli_reduce;
