@@ -135,7 +135,7 @@ fn hyperboloid_is_written_as_two_discs() {
         for v in 0..nv {
             *chi.entry(root(&mut parent, v)).or_default() += 1;
         }
-        for (&(a, _), _) in &edges {
+        for &(a, _) in edges.keys() {
             *chi.entry(root(&mut parent, a as usize)).or_default() -= 1;
         }
         for f in &faces {

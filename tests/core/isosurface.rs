@@ -147,8 +147,8 @@ fn check_manifold(m: &TriMesh) -> Result<Vec<Part>, String> {
     let mut part_of: HashMap<usize, usize> = HashMap::new();
     for fi in 0..nf {
         let r = find(&mut parent, fi);
-        if !part_of.contains_key(&r) {
-            part_of.insert(r, order.len());
+        if let std::collections::hash_map::Entry::Vacant(e) = part_of.entry(r) {
+            e.insert(order.len());
             order.push(r);
         }
     }
