@@ -175,8 +175,9 @@ pub enum IsoError {
     /// The iso-level is NaN or infinite.
     #[error("the iso-level must be finite (got {0})")]
     BadLevel(f64),
-    /// The grid has more sample points than can be addressed.
-    #[error("grid of {cells:?} cells is too large")]
+    /// The grid has more than 2²⁰ cells on an axis, or more than 2²² cells in a layer
+    /// of constant `z` (the memory of a slab's samples).
+    #[error("grid of {cells:?} cells is too large (at most 2^20 per axis, 2^22 per z layer)")]
     GridTooLarge {
         /// The cells given.
         cells: [u32; 3],
@@ -795,9 +796,10 @@ pub fn isosurface(params: &IsoParams) -> Result<TriMesh, IsoError> {
     if !params.level.is_finite() {
         return Err(IsoError::BadLevel(params.level));
     }
-    // Doubled coordinates up to 2n must fit u32, and a plane must fit memory limits.
+    // Sample keys (2n + 1)³ must fit u64, and the four sample planes of a slab (about
+    // 4·4·cells_x·cells_y values) must stay within a few hundred MB.
     let too_large = params.cells.iter().any(|&n| n > (1 << 20))
-        || (u64::from(params.cells[0]) * u64::from(params.cells[1])) > (1 << 26);
+        || (u64::from(params.cells[0]) * u64::from(params.cells[1])) > (1 << 22);
     if too_large {
         return Err(IsoError::GridTooLarge {
             cells: params.cells,

@@ -506,6 +506,9 @@ fn bad_parameters_are_typed_errors() {
     };
     assert!(matches!(isosurface(&p), Err(IsoError::BadSurface { .. })));
     let mut p = sphere;
+    p.cells = [1 << 12, 1 << 11, 1];
+    assert!(matches!(isosurface(&p), Err(IsoError::GridTooLarge { .. })));
+    let mut p = sphere;
     p.level = 100.0; // every sample inside
     assert_eq!(isosurface(&p), Err(IsoError::Empty));
 }
