@@ -68,6 +68,9 @@ pub enum GenKind {
     Brick(BrickArgs),
     /// 1-to-4 subdivision of an input surface (positions kept, midpoints averaged).
     Subdivide(SubdivideArgs),
+    /// Marching tetrahedra on an implicit surface sampled on a grid (with positions). The
+    /// hyperboloid is open where the box cuts it (two discs); the others are closed.
+    Isosurface(IsoArgs),
     /// The boundary of the tetrahedron (4 vertices).
     Tetrahedron(OutArg),
     /// The boundary of the octahedron (6 vertices).
@@ -121,6 +124,48 @@ pub struct BrickArgs {
     /// A member of the paper's benchmark groups: B0..B9, C0..C7, D0..D9.
     #[arg(long, conflicts_with = "cavities")]
     pub paper: Option<String>,
+    #[command(flatten)]
+    pub out: OutArg,
+}
+
+/// How `gen isosurface` splits the grid's cubes into tetrahedra.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TessellationArg {
+    /// 6 tetrahedra per cube around its main diagonal.
+    Six,
+    /// Chan–Purisima body-centred tessellation (12 tetrahedra per cube).
+    Bcc,
+}
+
+/// Named `gen isosurface` workloads.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IsoPreset {
+    /// Table 1's torus: 16,772 vertices, 33,544 faces (both tessellations).
+    PaperTorus,
+    /// Table 1's two-sheeted hyperboloid: 56,288 vertices, 111,140 faces with bcc
+    /// (111,332 faces with six).
+    PaperHyperboloid,
+    /// The paper's torus over 1,000,000 triangles.
+    LargeTorus,
+    /// The paper's hyperboloid over 1,000,000 triangles.
+    LargeHyperboloid,
+}
+
+#[derive(Args, Debug)]
+pub struct IsoArgs {
+    /// sphere (radius 1), torus (radii 1 and 0.4), genus:G (a slab with G holes), or
+    /// hyperboloid (x² + y² − z² + 0.3 in the box ±1.2 × ±1.2 × ±1.5).
+    #[arg(long, required_unless_present = "preset", conflicts_with = "preset")]
+    pub surface: Option<String>,
+    /// How cubes are split into tetrahedra.
+    #[arg(long, value_enum, default_value_t = TessellationArg::Six)]
+    pub tessellation: TessellationArg,
+    /// Cells along the box's longest axis (the others keep cells about cubic).
+    #[arg(long, default_value_t = 32, conflicts_with = "preset")]
+    pub resolution: u32,
+    /// A named workload (grid and function fixed).
+    #[arg(long, value_enum)]
+    pub preset: Option<IsoPreset>,
     #[command(flatten)]
     pub out: OutArg,
 }

@@ -6,7 +6,9 @@ use contractible::core::MAX_FACES;
 use contractible::gen::{self, BrickParams, RandomParams, SurfaceKind};
 use contractible::{Surfaces, TriMesh};
 
-use super::args::{BrickArgs, GenArgs, GenKind, RandomArgs, SubdivideArgs};
+use super::args::{
+    BrickArgs, GenArgs, GenKind, IsoArgs, IsoPreset, RandomArgs, SubdivideArgs, TessellationArg,
+};
 use super::info::Report;
 use super::progress::spinner;
 use super::{meshio, print_json, CliError, Ui};
@@ -137,11 +139,141 @@ fn subdivide_mesh(a: &SubdivideArgs, ui: Ui) -> Result<TriMesh, CliError> {
     Ok(m)
 }
 
+/// The largest `--resolution` of `gen isosurface`: about 10⁸ cells, far beyond any
+/// surface the triangulation can index anyway.
+const MAX_ISO_RESOLUTION: u32 = 2048;
+
+fn iso_params(a: &IsoArgs) -> Result<gen::IsoParams, CliError> {
+    let tess = match a.tessellation {
+        TessellationArg::Six => gen::Tessellation::SixTetrahedra,
+        TessellationArg::Bcc => gen::Tessellation::BodyCentred,
+    };
+    if let Some(p) = a.preset {
+        return Ok(match p {
+            IsoPreset::PaperTorus => gen::paper_torus(tess),
+            IsoPreset::PaperHyperboloid => gen::paper_hyperboloid(tess),
+            IsoPreset::LargeTorus => gen::large_torus(tess),
+            IsoPreset::LargeHyperboloid => gen::large_hyperboloid(tess),
+        });
+    }
+    let name = a.surface.as_deref().unwrap_or_default();
+    let implicit = match name {
+        "sphere" => gen::Implicit::Sphere { radius: 1.0 },
+        "torus" => gen::Implicit::Torus {
+            major: 1.0,
+            minor: 0.4,
+        },
+        "hyperboloid" => gen::Implicit::TwoSheetHyperboloid {
+            c: 0.3,
+            half_width: 1.2,
+            half_height: 1.5,
+        },
+        _ => {
+            let g = name
+                .strip_prefix("genus:")
+                .and_then(|g| g.parse::<u32>().ok())
+                .filter(|&g| g <= gen::MAX_GENUS)
+                .ok_or_else(|| {
+                    CliError::Input(format!(
+                        "--surface {name:?}: expected sphere, torus, genus:G (0 <= G <= {}) \
+                         or hyperboloid",
+                        gen::MAX_GENUS
+                    ))
+                })?;
+            gen::Implicit::GenusG { g }
+        }
+    };
+    if a.resolution == 0 || a.resolution > MAX_ISO_RESOLUTION {
+        return Err(CliError::Input(format!(
+            "--resolution {}: expected 1..={MAX_ISO_RESOLUTION}",
+            a.resolution
+        )));
+    }
+    Ok(gen::IsoParams::new(implicit, tess, a.resolution))
+}
+
+/// What `gen isosurface` reports for an open result (which [`Surfaces`] does not
+/// accept): counts and the checks made before writing.
+#[derive(serde::Serialize, Debug)]
+struct OpenReport {
+    file: String,
+    vertices: usize,
+    edges: usize,
+    faces: usize,
+    components: usize,
+    euler_characteristic: i64,
+    boundary_edges: usize,
+    /// Every interior edge is traversed once in each direction.
+    consistently_oriented: bool,
+}
+
+/// Checks an open marching-tetrahedra mesh independently of the generator: every edge
+/// in one or two faces, every interior edge traversed once each way. O(F) expected.
+fn check_open(out: &Path, m: &TriMesh) -> Result<OpenReport, CliError> {
+    use std::collections::HashMap;
+    let mut edge: HashMap<(u32, u32), (usize, bool)> = HashMap::new();
+    let mut oriented = true;
+    let mut parent: Vec<usize> = (0..m.faces.len()).collect();
+    fn root(parent: &mut [usize], mut x: usize) -> usize {
+        while parent[x] != x {
+            parent[x] = parent[parent[x]];
+            x = parent[x];
+        }
+        x
+    }
+    for (fi, f) in m.faces.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (f[k], f[(k + 1) % 3]);
+            let e = edge.entry((a.min(b), a.max(b))).or_insert((fi, a < b));
+            if e.0 != fi {
+                // A second face on this edge: it must run the other way, and no third.
+                if e.0 == usize::MAX {
+                    return Err(CliError::Failure(format!(
+                        "generated mesh is not a surface: edge [{a}, {b}] in more than two faces"
+                    )));
+                }
+                if e.1 == (a < b) {
+                    oriented = false;
+                }
+                let (ra, rb) = (root(&mut parent, e.0), root(&mut parent, fi));
+                parent[ra.max(rb)] = ra.min(rb);
+                e.0 = usize::MAX;
+            }
+        }
+    }
+    let boundary_edges = edge.values().filter(|e| e.0 != usize::MAX).count();
+    let components = (0..m.faces.len())
+        .filter(|&f| root(&mut parent, f) == f)
+        .count();
+    Ok(OpenReport {
+        file: out.display().to_string(),
+        vertices: m.vertex_count,
+        edges: edge.len(),
+        faces: m.faces.len(),
+        components,
+        euler_characteristic: m.vertex_count as i64 - edge.len() as i64 + m.faces.len() as i64,
+        boundary_edges,
+        consistently_oriented: oriented,
+    })
+}
+
+fn isosurface_mesh(a: &IsoArgs, ui: Ui) -> Result<TriMesh, CliError> {
+    let params = iso_params(a)?;
+    let pb = spinner(
+        ui,
+        format!("marching tetrahedra on {:?} cells", params.cells),
+    );
+    let m = gen::isosurface(&params).map_err(|e| CliError::Input(format!("isosurface: {e}")));
+    pb.finish_and_clear();
+    m
+}
+
 fn output_of(kind: &GenKind) -> &Path {
     match kind {
         GenKind::Random(r) => &r.out.output,
         GenKind::Brick(b) => &b.out.output,
         GenKind::Subdivide(s) => &s.out.output,
+        GenKind::Isosurface(i) => &i.out.output,
         GenKind::Tetrahedron(o)
         | GenKind::Octahedron(o)
         | GenKind::Icosahedron(o)
@@ -151,6 +283,32 @@ fn output_of(kind: &GenKind) -> &Path {
     }
 }
 
+/// Writes an open surface (the hyperboloid) after [`check_open`], and reports it.
+fn write_open(out: &Path, mesh: &TriMesh, ui: Ui) -> Result<(), CliError> {
+    let report = check_open(out, mesh)?;
+    if !report.consistently_oriented {
+        return Err(CliError::Failure(
+            "generated mesh is not consistently oriented".into(),
+        ));
+    }
+    meshio::write(out, mesh, ui)?;
+    if ui.json {
+        print_json(&report)?;
+    } else if !ui.quiet {
+        outln!(
+            "wrote {}: V={} E={} F={} χ={} components={} boundary edges={} (open)",
+            out.display(),
+            report.vertices,
+            report.edges,
+            report.faces,
+            report.euler_characteristic,
+            report.components,
+            report.boundary_edges
+        );
+    }
+    Ok(())
+}
+
 pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
     let out = output_of(&a.kind);
     meshio::check_output(out)?;
@@ -158,6 +316,17 @@ pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
         GenKind::Random(r) => random_mesh(r, ui)?,
         GenKind::Brick(b) => brick_mesh(b, ui)?,
         GenKind::Subdivide(s) => subdivide_mesh(s, ui)?,
+        GenKind::Isosurface(i) => {
+            let mesh = isosurface_mesh(i, ui)?;
+            let is_open = matches!(
+                iso_params(i)?.implicit,
+                gen::Implicit::TwoSheetHyperboloid { .. }
+            );
+            if is_open {
+                return write_open(out, &mesh, ui);
+            }
+            mesh
+        }
         GenKind::Tetrahedron(_) => gen::tetrahedron(),
         GenKind::Octahedron(_) => gen::octahedron(),
         GenKind::Icosahedron(_) => gen::icosahedron(),

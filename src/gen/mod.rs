@@ -9,10 +9,14 @@
 //!   7-vertex torus, the 6-vertex projective plane, a 9-vertex Klein bottle);
 //! - [`brick`]: the RS paper's benchmark surfaces (Tables 3–5);
 //! - [`subdivide`]: 1-to-4 subdivision, to scale any input up;
+//! - [`isosurface`]: marching tetrahedra on implicit surfaces (sphere, torus, genus g,
+//!   and the two-sheeted hyperboloid, which is *open*: the one generator whose output
+//!   has boundary where the sampling box cuts it);
 //! - [`random`]: random triangulations of any surface by vertex splits (a
 //!   [`crate::Triangulation`], seeded by the documented [`crate::rng`]).
 
 mod brick;
+mod isosurface;
 pub mod random;
 mod standard;
 mod subdivide;
@@ -21,6 +25,10 @@ pub use brick::{
     brick, brick_counts, brick_shape_counts, brick_shaped, brick_target_shape, brick_with_target,
     paper_entry, paper_family, paper_family_shape, BrickParams, BrickShape, PaperEntry,
     PAPER_TABLE,
+};
+pub use isosurface::{
+    isosurface, large_hyperboloid, large_torus, paper_hyperboloid, paper_torus, Implicit, IsoError,
+    IsoParams, Tessellation, CLAMP, MAX_GENUS,
 };
 pub use random::{random, seed_surface, RandomParams, SurfaceKind};
 pub use standard::{icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7};

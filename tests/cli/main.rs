@@ -9,5 +9,6 @@ mod cli_boundary;
 mod cli_gen;
 mod cli_info;
 mod cli_invalid;
+mod cli_iso;
 mod cli_quad;
 mod cli_reduce;

@@ -18,5 +18,6 @@ mod fuzz_regressions;
 mod gen_surfaces;
 mod interleave;
 mod io_formats;
+mod isosurface;
 mod proofs;
 mod properties;
