@@ -124,25 +124,83 @@ impl fmt::Debug for EdgeId {
 /// 4 bytes per corner plus 4 bytes per edge number; O(1) per operation.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct EdgeNumbering {
-    of_corner: Vec<u32>,
+    ids: EdgeIds,
     corner_of: Vec<u32>,
     live: usize,
+}
+
+/// The per-corner half of [`EdgeNumbering`]: each corner's edge number, following
+/// contractions with the same identity rules, without the live-corner table. For
+/// counters that only ever ask "which edge is opposite this corner" (the ε counter of
+/// the irreducible algorithms): 4 bytes per corner, and a contraction touches only the
+/// two corners it glues.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EdgeIds {
+    of_corner: Vec<u32>,
+    count: usize,
+}
+
+impl EdgeIds {
+    /// Numbers the edges of `tri` in [`Triangulation::edges`] order. O(F).
+    pub fn new(tri: &Triangulation) -> Self {
+        // The order of `Triangulation::edges` (faces in id order, corners in slot order,
+        // each edge at its smaller corner), as a flat loop: this runs once per reduction
+        // with ε counting, over millions of corners.
+        let nc = 3 * tri.face_capacity();
+        let mut of_corner = vec![NONE; nc];
+        let mut count = 0u32;
+        for c in 0..nc {
+            let o = tri.opposite[c];
+            if o != NONE && (c as u32) < o {
+                of_corner[c] = count;
+                of_corner[o as usize] = count;
+                count += 1;
+            }
+        }
+        EdgeIds {
+            of_corner,
+            count: count as usize,
+        }
+    }
+
+    /// One more than the largest number given.
+    #[inline]
+    pub fn capacity(&self) -> usize {
+        self.count
+    }
+
+    /// The number of the edge opposite live corner `c`. O(1).
+    #[inline]
+    pub fn id(&self, c: Corner) -> EdgeId {
+        EdgeId(self.of_corner[c.index()])
+    }
+
+    /// Updates the numbers after `rec` (see [`EdgeNumbering`] for the identity rules):
+    /// the corner that faced `[v, x]` takes the number of `[u, x]` (likewise for `y`).
+    /// Returns the numbers of `[u, v]`, `[v, x]`, `[v, y]`, which died. O(1).
+    #[inline]
+    pub fn contracted(&mut self, rec: &ContractionRecord) -> [EdgeId; 3] {
+        let uv = EdgeId(self.of_corner[rec.corner_opposite_uv().index()]);
+        let mut dead = [uv; 3];
+        for (k, (dying, kept)) in rec.glued().into_iter().enumerate() {
+            dead[k + 1] = EdgeId(self.of_corner[dying.index()]);
+            self.of_corner[dying.index()] = self.of_corner[kept.index()];
+        }
+        dead
+    }
 }
 
 impl EdgeNumbering {
     /// Numbers the edges of `tri` in [`Triangulation::edges`] order. O(F).
     pub fn new(tri: &Triangulation) -> Self {
-        let mut of_corner = vec![NONE; 3 * tri.face_capacity()];
-        let mut corner_of = Vec::with_capacity(tri.edge_count());
+        let ids = EdgeIds::new(tri);
+        let mut corner_of = vec![NONE; ids.capacity()];
         for (_, _, c) in tri.edges() {
-            let e = corner_of.len() as u32;
-            of_corner[c.index()] = e;
-            of_corner[tri.opposite(c).index()] = e;
-            corner_of.push(c.0);
+            corner_of[ids.id(c).index()] = c.0;
         }
         let live = corner_of.len();
         EdgeNumbering {
-            of_corner,
+            ids,
             corner_of,
             live,
         }
@@ -163,7 +221,7 @@ impl EdgeNumbering {
     /// The number of the edge opposite live corner `c`. O(1).
     #[inline]
     pub fn id(&self, c: Corner) -> EdgeId {
-        EdgeId(self.of_corner[c.index()])
+        EdgeId(self.ids.of_corner[c.index()])
     }
 
     /// A live corner opposite edge `e`, or `None` if `e` died. O(1).
@@ -189,18 +247,14 @@ impl EdgeNumbering {
     /// exact undo revives those very faces, and then they are what
     /// [`Self::uncontracted`] reads back, so undo support costs no memory.
     pub fn contracted(&mut self, rec: &ContractionRecord) -> [EdgeId; 3] {
-        let uv = EdgeId(self.of_corner[rec.corner_opposite_uv().index()]);
-        self.kill(uv);
-        let mut dead = [uv; 3];
-        for (k, (dying, kept)) in rec.glued().into_iter().enumerate() {
-            // `dying` was across [v, x] (that edge dies), `kept` across [u, x]; they are
-            // now the two corners of the merged edge, which keeps [u, x]'s number.
-            let dead_edge = EdgeId(self.of_corner[dying.index()]);
-            let merged = self.of_corner[kept.index()];
-            self.kill(dead_edge);
-            self.of_corner[dying.index()] = merged;
-            self.corner_of[merged as usize] = kept.0;
-            dead[k + 1] = dead_edge;
+        let dead = self.ids.contracted(rec);
+        for e in dead {
+            self.kill(e);
+        }
+        // The merged edges keep [u, x]'s and [u, y]'s numbers; the corner each number
+        // held may have been in a removed face, so point it at the outer one.
+        for (_, kept) in rec.glued() {
+            self.corner_of[self.ids.id(kept).index()] = kept.0;
         }
         dead
     }
@@ -220,12 +274,12 @@ impl EdgeNumbering {
             for s in 0..3 {
                 let c = f.corner(s as u32);
                 let w = rec.saved_vertex[3 * k + s];
-                let id = self.of_corner[c.index()];
+                let id = self.ids.of_corner[c.index()];
                 if w == rec.u.0 {
                     // c faces [v, x] (resp. [v, y]), the edge that died; its outer corner
                     // had taken the merged number and gets this one back.
                     let across = rec.saved_opposite[3 * k + s] as usize;
-                    self.of_corner[across] = id;
+                    self.ids.of_corner[across] = id;
                     self.revive(id, c);
                 } else if w == rec.v.0 {
                     // c faces [u, x] (resp. [u, y]), the merged edge: its number may hold
@@ -246,13 +300,13 @@ impl EdgeNumbering {
         // they face the new edge [c, d], and `moved[0]` / `moved[1]` face [a, d] / [b, c].
         let [k1, k2] = rec.moved;
         let [n1, n2] = rec.new_corners;
-        let old = self.of_corner[k1.index()];
-        let bc = self.of_corner[n1.index()];
-        let ad = self.of_corner[n2.index()];
-        self.of_corner[n1.index()] = old;
-        self.of_corner[n2.index()] = old;
-        self.of_corner[k1.index()] = ad;
-        self.of_corner[k2.index()] = bc;
+        let old = self.ids.of_corner[k1.index()];
+        let bc = self.ids.of_corner[n1.index()];
+        let ad = self.ids.of_corner[n2.index()];
+        self.ids.of_corner[n1.index()] = old;
+        self.ids.of_corner[n2.index()] = old;
+        self.ids.of_corner[k1.index()] = ad;
+        self.ids.of_corner[k2.index()] = bc;
         self.corner_of[old as usize] = n1.0;
         self.corner_of[ad as usize] = k1.0;
         self.corner_of[bc as usize] = k2.0;
@@ -262,13 +316,13 @@ impl EdgeNumbering {
     pub fn unflipped(&mut self, rec: &FlipRecord) {
         let [k1, k2] = rec.moved;
         let [n1, n2] = rec.new_corners;
-        let flipped = self.of_corner[n1.index()];
-        let ad = self.of_corner[k1.index()];
-        let bc = self.of_corner[k2.index()];
-        self.of_corner[k1.index()] = flipped;
-        self.of_corner[k2.index()] = flipped;
-        self.of_corner[n1.index()] = bc;
-        self.of_corner[n2.index()] = ad;
+        let flipped = self.ids.of_corner[n1.index()];
+        let ad = self.ids.of_corner[k1.index()];
+        let bc = self.ids.of_corner[k2.index()];
+        self.ids.of_corner[k1.index()] = flipped;
+        self.ids.of_corner[k2.index()] = flipped;
+        self.ids.of_corner[n1.index()] = bc;
+        self.ids.of_corner[n2.index()] = ad;
         self.corner_of[flipped as usize] = k1.0;
         self.corner_of[bc as usize] = n1.0;
         self.corner_of[ad as usize] = n2.0;
@@ -304,7 +358,7 @@ impl EdgeNumbering {
         let mut owner = vec![NONE; self.corner_of.len()];
         for (_, _, c) in tri.edges() {
             let o = tri.opposite(c);
-            let (e, eo) = (self.of_corner[c.index()], self.of_corner[o.index()]);
+            let (e, eo) = (self.ids.of_corner[c.index()], self.ids.of_corner[o.index()]);
             if e != eo {
                 return Err(format!("edge at {c}/{o} has numbers {e} and {eo}"));
             }

@@ -23,7 +23,7 @@ mod validate;
 pub use boundary::{ConedComponent, ConedSurfaces};
 pub use build::{BuildError, Component, Surfaces};
 pub use contract::{ContractError, ContractionRecord, History, UndoError};
-pub use edge::{Edge, EdgeId, EdgeNumbering};
+pub use edge::{Edge, EdgeId, EdgeIds, EdgeNumbering};
 pub use flip::{FlipError, FlipRecord};
 pub use ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES};
 pub use journal::{Journal, Op};

@@ -13,7 +13,7 @@
 
 use std::time::Instant;
 
-use crate::core::{ContractionRecord, Corner, EdgeNumbering, History, Triangulation};
+use crate::core::{ContractionRecord, Corner, EdgeIds, History, Triangulation};
 
 pub mod brute;
 pub mod rs;
@@ -128,10 +128,11 @@ pub fn reduce(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Re
 }
 
 /// Counts ε (edges tested more than once) over contractions, with the edge identity of
-/// [`EdgeNumbering`] (the DCEL of the paper: the merged `[u, x]` keeps its identity).
+/// [`crate::core::EdgeNumbering`] (the DCEL of the paper: the merged `[u, x]` keeps its
+/// identity), kept by its per-corner half [`EdgeIds`].
 #[derive(Clone, Debug, Default)]
 pub struct RetestCounter {
-    numbers: Option<EdgeNumbering>,
+    numbers: Option<EdgeIds>,
     tests: Vec<u8>,
     more_than_once: u64,
 }
@@ -142,7 +143,7 @@ impl RetestCounter {
         if !enabled {
             return RetestCounter::default();
         }
-        let numbers = EdgeNumbering::new(tri);
+        let numbers = EdgeIds::new(tri);
         RetestCounter {
             tests: vec![0; numbers.capacity()],
             numbers: Some(numbers),
