@@ -282,11 +282,12 @@ fn thread_cpu_seconds() -> f64 {
 }
 
 /// The performance case: SG-like leftovers (~13% unpaired) on the paper's C0
-/// (4.2M triangles, genus 3,500). Ignored by default (it builds a 4.2M-triangle surface);
-/// run with `cargo test --release --features invariants --test algorithms -- --ignored
-/// c0 --nocapture`. Asserts perfection and the near-linear work; prints the time.
+/// (4.2M triangles, genus 3,500). Asserts perfection and the near-linear work (edge
+/// visits per face, a deterministic count); prints the time for reference (the timing
+/// itself is `benches/quad.rs`). Runs in release builds (the README's test command,
+/// about 5 s); skipped in debug builds, where building C0 alone takes minutes.
 #[test]
-#[ignore]
+#[cfg_attr(debug_assertions, ignore = "4.2M triangles: runs in release builds")]
 fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     let mesh = contractible::gen::paper_family('C', 0);
     let t = Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("C0");
