@@ -335,34 +335,10 @@ impl Triangulation {
             "contract_tested: [{u}, {v}] fails the link condition"
         );
         let state_before = self.state;
-        // Find a corner at v in a face containing u, walking v's star (O(d_v)).
-        // One walk around v: its corners in star order, and where u is. The step whose
-        // exit neighbour is u and the step after it are the two faces of [u, v].
         let start = history.renamed.len();
-        let mut at_u = None;
-        for (k, s) in self.star(v).enumerate() {
-            history.renamed.push(s.corner);
-            if s.neighbour == u {
-                at_u = Some(k);
-            }
-        }
-        let d = history.renamed.len() - start;
-        let p = at_u.expect("contract_tested: [u, v] is not an edge");
-        let q = (p + 1) % d;
-        let first = history.renamed[start + p];
-        let opp1 = self.corner_facing(first, u);
-        let opp2 = self.opposite(opp1);
-        let f1 = opp1.face();
-        let f2 = opp2.face();
-        debug_assert_eq!(history.renamed[start + q].face(), f2);
-        let x = self.vertex(opp1);
-        let y = self.vertex(opp2);
-        // Keep only v's corners outside f1 and f2 (remove the later index first).
-        history.renamed.remove(start + p.max(q));
-        history.renamed.remove(start + p.min(q));
-        let start = start as u32;
-        let end = history.renamed.len() as u32;
-
+        let plan = self.plan_collapse(u, v, &mut history.renamed);
+        let [f1, f2] = plan.faces;
+        let [x, y] = plan.link;
         let (saved_vertex, saved_opposite) = self.save_faces([f1, f2]);
         let degree_v = self.degree[v.index()];
         let saved_vertex_corner = [
@@ -371,49 +347,9 @@ impl Triangulation {
             self.vertex_corner[y.index()],
             self.vertex_corner[v.index()],
         ];
-
-        // Glue the outer neighbours of each removed face: across [v, x] meets across
-        // [u, x] (and the same for y). In face f1, the corner at u is opposite [v, x].
-        for f in [f1, f2] {
-            let cu = self.corner_at(f.corner(0), u);
-            let cv = self.corner_at(f.corner(0), v);
-            let a = self.opposite[cu.index()];
-            let b = self.opposite[cv.index()];
-            self.opposite[a as usize] = b;
-            self.opposite[b as usize] = a;
-        }
-        for &c in &history.renamed[start as usize..end as usize] {
-            self.corner_vertex[c.index()] = u.0;
-        }
-        for f in [f1, f2] {
-            for c in f.corners() {
-                self.corner_vertex[c.index()] = NONE;
-                self.opposite[c.index()] = NONE;
-            }
-        }
-        // d_v - 4 may be negative (d_v = 3): add before subtracting.
-        self.degree[u.index()] = self.degree[u.index()] + degree_v - 4;
-        self.degree[x.index()] -= 1;
-        self.degree[y.index()] -= 1;
-        self.degree[v.index()] = 0;
-        self.vertex_corner[v.index()] = NONE;
-        // u keeps a corner outside f1/f2 (a renamed one always exists: d_v - 2 >= 1).
-        self.vertex_corner[u.index()] = history.renamed[start as usize].0;
-        for (w, f) in [(x, f1), (y, f2)] {
-            if Corner(self.vertex_corner[w.index()]).face() == f {
-                // The face across [u, w] from f survives and contains w.
-                let c_opp_uw = f
-                    .corners()
-                    .into_iter()
-                    .find(|&c| saved_at(&saved_vertex, f1, f2, c) == v.0)
-                    .expect("face has v");
-                let across = Corner(saved_at(&saved_opposite, f1, f2, c_opp_uw));
-                self.vertex_corner[w.index()] = self.corner_at(across, w).0;
-            }
-        }
-        self.live_vertices -= 1;
-        self.live_faces -= 2;
-        self.touch();
+        self.apply_collapse(u, v, &plan, &history.renamed[start..]);
+        let start = start as u32;
+        let end = history.renamed.len() as u32;
         let rec = ContractionRecord {
             u,
             v,
@@ -429,15 +365,5 @@ impl Triangulation {
         };
         history.records.push(rec);
         rec
-    }
-}
-
-/// The saved entry of corner `c` of one of the two removed faces.
-fn saved_at(saved: &[u32; 6], f1: FaceId, f2: FaceId, c: Corner) -> u32 {
-    if c.face() == f1 {
-        saved[c.slot() as usize]
-    } else {
-        debug_assert_eq!(c.face(), f2);
-        saved[3 + c.slot() as usize]
     }
 }

@@ -4,12 +4,13 @@
 //! traversals), `build` (construction and validation from face lists, components),
 //! `boundary` (surfaces with boundary, closed by coning each loop to a virtual vertex),
 //! `link` (the link condition, naive and marked), `contract` (contraction and its exact,
-//! guarded undo), `split` (the general vertex split), `flip` (edge flips with exact
+//! guarded undo), `collapse` (the simplifier's unrecorded operations), `split` (the general vertex split), `flip` (edge flips with exact
 //! undo), `edge` (edge handles and dense edge numbers that survive changes), `journal`
 //! (undo of interleaved contractions and flips), `validate`.
 
 mod boundary;
 mod build;
+mod collapse;
 mod contract;
 mod edge;
 mod flip;

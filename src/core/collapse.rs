@@ -1,0 +1,316 @@
+//! The unrecorded local operations of the simplifier: contraction without an undo
+//! record, replacing a disc bounded by a 3-cycle with one triangle, and compaction.
+//!
+//! **Guarantee.** [`Triangulation::collapse`] makes exactly the change
+//! [`Triangulation::contract_tested`] makes (the same faces removed, the same corners
+//! renamed), but keeps no record, so a simplifier that never undoes pays O(d_v) time and
+//! no memory per contraction. [`Triangulation::replace_disc`] removes the faces of a
+//! closed disc whose boundary is a 3-cycle `[p, q, x]` and the disc's interior vertices,
+//! and glues one new face `[p, q, x]` in their place: χ, orientability and every vertex
+//! outside the disc's interior are unchanged. The caller establishes that the region is
+//! such a disc (the simplifier's nested mode checks it, and its specification check
+//! re-derives it independently); [`Triangulation::compact`] renumbers live vertices and
+//! faces densely, in order.
+
+use super::ids::{Corner, FaceId, VertexId, NONE};
+use super::tri::Triangulation;
+
+/// What one walk around `v` finds about the edge `[u, v]` before contracting it.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct CollapsePlan {
+    /// The two faces of `[u, v]`.
+    pub(crate) faces: [FaceId; 2],
+    /// Their third vertices.
+    pub(crate) link: [VertexId; 2],
+}
+
+impl Triangulation {
+    /// Pushes onto `renamed` the corners at `v` outside the two faces of `[u, v]`, in star
+    /// order, and returns those faces and their third vertices. O(d_v).
+    ///
+    /// # Panics
+    /// If `[u, v]` is not an edge (a caller bug).
+    pub(crate) fn plan_collapse(
+        &self,
+        u: VertexId,
+        v: VertexId,
+        renamed: &mut Vec<Corner>,
+    ) -> CollapsePlan {
+        let start = renamed.len();
+        let mut at_u = None;
+        for (k, s) in self.star(v).enumerate() {
+            renamed.push(s.corner);
+            if s.neighbour == u {
+                at_u = Some(k);
+            }
+        }
+        let d = renamed.len() - start;
+        let p = at_u.expect("collapse: [u, v] is not an edge");
+        let q = (p + 1) % d;
+        // The step whose exit neighbour is u and the step after it are the two faces.
+        let first = renamed[start + p];
+        let opp1 = self.corner_facing(first, u);
+        let opp2 = self.opposite(opp1);
+        debug_assert_eq!(renamed[start + q].face(), opp2.face());
+        renamed.remove(start + p.max(q));
+        renamed.remove(start + p.min(q));
+        CollapsePlan {
+            faces: [opp1.face(), opp2.face()],
+            link: [self.vertex(opp1), self.vertex(opp2)],
+        }
+    }
+
+    /// Applies a [`CollapsePlan`]: glues the outer neighbours of both faces, renames the
+    /// `renamed` corners from `v` to `u`, removes the faces and `v`, and updates degrees
+    /// and `vertex_corner`. Changes the state stamp. O(d_v).
+    pub(crate) fn apply_collapse(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        plan: &CollapsePlan,
+        renamed: &[Corner],
+    ) {
+        let [f1, f2] = plan.faces;
+        let [x, y] = plan.link;
+        // Where x and y keep a corner if theirs is in a removed face: in the face across
+        // [u, w] from f, found before the removed faces are cleared.
+        let mut keep = [NONE; 2];
+        for (k, (w, f)) in [(x, f1), (y, f2)].into_iter().enumerate() {
+            if Corner(self.vertex_corner[w.index()]).face() == f {
+                // In f = [u, v, w] the corner at v is opposite [u, w].
+                let cv = self.corner_at(f.corner(0), v);
+                keep[k] = self.corner_at(self.opposite(cv), w).0;
+            }
+        }
+        for f in [f1, f2] {
+            // In f the corner at u is opposite [v, w] and the corner at v opposite [u, w]:
+            // after the contraction those two edges are one.
+            let cu = self.corner_at(f.corner(0), u);
+            let cv = self.corner_at(f.corner(0), v);
+            let a = self.opposite[cu.index()];
+            let b = self.opposite[cv.index()];
+            self.opposite[a as usize] = b;
+            self.opposite[b as usize] = a;
+        }
+        for &c in renamed {
+            self.corner_vertex[c.index()] = u.0;
+        }
+        for f in [f1, f2] {
+            for c in f.corners() {
+                self.corner_vertex[c.index()] = NONE;
+                self.opposite[c.index()] = NONE;
+            }
+        }
+        let degree_v = self.degree[v.index()];
+        // d_v - 4 may be negative (d_v = 3): add before subtracting.
+        self.degree[u.index()] = self.degree[u.index()] + degree_v - 4;
+        self.degree[x.index()] -= 1;
+        self.degree[y.index()] -= 1;
+        self.degree[v.index()] = 0;
+        self.vertex_corner[v.index()] = NONE;
+        // A renamed corner always exists: d_v - 2 >= 1.
+        self.vertex_corner[u.index()] = renamed[0].0;
+        for (k, w) in [x, y].into_iter().enumerate() {
+            if keep[k] != NONE {
+                self.vertex_corner[w.index()] = keep[k];
+            }
+        }
+        self.live_vertices -= 1;
+        self.live_faces -= 2;
+        self.touch();
+    }
+
+    /// Contracts `[u, v]` keeping `u`, for a caller that has established the link
+    /// condition and keeps no undo record. Returns the link `{x, y}` of the edge. `scratch`
+    /// is cleared and reused (it holds `v`'s corners). O(d_v).
+    ///
+    /// # Panics
+    /// If `[u, v]` is not an edge (a caller bug). Debug builds also assert the link
+    /// condition when `d_u · d_v ≤ 4096`, as [`Self::contract_tested`].
+    pub fn collapse(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        scratch: &mut Vec<Corner>,
+    ) -> [VertexId; 2] {
+        debug_assert!(
+            self.degree(u).saturating_mul(self.degree(v)) > 64 * 64
+                || self.link_condition_naive(u, v),
+            "collapse: [{u}, {v}] fails the link condition"
+        );
+        scratch.clear();
+        let plan = self.plan_collapse(u, v, scratch);
+        self.apply_collapse(u, v, &plan, scratch);
+        plan.link
+    }
+
+    /// Replaces a closed disc bounded by the 3-cycle `[p, q, x]` with the single face
+    /// `[p, q, x]` and returns the new face (it reuses the slot of `faces[0]`).
+    ///
+    /// `faces` are the disc's faces, `interior` its interior vertices (every vertex of
+    /// those faces except `p`, `q`, `x`), and `sides` the corners inside the disc opposite
+    /// its boundary edges `[p, q]`, `[q, x]`, `[x, p]`, in that order. The new face runs
+    /// `p → q` in the direction `sides[0]`'s face does, so a consistently oriented surface
+    /// stays consistently oriented. O(|faces| + |interior|).
+    ///
+    /// The caller guarantees the disc property (see the module documentation); debug
+    /// builds check the shape of the arguments (`|faces| = 2 |interior| + 1`).
+    pub(crate) fn replace_disc(
+        &mut self,
+        cycle: [VertexId; 3],
+        faces: &[FaceId],
+        interior: &[VertexId],
+        sides: [Corner; 3],
+    ) -> FaceId {
+        let [p, q, x] = cycle;
+        debug_assert_eq!(faces.len(), 2 * interior.len() + 1);
+        debug_assert!(faces.contains(&sides[0].face()));
+        // The outside corners across the three boundary edges, before anything changes.
+        let outside = sides.map(|c| self.opposite[c.index()]);
+        // Does sides[0]'s face run p → q? Its corner opposite [p, q] is followed by p.
+        let forward = self.corner_vertex[sides[0].next().index()] == p.0;
+        // Faces at p, q and x inside the disc (each loses them and gains the new face).
+        let mut lost = [0u32; 3];
+        for &f in faces {
+            for c in f.corners() {
+                let w = self.corner_vertex[c.index()];
+                if let Some(k) = cycle.iter().position(|z| z.0 == w) {
+                    lost[k] += 1;
+                }
+                self.corner_vertex[c.index()] = NONE;
+                self.opposite[c.index()] = NONE;
+            }
+        }
+        for &v in interior {
+            self.vertex_corner[v.index()] = NONE;
+            self.degree[v.index()] = 0;
+        }
+        let f = faces[0];
+        let order = if forward { [p, q, x] } else { [q, p, x] };
+        for (s, w) in order.into_iter().enumerate() {
+            self.corner_vertex[3 * f.index() + s] = w.0;
+        }
+        // Slot 2 (x) is opposite [p, q]; the slot of p is opposite [q, x], of q [x, p].
+        let (slot_p, slot_q) = if forward { (0, 1) } else { (1, 0) };
+        let glue = [(2, outside[0]), (slot_p, outside[1]), (slot_q, outside[2])];
+        for (s, o) in glue {
+            let c = 3 * f.0 + s;
+            self.opposite[c as usize] = o;
+            self.opposite[o as usize] = c;
+        }
+        for (k, w) in cycle.into_iter().enumerate() {
+            self.degree[w.index()] = self.degree[w.index()] + 1 - lost[k];
+            self.vertex_corner[w.index()] = 3 * f.0 + [slot_p, slot_q, 2][k];
+        }
+        self.live_vertices -= interior.len();
+        self.live_faces -= faces.len() - 1;
+        self.touch();
+        f
+    }
+
+    /// Renumbers the live vertices and faces densely, keeping their order, and drops the
+    /// removed slots. Returns the new id of every old vertex id (`None` for a removed
+    /// one). Corners keep their slot within their face. O(vertex capacity + face
+    /// capacity).
+    pub fn compact(&mut self) -> Vec<Option<VertexId>> {
+        let mut vertex_map = vec![None; self.vertex_corner.len()];
+        let mut next = 0u32;
+        for (v, &c) in self.vertex_corner.iter().enumerate() {
+            if c != NONE {
+                vertex_map[v] = Some(VertexId(next));
+                next += 1;
+            }
+        }
+        // New face ids, as the first corner of the face (NONE for a removed face).
+        let faces = self.corner_vertex.len() / 3;
+        let mut face_base = vec![NONE; faces];
+        let mut next_face = 0u32;
+        for (f, base) in face_base.iter_mut().enumerate() {
+            if self.corner_vertex[3 * f] != NONE {
+                *base = 3 * next_face;
+                next_face += 1;
+            }
+        }
+        let remap_corner = |c: u32| face_base[(c / 3) as usize] + c % 3;
+        let mut w = 0usize;
+        for f in 0..faces {
+            if face_base[f] == NONE {
+                continue;
+            }
+            for s in 0..3 {
+                let v = self.corner_vertex[3 * f + s];
+                let o = self.opposite[3 * f + s];
+                self.corner_vertex[w] = vertex_map[v as usize].map_or(NONE, |v| v.0);
+                self.opposite[w] = remap_corner(o);
+                w += 1;
+            }
+        }
+        self.corner_vertex.truncate(w);
+        self.opposite.truncate(w);
+        let mut k = 0usize;
+        for v in 0..self.vertex_corner.len() {
+            let c = self.vertex_corner[v];
+            if c != NONE {
+                self.vertex_corner[k] = remap_corner(c);
+                self.degree[k] = self.degree[v];
+                k += 1;
+            }
+        }
+        self.vertex_corner.truncate(k);
+        self.degree.truncate(k);
+        self.corner_vertex.shrink_to_fit();
+        self.opposite.shrink_to_fit();
+        self.vertex_corner.shrink_to_fit();
+        self.degree.shrink_to_fit();
+        self.touch();
+        vertex_map
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::gen;
+    use crate::Triangulation;
+
+    fn build(mesh: crate::TriMesh) -> Triangulation {
+        Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("a closed surface")
+    }
+
+    #[test]
+    fn collapse_matches_contract_tested() {
+        let t0 = build(gen::torus7());
+        for (u, v, _) in t0.edges().collect::<Vec<_>>() {
+            if !t0.is_contractible(u, v) {
+                continue;
+            }
+            let mut a = t0.clone();
+            let mut b = t0.clone();
+            a.contract_tested(u, v, &mut crate::History::new());
+            b.collapse(u, v, &mut Vec::new());
+            assert_eq!(a, b, "[{u}, {v}]");
+            b.validate().unwrap();
+        }
+    }
+
+    #[test]
+    fn compact_keeps_the_surface_and_order() {
+        let mut t = build(gen::octahedron());
+        let mut h = crate::History::new();
+        let (u, v, _) = t.edges().next().expect("an edge");
+        t.contract(u, v, &mut h)
+            .expect("the octahedron's edges are contractible");
+        let before: Vec<[u32; 3]> = t.face_list();
+        let map = t.compact();
+        t.validate().unwrap();
+        assert_eq!(t.vertex_capacity(), t.vertex_count());
+        assert_eq!(t.face_capacity(), t.face_count());
+        let after: Vec<[u32; 3]> = t.face_list();
+        let mapped: Vec<[u32; 3]> = before
+            .iter()
+            .map(|f| f.map(|v| map[v as usize].expect("live").0))
+            .collect();
+        assert_eq!(after, mapped);
+        assert_eq!(map[v.index()], None);
+        assert_eq!(map[u.index()], Some(u));
+    }
+}
