@@ -13,6 +13,7 @@ pub mod irreducible;
 pub mod mesh;
 pub mod quad;
 pub mod rng;
+pub mod simplify;
 pub mod spec;
 pub mod topology;
 

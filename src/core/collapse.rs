@@ -233,8 +233,8 @@ impl Triangulation {
         }
         let remap_corner = |c: u32| face_base[(c / 3) as usize] + c % 3;
         let mut w = 0usize;
-        for f in 0..faces {
-            if face_base[f] == NONE {
+        for (f, &base) in face_base.iter().enumerate() {
+            if base == NONE {
                 continue;
             }
             for s in 0..3 {

@@ -1,0 +1,233 @@
+//! The geometry of the simplifier: lengths, the new vertex's position (midpoint or the
+//! Garland–Heckbert quadric optimum) and the fold-over guard.
+//!
+//! Everything here is plain `f64` arithmetic on positions that the caller has checked to
+//! be finite; nothing here decides topology.
+
+/// A point or vector in space.
+pub type Point = [f64; 3];
+
+#[inline]
+pub(crate) fn sub(a: Point, b: Point) -> Point {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+#[inline]
+pub(crate) fn dot(a: Point, b: Point) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+#[inline]
+pub(crate) fn cross(a: Point, b: Point) -> Point {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+#[inline]
+pub(crate) fn dist2(a: Point, b: Point) -> f64 {
+    let d = sub(a, b);
+    dot(d, d)
+}
+
+#[inline]
+pub(crate) fn midpoint(a: Point, b: Point) -> Point {
+    [
+        0.5 * (a[0] + b[0]),
+        0.5 * (a[1] + b[1]),
+        0.5 * (a[2] + b[2]),
+    ]
+}
+
+/// Twice the area vector of triangle `abc` (its normal scaled by twice its area).
+#[inline]
+pub(crate) fn area_normal(a: Point, b: Point, c: Point) -> Point {
+    cross(sub(b, a), sub(c, a))
+}
+
+/// The diagonal of the axis-aligned bounding box of `points` (0 for no point).
+pub fn bbox_diagonal(points: impl IntoIterator<Item = Point>) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let mut any = false;
+    for p in points {
+        any = true;
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !any {
+        return 0.0;
+    }
+    dist2(lo, hi).sqrt()
+}
+
+/// Relative size below which a triangle counts as having zero area: `|n| ≤ ZERO_AREA ·
+/// L²`, with `n` twice the area vector and `L` its longest edge (a sliver whose height
+/// is below `ZERO_AREA / 2` of its longest edge).
+pub const ZERO_AREA: f64 = 1e-10;
+
+/// The fold-over guard for one triangle that moves: `old` is its area normal before,
+/// `new_corners` its corners after. Refuses (returns `false`) a triangle of zero area
+/// after the move, and one whose normal turns by 90° or more (when it had a normal
+/// before: a triangle that was already degenerate only has to end non-degenerate).
+#[inline]
+pub(crate) fn moved_triangle_ok(old: Point, new_corners: [Point; 3]) -> bool {
+    let [a, b, c] = new_corners;
+    let n = area_normal(a, b, c);
+    let l2 = dist2(a, b).max(dist2(b, c)).max(dist2(c, a));
+    let n2 = dot(n, n);
+    if n2 <= ZERO_AREA * ZERO_AREA * l2 * l2 {
+        return false;
+    }
+    let old_l2 = dot(old, old);
+    old_l2 == 0.0 || dot(old, n) > 0.0
+}
+
+/// A symmetric 4×4 error quadric `Q` (Garland–Heckbert): the squared distance of a point
+/// to a weighted set of planes is `[p 1] Q [p 1]ᵀ`. Stored as its upper triangle.
+#[derive(Copy, Clone, Debug, Default, PartialEq)]
+pub struct Quadric([f64; 10]);
+
+impl Quadric {
+    /// The quadric of the plane through `p` with unit normal `n`, times `weight`.
+    pub fn plane(n: Point, p: Point, weight: f64) -> Self {
+        let d = -dot(n, p);
+        let [a, b, c] = n;
+        Quadric(
+            [
+                a * a,
+                a * b,
+                a * c,
+                a * d,
+                b * b,
+                b * c,
+                b * d,
+                c * c,
+                c * d,
+                d * d,
+            ]
+            .map(|x| x * weight),
+        )
+    }
+
+    /// Adds `other` to this quadric.
+    pub fn add(&mut self, other: &Quadric) {
+        for (x, y) in self.0.iter_mut().zip(other.0.iter()) {
+            *x += y;
+        }
+    }
+
+    /// The error `[p 1] Q [p 1]ᵀ` at `p`.
+    pub fn error(&self, p: Point) -> f64 {
+        let q = &self.0;
+        let [x, y, z] = p;
+        q[0] * x * x
+            + 2.0 * q[1] * x * y
+            + 2.0 * q[2] * x * z
+            + 2.0 * q[3] * x
+            + q[4] * y * y
+            + 2.0 * q[5] * y * z
+            + 2.0 * q[6] * y
+            + q[7] * z * z
+            + 2.0 * q[8] * z
+            + q[9]
+    }
+
+    /// The point minimising the error, if the 3×3 system is well conditioned (its
+    /// determinant is not negligible against the cube of its mean diagonal entry).
+    pub fn minimiser(&self) -> Option<Point> {
+        let q = &self.0;
+        let m = [[q[0], q[1], q[2]], [q[1], q[4], q[5]], [q[2], q[5], q[7]]];
+        let r = [-q[3], -q[6], -q[8]];
+        let det = det3(m);
+        let scale = (q[0] + q[4] + q[7]) / 3.0;
+        // Also refuses a NaN determinant.
+        if det.abs().partial_cmp(&(1e-9 * scale * scale * scale))
+            != Some(std::cmp::Ordering::Greater)
+        {
+            return None;
+        }
+        // Cramer's rule: the system is 3×3 and its conditioning was just checked.
+        let mut out = [0.0; 3];
+        for (k, o) in out.iter_mut().enumerate() {
+            let mut mk = m;
+            for row in 0..3 {
+                mk[row][k] = r[row];
+            }
+            *o = det3(mk) / det;
+        }
+        out.iter().all(|x| x.is_finite()).then_some(out)
+    }
+
+    /// Where the merged vertex of an edge `[p, q]` goes under this (summed) quadric: the
+    /// minimiser when it exists, otherwise the best of `p`, `q` and their midpoint
+    /// (ties: midpoint, then `p`).
+    pub fn best_position(&self, p: Point, q: Point) -> Point {
+        if let Some(x) = self.minimiser() {
+            return x;
+        }
+        let m = midpoint(p, q);
+        let mut best = (self.error(m), m);
+        for c in [p, q] {
+            let e = self.error(c);
+            if e < best.0 {
+                best = (e, c);
+            }
+        }
+        best.1
+    }
+}
+
+fn det3(m: [[f64; 3]; 3]) -> f64 {
+    m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+        - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+        + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quadric_of_three_planes_meets_at_their_corner() {
+        let mut q = Quadric::default();
+        q.add(&Quadric::plane([1.0, 0.0, 0.0], [2.0, 0.0, 0.0], 1.0));
+        q.add(&Quadric::plane([0.0, 1.0, 0.0], [0.0, -1.0, 0.0], 2.0));
+        q.add(&Quadric::plane([0.0, 0.0, 1.0], [0.0, 0.0, 5.0], 3.0));
+        let x = q.minimiser().expect("three independent planes");
+        for (a, b) in x.iter().zip([2.0, -1.0, 5.0]) {
+            assert!((a - b).abs() < 1e-12, "{x:?}");
+        }
+        assert!(q.error(x).abs() < 1e-12);
+    }
+
+    #[test]
+    fn one_plane_is_singular_and_falls_back() {
+        let q = Quadric::plane([0.0, 0.0, 1.0], [0.0, 0.0, 0.0], 1.0);
+        assert_eq!(q.minimiser(), None);
+        // p is on the plane, q is not: p wins over the midpoint.
+        let best = q.best_position([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]);
+        assert_eq!(best, [0.0, 0.0, 0.0]);
+    }
+
+    #[test]
+    fn guard_refuses_flips_and_slivers() {
+        let (a, b, c) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        let n = area_normal(a, b, c);
+        assert!(moved_triangle_ok(n, [a, b, [0.2, 0.9, 0.0]]));
+        assert!(!moved_triangle_ok(n, [a, b, [0.2, -0.9, 0.0]]));
+        assert!(!moved_triangle_ok(n, [a, b, [0.5, 0.0, 0.0]]));
+        assert!(moved_triangle_ok([0.0; 3], [a, b, c]));
+    }
+
+    #[test]
+    fn bbox_diagonal_of_a_box() {
+        let d = bbox_diagonal([[0.0, 0.0, 0.0], [3.0, 4.0, 0.0], [1.0, 1.0, 12.0]]);
+        assert!((d - 13.0).abs() < 1e-12);
+        assert_eq!(bbox_diagonal([]), 0.0);
+    }
+}

@@ -1,0 +1,567 @@
+//! The pass machinery shared by both modes: the state of one component, the pass loop,
+//! the common-neighbour walk, the position and guard decisions, applying a plan, and the
+//! per-pass compaction.
+
+use super::geometry::{area_normal, dist2, midpoint, moved_triangle_ok, Point, Quadric};
+use super::nested::{self, Claim, Grow};
+use super::{naive, spec, Mode, Options, Position, SkipCounts};
+use crate::core::{ConedComponent, Corner, FaceId, Triangulation, VertexId};
+use crate::topology::SurfaceType;
+
+/// Why an edge is not processed now (frozen edges are counted before planning).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub(super) enum Skip {
+    LinkCondition,
+    NonDisc,
+    Foldover,
+}
+
+impl SkipCounts {
+    fn count(&mut self, s: Skip) {
+        match s {
+            Skip::LinkCondition => self.link_condition += 1,
+            Skip::NonDisc => self.non_disc += 1,
+            Skip::Foldover => self.foldover += 1,
+        }
+    }
+}
+
+/// The totals of one component's run.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Run {
+    pub(super) edges_contracted: usize,
+    pub(super) discs_removed: usize,
+    pub(super) vertices_removed_inside: usize,
+    pub(super) skipped: SkipCounts,
+    pub(super) remaining: SkipCounts,
+    pub(super) passes: usize,
+    pub(super) shortest: Option<f64>,
+}
+
+/// The edge being examined: endpoints, opposite vertices, and whether each endpoint is
+/// on the boundary. `xs` (in the simplifier) holds the other common neighbours.
+#[derive(Copy, Clone, Debug)]
+pub(super) struct EdgeInfo {
+    /// The corner opposite the edge in the triangle being visited (side "a").
+    pub(super) corner: Corner,
+    pub(super) p: VertexId,
+    pub(super) q: VertexId,
+    pub(super) a: VertexId,
+    pub(super) b: VertexId,
+    pub(super) boundary: [bool; 2],
+}
+
+/// What processing an edge will do, decided before anything changes.
+#[derive(Copy, Clone, Debug)]
+pub(super) struct Plan {
+    /// The discs to replace first (nested mode), per side.
+    pub(super) discs: [Option<Claim>; 2],
+    /// The position of the merged vertex.
+    pub(super) position: Point,
+}
+
+/// One component being simplified.
+pub(crate) struct Simplifier<'o> {
+    pub(super) tri: Triangulation,
+    pub(super) pos: Vec<Point>,
+    quadric: Vec<Quadric>,
+    /// Vertex ids from here on are virtual (cone apexes); they stay last through
+    /// compaction since they are never removed.
+    pub(super) first_virtual: u32,
+    loops: usize,
+    pub(super) opts: &'o Options,
+    eps2: f64,
+    pass: u32,
+    /// Pass number in which the vertex was replaced or frozen.
+    touched: Vec<u32>,
+    /// Scratch marks (compared with `stamp`).
+    pub(super) vmark: Vec<u32>,
+    pub(super) fmark: Vec<u32>,
+    stamp: u32,
+    scratch: Vec<Corner>,
+    pub(super) link: Vec<VertexId>,
+    /// The common neighbours of the edge other than its opposite vertices, in order
+    /// along the link of `p` from `a` to `b`.
+    pub(super) xs: Vec<VertexId>,
+    pub(super) grow: [Grow; 2],
+    interior: Vec<VertexId>,
+    /// The coned surface's type at the start (the specification checks it per pass).
+    pub(super) surface: SurfaceType,
+    /// Whether processEdge (the nested plan) is in use: the nested mode first runs naive
+    /// passes to a fixed point, then nested ones (see `run`).
+    nested_phase: bool,
+    run: Run,
+}
+
+impl<'o> Simplifier<'o> {
+    /// Takes over a component and its positions (indexed by its real vertex ids).
+    pub(crate) fn new(component: ConedComponent, positions: Vec<Point>, opts: &'o Options) -> Self {
+        let loops = component.virtual_vertices().count();
+        let first_virtual = component.real_vertex_count() as u32;
+        let tri = component.tri;
+        let nv = tri.vertex_capacity();
+        let nf = tri.face_capacity();
+        let mut pos = positions;
+        pos.resize(nv, [0.0; 3]);
+        let surface = SurfaceType::of(&tri);
+        let mut s = Simplifier {
+            tri,
+            pos,
+            quadric: Vec::new(),
+            first_virtual,
+            loops,
+            opts,
+            eps2: opts.eps * opts.eps,
+            pass: 0,
+            touched: vec![0; nv],
+            vmark: vec![0; nv],
+            fmark: vec![0; nf],
+            stamp: 0,
+            scratch: Vec::new(),
+            link: Vec::new(),
+            xs: Vec::new(),
+            grow: [Grow::default(), Grow::default()],
+            interior: Vec::new(),
+            surface,
+            nested_phase: false,
+            run: Run::default(),
+        };
+        if opts.position == Position::Quadric {
+            s.init_quadrics();
+        }
+        s
+    }
+
+    /// Boundary loops of the component (constant).
+    pub(super) fn loop_count(&self) -> usize {
+        self.loops
+    }
+
+    #[inline]
+    pub(super) fn is_virtual(&self, v: VertexId) -> bool {
+        v.0 >= self.first_virtual
+    }
+
+    /// A stamp no mark holds yet.
+    pub(super) fn fresh_stamp(&mut self) -> u32 {
+        if self.stamp == u32::MAX {
+            self.vmark.fill(0);
+            self.fmark.fill(0);
+            self.stamp = 0;
+        }
+        self.stamp += 1;
+        self.stamp
+    }
+
+    /// Area-weighted plane quadrics of the real faces, plus a plane through every
+    /// boundary edge perpendicular to its face (weight: the face's area times
+    /// `BOUNDARY_WEIGHT`), so that boundary curves resist moving.
+    fn init_quadrics(&mut self) {
+        const BOUNDARY_WEIGHT: f64 = 10.0;
+        self.quadric = vec![Quadric::default(); self.tri.vertex_capacity()];
+        for f in self.tri.faces() {
+            let vs = self.tri.face_vertices(f);
+            if vs.iter().any(|&v| self.is_virtual(v)) {
+                continue;
+            }
+            let ps = vs.map(|v| self.pos[v.index()]);
+            let n = area_normal(ps[0], ps[1], ps[2]);
+            let twice_area = super::geometry::dot(n, n).sqrt();
+            if twice_area == 0.0 {
+                continue;
+            }
+            let unit = n.map(|x| x / twice_area);
+            let q = Quadric::plane(unit, ps[0], 0.5 * twice_area);
+            for v in vs {
+                self.quadric[v.index()].add(&q);
+            }
+            for c in f.corners() {
+                let across = self.tri.vertex(self.tri.opposite(c));
+                if !self.is_virtual(across) {
+                    continue;
+                }
+                let [s, t] = self.tri.edge_endpoints(c);
+                let (ps_, pt) = (self.pos[s.index()], self.pos[t.index()]);
+                let m = super::geometry::cross(super::geometry::sub(pt, ps_), unit);
+                let len = super::geometry::dot(m, m).sqrt();
+                if len == 0.0 {
+                    continue;
+                }
+                let q = Quadric::plane(m.map(|x| x / len), ps_, BOUNDARY_WEIGHT * 0.5 * twice_area);
+                self.quadric[s.index()].add(&q);
+                self.quadric[t.index()].add(&q);
+            }
+        }
+    }
+
+    /// Runs passes until one contracts nothing; `on_pass(pass, contracted, faces)` after
+    /// each. Then accounts for every short edge left.
+    ///
+    /// The nested mode runs exactly the naive mode's passes first, to their fixed point,
+    /// and only then passes that use processEdge, again to a fixed point. So it contracts
+    /// every edge the naive mode does and then more (the nested mode dominates the naive
+    /// one on every input), and it removes discs, which discards the geometry inside
+    /// them, only for edges that no sequence of plain contractions reached.
+    pub(super) fn run(&mut self, on_pass: &mut dyn FnMut(usize, usize, usize)) -> Run {
+        loop {
+            let contracted = self.pass();
+            self.run.passes += 1;
+            self.run.edges_contracted += contracted;
+            if contracted > 0 {
+                self.compact();
+            }
+            spec::pass_end(self);
+            on_pass(self.run.passes, contracted, self.real_face_count());
+            if contracted == 0 {
+                if self.opts.mode == Mode::Nested && !self.nested_phase {
+                    self.nested_phase = true;
+                    continue;
+                }
+                break;
+            }
+        }
+        self.account_remaining();
+        std::mem::take(&mut self.run)
+    }
+
+    /// Faces with no virtual vertex.
+    fn real_face_count(&self) -> usize {
+        let cone: usize = (self.first_virtual as usize..self.tri.vertex_capacity())
+            .map(|w| self.tri.degree(VertexId(w as u32)))
+            .sum();
+        self.tri.face_count() - cone
+    }
+
+    /// One pass; returns the number of contractions.
+    fn pass(&mut self) -> usize {
+        self.pass += 1;
+        let mut contracted = 0;
+        for fi in 0..self.tri.face_capacity() as u32 {
+            let f = FaceId(fi);
+            if !self.tri.is_face(f) {
+                continue;
+            }
+            let vs = self.tri.face_vertices(f);
+            if vs.iter().any(|&v| self.is_virtual(v)) {
+                continue;
+            }
+            let ps = vs.map(|v| self.pos[v.index()]);
+            // Edge opposite slot s joins slots s+1 and s+2.
+            let mut cand = [(0.0f64, 0u32); 3];
+            let mut n = 0;
+            for s in 0..3 {
+                let l2 = dist2(ps[(s + 1) % 3], ps[(s + 2) % 3]);
+                if l2 < self.eps2 {
+                    cand[n] = (l2, s as u32);
+                    n += 1;
+                }
+            }
+            if n == 0 {
+                continue;
+            }
+            cand[..n].sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+            for &(_, s) in &cand[..n] {
+                let c = f.corner(s);
+                let [p, q] = self.tri.edge_endpoints(c);
+                if self.touched[p.index()] == self.pass || self.touched[q.index()] == self.pass {
+                    self.run.skipped.frozen += 1;
+                    continue;
+                }
+                match self.plan(c) {
+                    Ok((info, plan)) => {
+                        self.apply(&info, &plan);
+                        contracted += 1;
+                        break;
+                    }
+                    Err(skip) => self.run.skipped.count(skip),
+                }
+            }
+        }
+        contracted
+    }
+
+    /// The edge opposite `c`: its endpoints and opposite vertices, and its other common
+    /// neighbours in `self.xs`. Refuses an edge joining two boundary loops.
+    pub(super) fn examine(&mut self, c: Corner) -> Result<EdgeInfo, Skip> {
+        let [p, q] = self.tri.edge_endpoints(c);
+        let a = self.tri.vertex(c);
+        let b = self.tri.vertex(self.tri.opposite(c));
+        let s = self.fresh_stamp();
+        let mut loop_q = None;
+        for n in self.tri.link(q) {
+            self.vmark[n.index()] = s;
+            if n.0 >= self.first_virtual {
+                loop_q = Some(n);
+            }
+        }
+        self.link.clear();
+        let mut loop_p = None;
+        let mut at_q = 0;
+        for (i, n) in self.tri.link(p).enumerate() {
+            if n == q {
+                at_q = i;
+            }
+            if n.0 >= self.first_virtual {
+                loop_p = Some(n);
+            }
+            self.link.push(n);
+        }
+        if let (Some(x), Some(y)) = (loop_p, loop_q) {
+            if x != y {
+                return Err(Skip::LinkCondition);
+            }
+        }
+        // The link of p from the neighbour after q round to the one before it, then
+        // oriented to run from a to b.
+        self.link.rotate_left(at_q + 1);
+        self.link.pop();
+        if self.link.first() != Some(&a) {
+            self.link.reverse();
+        }
+        debug_assert_eq!(self.link.first(), Some(&a));
+        debug_assert_eq!(self.link.last(), Some(&b));
+        self.xs.clear();
+        let inner = &self.link[1..self.link.len() - 1];
+        self.xs
+            .extend(inner.iter().copied().filter(|n| self.vmark[n.index()] == s));
+        Ok(EdgeInfo {
+            corner: c,
+            p,
+            q,
+            a,
+            b,
+            boundary: [loop_p.is_some(), loop_q.is_some()],
+        })
+    }
+
+    /// Decides what to do with the edge opposite `c`, changing nothing but scratch.
+    pub(super) fn plan(&mut self, c: Corner) -> Result<(EdgeInfo, Plan), Skip> {
+        let info = self.examine(c)?;
+        let (discs, removed) = match (self.opts.mode, self.nested_phase) {
+            (Mode::Naive, _) | (Mode::Nested, false) => {
+                naive::plan(self, &info)?;
+                ([None, None], None)
+            }
+            (Mode::Nested, true) => {
+                let discs = nested::plan(self, &info)?;
+                let removed = self.mark_removed(&discs);
+                (discs, removed)
+            }
+        };
+        // After the discs go, the edge must not be an edge of a tetrahedron.
+        let degree_after = |v: VertexId, me: &Self| {
+            let mut d = me.tri.degree(v);
+            for (side, claim) in discs.iter().enumerate() {
+                if let Some(cl) = claim {
+                    let at = me.grow[side].queue[..cl.faces]
+                        .iter()
+                        .filter(|&&f| me.tri.face_vertices(f).contains(&v))
+                        .count();
+                    d = d + 1 - at;
+                }
+            }
+            d
+        };
+        // (The link condition's last clause, Prop. 6 of the RS paper: no common
+        // neighbour is left but the opposite vertices, which suffices unless both
+        // endpoints have degree 3.)
+        if degree_after(info.p, self) == 3 && degree_after(info.q, self) == 3 {
+            return Err(Skip::LinkCondition);
+        }
+        let position = self.position(&info);
+        if self.opts.guard && !self.guard(&info, position, removed) {
+            return Err(Skip::Foldover);
+        }
+        Ok((info, Plan { discs, position }))
+    }
+
+    /// Marks the faces of the planned discs with a fresh stamp; returns it.
+    fn mark_removed(&mut self, discs: &[Option<Claim>; 2]) -> Option<u32> {
+        if discs.iter().all(Option::is_none) {
+            return None;
+        }
+        let s = self.fresh_stamp();
+        for (side, claim) in discs.iter().enumerate() {
+            if let Some(cl) = claim {
+                for &f in &self.grow[side].queue[..cl.faces] {
+                    self.fmark[f.index()] = s;
+                }
+            }
+        }
+        Some(s)
+    }
+
+    /// Where the merged vertex goes (see [`Position`]).
+    fn position(&self, e: &EdgeInfo) -> Point {
+        let (pp, pq) = (self.pos[e.p.index()], self.pos[e.q.index()]);
+        match self.opts.position {
+            Position::Midpoint => match e.boundary {
+                [true, false] => pp,
+                [false, true] => pq,
+                _ => midpoint(pp, pq),
+            },
+            Position::Quadric => {
+                let mut q = self.quadric[e.p.index()];
+                q.add(&self.quadric[e.q.index()]);
+                q.best_position(pp, pq)
+            }
+        }
+    }
+
+    /// The fold-over guard: every real face at `p` or `q` that survives (not in a
+    /// planned disc, not a face of `[p, q]`) must stay non-degenerate and turn by less
+    /// than 90° when `p` and `q` move to `to`.
+    fn guard(&self, e: &EdgeInfo, to: Point, removed: Option<u32>) -> bool {
+        for centre in [e.p, e.q] {
+            for step in self.tri.star(centre) {
+                let f = step.corner.face();
+                if removed.is_some_and(|s| self.fmark[f.index()] == s) {
+                    continue;
+                }
+                let vs = self.tri.face_vertices(f);
+                if (vs.contains(&e.p) && vs.contains(&e.q))
+                    || vs.iter().any(|&v| self.is_virtual(v))
+                {
+                    continue;
+                }
+                let old = vs.map(|v| self.pos[v.index()]);
+                let new = vs.map(|v| {
+                    if v == e.p || v == e.q {
+                        to
+                    } else {
+                        self.pos[v.index()]
+                    }
+                });
+                if !moved_triangle_ok(area_normal(old[0], old[1], old[2]), new) {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// Carries out a plan: replaces the discs, contracts the edge keeping the smaller
+    /// id, moves the kept vertex and freezes its neighbours for the rest of the pass.
+    fn apply(&mut self, e: &EdgeInfo, plan: &Plan) {
+        for (side, claim) in plan.discs.iter().enumerate() {
+            let Some(cl) = claim else { continue };
+            let faces = std::mem::take(&mut self.grow[side].queue);
+            let region = &faces[..cl.faces];
+            let s = self.fresh_stamp();
+            self.interior.clear();
+            for &f in region {
+                for v in self.tri.face_vertices(f) {
+                    if v != e.p && v != e.q && v != cl.x && self.vmark[v.index()] != s {
+                        self.vmark[v.index()] = s;
+                        self.interior.push(v);
+                    }
+                }
+            }
+            spec::disc(self, [e.p, e.q, cl.x], region);
+            let interior = std::mem::take(&mut self.interior);
+            self.tri
+                .replace_disc([e.p, e.q, cl.x], region, &interior, cl.sides);
+            self.run.discs_removed += 1;
+            self.run.vertices_removed_inside += interior.len();
+            self.interior = interior;
+            self.grow[side].queue = faces;
+        }
+        let (keep, gone) = if e.p < e.q { (e.p, e.q) } else { (e.q, e.p) };
+        self.tri.collapse(keep, gone, &mut self.scratch);
+        self.pos[keep.index()] = plan.position;
+        if !self.quadric.is_empty() {
+            let g = self.quadric[gone.index()];
+            self.quadric[keep.index()].add(&g);
+        }
+        self.touched[keep.index()] = self.pass;
+        for n in self.tri.link(keep) {
+            self.touched[n.index()] = self.pass;
+        }
+    }
+
+    /// Renumbers vertices and faces densely and carries the per-vertex data along.
+    fn compact(&mut self) {
+        let map = self.tri.compact();
+        let mut k = 0;
+        for (old, new) in map.iter().enumerate() {
+            if let Some(v) = new {
+                debug_assert_eq!(v.index(), k);
+                self.pos[k] = self.pos[old];
+                if !self.quadric.is_empty() {
+                    self.quadric[k] = self.quadric[old];
+                }
+                k += 1;
+            }
+        }
+        self.pos.truncate(k);
+        self.pos.shrink_to_fit();
+        if !self.quadric.is_empty() {
+            self.quadric.truncate(k);
+            self.quadric.shrink_to_fit();
+        }
+        self.first_virtual = (k - self.loops) as u32;
+        let nf = self.tri.face_capacity();
+        self.touched = vec![0; k];
+        self.vmark = vec![0; k];
+        self.fmark = vec![0; nf];
+        self.stamp = 0;
+        self.pass = 0;
+    }
+
+    /// Finds every real edge shorter than ε left, the shortest real edge, and the reason
+    /// each short edge cannot be processed (the last pass contracted nothing, so none
+    /// can: the specification checks it).
+    fn account_remaining(&mut self) {
+        let edges: Vec<(VertexId, VertexId, Corner)> = self.tri.edges().collect();
+        let mut shortest = f64::INFINITY;
+        for (p, q, c) in edges {
+            if self.is_virtual(p) || self.is_virtual(q) {
+                continue;
+            }
+            let l2 = dist2(self.pos[p.index()], self.pos[q.index()]);
+            shortest = shortest.min(l2);
+            if l2 >= self.eps2 {
+                continue;
+            }
+            // Examine from a real face (a boundary edge has one cone face).
+            let c = if self
+                .tri
+                .face_vertices(c.face())
+                .iter()
+                .any(|&v| self.is_virtual(v))
+            {
+                self.tri.opposite(c)
+            } else {
+                c
+            };
+            match self.plan(c) {
+                Ok(_) => {
+                    spec::unaccounted(self, p, q);
+                    self.run.remaining.frozen += 1;
+                }
+                Err(s) => self.run.remaining.count(s),
+            }
+        }
+        self.run.shortest = shortest.is_finite().then(|| shortest.sqrt());
+    }
+
+    /// The real vertices (all live after the final compaction) with their positions,
+    /// and the real faces.
+    pub(crate) fn into_mesh(mut self) -> (Vec<[u32; 3]>, Vec<Point>) {
+        if self.tri.face_capacity() != self.tri.face_count()
+            || self.tri.vertex_capacity() != self.tri.vertex_count()
+        {
+            self.compact();
+        }
+        let first = self.first_virtual;
+        let faces = self
+            .tri
+            .faces()
+            .map(|f| self.tri.face_vertices(f))
+            .filter(|vs| vs.iter().all(|v| v.0 < first))
+            .map(|vs| vs.map(|v| v.0))
+            .collect();
+        self.pos.truncate(first as usize);
+        (faces, self.pos)
+    }
+}
