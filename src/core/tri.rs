@@ -104,7 +104,7 @@ pub struct Star<'a> {
 
 impl Iterator for Star<'_> {
     type Item = StarStep;
-    #[inline]
+    #[inline(always)]
     fn next(&mut self) -> Option<StarStep> {
         if self.done {
             return None;

@@ -133,8 +133,10 @@ pub struct SkipCounts {
     pub non_disc: usize,
     /// The geometry guard refused the contraction.
     pub foldover: usize,
-    /// An endpoint was replaced, removed or frozen earlier in the pass (retried in the
-    /// next pass; never a reason for an edge that remains at the end).
+    /// Deferred to the next pass by freezing: a short edge with an endpoint replaced,
+    /// removed or frozen earlier in the pass, or a triangle visit skipped whole because
+    /// two of its vertices were (then every edge has a frozen endpoint; its lengths are
+    /// not even read). Never a reason for an edge that remains at the end.
     pub frozen: usize,
 }
 

@@ -80,6 +80,8 @@ pub(crate) struct Simplifier<'o> {
     stamp: u32,
     scratch: Vec<Corner>,
     pub(super) link: Vec<VertexId>,
+    /// A corner at q, then at p, in every face around them (filled by `examine`).
+    star_pq: Vec<Corner>,
     /// The common neighbours of the edge other than its opposite vertices, in order
     /// along the link of `p` from `a` to `b`.
     pub(super) xs: Vec<VertexId>,
@@ -103,7 +105,12 @@ impl<'o> Simplifier<'o> {
         let nf = tri.face_capacity();
         let mut pos = positions;
         pos.resize(nv, [0.0; 3]);
-        let surface = SurfaceType::of(&tri);
+        // Only the specification reads it (an O(F) orientation pass).
+        let surface = if spec::ENABLED {
+            SurfaceType::of(&tri)
+        } else {
+            SurfaceType::new(2, true).expect("the sphere")
+        };
         let mut s = Simplifier {
             tri,
             pos,
@@ -119,6 +126,7 @@ impl<'o> Simplifier<'o> {
             stamp: 0,
             scratch: Vec::new(),
             link: Vec::new(),
+            star_pq: Vec::new(),
             xs: Vec::new(),
             grow: [Grow::default(), Grow::default()],
             interior: Vec::new(),
@@ -207,7 +215,10 @@ impl<'o> Simplifier<'o> {
             let contracted = self.pass();
             self.run.passes += 1;
             self.run.edges_contracted += contracted;
-            if contracted > 0 {
+            // Compact once a third of the slots are dead: the scan of the next passes
+            // then stays proportional to the live faces, and the total compaction work
+            // to a constant times the input.
+            if 3 * (self.tri.face_capacity() - self.tri.face_count()) > self.tri.face_capacity() {
                 self.compact();
             }
             spec::pass_end(self);
@@ -242,25 +253,45 @@ impl<'o> Simplifier<'o> {
                 continue;
             }
             let vs = self.tri.face_vertices(f);
-            if vs.iter().any(|&v| self.is_virtual(v)) {
+            if vs.iter().any(|v| v.0 >= self.first_virtual) {
                 continue;
             }
-            let ps = vs.map(|v| self.pos[v.index()]);
-            // Edge opposite slot s joins slots s+1 and s+2.
-            let mut cand = [(0.0f64, 0u32); 3];
-            let mut n = 0;
-            for s in 0..3 {
-                let l2 = dist2(ps[(s + 1) % 3], ps[(s + 2) % 3]);
-                if l2 < self.eps2 {
-                    cand[n] = (l2, s as u32);
-                    n += 1;
+            let pass = self.pass;
+            let frozen = vs
+                .iter()
+                .filter(|v| self.touched[v.index()] == pass)
+                .count();
+            if frozen >= 2 {
+                // Every edge has a frozen endpoint: deferred without reading positions
+                // (most visits of a pass end here, so this test comes first).
+                self.run.skipped.frozen += 1;
+                continue;
+            }
+            let ps = [
+                self.pos[vs[0].index()],
+                self.pos[vs[1].index()],
+                self.pos[vs[2].index()],
+            ];
+            // Edge opposite slot s joins slots s+1 and s+2; the short ones, shortest
+            // first (ties by slot), by a three-element sorting network.
+            let l = [
+                dist2(ps[1], ps[2]),
+                dist2(ps[2], ps[0]),
+                dist2(ps[0], ps[1]),
+            ];
+            let mut order = [0u32, 1, 2];
+            let mut swap = |i: usize, j: usize| {
+                if l[order[j] as usize] < l[order[i] as usize] {
+                    order.swap(i, j);
                 }
-            }
-            if n == 0 {
-                continue;
-            }
-            cand[..n].sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
-            for &(_, s) in &cand[..n] {
+            };
+            swap(0, 1);
+            swap(1, 2);
+            swap(0, 1);
+            for s in order {
+                if l[s as usize] >= self.eps2 {
+                    break;
+                }
                 let c = f.corner(s);
                 let [p, q] = self.tri.edge_endpoints(c);
                 if self.touched[p.index()] == self.pass || self.touched[q.index()] == self.pass {
@@ -287,43 +318,53 @@ impl<'o> Simplifier<'o> {
         let a = self.tri.vertex(c);
         let b = self.tri.vertex(self.tri.opposite(c));
         let s = self.fresh_stamp();
+        // One walk around each endpoint: q's neighbours marked, p's checked against
+        // them; the corners kept for the guard, which then needs no walk of its own.
         let mut loop_q = None;
-        for n in self.tri.link(q) {
+        self.star_pq.clear();
+        for st in self.tri.star(q) {
+            let n = st.neighbour;
             self.vmark[n.index()] = s;
             if n.0 >= self.first_virtual {
                 loop_q = Some(n);
             }
+            self.star_pq.push(st.corner);
         }
-        self.link.clear();
         let mut loop_p = None;
-        let mut at_q = 0;
-        for (i, n) in self.tri.link(p).enumerate() {
-            if n == q {
-                at_q = i;
-            }
+        let mut extra = false;
+        for st in self.tri.star(p) {
+            let n = st.neighbour;
             if n.0 >= self.first_virtual {
                 loop_p = Some(n);
             }
-            self.link.push(n);
+            if self.vmark[n.index()] == s && n != a && n != b {
+                extra = true;
+            }
+            self.star_pq.push(st.corner);
         }
         if let (Some(x), Some(y)) = (loop_p, loop_q) {
             if x != y {
                 return Err(Skip::LinkCondition);
             }
         }
-        // The link of p from the neighbour after q round to the one before it, then
-        // oriented to run from a to b.
-        self.link.rotate_left(at_q + 1);
-        self.link.pop();
-        if self.link.first() != Some(&a) {
-            self.link.reverse();
-        }
-        debug_assert_eq!(self.link.first(), Some(&a));
-        debug_assert_eq!(self.link.last(), Some(&b));
         self.xs.clear();
-        let inner = &self.link[1..self.link.len() - 1];
-        self.xs
-            .extend(inner.iter().copied().filter(|n| self.vmark[n.index()] == s));
+        if extra {
+            // Only now the order: the link of p from the neighbour after q round to the
+            // one before it, oriented to run from a to b.
+            self.link.clear();
+            self.link.extend(self.tri.link(p));
+            let at_q = self.link.iter().position(|&n| n == q).unwrap_or(0);
+            self.link.rotate_left(at_q + 1);
+            self.link.pop();
+            if self.link.first() != Some(&a) {
+                self.link.reverse();
+            }
+            debug_assert_eq!(self.link.first(), Some(&a));
+            debug_assert_eq!(self.link.last(), Some(&b));
+            let inner = &self.link[1..self.link.len() - 1];
+            self.xs
+                .extend(inner.iter().copied().filter(|n| self.vmark[n.index()] == s));
+        }
         Ok(EdgeInfo {
             corner: c,
             p,
@@ -412,29 +453,26 @@ impl<'o> Simplifier<'o> {
     /// planned disc, not a face of `[p, q]`) must stay non-degenerate and turn by less
     /// than 90° when `p` and `q` move to `to`.
     fn guard(&self, e: &EdgeInfo, to: Point, removed: Option<u32>) -> bool {
-        for centre in [e.p, e.q] {
-            for step in self.tri.star(centre) {
-                let f = step.corner.face();
-                if removed.is_some_and(|s| self.fmark[f.index()] == s) {
-                    continue;
-                }
-                let vs = self.tri.face_vertices(f);
-                if (vs.contains(&e.p) && vs.contains(&e.q))
-                    || vs.iter().any(|&v| self.is_virtual(v))
-                {
-                    continue;
-                }
-                let old = vs.map(|v| self.pos[v.index()]);
-                let new = vs.map(|v| {
-                    if v == e.p || v == e.q {
-                        to
-                    } else {
-                        self.pos[v.index()]
-                    }
-                });
-                if !moved_triangle_ok(area_normal(old[0], old[1], old[2]), new) {
-                    return false;
-                }
+        let pos = |v: VertexId| self.pos[v.index()];
+        // `star_pq` holds a corner at q or p in every face around them (from `examine`).
+        for &c in &self.star_pq {
+            let f = c.face();
+            if removed.is_some_and(|s| self.fmark[f.index()] == s) {
+                continue;
+            }
+            let (v0, v1, v2) = (
+                self.tri.vertex(c),
+                self.tri.vertex(c.next()),
+                self.tri.vertex(c.prev()),
+            );
+            // v0 is p or q; skip the faces of [p, q] and cone faces.
+            let other = if v0 == e.p { e.q } else { e.p };
+            if v1 == other || v2 == other || self.is_virtual(v1) || self.is_virtual(v2) {
+                continue;
+            }
+            let (p1, p2) = (pos(v1), pos(v2));
+            if !moved_triangle_ok(area_normal(pos(v0), p1, p2), [to, p1, p2]) {
+                return false;
             }
         }
         true
@@ -443,6 +481,19 @@ impl<'o> Simplifier<'o> {
     /// Carries out a plan: replaces the discs, contracts the edge keeping the smaller
     /// id, moves the kept vertex and freezes its neighbours for the rest of the pass.
     fn apply(&mut self, e: &EdgeInfo, plan: &Plan) {
+        // Freeze first, while `star_pq` still describes the stars of p and q: every
+        // neighbour of the merged vertex was a neighbour of p or q (removing a disc and
+        // contracting add no adjacency), so marking all of those (and p, q) freezes
+        // them without walking the new star.
+        for &c in &self.star_pq {
+            for w in [
+                self.tri.vertex(c),
+                self.tri.vertex(c.next()),
+                self.tri.vertex(c.prev()),
+            ] {
+                self.touched[w.index()] = self.pass;
+            }
+        }
         for (side, claim) in plan.discs.iter().enumerate() {
             let Some(cl) = claim else { continue };
             let faces = std::mem::take(&mut self.grow[side].queue);
@@ -473,10 +524,6 @@ impl<'o> Simplifier<'o> {
             let g = self.quadric[gone.index()];
             self.quadric[keep.index()].add(&g);
         }
-        self.touched[keep.index()] = self.pass;
-        for n in self.tri.link(keep) {
-            self.touched[n.index()] = self.pass;
-        }
     }
 
     /// Renumbers vertices and faces densely and carries the per-vertex data along.
@@ -500,12 +547,11 @@ impl<'o> Simplifier<'o> {
             self.quadric.shrink_to_fit();
         }
         self.first_virtual = (k - self.loops) as u32;
-        let nf = self.tri.face_capacity();
-        self.touched = vec![0; k];
-        self.vmark = vec![0; k];
-        self.fmark = vec![0; nf];
-        self.stamp = 0;
-        self.pass = 0;
+        // Marks and pass numbers only ever grow, so stale entries never match: the
+        // arrays are cut to size, not cleared.
+        self.touched.truncate(k);
+        self.vmark.truncate(k);
+        self.fmark.truncate(self.tri.face_capacity());
     }
 
     /// Finds every real edge shorter than ε left, the shortest real edge, and the reason

@@ -14,7 +14,7 @@
 
 use super::pass::Simplifier;
 use crate::core::{FaceId, VertexId};
-use crate::spec::ENABLED;
+pub(super) use crate::spec::ENABLED;
 use crate::topology::SurfaceType;
 
 /// D1: `region` is a closed disc whose boundary is exactly the cycle `[p, q, x]`: every
