@@ -32,6 +32,8 @@
 //! | S13 | Sec. 4.3 | `new_neighbour`, `leaving_lue` | Alg. 4.5 l.8, Alg. 4.2 l.24 |
 //! | S14 | Sec. 4.3 | `degree3_untested` | Alg. 4.3, after the contraction |
 //!
+//! The simplifier's checks D1–D3 live in `simplify::spec` (catalogue: `spec/simplify.md`).
+//!
 //! S7 (ε = 0) and S12 (genus 0: one processed vertex does every contraction) are test
 //! assertions over whole runs (`tests/algorithms/rs_algorithm.rs`); [`oracle`] holds the
 //! independent definitions the checks and the tests compare against.
