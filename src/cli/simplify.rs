@@ -1,0 +1,368 @@
+//! `contractible simplify IN -o OUT (--eps X | --eps-rel F)`: topology-preserving
+//! short-edge simplification (Pepko–Borisenko) of every component, closed or with
+//! boundary.
+//!
+//! Input problems are exit code 2 and write nothing: an unreadable or malformed file
+//! (the readers already refuse NaN and infinite coordinates, located), faces that are not
+//! a 2-manifold possibly with boundary (located), a bad ε, and a mesh without usable
+//! positions. A mesh read from a file always has positions (every format requires
+//! them); one whose vertices all lie at a single point — what `gen random` writes, since
+//! its surfaces have no coordinates — is refused as carrying none: every edge would have
+//! length 0, so ε could not select anything and `--eps-rel` would give ε = 0.
+//!
+//! The output is checked before it is written, independently of the algorithm: it is
+//! rebuilt from its face list and must be a union of surfaces with the input's number of
+//! components and the same multiset of (χ, orientability, boundary loops), with no
+//! unused vertex. A mismatch is an internal error (exit code 1) and writes nothing.
+
+use std::time::Instant;
+
+use contractible::simplify::{
+    self, bbox_diagonal, Mode, Options, PassReport, Position, Side, Simplified, SimplifyError,
+    Stats,
+};
+use contractible::{ConedSurfaces, Surfaces, TriMesh};
+use serde::Serialize;
+
+use super::args::SimplifyArgs;
+use super::progress::bar;
+use super::{meshio, print_json, CliError, Ui};
+
+/// The JSON result of `simplify`: the options, every [`Stats`] field (flattened), and
+/// the I/O around them.
+#[derive(Serialize, Debug)]
+pub struct SimplifyReport {
+    pub file: String,
+    pub output: String,
+    /// The ε used (absolute).
+    pub eps: f64,
+    /// `--eps-rel` when given, else `null`.
+    pub eps_rel: Option<f64>,
+    /// Diagonal of the bounding box of the vertices the faces use.
+    pub bbox_diagonal: f64,
+    pub mode: &'static str,
+    pub side: &'static str,
+    pub position: &'static str,
+    /// Whether the fold-over guard was on (`--allow-foldover` turns it off).
+    pub guard: bool,
+    #[serde(flatten)]
+    pub stats: Stats,
+    /// Unused input vertices (dropped, as every command does).
+    pub dropped_vertices: usize,
+    pub seconds_read: f64,
+    /// Validating the input (faces and positions).
+    pub seconds_build: f64,
+    /// The independent topology check of the output.
+    pub seconds_verify: f64,
+    pub seconds_write: f64,
+}
+
+pub fn mode_name(m: Mode) -> &'static str {
+    match m {
+        Mode::Naive => "naive",
+        Mode::Nested => "nested",
+    }
+}
+
+pub fn side_name(s: Side) -> &'static str {
+    match s {
+        Side::Count => "count",
+        Side::Path => "path",
+        Side::Euclidean => "euclidean",
+    }
+}
+
+pub fn position_name(p: Position) -> &'static str {
+    match p {
+        Position::Midpoint => "midpoint",
+        Position::Quadric => "quadric",
+    }
+}
+
+/// A component's topological type as a sortable key: (χ, orientable, boundary loops).
+pub type TypeKey = (i64, bool, usize);
+
+/// The topological types of the components of `s`, sorted (a multiset).
+pub fn component_types(s: &ConedSurfaces) -> Vec<TypeKey> {
+    let mut v: Vec<TypeKey> = s
+        .components
+        .iter()
+        .map(|c| {
+            let t = c.surface_type();
+            (
+                t.euler_characteristic(),
+                t.is_orientable(),
+                t.boundary_loops(),
+            )
+        })
+        .collect();
+    v.sort_unstable();
+    v
+}
+
+/// The independent check of an output: rebuilt from its face list (not from anything
+/// the algorithm kept), it must be a union of surfaces possibly with boundary, use every
+/// vertex, and have exactly the components `input` lists (as a multiset of types).
+pub fn verify(input: &[TypeKey], out: &TriMesh) -> Result<(), String> {
+    let s = Surfaces::from_mesh_with_boundary(out)
+        .map_err(|e| format!("the output is not a surface: {e}"))?;
+    if !s.dropped_vertices.is_empty() {
+        return Err(format!(
+            "the output has {} unused vertices",
+            s.dropped_vertices.len()
+        ));
+    }
+    let output = component_types(&s);
+    if output != input {
+        let show = |v: &[TypeKey]| {
+            v.iter()
+                .map(|(chi, o, b)| {
+                    format!(
+                        "χ={chi} {} b={b}",
+                        if *o { "orientable" } else { "non-orientable" }
+                    )
+                })
+                .collect::<Vec<_>>()
+                .join("; ")
+        };
+        return Err(format!(
+            "the output's components ({}: {}) differ from the input's ({}: {})",
+            output.len(),
+            show(&output),
+            input.len(),
+            show(input)
+        ));
+    }
+    Ok(())
+}
+
+/// [`simplify::simplify_with`] with a progress bar over the components whose message
+/// follows the passes.
+pub fn simplify_with_progress(
+    mesh: &TriMesh,
+    options: &Options,
+    components: usize,
+    ui: Ui,
+) -> Result<Simplified, SimplifyError> {
+    let mode = mode_name(options.mode);
+    let pb = bar(ui, components as u64, format!("simplifying ({mode})"));
+    let mut on_pass = |r: &PassReport| {
+        pb.set_position(r.component as u64);
+        pb.set_message(format!(
+            "simplifying ({mode}): component {}, pass {} contracted {}, {} faces",
+            r.component + 1,
+            r.pass,
+            r.contracted,
+            r.faces
+        ));
+    };
+    let r = simplify::simplify_with(mesh, options, &mut on_pass);
+    pb.finish_and_clear();
+    r
+}
+
+/// A length for people: 6 significant digits, scientific outside [1e-3, 1e6).
+pub fn fmt_len(x: f64) -> String {
+    if x == 0.0 || (1e-3..1e6).contains(&x.abs()) {
+        let digits = if x == 0.0 {
+            0
+        } else {
+            (5 - x.abs().log10().floor() as i32).max(0) as usize
+        };
+        format!("{x:.digits$}")
+    } else {
+        format!("{x:.5e}")
+    }
+}
+
+fn check_eps(flag: &str, what: &str, v: f64) -> Result<(), CliError> {
+    if v.is_finite() && v > 0.0 {
+        Ok(())
+    } else {
+        Err(CliError::Input(format!(
+            "{flag} {v:?}: {what} must be a finite number > 0"
+        )))
+    }
+}
+
+/// The vertices the faces use, in id order.
+fn used_vertices(mesh: &TriMesh) -> Vec<usize> {
+    let mut used = vec![false; mesh.vertex_count];
+    for f in &mesh.faces {
+        for &v in f {
+            // The readers and the build check every index against the vertex count.
+            if let Some(u) = used.get_mut(v as usize) {
+                *u = true;
+            }
+        }
+    }
+    (0..mesh.vertex_count).filter(|&v| used[v]).collect()
+}
+
+pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
+    meshio::check_output(&a.output)?;
+    if let Some(e) = a.eps {
+        check_eps("--eps", "ε", e)?;
+    }
+    if let Some(r) = a.eps_rel {
+        check_eps("--eps-rel", "the fraction of the bounding-box diagonal", r)?;
+    }
+    let path = &a.input;
+    let input_error = |e: &SimplifyError| CliError::Input(format!("{}: {e}", path.display()));
+    let (mesh, seconds_read) = meshio::read(path, ui)?;
+    let t = Instant::now();
+    // Positions first: the checks `simplify` makes (ε = 1 stands for any valid ε; the
+    // real one may depend on the positions).
+    let positions = simplify::check_input(&mesh, 1.0).map_err(|e| input_error(&e))?;
+    let (surfaces, _) = meshio::build_open(&mesh, path, ui)?;
+    let dropped_vertices = surfaces.dropped_vertices.len();
+    let input_types = component_types(&surfaces);
+    let components = surfaces.components.len();
+    // The coned triangulations are not needed any more (`simplify` builds its own).
+    drop(surfaces);
+    let used = used_vertices(&mesh);
+    if let Some(&first) = used.first() {
+        let p = positions[first];
+        if used.iter().all(|&v| positions[v] == p) {
+            return Err(CliError::Input(format!(
+                "{}: all {} vertices are at the same point ({}, {}, {}): the file carries \
+                 no coordinates (as `gen random` writes its surfaces); `simplify` needs \
+                 vertex positions",
+                path.display(),
+                used.len(),
+                p[0],
+                p[1],
+                p[2]
+            )));
+        }
+    }
+    let diagonal = bbox_diagonal(used.iter().map(|&v| positions[v]));
+    let eps = match (a.eps, a.eps_rel) {
+        (Some(e), _) => e,
+        (None, Some(r)) => {
+            let e = r * diagonal;
+            if !(e.is_finite() && e > 0.0) {
+                return Err(CliError::Input(format!(
+                    "--eps-rel {r:?} times the bounding-box diagonal {diagonal:?} gives \
+                     ε = {e:?}, not a finite number > 0"
+                )));
+            }
+            e
+        }
+        // clap's required group gives one of the two.
+        (None, None) => {
+            return Err(CliError::Input(
+                "one of --eps and --eps-rel is required".into(),
+            ))
+        }
+    };
+    let seconds_build = t.elapsed().as_secs_f64();
+    let options = Options {
+        eps,
+        mode: a.mode.into(),
+        side: a.side.into(),
+        position: a.position.into(),
+        guard: !a.allow_foldover,
+    };
+    let out =
+        simplify_with_progress(&mesh, &options, components, ui).map_err(|e| input_error(&e))?;
+    drop(mesh);
+    let t = Instant::now();
+    verify(&input_types, &out.mesh).map_err(|e| {
+        CliError::Failure(format!(
+            "internal error: {}: {e}; nothing written",
+            path.display()
+        ))
+    })?;
+    let seconds_verify = t.elapsed().as_secs_f64();
+    let seconds_write = meshio::write(&a.output, &out.mesh, ui)?;
+    let report = SimplifyReport {
+        file: path.display().to_string(),
+        output: a.output.display().to_string(),
+        eps,
+        eps_rel: a.eps_rel,
+        bbox_diagonal: diagonal,
+        mode: mode_name(options.mode),
+        side: side_name(options.side),
+        position: position_name(options.position),
+        guard: options.guard,
+        stats: out.stats,
+        dropped_vertices,
+        seconds_read,
+        seconds_build,
+        seconds_verify,
+        seconds_write,
+    };
+    if ui.json {
+        print_json(&report)?;
+    } else if !ui.quiet {
+        print_human(&report);
+    }
+    Ok(())
+}
+
+fn print_human(r: &SimplifyReport) {
+    let s = &r.stats;
+    outln!(
+        "{} -> {}: {} mode, {} side, {} positions, fold-over guard {}",
+        r.file,
+        r.output,
+        r.mode,
+        r.side,
+        r.position,
+        if r.guard { "on" } else { "off" }
+    );
+    match r.eps_rel {
+        Some(rel) => outln!(
+            "  ε = {} ({} × the bounding-box diagonal {})",
+            fmt_len(r.eps),
+            rel,
+            fmt_len(r.bbox_diagonal)
+        ),
+        None => outln!(
+            "  ε = {} (bounding-box diagonal {})",
+            fmt_len(r.eps),
+            fmt_len(r.bbox_diagonal)
+        ),
+    }
+    let plural =
+        |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
+    outln!(
+        "  vertices {} -> {}, faces {} -> {}; {}, {} (kept, checked independently)",
+        s.vertices_before,
+        s.vertices_after,
+        s.faces_before,
+        s.faces_after,
+        plural(s.components, "component", "components"),
+        plural(s.boundary_loops, "boundary loop", "boundary loops")
+    );
+    outln!(
+        "  contractions {}; discs removed {} ({} vertices inside); passes {}",
+        s.edges_contracted,
+        s.discs_removed,
+        s.vertices_removed_inside,
+        s.passes
+    );
+    outln!(
+        "  skipped (events over all passes): link condition {}, non-disc {}, fold-over {}, \
+         frozen {}",
+        s.skipped.link_condition,
+        s.skipped.non_disc,
+        s.skipped.foldover,
+        s.skipped.frozen
+    );
+    outln!(
+        "  edges shorter than ε remaining: {} (link condition {}, non-disc {}, fold-over {})",
+        s.short_edges_remaining,
+        s.remaining.link_condition,
+        s.remaining.non_disc,
+        s.remaining.foldover
+    );
+    outln!(
+        "  shortest remaining edge {}; {:.4} s",
+        s.shortest_remaining_edge
+            .map_or_else(|| "-".to_string(), fmt_len),
+        s.seconds
+    );
+    outln!("wrote {}", r.output);
+}
