@@ -15,6 +15,7 @@
 //! components and the same multiset of (χ, orientability, boundary loops), with no
 //! unused vertex. A mismatch is an internal error (exit code 1) and writes nothing.
 
+use std::path::Path;
 use std::time::Instant;
 
 use contractible::simplify::{
@@ -199,28 +200,19 @@ fn used_vertices(mesh: &TriMesh) -> Vec<usize> {
     (0..mesh.vertex_count).filter(|&v| used[v]).collect()
 }
 
-pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
-    meshio::check_output(&a.output)?;
-    if let Some(e) = a.eps {
-        check_eps("--eps", "ε", e)?;
-    }
-    if let Some(r) = a.eps_rel {
-        check_eps("--eps-rel", "the fraction of the bounding-box diagonal", r)?;
-    }
-    let path = &a.input;
-    let input_error = |e: &SimplifyError| CliError::Input(format!("{}: {e}", path.display()));
-    let (mesh, seconds_read) = meshio::read(path, ui)?;
-    let t = Instant::now();
-    // Positions first: the checks `simplify` makes (ε = 1 stands for any valid ε; the
-    // real one may depend on the positions).
-    let positions = simplify::check_input(&mesh, 1.0).map_err(|e| input_error(&e))?;
-    let (surfaces, _) = meshio::build_open(&mesh, path, ui)?;
-    let dropped_vertices = surfaces.dropped_vertices.len();
-    let input_types = component_types(&surfaces);
-    let components = surfaces.components.len();
-    // The coned triangulations are not needed any more (`simplify` builds its own).
-    drop(surfaces);
-    let used = used_vertices(&mesh);
+/// The positions of `mesh` and the vertices its faces use, or the input error: no
+/// positions, a count that does not match, a non-finite coordinate (the checks
+/// `simplify` makes), or every used vertex at one point (no usable coordinates: what a
+/// surface generated without them, like `gen random`'s, looks like in a file).
+fn checked_positions<'a>(
+    mesh: &'a TriMesh,
+    path: &Path,
+) -> Result<(&'a [[f64; 3]], Vec<usize>), CliError> {
+    // ε = 1 stands for any valid ε: only the positions are checked here (the real ε may
+    // depend on them).
+    let positions = simplify::check_input(mesh, 1.0)
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let used = used_vertices(mesh);
     if let Some(&first) = used.first() {
         let p = positions[first];
         if used.iter().all(|&v| positions[v] == p) {
@@ -236,7 +228,29 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
             )));
         }
     }
+    Ok((positions, used))
+}
+
+pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
+    meshio::check_output(&a.output)?;
+    if let Some(e) = a.eps {
+        check_eps("--eps", "ε", e)?;
+    }
+    if let Some(r) = a.eps_rel {
+        check_eps("--eps-rel", "the fraction of the bounding-box diagonal", r)?;
+    }
+    let path = &a.input;
+    let (mesh, seconds_read) = meshio::read(path, ui)?;
+    let t = Instant::now();
+    let (positions, used) = checked_positions(&mesh, path)?;
+    let (surfaces, _) = meshio::build_open(&mesh, path, ui)?;
+    let dropped_vertices = surfaces.dropped_vertices.len();
+    let input_types = component_types(&surfaces);
+    let components = surfaces.components.len();
+    // The coned triangulations are not needed any more (`simplify` builds its own).
+    drop(surfaces);
     let diagonal = bbox_diagonal(used.iter().map(|&v| positions[v]));
+    drop(used);
     let eps = match (a.eps, a.eps_rel) {
         (Some(e), _) => e,
         (None, Some(r)) => {
@@ -264,8 +278,8 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         position: a.position.into(),
         guard: !a.allow_foldover,
     };
-    let out =
-        simplify_with_progress(&mesh, &options, components, ui).map_err(|e| input_error(&e))?;
+    let out = simplify_with_progress(&mesh, &options, components, ui)
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
     drop(mesh);
     let t = Instant::now();
     verify(&input_types, &out.mesh).map_err(|e| {
@@ -365,4 +379,108 @@ fn print_human(r: &SimplifyReport) {
         s.seconds
     );
     outln!("wrote {}", r.output);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn message(r: Result<(&[[f64; 3]], Vec<usize>), CliError>) -> String {
+        match r {
+            Err(CliError::Input(m)) => m,
+            Err(CliError::Failure(m)) => panic!("not an input error: {m}"),
+            Ok(_) => panic!("accepted"),
+        }
+    }
+
+    // Files always carry positions (the readers need them), so these cases cannot be
+    // reached through the binary: checked here.
+    #[test]
+    fn positions_are_required_finite_and_not_all_at_one_point() {
+        let faces = contractible::gen::tetrahedron().faces;
+        let p = Path::new("in.off");
+        let none = TriMesh::combinatorial(4, faces.clone());
+        assert_eq!(
+            message(checked_positions(&none, p)),
+            "in.off: the mesh has no vertex positions; simplification needs coordinates"
+        );
+        let mut pts = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let mut nan = TriMesh::with_positions(pts.clone(), faces.clone());
+        if let Some(q) = nan.positions.as_mut() {
+            q[2][1] = f64::NAN;
+        }
+        assert_eq!(
+            message(checked_positions(&nan, p)),
+            "in.off: vertex 2 has a non-finite coordinate y = NaN"
+        );
+        let short = TriMesh {
+            vertex_count: 4,
+            positions: Some(pts[..3].to_vec()),
+            faces: faces.clone(),
+        };
+        assert_eq!(
+            message(checked_positions(&short, p)),
+            "in.off: the mesh has 4 vertices but 3 positions"
+        );
+        // An unused vertex elsewhere does not make the used ones distinct.
+        let same = TriMesh::with_positions(vec![[2.0, 3.0, 4.0]; 4], faces.clone());
+        let m = message(checked_positions(&same, p));
+        assert!(
+            m.starts_with("in.off: all 4 vertices are at the same point (2, 3, 4)"),
+            "{m}"
+        );
+        pts.push([9.0, 9.0, 9.0]);
+        let mut with_unused = TriMesh::with_positions(vec![[0.0; 3]; 4], faces.clone());
+        if let Some(q) = with_unused.positions.as_mut() {
+            q.push([9.0, 9.0, 9.0]);
+        }
+        with_unused.vertex_count = 5;
+        assert!(message(checked_positions(&with_unused, p)).contains("all 4 vertices"));
+        let ok = TriMesh::with_positions(pts, faces);
+        let (q, used) = checked_positions(&ok, p).expect("valid positions");
+        assert_eq!((q.len(), used), (5, vec![0, 1, 2, 3]));
+    }
+
+    fn types_of(m: &TriMesh) -> Vec<TypeKey> {
+        component_types(&ConedSurfaces::from_mesh(m).expect("a surface"))
+    }
+
+    #[test]
+    fn the_output_check_can_fail() {
+        use contractible::gen;
+        let torus = gen::torus7();
+        let tetra = gen::tetrahedron();
+        assert_eq!(verify(&types_of(&torus), &torus), Ok(()));
+        // Another surface.
+        let e = verify(&types_of(&torus), &tetra).unwrap_err();
+        assert_eq!(
+            e,
+            "the output's components (1: χ=2 orientable b=0) differ from the input's \
+             (1: χ=0 orientable b=0)"
+        );
+        // A component more (two tetrahedra) or less.
+        let mut two = tetra.faces.clone();
+        two.extend(tetra.faces.iter().map(|f| f.map(|v| v + 4)));
+        let two = TriMesh::combinatorial(8, two);
+        assert!(verify(&types_of(&tetra), &two).is_err());
+        assert!(verify(&types_of(&two), &tetra).is_err());
+        // A boundary loop more (a face removed): same component count, other type.
+        let open = TriMesh::combinatorial(4, tetra.faces[1..].to_vec());
+        let e = verify(&types_of(&tetra), &open).unwrap_err();
+        assert!(e.contains("χ=1 orientable b=1"), "{e}");
+        // Not a surface, or with an unused vertex.
+        let bowtie = TriMesh::combinatorial(5, vec![[0, 1, 2], [0, 3, 4]]);
+        let e = verify(&types_of(&tetra), &bowtie).unwrap_err();
+        assert!(e.starts_with("the output is not a surface: "), "{e}");
+        let unused = TriMesh::combinatorial(5, tetra.faces.clone());
+        assert_eq!(
+            verify(&types_of(&tetra), &unused),
+            Err("the output has 1 unused vertices".to_string())
+        );
+    }
 }
