@@ -138,7 +138,7 @@ pub fn verify(input: &[TypeKey], out: &TriMesh) -> Result<(), String> {
 }
 
 /// [`simplify::simplify_with`] with a progress bar over the components whose message
-/// follows the passes.
+/// follows the passes of the current one.
 pub fn simplify_with_progress(
     mesh: &TriMesh,
     options: &Options,
@@ -149,12 +149,10 @@ pub fn simplify_with_progress(
     let pb = bar(ui, components as u64, format!("simplifying ({mode})"));
     let mut on_pass = |r: &PassReport| {
         pb.set_position(r.component as u64);
+        // Short enough for one terminal line; the bar counts the components.
         pb.set_message(format!(
-            "simplifying ({mode}): component {}, pass {} contracted {}, {} faces",
-            r.component + 1,
-            r.pass,
-            r.contracted,
-            r.faces
+            "simplifying ({mode}), pass {}: {} faces",
+            r.pass, r.faces
         ));
     };
     let r = simplify::simplify_with(mesh, options, &mut on_pass);
