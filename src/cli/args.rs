@@ -34,8 +34,14 @@ pub enum Command {
     /// Pair the triangles of every component into quads on the same vertices (tri-quad
     /// conversion): always a perfect pairing, checked before writing.
     Quad(QuadArgs),
+    /// Contract every edge shorter than ε where the surface allows it (Pepko–Borisenko
+    /// short-edge simplification), keeping every component's topology (χ,
+    /// orientability, boundary loops): checked before writing. Needs vertex positions;
+    /// accepts surfaces with boundary.
+    Simplify(SimplifyArgs),
     /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
-    /// and the brute force, verify.
+    /// and the brute force, pair into quads, simplify marching-tetrahedra isosurfaces
+    /// (naive and nested, ε = 1 % of the bounding-box diagonal), verify.
     Demo(DemoArgs),
 }
 
@@ -276,6 +282,102 @@ pub struct QuadArgs {
     /// triangulation K, which keeps the input's face indices.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
+}
+
+/// How `simplify` treats edges that fail the link condition.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SimplifyMode {
+    /// Skip them (what mesh libraries do).
+    Naive,
+    /// The paper's processEdge: remove the discs inside the outermost 3-cycles through
+    /// the edge, then contract it.
+    Nested,
+}
+
+impl From<SimplifyMode> for contractible::simplify::Mode {
+    fn from(m: SimplifyMode) -> Self {
+        use contractible::simplify::Mode;
+        match m {
+            SimplifyMode::Naive => Mode::Naive,
+            SimplifyMode::Nested => Mode::Nested,
+        }
+    }
+}
+
+/// How the nested mode assigns the 3-cycles through an edge to its two sides.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SimplifySide {
+    /// Grow both sides in lockstep, face by face; a 3-cycle goes to the side that closes
+    /// it first.
+    Count,
+    /// The side whose opposite vertex is nearer in edge hops.
+    Path,
+    /// The side whose opposite vertex is nearer in space.
+    Euclidean,
+}
+
+impl From<SimplifySide> for contractible::simplify::Side {
+    fn from(s: SimplifySide) -> Self {
+        use contractible::simplify::Side;
+        match s {
+            SimplifySide::Count => Side::Count,
+            SimplifySide::Path => Side::Path,
+            SimplifySide::Euclidean => Side::Euclidean,
+        }
+    }
+}
+
+/// Where `simplify` puts the vertex that replaces a contracted edge.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SimplifyPosition {
+    /// The edge's midpoint (an edge with one endpoint on the boundary goes to that
+    /// endpoint).
+    Midpoint,
+    /// The minimiser of the endpoints' summed Garland–Heckbert quadrics.
+    Quadric,
+}
+
+impl From<SimplifyPosition> for contractible::simplify::Position {
+    fn from(p: SimplifyPosition) -> Self {
+        use contractible::simplify::Position;
+        match p {
+            SimplifyPosition::Midpoint => Position::Midpoint,
+            SimplifyPosition::Quadric => Position::Quadric,
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+#[command(group(clap::ArgGroup::new("epsilon").required(true).args(["eps", "eps_rel"])))]
+pub struct SimplifyArgs {
+    /// Input mesh with vertex positions (closed surfaces or surfaces with boundary, any
+    /// number of components).
+    pub input: PathBuf,
+    /// Output mesh (.off/.obj/.ply, optionally .gz); written only after the result has
+    /// passed the topology check.
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Contract edges strictly shorter than this length (finite, > 0).
+    #[arg(long, allow_negative_numbers = true)]
+    pub eps: Option<f64>,
+    /// ε as a fraction of the diagonal of the bounding box of the vertices the faces use
+    /// (finite, > 0; 0.01 is 1 %).
+    #[arg(long, allow_negative_numbers = true)]
+    pub eps_rel: Option<f64>,
+    /// What to do with short edges that fail the link condition.
+    #[arg(long, value_enum, default_value_t = SimplifyMode::Nested)]
+    pub mode: SimplifyMode,
+    /// The nested mode's side heuristic.
+    #[arg(long, value_enum, default_value_t = SimplifySide::Count)]
+    pub side: SimplifySide,
+    /// Where the new vertex of a contraction goes.
+    #[arg(long, value_enum, default_value_t = SimplifyPosition::Midpoint)]
+    pub position: SimplifyPosition,
+    /// Turn off the geometry guard (which skips a contraction that would flip a
+    /// triangle's normal by 90° or more or leave a zero-area triangle). The topology is
+    /// kept either way.
+    #[arg(long)]
+    pub allow_foldover: bool,
 }
 
 #[derive(Args, Debug)]

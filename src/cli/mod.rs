@@ -1,8 +1,9 @@
 //! Command-line interface (binary only): argument parsing, dispatch, exit codes.
 //!
 //! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
-//! a disjoint union of closed surfaces — for `info`, of surfaces possibly with boundary —
-//! bad arguments); 1 any other failure.
+//! a disjoint union of closed surfaces — for `info` and `simplify`, of surfaces possibly
+//! with boundary — a mesh without usable positions for `simplify`, bad arguments); 1 any
+//! other failure.
 
 /// `println!` for stdout that never panics: a closed stdout (the reader of a pipe went
 /// away, as with `| head`) ends the process quietly with exit code 1 instead of the
@@ -25,6 +26,7 @@ mod meshio;
 mod progress;
 mod quad;
 mod reduce;
+mod simplify;
 
 use std::process::ExitCode;
 
@@ -114,6 +116,7 @@ pub fn main() -> ExitCode {
         args::Command::Convert(a) => convert::run(&a, ui),
         args::Command::Reduce(a) => reduce::run(&a, ui),
         args::Command::Quad(a) => quad::run(&a, ui),
+        args::Command::Simplify(a) => simplify::run(&a, ui),
         args::Command::Demo(a) => demo::run(&a, ui),
     };
     match result {

@@ -12,3 +12,4 @@ mod cli_invalid;
 mod cli_iso;
 mod cli_quad;
 mod cli_reduce;
+mod cli_simplify;
