@@ -101,8 +101,6 @@ fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface
         .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
     let info = Report::of_coned(Path::new(&name), &surfaces, 0.0, 0.0);
     let types = component_types(&surfaces);
-    let components = surfaces.components.len();
-    drop(surfaces);
     let diagonal = bbox_diagonal(mesh.positions.iter().flatten().copied());
     let eps = DEMO_EPS_REL * diagonal;
     if ui.human() {
@@ -130,7 +128,8 @@ fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface
             mode,
             ..Options::new(eps)
         };
-        let out = simplify_with_progress(mesh, &options, components, ui)
+        let positions = mesh.positions.as_deref().unwrap_or(&[]);
+        let out = simplify_with_progress(surfaces.clone(), positions, &options, ui)
             .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
         let kept = verify(&types, &out.mesh);
         if let Err(e) = &kept {

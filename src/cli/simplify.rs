@@ -137,16 +137,20 @@ pub fn verify(input: &[TypeKey], out: &TriMesh) -> Result<(), String> {
     Ok(())
 }
 
-/// [`simplify::simplify_with`] with a progress bar over the components whose message
-/// follows the passes of the current one.
+/// [`simplify::simplify_surfaces`] with a progress bar over the components whose
+/// message follows the passes of the current one.
 pub fn simplify_with_progress(
-    mesh: &TriMesh,
+    surfaces: ConedSurfaces,
+    positions: &[[f64; 3]],
     options: &Options,
-    components: usize,
     ui: Ui,
 ) -> Result<Simplified, SimplifyError> {
     let mode = mode_name(options.mode);
-    let pb = bar(ui, components as u64, format!("simplifying ({mode})"));
+    let pb = bar(
+        ui,
+        surfaces.components.len() as u64,
+        format!("simplifying ({mode})"),
+    );
     let mut on_pass = |r: &PassReport| {
         pb.set_position(r.component as u64);
         // Short enough for one terminal line; the bar counts the components.
@@ -155,7 +159,7 @@ pub fn simplify_with_progress(
             r.pass, r.faces
         ));
     };
-    let r = simplify::simplify_with(mesh, options, &mut on_pass);
+    let r = simplify::simplify_surfaces(surfaces, positions, options, &mut on_pass);
     pb.finish_and_clear();
     r
 }
@@ -244,9 +248,6 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
     let (surfaces, _) = meshio::build_open(&mesh, path, ui)?;
     let dropped_vertices = surfaces.dropped_vertices.len();
     let input_types = component_types(&surfaces);
-    let components = surfaces.components.len();
-    // The coned triangulations are not needed any more (`simplify` builds its own).
-    drop(surfaces);
     let diagonal = bbox_diagonal(used.iter().map(|&v| positions[v]));
     drop(used);
     let eps = match (a.eps, a.eps_rel) {
@@ -276,9 +277,17 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         position: a.position.into(),
         guard: !a.allow_foldover,
     };
-    let out = simplify_with_progress(&mesh, &options, components, ui)
+    // The faces are in `surfaces` now; only the positions are still needed.
+    let TriMesh {
+        positions: mesh_positions,
+        faces,
+        ..
+    } = mesh;
+    drop(faces);
+    let positions = mesh_positions.as_deref().unwrap_or(&[]);
+    let out = simplify_with_progress(surfaces, positions, &options, ui)
         .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
-    drop(mesh);
+    drop(mesh_positions);
     let t = Instant::now();
     verify(&input_types, &out.mesh).map_err(|e| {
         CliError::Failure(format!(

@@ -188,7 +188,9 @@ pub struct Stats {
     /// Passes run, over the component that needed the most (the last one contracts
     /// nothing).
     pub passes: usize,
-    /// Wall-clock seconds of the simplification (building included, I/O excluded).
+    /// Wall-clock seconds of the simplification: from the mesh (validation and building
+    /// included) through [`simplify`] / [`simplify_with`], from the built surfaces
+    /// through [`simplify_surfaces`]; I/O excluded.
     pub seconds: f64,
 }
 
@@ -294,9 +296,55 @@ pub fn simplify_with(
     let start = Instant::now();
     let positions = check_input(mesh, options.eps)?;
     let surfaces = ConedSurfaces::from_mesh(mesh)?;
+    let mut out = simplify_surfaces(surfaces, positions, options, on_pass)?;
+    out.stats.seconds = start.elapsed().as_secs_f64();
+    Ok(out)
+}
+
+/// [`simplify_with`] on surfaces the caller has already built (and validated) from a
+/// mesh, with that mesh's `positions` (indexed by mesh vertex), so that a caller that
+/// needs the built surfaces itself does not build them twice. Checks ε and the positions
+/// of the vertices the surfaces use; `Stats::seconds` counts from here.
+pub fn simplify_surfaces(
+    surfaces: ConedSurfaces,
+    positions: &[[f64; 3]],
+    options: &Options,
+    on_pass: &mut dyn FnMut(&PassReport),
+) -> Result<Simplified, SimplifyError> {
+    let start = Instant::now();
+    let eps = options.eps;
+    if !(eps.is_finite() && eps > 0.0) {
+        return Err(SimplifyError::BadEpsilon(eps));
+    }
+    if positions.len() != surfaces.mesh_vertex_count {
+        return Err(SimplifyError::PositionCount {
+            vertices: surfaces.mesh_vertex_count,
+            positions: positions.len(),
+        });
+    }
+    for c in &surfaces.components {
+        for &m in &c.vertex_origin {
+            let p = positions[m as usize];
+            if let Some(k) = (0..3).find(|&k| !p[k].is_finite()) {
+                return Err(SimplifyError::NonFiniteCoordinate {
+                    vertex: m as usize,
+                    axis: ['x', 'y', 'z'][k],
+                    value: p[k],
+                });
+            }
+        }
+    }
     let mut stats = Stats {
-        faces_before: mesh.faces.len(),
-        vertices_before: mesh.vertex_count - surfaces.dropped_vertices.len(),
+        faces_before: surfaces
+            .components
+            .iter()
+            .map(|c| c.real_face_count())
+            .sum(),
+        vertices_before: surfaces
+            .components
+            .iter()
+            .map(|c| c.real_vertex_count())
+            .sum(),
         components: surfaces.components.len(),
         boundary_loops: surfaces.loop_count(),
         ..Stats::default()
