@@ -8,9 +8,10 @@
 //! (body-centred). ε is a fraction of the bounding-box diagonal.
 //!
 //! Groups: `nested_1pct` (the throughput target: ≥ 2M input triangles per
-//! second), `naive_1pct`, `nested_3pct`, and `build` (validation and coning alone,
-//! which every simplification includes). Each sample is one `simplify` call from the
-//! mesh (building included; the output mesh is assembled too). Run:
+//! second), `naive_1pct`, `nested_3pct` (each sample one `simplify` call from the mesh:
+//! validation and building included, the output mesh assembled), `nested_1pct_built`
+//! (`simplify_surfaces` from surfaces built outside the timed region: the algorithm
+//! alone, as the command line times it) and `build` (validation and coning alone). Run:
 //! `cargo bench --bench simplify` (about a minute), then divide the input's triangle
 //! count (printed by `cargo run --release --example simplify_profile`) by the median.
 
@@ -20,7 +21,7 @@ use std::sync::{Mutex, OnceLock};
 use contractible::gen::{
     isosurface, large_hyperboloid, large_torus, paper_hyperboloid, paper_torus, Tessellation,
 };
-use contractible::simplify::{bbox_diagonal, simplify, Mode, Options};
+use contractible::simplify::{bbox_diagonal, simplify, simplify_surfaces, Mode, Options};
 use contractible::{ConedSurfaces, TriMesh};
 
 fn main() {
@@ -77,6 +78,19 @@ fn naive_1pct(b: divan::Bencher, name: &str) {
 #[divan::bench(args = INPUTS, sample_count = 5, sample_size = 1)]
 fn nested_3pct(b: divan::Bencher, name: &str) {
     run(b, name, Mode::Nested, 0.03);
+}
+
+/// The algorithm alone: `simplify_surfaces` from surfaces built (and cloned) outside the
+/// timed region, as the command line runs it after its own validation.
+#[divan::bench(args = INPUTS, sample_count = 5, sample_size = 1)]
+fn nested_1pct_built(b: divan::Bencher, name: &str) {
+    let (mesh, diag) = input(name);
+    let built = ConedSurfaces::from_mesh(mesh).expect("a valid surface");
+    let positions = mesh.positions.as_deref().unwrap_or(&[]);
+    let opts = Options::new(0.01 * diag);
+    b.with_inputs(|| built.clone()).bench_local_values(|s| {
+        simplify_surfaces(s, positions, &opts, &mut |_| {}).expect("a valid surface")
+    });
 }
 
 #[divan::bench(args = INPUTS, sample_count = 5, sample_size = 1)]
