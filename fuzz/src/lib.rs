@@ -1070,7 +1070,7 @@ pub fn surface_topology(faces: &[[u32; 3]]) -> Result<Topology, String> {
             }
             k = m;
         }
-        if odd.len() != 0 && odd.len() != 2 {
+        if !odd.is_empty() && odd.len() != 2 {
             return Err(format!("vertex {v}: its link has {} path ends", odd.len()));
         }
         // Walk the link from a path end (or anywhere on a cycle); it must use every edge.

@@ -10,7 +10,9 @@
 //!    torus with both tessellations, a two-sheet hyperboloid with boundary, every mesh of
 //!    `../shared/meshes/closed/`, the open meshes of `../shared/meshes/invalid/` that are
 //!    manifold with boundary; each at ε = 1 % and 3 % of the bounding-box diagonal, in
-//!    both modes, and on a seeded random perturbation of it.
+//!    both modes, and on a seeded random perturbation of it (for the closed shared
+//!    meshes, to bound the run time: the perturbed copy at one ε, alternating, and only
+//!    for the 85 meshes of at most 50,000 faces).
 //! 2. Hand-made edge cases: irreducible surfaces (nothing may be contracted), huge ε
 //!    (the output must be irreducible: every edge fails the link condition, checked
 //!    here), open discs, non-orientable surfaces, two components, every option.
@@ -178,7 +180,7 @@ fn marching_tetrahedra_genus_0_to_5_sphere_and_torus_keep_their_topology() {
     let mut inputs = 0;
     for tess in TESSELLATIONS {
         for g in 0..=5u32 {
-            let mesh = iso(Implicit::GenusG { g }, tess, 0.1);
+            let mesh = iso(Implicit::GenusG { g }, tess, 0.12);
             let label = format!("genus {g} {tess:?}");
             let (topo, t) = matrix(&mesh, &label, u64::from(g), &RELATIVE_EPS);
             // The checker sees the surface the generator promises.
@@ -293,9 +295,15 @@ fn closed_shared_meshes(shard: usize) {
         }
         let name = file_name(path);
         let mesh = contractible::io::read_tri_mesh(path).unwrap_or_else(|e| panic!("{name}: {e}"));
-        // The perturbed copy at one ε, alternating between meshes (the whole set at
-        // both ε on both variants would add about 30 s).
-        let (topo, t) = matrix(&mesh, &name, i as u64, &[RELATIVE_EPS[i % 2]]);
+        // Perturbed copies: at one ε, alternating between meshes, and only for meshes
+        // up to 50,000 faces (85 of 99): the whole set at both ε on both variants
+        // would add about 40 s of CPU time.
+        let rels: &[f64] = if mesh.faces.len() <= 50_000 {
+            &RELATIVE_EPS[i % 2..i % 2 + 1]
+        } else {
+            &[]
+        };
+        let (topo, t) = matrix(&mesh, &name, i as u64, rels);
         let row = &manifest[&format!("closed/{name}")];
         let euler: i64 = topo.components.iter().map(|c| c.euler).sum();
         assert_eq!(topo.components.len(), row.components, "{name}: components");
@@ -634,7 +642,7 @@ fn every_option_combination_on_a_genus_2_surface() {
         let topo = surface_topology(&mesh.faces).expect("a surface");
         assert_eq!(topo.components, vec![closed(-2, true)]);
         for variant in [mesh.clone(), perturbed(&mesh, 5)] {
-            for rel in [0.01, 0.03, 0.1] {
+            for rel in RELATIVE_EPS {
                 for opts in all_options(rel * diagonal(&variant)) {
                     check_simplify(&variant, &opts, &format!("genus 2 {tess:?} {opts:?}"));
                 }
