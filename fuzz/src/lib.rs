@@ -888,3 +888,607 @@ pub fn check_closed_quad_surface(quads: &[[u32; 4]], label: &str) -> (i64, bool)
     let e = edge_quads.len() as i64;
     (v - e + quads.len() as i64, orientable)
 }
+
+// ---- Short-edge simplification (`simplify`): an independent topology checker and the
+// `simplify` target's checks.
+
+/// The topological type of one connected component of a surface with boundary, as
+/// [`surface_topology`] computes it from a bare face list.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub struct ComponentType {
+    /// V − E + F of the component.
+    pub euler: i64,
+    /// Whether its faces can be oriented consistently.
+    pub orientable: bool,
+    /// Number of boundary loops (cycles of edges in one face).
+    pub boundary_loops: usize,
+}
+
+/// What [`surface_topology`] finds: the components' types (sorted, so two meshes of the
+/// same surfaces compare equal whatever their order) and the global counts.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Topology {
+    /// One entry per connected component, sorted.
+    pub components: Vec<ComponentType>,
+    /// Vertices used by a face.
+    pub vertices: usize,
+    /// Distinct edges.
+    pub edges: usize,
+    /// Edges in exactly one face.
+    pub boundary_edges: usize,
+    /// Faces.
+    pub faces: usize,
+}
+
+impl Topology {
+    /// The total number of boundary loops.
+    pub fn loops(&self) -> usize {
+        self.components.iter().map(|c| c.boundary_loops).sum()
+    }
+}
+
+fn uf_find(parent: &mut [u32], mut i: u32) -> u32 {
+    while parent[i as usize] != i {
+        let p = parent[parent[i as usize] as usize];
+        parent[i as usize] = p;
+        i = p;
+    }
+    i
+}
+
+fn uf_union(parent: &mut [u32], a: u32, b: u32) -> bool {
+    let (ra, rb) = (uf_find(parent, a), uf_find(parent, b));
+    if ra == rb {
+        return false;
+    }
+    parent[ra as usize] = rb;
+    true
+}
+
+/// Classifies `faces` as a disjoint union of compact 2-manifolds with boundary, sharing
+/// no code with the library: no degenerate face, no duplicate face (as a vertex set),
+/// every edge in one or two faces, the faces around every vertex one fan (its link a
+/// single cycle, or a single path for a boundary vertex). Then per connected component
+/// (faces joined through shared edges): χ = V − E + F, orientability (a flip bit per
+/// face propagated through the interior edges: the two faces of an edge must traverse
+/// it in opposite directions), and the boundary loops (cycles of the one-face edges).
+/// `Err` names the first violation found. O(F log F).
+pub fn surface_topology(faces: &[[u32; 3]]) -> Result<Topology, String> {
+    let n = faces
+        .iter()
+        .flat_map(|f| f.iter())
+        .map(|&v| v as usize + 1)
+        .max()
+        .unwrap_or(0);
+    for (i, f) in faces.iter().enumerate() {
+        if f[0] == f[1] || f[1] == f[2] || f[0] == f[2] {
+            return Err(format!("face {i} {f:?} is degenerate"));
+        }
+    }
+    let mut sorted: Vec<([u32; 3], usize)> = faces
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            let mut s = *f;
+            s.sort_unstable();
+            (s, i)
+        })
+        .collect();
+    sorted.sort_unstable();
+    if let Some(w) = sorted.windows(2).find(|w| w[0].0 == w[1].0) {
+        return Err(format!(
+            "faces {} and {} are the same triangle",
+            w[0].1, w[1].1
+        ));
+    }
+    drop(sorted);
+    // Edges: (low, high, face, whether the face runs low → high).
+    let mut edges: Vec<(u32, u32, u32, bool)> = Vec::with_capacity(3 * faces.len());
+    for (i, f) in faces.iter().enumerate() {
+        for k in 0..3 {
+            let (a, b) = (f[k], f[(k + 1) % 3]);
+            edges.push((a.min(b), a.max(b), i as u32, a < b));
+        }
+    }
+    edges.sort_unstable();
+    // Face adjacency across interior edges: (neighbour, must the flip bits differ).
+    let mut adj: Vec<Vec<(u32, bool)>> = vec![Vec::new(); faces.len()];
+    let mut boundary: Vec<(u32, u32)> = Vec::new();
+    let mut edge_face: Vec<u32> = Vec::new();
+    let mut i = 0;
+    while i < edges.len() {
+        let mut j = i;
+        while j < edges.len() && edges[j].0 == edges[i].0 && edges[j].1 == edges[i].1 {
+            j += 1;
+        }
+        let (a, b) = (edges[i].0, edges[i].1);
+        match j - i {
+            1 => boundary.push((a, b)),
+            2 => {
+                let (f, df) = (edges[i].2, edges[i].3);
+                let (g, dg) = (edges[i + 1].2, edges[i + 1].3);
+                // Same direction in both faces: exactly one of them must be flipped.
+                adj[f as usize].push((g, df == dg));
+                adj[g as usize].push((f, df == dg));
+            }
+            k => return Err(format!("edge [{a}, {b}] is in {k} faces")),
+        }
+        edge_face.push(edges[i].2);
+        i = j;
+    }
+    drop(edges);
+    // Vertex links: the edge opposite each vertex in each of its faces must form one
+    // cycle or one path (edges in ≤ 2 faces already bound every link degree by 2).
+    let mut start = vec![0usize; n + 1];
+    for f in faces {
+        for &v in f {
+            start[v as usize + 1] += 1;
+        }
+    }
+    for v in 0..n {
+        start[v + 1] += start[v];
+    }
+    let mut fill = start.clone();
+    let mut link_edges = vec![(0u32, 0u32); 3 * faces.len()];
+    for f in faces {
+        for k in 0..3 {
+            let v = f[k] as usize;
+            link_edges[fill[v]] = (f[(k + 1) % 3], f[(k + 2) % 3]);
+            fill[v] += 1;
+        }
+    }
+    let mut used = 0usize;
+    let mut ends: Vec<(u32, u32)> = Vec::new();
+    for v in 0..n {
+        let link = &link_edges[start[v]..start[v + 1]];
+        if link.is_empty() {
+            continue;
+        }
+        used += 1;
+        ends.clear();
+        for (e, &(a, b)) in link.iter().enumerate() {
+            ends.push((a, e as u32));
+            ends.push((b, e as u32));
+        }
+        ends.sort_unstable();
+        let mut odd = Vec::new();
+        let mut k = 0;
+        while k < ends.len() {
+            let mut m = k;
+            while m < ends.len() && ends[m].0 == ends[k].0 {
+                m += 1;
+            }
+            match m - k {
+                1 => odd.push(ends[k].0),
+                2 => {}
+                d => {
+                    return Err(format!(
+                        "vertex {v}: link vertex {} has degree {d}",
+                        ends[k].0
+                    ))
+                }
+            }
+            k = m;
+        }
+        if !odd.is_empty() && odd.len() != 2 {
+            return Err(format!("vertex {v}: its link has {} path ends", odd.len()));
+        }
+        // Walk the link from a path end (or anywhere on a cycle); it must use every edge.
+        let other_edge = |w: u32, e: u32| -> Option<u32> {
+            let p = ends.partition_point(|&(x, _)| x < w);
+            ends[p..]
+                .iter()
+                .take_while(|&&(x, _)| x == w)
+                .map(|&(_, f)| f)
+                .find(|&f| f != e)
+        };
+        let first = odd.first().copied().unwrap_or(link[0].0);
+        let first_edge = ends[ends.partition_point(|&(x, _)| x < first)].1;
+        let (mut w, mut e, mut walked) = (first, first_edge, 1usize);
+        loop {
+            let (a, b) = link[e as usize];
+            w = if a == w { b } else { a };
+            match other_edge(w, e) {
+                Some(next) if w != first => {
+                    e = next;
+                    walked += 1;
+                }
+                _ => break,
+            }
+        }
+        if walked != link.len() {
+            return Err(format!(
+                "vertex {v}: its faces form more than one fan ({walked} of {} faces reached)",
+                link.len()
+            ));
+        }
+    }
+    // Components through interior edges, with orientation bits.
+    let mut comp = vec![u32::MAX; faces.len()];
+    let mut flip = vec![false; faces.len()];
+    let mut orientable = Vec::new();
+    let mut stack = Vec::new();
+    for s in 0..faces.len() {
+        if comp[s] != u32::MAX {
+            continue;
+        }
+        let c = orientable.len() as u32;
+        orientable.push(true);
+        comp[s] = c;
+        stack.push(s as u32);
+        while let Some(f) = stack.pop() {
+            for &(g, differ) in &adj[f as usize] {
+                let want = flip[f as usize] ^ differ;
+                if comp[g as usize] == u32::MAX {
+                    comp[g as usize] = c;
+                    flip[g as usize] = want;
+                    stack.push(g);
+                } else if flip[g as usize] != want {
+                    orientable[c as usize] = false;
+                }
+            }
+        }
+    }
+    let count = orientable.len();
+    let mut euler = vec![0i64; count];
+    let mut vcomp = vec![u32::MAX; n];
+    for (f, vs) in faces.iter().enumerate() {
+        euler[comp[f] as usize] += 1;
+        for &v in vs {
+            let slot = &mut vcomp[v as usize];
+            if *slot == u32::MAX {
+                *slot = comp[f];
+                euler[comp[f] as usize] += 1;
+            } else if *slot != comp[f] {
+                // Impossible when every link is one fan; kept as a check of the checker.
+                return Err(format!("vertex {v} is in two components"));
+            }
+        }
+    }
+    for &f in &edge_face {
+        euler[comp[f as usize] as usize] -= 1;
+    }
+    // Boundary loops: every boundary vertex has exactly two boundary edges (its link is
+    // a path), so the boundary edges form disjoint cycles; count them per component.
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    let mut on_boundary = vec![0u8; n];
+    for &(a, b) in &boundary {
+        uf_union(&mut parent, a, b);
+        on_boundary[a as usize] += 1;
+        on_boundary[b as usize] += 1;
+    }
+    let mut loops = vec![0usize; count];
+    for v in 0..n as u32 {
+        match on_boundary[v as usize] {
+            0 => {}
+            2 => {
+                if uf_find(&mut parent, v) == v {
+                    loops[vcomp[v as usize] as usize] += 1;
+                }
+            }
+            k => return Err(format!("vertex {v} is on {k} boundary edges")),
+        }
+    }
+    let mut components: Vec<ComponentType> = (0..count)
+        .map(|c| ComponentType {
+            euler: euler[c],
+            orientable: orientable[c],
+            boundary_loops: loops[c],
+        })
+        .collect();
+    components.sort_unstable();
+    Ok(Topology {
+        components,
+        vertices: used,
+        edges: edge_face.len(),
+        boundary_edges: boundary.len(),
+        faces: faces.len(),
+    })
+}
+
+/// The distinct edges of `faces` and the squared length of each.
+fn edge_lengths2(faces: &[[u32; 3]], positions: &[[f64; 3]]) -> Vec<f64> {
+    let mut edges: Vec<(u32, u32)> = faces
+        .iter()
+        .flat_map(|f| (0..3).map(move |k| (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]))))
+        .collect();
+    edges.sort_unstable();
+    edges.dedup();
+    edges
+        .iter()
+        .map(|&(a, b)| {
+            let (p, q) = (positions[a as usize], positions[b as usize]);
+            let d = [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
+            d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+        })
+        .collect()
+}
+
+/// The number of distinct edges of `faces` strictly shorter than `eps`.
+pub fn short_edge_count(faces: &[[u32; 3]], positions: &[[f64; 3]], eps: f64) -> usize {
+    edge_lengths2(faces, positions)
+        .into_iter()
+        .filter(|&l2| l2 < eps * eps)
+        .count()
+}
+
+/// Simplifies `mesh` with `opts` and checks the result by code independent of the
+/// simplifier: [`surface_topology`] of the output equals that of the input (the sorted
+/// per-component (χ, orientable, loops), hence also the component count); the positions
+/// are finite, one per vertex, every vertex used; the statistics agree with the meshes
+/// (vertex, face, component and loop counts; one vertex fewer per contraction and per
+/// vertex removed inside a disc; two faces fewer per contraction and per removed
+/// vertex, one less per boundary edge lost; the shortest output edge); every output edge
+/// shorter than ε is counted once in `stats.remaining` (recounted here from the output),
+/// none of them as `frozen`; the naive mode removes no disc and never skips for
+/// `non_disc`; with the guard off nothing is skipped for fold-over. Panics with `label`.
+pub fn check_simplify(
+    mesh: &contractible::TriMesh,
+    opts: &contractible::simplify::Options,
+    label: &str,
+) -> contractible::simplify::Simplified {
+    let before = surface_topology(&mesh.faces).unwrap_or_else(|e| panic!("{label}: input: {e}"));
+    check_simplify_with(mesh, &before, opts, label)
+}
+
+/// [`check_simplify`] with the input's topology already computed (`before` must be
+/// [`surface_topology`] of `mesh.faces`; it depends only on the faces, so a perturbed
+/// copy of a mesh shares it).
+pub fn check_simplify_with(
+    mesh: &contractible::TriMesh,
+    before: &Topology,
+    opts: &contractible::simplify::Options,
+    label: &str,
+) -> contractible::simplify::Simplified {
+    use contractible::simplify::{simplify, Mode};
+    assert_eq!(
+        before.faces,
+        mesh.faces.len(),
+        "{label}: `before` is another mesh's"
+    );
+    let out = simplify(mesh, opts).unwrap_or_else(|e| panic!("{label}: simplify: {e}"));
+    let s = &out.stats;
+    let m = &out.mesh;
+    let after = surface_topology(&m.faces)
+        .unwrap_or_else(|e| panic!("{label}: the output is not a surface: {e}"));
+    assert_eq!(
+        after.components, before.components,
+        "{label}: the surface changed (per component: χ, orientable, boundary loops)"
+    );
+    let positions = m
+        .positions
+        .as_deref()
+        .unwrap_or_else(|| panic!("{label}: output without positions"));
+    assert_eq!(
+        positions.len(),
+        m.vertex_count,
+        "{label}: one position per vertex"
+    );
+    assert!(
+        positions.iter().flatten().all(|x| x.is_finite()),
+        "{label}: a non-finite output coordinate"
+    );
+    assert_eq!(
+        after.vertices, m.vertex_count,
+        "{label}: an unused output vertex"
+    );
+    // Statistics against the meshes.
+    assert_eq!(s.faces_before, mesh.faces.len(), "{label}: faces_before");
+    assert_eq!(
+        s.vertices_before, before.vertices,
+        "{label}: vertices_before"
+    );
+    assert_eq!(s.faces_after, m.faces.len(), "{label}: faces_after");
+    assert_eq!(s.vertices_after, m.vertex_count, "{label}: vertices_after");
+    assert_eq!(s.components, before.components.len(), "{label}: components");
+    assert_eq!(s.boundary_loops, before.loops(), "{label}: boundary_loops");
+    assert_eq!(
+        s.vertices_before - s.vertices_after,
+        s.edges_contracted + s.vertices_removed_inside,
+        "{label}: one vertex per contraction and per vertex removed inside a disc"
+    );
+    // An interior edge's contraction removes two faces, a boundary edge's one (and the
+    // loop loses that edge); a disc of 2I + 1 faces becomes one face.
+    let lost_boundary = before.boundary_edges - after.boundary_edges;
+    assert_eq!(
+        s.faces_before - s.faces_after,
+        2 * s.edges_contracted - lost_boundary + 2 * s.vertices_removed_inside,
+        "{label}: faces removed"
+    );
+    assert!(
+        s.vertices_removed_inside >= s.discs_removed,
+        "{label}: a removed disc has an interior vertex"
+    );
+    if !m.faces.is_empty() {
+        assert!(s.passes >= 1, "{label}: no pass");
+    }
+    let lengths = edge_lengths2(&m.faces, positions);
+    let shortest = lengths.iter().copied().fold(f64::INFINITY, f64::min);
+    match s.shortest_remaining_edge {
+        None => assert!(lengths.is_empty(), "{label}: shortest edge missing"),
+        Some(l) => assert!(
+            (l - shortest.sqrt()).abs() <= 1e-12 * l.max(1e-300),
+            "{label}: shortest_remaining_edge {l} but the output's is {}",
+            shortest.sqrt()
+        ),
+    }
+    // Every short edge accounted for, recounted from the output.
+    let short = lengths
+        .iter()
+        .filter(|&&l2| l2 < opts.eps * opts.eps)
+        .count();
+    assert_eq!(
+        short, s.short_edges_remaining,
+        "{label}: the output has {short} edges shorter than ε, stats say {}",
+        s.short_edges_remaining
+    );
+    assert_eq!(s.remaining.total(), short, "{label}: remaining by reason");
+    assert_eq!(
+        s.remaining.frozen, 0,
+        "{label}: a short edge left as frozen"
+    );
+    if opts.mode == Mode::Naive {
+        assert_eq!(s.discs_removed, 0, "{label}: naive removed a disc");
+        assert_eq!(
+            s.vertices_removed_inside, 0,
+            "{label}: naive removed vertices"
+        );
+        assert_eq!(
+            s.skipped.non_disc + s.remaining.non_disc,
+            0,
+            "{label}: naive non_disc"
+        );
+    }
+    if !opts.guard {
+        assert_eq!(
+            s.skipped.foldover + s.remaining.foldover,
+            0,
+            "{label}: guard off"
+        );
+    }
+    out
+}
+
+/// [`check_simplify_with`] in both modes with the other options of `opts`; also checks that
+/// the nested mode contracts at least as many edges as the naive one (it runs the naive
+/// passes to their fixed point first). Returns (naive, nested).
+pub fn check_simplify_modes(
+    mesh: &contractible::TriMesh,
+    before: &Topology,
+    opts: &contractible::simplify::Options,
+    label: &str,
+) -> (
+    contractible::simplify::Simplified,
+    contractible::simplify::Simplified,
+) {
+    use contractible::simplify::{Mode, Options as SOptions};
+    let naive = check_simplify_with(
+        mesh,
+        before,
+        &SOptions {
+            mode: Mode::Naive,
+            ..*opts
+        },
+        &format!("{label} naive"),
+    );
+    let nested = check_simplify_with(
+        mesh,
+        before,
+        &SOptions {
+            mode: Mode::Nested,
+            ..*opts
+        },
+        &format!("{label} nested"),
+    );
+    assert!(
+        nested.stats.edges_contracted >= naive.stats.edges_contracted,
+        "{label}: nested contracted {} edges, naive {}",
+        nested.stats.edges_contracted,
+        naive.stats.edges_contracted
+    );
+    (naive, nested)
+}
+
+/// At most this many operations of a [`SimplifyInput`]'s surface are applied (the
+/// simplifier runs twice per input and the checker is O(F log F): keep inputs small).
+pub const SIMPLIFY_OPS: usize = 400;
+/// At most this many faces are removed to make boundary.
+pub const SIMPLIFY_HOLES: usize = 8;
+
+/// The input of `simplify`: a random closed surface (as `surface_ops` grows it, at most
+/// [`SIMPLIFY_OPS`] operations), random positions, faces removed to open it, a random ε
+/// and random options.
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct SimplifyInput {
+    /// The surface (its `seed` is unused).
+    pub base: SurfaceInput,
+    /// Seed of the positions ([`Rng`]).
+    pub positions: u64,
+    /// Rounds of neighbour averaging applied to the random positions (`% 4`): 0 leaves
+    /// them scattered in the unit cube, more rounds make a crumpled surface with many
+    /// short edges.
+    pub smoothing: u8,
+    /// ε as a fraction of the bounding-box diagonal: `(eps / 65535)² · 0.6`.
+    pub eps: u16,
+    /// Faces to remove (ids mod F, in order); a face sharing a vertex with one already
+    /// removed is kept, so the result stays a surface with boundary.
+    pub holes: Vec<u16>,
+    /// Options of [`contractible::simplify::Options`]: `side % 3` (count, path,
+    /// Euclidean), the quadric position, the guard.
+    pub side: u8,
+    /// Quadric positions instead of midpoints.
+    pub quadric: bool,
+    /// The geometry guard.
+    pub guard: bool,
+}
+
+/// The mesh and ε a [`SimplifyInput`] describes.
+pub fn simplify_mesh(input: &SimplifyInput) -> (contractible::TriMesh, f64) {
+    let base = SurfaceInput {
+        ops: input.base.ops.iter().take(SIMPLIFY_OPS).copied().collect(),
+        ..input.base.clone()
+    };
+    let tri = build_surface(&base);
+    let n = tri.vertex_capacity();
+    let mut rng = Rng::new(input.positions);
+    let unit = |rng: &mut Rng| (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+    let mut pos: Vec<[f64; 3]> = (0..n)
+        .map(|_| [unit(&mut rng), unit(&mut rng), unit(&mut rng)])
+        .collect();
+    for _ in 0..input.smoothing % 4 {
+        let old = pos.clone();
+        for v in tri.vertices() {
+            // Halfway to the neighbours' mean (a full step would collapse K7 to a
+            // point).
+            let mut sum = [0.0; 3];
+            let mut k = 0.0;
+            for w in tri.link(v) {
+                for (s, x) in sum.iter_mut().zip(old[w.index()]) {
+                    *s += x;
+                }
+                k += 1.0;
+            }
+            let o = old[v.index()];
+            pos[v.index()] = [0, 1, 2].map(|i| 0.5 * o[i] + 0.5 * sum[i] / k);
+        }
+    }
+    let mut faces = tri.face_list();
+    let mut holed = vec![false; n];
+    for &h in input.holes.iter().take(SIMPLIFY_HOLES) {
+        if faces.len() <= 1 {
+            break;
+        }
+        let i = usize::from(h) % faces.len();
+        if faces[i].iter().any(|&v| holed[v as usize]) {
+            continue;
+        }
+        for &v in &faces[i] {
+            holed[v as usize] = true;
+        }
+        faces.swap_remove(i);
+    }
+    let diag = contractible::simplify::bbox_diagonal(pos.iter().copied());
+    let r = f64::from(input.eps) / 65535.0;
+    let eps = (r * r * 0.6 * diag).max(1e-9);
+    (contractible::TriMesh::with_positions(pos, faces), eps)
+}
+
+/// `simplify`: the mesh of `input` simplified in both modes with its options, each run
+/// checked by [`check_simplify`] (independent topology and accounting), nested ≥ naive
+/// contractions.
+pub fn check_simplify_input(input: &SimplifyInput) {
+    use contractible::simplify::{Options as SOptions, Position, Side};
+    let (mesh, eps) = simplify_mesh(input);
+    let opts = SOptions {
+        side: [Side::Count, Side::Path, Side::Euclidean][usize::from(input.side % 3)],
+        position: if input.quadric {
+            Position::Quadric
+        } else {
+            Position::Midpoint
+        },
+        guard: input.guard,
+        ..SOptions::new(eps)
+    };
+    let before = surface_topology(&mesh.faces).expect("a random surface with holes");
+    check_simplify_modes(&mesh, &before, &opts, "simplify input");
+}

@@ -21,4 +21,5 @@ mod quad_qbench;
 mod quad_qfuzz;
 mod rs_algorithm;
 mod rs_variants;
+mod simplify;
 mod vectors;
