@@ -83,6 +83,15 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
         }
     });
     assert!(n >= 5, "quad_ops corpus missing");
+    let decoded = std::cell::Cell::new(0);
+    let n = replay("simplify", |b| {
+        if let Some(i) = harness::decode::<harness::SimplifyInput>(b) {
+            harness::check_simplify_input(&i);
+            decoded.set(decoded.get() + 1);
+        }
+    });
+    assert!(n >= 4, "simplify corpus missing");
+    assert!(decoded.get() >= 4, "simplify corpus does not decode");
 }
 
 #[test]
