@@ -9,7 +9,9 @@
 //! (inputs: a paper family member `B0`…`C7`; `mesh:NAME` for the biggest component of
 //! `../shared/meshes/closed/NAME.off.gz`; `rand:oG:F` / `rand:nH:F` for a random
 //! orientable genus-G / non-orientable genus-H surface with at least F faces, seed 1).
-//! Optional `--algo lrs|ps|sg|matching` (repeatable) restricts the algorithms.
+//! Optional `--algo lrs|ps|sg|matching` (repeatable) restricts the algorithms;
+//! `--seed N` sets the seed of SG and PS (default 1, as the benches; the CLI's default
+//! is 0).
 
 use std::time::Instant;
 
@@ -18,14 +20,16 @@ use contractible::quad::{augment, greedy, lrs, matching, pulli_segal};
 use contractible::quad::{Algorithm, Options, Pairing};
 use contractible::{Surfaces, Triangulation};
 
-const OPTIONS: Options = Options { seed: 1 };
-
 fn main() {
     let mut names = Vec::new();
     let mut algos = Vec::new();
+    let mut options = Options { seed: 1 };
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
-        if a == "--algo" {
+        if a == "--seed" {
+            let v = args.next().expect("--seed needs a value");
+            options.seed = v.parse().expect("--seed takes an integer");
+        } else if a == "--algo" {
             let v = args.next().expect("--algo needs a value");
             algos.push(match v.as_str() {
                 "lrs" => Algorithm::Lrs,
@@ -52,7 +56,7 @@ fn main() {
         for &alg in &algos {
             let input = t.clone();
             let (w0, c0) = (Instant::now(), cpu());
-            let (k, mut p) = initial_step(input, alg);
+            let (k, mut p) = initial_step(input, alg, &options);
             let (wa, ca) = (w0.elapsed().as_secs_f64(), cpu() - c0);
             let fp_initial = fingerprint_pairing(&p);
             let unpaired = k.face_count() - 2 * p.len();
@@ -72,18 +76,18 @@ fn main() {
     }
 }
 
-fn initial_step(t: Triangulation, alg: Algorithm) -> (Triangulation, Pairing) {
+fn initial_step(t: Triangulation, alg: Algorithm, options: &Options) -> (Triangulation, Pairing) {
     match alg {
         Algorithm::Lrs => {
             let e = lrs::initial_pairing(t);
             (e.tri, e.pairing)
         }
         Algorithm::Ps => {
-            let p = pulli_segal::initial_pairing(&t, &OPTIONS);
+            let p = pulli_segal::initial_pairing(&t, options);
             (t, p)
         }
         Algorithm::Sg => {
-            let p = greedy::initial_pairing(&t, &OPTIONS);
+            let p = greedy::initial_pairing(&t, options);
             (t, p)
         }
         Algorithm::Matching => {

@@ -21,7 +21,9 @@
 //! 2. **Phases**, until no face is unpaired. The roots of a phase are the unpaired faces
 //!    in increasing id. Every root is an even vertex of its own tree and enters a FIFO
 //!    queue in that order (a multi-source BFS, so trees grow level by level). An even
-//!    vertex `u` taken from the queue examines its neighbours `v` in slot order:
+//!    vertex `u` taken from the queue examines its neighbours `v` other than its mate in
+//!    slot order (the mate of an even vertex is its odd parent or lies in its blossom,
+//!    so examining it would do nothing):
 //!    - `v` unreached (then `v` is paired: all unpaired faces are roots): `v` becomes odd
 //!      and its mate `w` even in `u`'s tree, `w` is queued;
 //!    - `v` even in a *different* live tree: the alternating path root(u) … u v … root(v)
@@ -39,7 +41,8 @@
 //!    - otherwise (odd, frozen, or same blossom) nothing.
 //!
 //!    At the end of a phase only the vertices it labelled are reset, and the frozen flags
-//!    are per root of the phase, so no phase costs O(F) beyond its own search.
+//!    are per root of the phase, so no phase costs O(F) beyond its own search; the
+//!    search records start zeroed (unreached) without an O(F) pass (below).
 //!
 //! # Determinism
 //! The output is a function of the triangulation (its face ids and slot order) and the
@@ -47,20 +50,23 @@
 //! stated above. A port that follows the rules above reproduces the pairs exactly.
 //!
 //! # Complexity
-//! Memory: one 32-byte record per face slot (`face_capacity`: the three neighbours, the
-//! mate and the search state of a face in one aligned record, so that a visit costs one
-//! cache miss), plus the list of live faces, the queue and the list of re-paired faces:
-//! about 40–50 bytes per face, about 200 MB at 4.2M triangles. Face ids must stay below 2^30 (the BFS depth shares a word
-//! with the label). The mates are copied in and written back, O(F) each. Time: the
-//! linear pass is O(F). Each phase scans every vertex at most once as an even vertex (3
-//! edge visits) plus blossom work that is linear up to the inverse Ackermann factor, so a
-//! phase is O(F·α(F)); every phase augments at least once (if it found no path the
+//! Memory: one 16-byte search record per face slot (`face_capacity`; link, blossom
+//! base, depth and label, tree), allocated zeroed, which the system maps lazily, so a
+//! completion that touches few faces pays for few pages; plus the list of unpaired
+//! faces and the queue. The dual graph is read from the triangulation
+//! ([`Triangulation::face_neighbours`]) and the mates are changed in the pairing itself:
+//! nothing is copied. Face ids must stay below 2^30 (the BFS depth shares a word with
+//! the label). Time: one read-only O(F) pass checks the input pairing and lists the
+//! unpaired faces; the linear pass is linear in those. Each phase scans every vertex at
+//! most once as an even vertex (2 edge visits: its mate is skipped) plus blossom work
+//! that is linear up to the inverse Ackermann factor, so a phase is O(F·α(F)); every phase augments at least once (if it found no path the
 //! matching would be maximum, contradicting Petersen), so the worst case is
 //! O(K·F·α(F)) for K unpaired input faces (O(F²·α(F)) from empty). In practice the
 //! phases grow all trees at once and close almost all pairs in the first one or two,
 //! so the work is a few edge visits per triangle in total, i.e. near-linear.
 //! [`Completion::edge_visits`] counts it exactly (one per adjacency slot examined,
-//! linear pass included). Measured (test `c0_greedy_leftovers…` in
+//! linear pass included; the figures below predate the skipping of the mate, which
+//! removes a third of the phases' visits). Measured (test `c0_greedy_leftovers…` in
 //! `tests/algorithms/quad_augment.rs`, release build, shared 2-core machine):
 //!
 //! | input | unpaired | linear pass | roots per phase | visits / triangle | CPU |
@@ -70,8 +76,8 @@
 //! | the 99 shared closed meshes, greedy starts | | | | 4.44 | |
 //!
 //! C0 needs about 0.22 blossoms per triangle. One visit costs about 60 ns there, against 7 ns for a plain single-source BFS
-//! sweep of the same dual (0.09 s): the search records (32 MB per million faces) do not
-//! fit in cache, and the multi-source queue interleaves all trees, so most visits miss.
+//! sweep of the same dual (0.09 s): the dual, the mates and the search records (32 MB
+//! per million faces) do not fit in cache, and the multi-source queue interleaves all trees, so most visits miss.
 //!
 //! # Where the sources are silent
 //! The paper (Lemos–Ramaswami–Siqueira §3.1) runs one BFS augmenting-path search per pair
@@ -88,7 +94,8 @@ pub struct Completion {
     pub augmenting_paths: usize,
     /// Phases of the multi-source search (the linear pass is not counted).
     pub phases: usize,
-    /// Adjacency slots examined, linear pass included.
+    /// Adjacency slots examined, linear pass included (a phase does not examine an even
+    /// vertex's mate).
     pub edge_visits: u64,
 }
 
@@ -98,7 +105,7 @@ pub struct Completion {
 ///
 /// # Panics
 /// If `pairing` is not a pairing of `tri` (what [`Pairing::check`] verifies; checked
-/// while the search records are built, in O(F)): completing it would otherwise read
+/// first, by one read-only pass in O(F)): completing it would otherwise read
 /// faces that are not there. If `tri.face_capacity() >= 2^30`.
 pub fn complete(tri: &Triangulation, pairing: &mut Pairing) -> Completion {
     run(tri, pairing).0
@@ -106,15 +113,18 @@ pub fn complete(tri: &Triangulation, pairing: &mut Pairing) -> Completion {
 
 /// [`complete`], also returning the number of blossoms shrunk (for tests).
 pub(crate) fn run(tri: &Triangulation, pairing: &mut Pairing) -> (Completion, u64) {
-    let mut search = match Search::new(tri, pairing) {
-        Ok(s) => s,
+    let roots = match check_and_roots(tri, pairing) {
+        Ok(r) => r,
         Err(e) => panic!("augment::complete: {e}"),
     };
-    search.linear_pass();
-    let mut roots: Vec<u32> = search.unpaired();
+    if roots.is_empty() {
+        return (Completion::default(), 0);
+    }
+    let mut search = Search::new(tri, &mut pairing.mate);
+    let mut roots = search.linear_pass(roots);
     while !roots.is_empty() {
         let paths = search.phase(&roots);
-        roots.retain(|&r| search.node[r as usize].mate == NONE);
+        roots.retain(|&r| search.mate[r as usize] == NONE);
         if paths == 0 {
             // A maximum matching that is not perfect: impossible on a closed
             // triangulation (Petersen), so only a broken input could get here; stop
@@ -123,56 +133,82 @@ pub(crate) fn run(tri: &Triangulation, pairing: &mut Pairing) -> (Completion, u6
             break;
         }
     }
-    search.write_back(pairing);
+    let (counters, blossoms) = (search.counters, search.blossoms);
+    pairing.pairs += counters.augmenting_paths;
     debug_assert!(pairing.check(tri).is_ok());
-    (search.counters, search.blossoms)
+    (counters, blossoms)
+}
+
+/// Checks that `pairing` is a pairing of `tri` (what [`Pairing::check`] checks, reading
+/// each live face's neighbours once) and returns the live unpaired faces in increasing
+/// id. O(F), reads only.
+fn check_and_roots(tri: &Triangulation, pairing: &Pairing) -> Result<Vec<u32>, String> {
+    let n = tri.face_capacity();
+    if pairing.face_capacity() < n {
+        return Err(format!(
+            "not a pairing of the triangulation: it holds {} faces, the triangulation {n}",
+            pairing.face_capacity()
+        ));
+    }
+    if n >= 1 << 30 {
+        // The depth shares a word with the label (module documentation, memory).
+        return Err(format!("{n} face ids exceed the 2^30 the search supports"));
+    }
+    let mut roots = Vec::new();
+    let mut paired = 0usize;
+    for f in tri.faces() {
+        let m = pairing.mate[f.index()];
+        if m == NONE {
+            roots.push(f.0);
+            continue;
+        }
+        if !tri.face_neighbours(f).contains(&FaceId(m)) {
+            return Err(format!(
+                "not a pairing of the triangulation: {f} and {} share no edge",
+                FaceId(m)
+            ));
+        }
+        paired += 1;
+    }
+    // Live faces pair only with live neighbours (above) and mates are symmetric
+    // (Pairing's invariant), so this catches pairs holding removed faces.
+    if paired != 2 * pairing.len() {
+        return Err(format!(
+            "not a pairing of the triangulation: {} pairs recorded, {paired} live faces paired",
+            pairing.len()
+        ));
+    }
+    Ok(roots)
 }
 
 /// No vertex / no link / no mate.
 const NONE: u32 = u32::MAX;
-/// Labels of the alternating forest (the low two bits of [`Node::dl`]).
+/// Labels of the alternating forest (the low two bits of the `DL` word).
 const UNREACHED: u32 = 0;
 const EVEN: u32 = 1;
 const ODD: u32 = 2;
 const LABEL: u32 = 3;
 
-/// Everything the search reads or writes about one dual vertex (face), in one 32-byte
-/// cache-line-aligned record, so that a visit costs one cache miss rather than one per
-/// array (the dual of a 4M-triangle mesh does not fit in cache):
-/// - `adj`: the three neighbouring faces (a copy of `face_neighbours`), `mate`: the
-///   current mate or `NONE` (the search works on this copy, written back at the end);
-/// - `link`: the flower link (the even parent of an odd vertex, or the cross edge
-///   recorded when a blossom is shrunk); `base`: the union–find parent over blossom
-///   bases; `dl`: BFS depth × 4 + label (the depth is set for odd vertices too: a vertex
-///   turned even by a blossom passes it on); `tree`: the index of its root in the phase's
-///   root list. Those four are meaningful only while the label is not `UNREACHED`, and
-///   all are written when the vertex is labelled.
-#[derive(Clone, Copy)]
-#[repr(C, align(32))]
-struct Node {
-    adj: [u32; 3],
-    mate: u32,
-    link: u32,
-    base: u32,
-    dl: u32,
-    tree: u32,
-}
+/// The words of a search record ([`Search::st`]): `LINK`, the flower link (the even
+/// parent of an odd vertex, or the cross edge recorded when a blossom is shrunk);
+/// `BASE`, the union–find parent over blossom bases; `DL`, BFS depth × 4 + label (the
+/// depth is set for odd vertices too: a vertex turned even by a blossom passes it on);
+/// `TREE`, the index of its root in the phase's root list. A record of zeros is an
+/// unreached vertex; the other words are meaningful only while the label is not
+/// `UNREACHED`, and all are written when the vertex is labelled.
+const LINK: usize = 0;
+const BASE: usize = 1;
+const DL: usize = 2;
+const TREE: usize = 3;
 
-impl Node {
-    #[inline]
-    fn label(&self) -> u32 {
-        self.dl & LABEL
-    }
-    #[inline]
-    fn dep(&self) -> u32 {
-        self.dl >> 2
-    }
-}
-
-struct Search {
-    node: Vec<Node>,
-    /// Live faces in increasing id.
-    live: Vec<u32>,
+struct Search<'a> {
+    tri: &'a Triangulation,
+    /// The pairing's own mate array, changed in place (`NONE` = unpaired).
+    mate: &'a mut [u32],
+    /// One 16-byte search record per face id, all zero (unreached) between phases: made
+    /// by a zeroed allocation, which the system maps lazily, so only the pages a search
+    /// touches cost anything.
+    st: Vec<[u32; 4]>,
     /// `frozen[tree]`: that tree augmented in this phase (indexed by root position).
     frozen: Vec<bool>,
     /// BFS queue of even vertices (reused across phases; also the list of the even
@@ -180,131 +216,58 @@ struct Search {
     queue: Vec<u32>,
     /// Odd vertices labelled in this phase (to reset).
     odd: Vec<u32>,
-    /// Faces whose mate was set by the search (with repetitions): the only ones the
-    /// write-back has to look at.
-    changed: Vec<u32>,
     counters: Completion,
     blossoms: u64,
 }
 
-impl Search {
-    /// Copies the dual graph and the mates into the search records, checking on the way
-    /// that `pairing` is a pairing of `tri` (what [`Pairing::check`] checks, at no extra
-    /// pass).
-    fn new(tri: &Triangulation, pairing: &Pairing) -> Result<Self, String> {
-        let n = tri.face_capacity();
-        if pairing.face_capacity() < n {
-            return Err(format!(
-                "not a pairing of the triangulation: it holds {} faces, the triangulation {n}",
-                pairing.face_capacity()
-            ));
-        }
-        if n >= 1 << 30 {
-            // The depth shares a word with the label (module documentation, memory).
-            return Err(format!("{n} face ids exceed the 2^30 the search supports"));
-        }
-        let blank = Node {
-            adj: [NONE; 3],
-            mate: NONE,
-            link: NONE,
-            base: NONE,
-            dl: UNREACHED,
-            tree: NONE,
-        };
-        // One pass writes every record once (a blank for dead ids), in increasing id,
-        // so the first violation reported is the same as a scan of `tri.faces()`.
-        let mut node = Vec::with_capacity(n);
-        let mut live = Vec::with_capacity(tri.face_count());
-        let mut paired = 0usize;
-        for f in (0..n as u32).map(FaceId) {
-            if !tri.is_face(f) {
-                node.push(blank);
-                continue;
-            }
-            let adj = tri.face_neighbours(f).map(|g| g.0);
-            let mate = match pairing.mate(f) {
-                Some(g) => {
-                    if !adj.contains(&g.0) {
-                        return Err(format!(
-                            "not a pairing of the triangulation: {f} and {g} share no edge"
-                        ));
-                    }
-                    paired += 1;
-                    g.0
-                }
-                None => NONE,
-            };
-            node.push(Node { adj, mate, ..blank });
-            live.push(f.0);
-        }
-        // Live faces pair only with live neighbours (above) and mates are symmetric
-        // (Pairing's invariant), so this catches pairs holding removed faces.
-        if paired != 2 * pairing.len() {
-            return Err(format!(
-                "not a pairing of the triangulation: {} pairs recorded, {paired} live faces paired",
-                pairing.len()
-            ));
-        }
-        Ok(Search {
-            node,
-            live,
+impl<'a> Search<'a> {
+    fn new(tri: &'a Triangulation, mate: &'a mut [u32]) -> Self {
+        Search {
+            st: vec![[0u32; 4]; tri.face_capacity()],
+            tri,
+            mate,
             frozen: Vec::new(),
             queue: Vec::new(),
             odd: Vec::new(),
-            changed: Vec::new(),
             counters: Completion::default(),
             blossoms: 0,
-        })
-    }
-
-    /// Makes `pairing` hold the search's mates: first unpairs every changed face whose
-    /// mate differs, then pairs the new pairs (a face left unpaired by the first pass has
-    /// a new mate that was changed too, hence also unpaired). Linear in the changes.
-    fn write_back(&self, pairing: &mut Pairing) {
-        for &f in &self.changed {
-            let m = self.node[f as usize].mate;
-            if pairing.mate(FaceId(f)).map_or(NONE, |g| g.0) != m {
-                pairing.unpair(FaceId(f));
-            }
-        }
-        for &f in &self.changed {
-            let m = self.node[f as usize].mate;
-            if m != NONE && !pairing.is_paired(FaceId(f)) {
-                pairing.pair(FaceId(f), FaceId(m));
-            }
         }
     }
 
-    /// The live unpaired faces, in increasing id.
-    fn unpaired(&self) -> Vec<u32> {
-        self.live
-            .iter()
-            .copied()
-            .filter(|&f| self.node[f as usize].mate == NONE)
-            .collect()
+    #[inline]
+    fn adj(&self, f: u32) -> [u32; 3] {
+        self.tri.face_neighbours(FaceId(f)).map(|g| g.0)
+    }
+
+    #[inline]
+    fn label(&self, f: u32) -> u32 {
+        self.st[f as usize][DL] & LABEL
+    }
+
+    #[inline]
+    fn dep(&self, f: u32) -> u32 {
+        self.st[f as usize][DL] >> 2
     }
 
     #[inline]
     fn set_pair(&mut self, a: u32, b: u32) {
-        self.node[a as usize].mate = b;
-        self.node[b as usize].mate = a;
-        self.changed.push(a);
-        self.changed.push(b);
+        self.mate[a as usize] = b;
+        self.mate[b as usize] = a;
     }
 
-    /// Augmenting paths of length 1 and 3 from every unpaired face, in one scan (module
-    /// documentation, step 1).
-    fn linear_pass(&mut self) {
-        for i in 0..self.live.len() {
-            let f = self.live[i];
-            if self.node[f as usize].mate != NONE {
+    /// Augmenting paths of length 1 and 3 from every unpaired face `roots` (in
+    /// increasing id), in one scan (module documentation, step 1). Returns the faces
+    /// still unpaired, in increasing id.
+    fn linear_pass(&mut self, mut roots: Vec<u32>) -> Vec<u32> {
+        for &f in &roots {
+            if self.mate[f as usize] != NONE {
                 continue;
             }
-            let nb = self.node[f as usize].adj;
+            let nb = self.adj(f);
             let mut done = false;
             for &g in &nb {
                 self.counters.edge_visits += 1;
-                if self.node[g as usize].mate == NONE {
+                if self.mate[g as usize] == NONE {
                     self.set_pair(f, g);
                     done = true;
                     break;
@@ -312,10 +275,10 @@ impl Search {
             }
             if !done {
                 'three: for &v in &nb {
-                    let w = self.node[v as usize].mate;
-                    for x in self.node[w as usize].adj {
+                    let w = self.mate[v as usize];
+                    for x in self.adj(w) {
                         self.counters.edge_visits += 1;
-                        if x != f && self.node[x as usize].mate == NONE {
+                        if x != f && self.mate[x as usize] == NONE {
                             self.set_pair(f, v);
                             self.set_pair(w, x);
                             done = true;
@@ -328,18 +291,20 @@ impl Search {
                 self.counters.augmenting_paths += 1;
             }
         }
+        roots.retain(|&r| self.mate[r as usize] == NONE);
+        roots
     }
 
     /// Union–find root (path halving) of `x`'s blossom: its base.
     #[inline]
     fn find(&mut self, mut x: u32) -> u32 {
         loop {
-            let p = self.node[x as usize].base;
+            let p = self.st[x as usize][BASE];
             if p == x {
                 return x;
             }
-            let gp = self.node[p as usize].base;
-            self.node[x as usize].base = gp;
+            let gp = self.st[p as usize][BASE];
+            self.st[x as usize][BASE] = gp;
             x = gp;
         }
     }
@@ -347,18 +312,10 @@ impl Search {
     /// Labels `v` odd (child of `u`) and its mate `w` even; queues `w`.
     #[inline]
     fn grow(&mut self, u: u32, v: u32, w: u32) {
-        let Node { dl, tree, .. } = self.node[u as usize];
+        let [_, _, dl, tree] = self.st[u as usize];
         let dep = dl >> 2;
-        let nv = &mut self.node[v as usize];
-        nv.link = u;
-        nv.base = v;
-        nv.dl = ((dep + 1) << 2) | ODD;
-        nv.tree = tree;
-        let nw = &mut self.node[w as usize];
-        nw.link = NONE;
-        nw.base = w;
-        nw.dl = ((dep + 2) << 2) | EVEN;
-        nw.tree = tree;
+        self.st[v as usize] = [u, v, ((dep + 1) << 2) | ODD, tree];
+        self.st[w as usize] = [NONE, w, ((dep + 2) << 2) | EVEN, tree];
         self.odd.push(v);
         self.queue.push(w);
     }
@@ -373,11 +330,7 @@ impl Search {
         self.frozen.clear();
         self.frozen.resize(roots.len(), false);
         for (k, &r) in roots.iter().enumerate() {
-            let nr = &mut self.node[r as usize];
-            nr.link = NONE;
-            nr.base = r;
-            nr.dl = EVEN;
-            nr.tree = k as u32;
+            self.st[r as usize] = [NONE, r, EVEN, k as u32];
             self.queue.push(r);
         }
         let mut head = 0;
@@ -385,26 +338,33 @@ impl Search {
             let u = self.queue[head];
             head += 1;
 
-            let Node { adj, tree: tu, .. } = self.node[u as usize];
+            let tu = self.st[u as usize][TREE];
             if self.frozen[tu as usize] {
                 continue;
             }
-            for v in adj {
+            // `u`'s mate is its odd parent or in its blossom (or `u` is a root): scanning
+            // it would change nothing.
+            let mu = self.mate[u as usize];
+            for v in self.adj(u) {
+                if v == mu {
+                    continue;
+                }
                 self.counters.edge_visits += 1;
-                let nv = self.node[v as usize];
-                match nv.label() {
+                let sv = self.st[v as usize];
+                match sv[DL] & LABEL {
                     UNREACHED => {
-                        if nv.mate == NONE {
+                        let w = self.mate[v as usize];
+                        if w == NONE {
                             // Unreachable (every unpaired face is a root), but a free
                             // unreached face would just end an augmenting path.
                             self.augment(u, v);
                             paths += 1;
                             break;
                         }
-                        self.grow(u, v, nv.mate);
+                        self.grow(u, v, w);
                     }
-                    EVEN if !self.frozen[nv.tree as usize] => {
-                        if nv.tree != tu {
+                    EVEN if !self.frozen[sv[TREE] as usize] => {
+                        if sv[TREE] != tu {
                             self.augment(u, v);
                             paths += 1;
                             break;
@@ -423,11 +383,11 @@ impl Search {
         }
         for i in 0..self.queue.len() {
             let x = self.queue[i];
-            self.node[x as usize].dl = UNREACHED;
+            self.st[x as usize] = [0; 4];
         }
         for i in 0..self.odd.len() {
             let x = self.odd[i];
-            self.node[x as usize].dl = UNREACHED;
+            self.st[x as usize] = [0; 4];
         }
         paths
     }
@@ -438,15 +398,15 @@ impl Search {
     fn lca(&mut self, mut a: u32, mut b: u32) -> u32 {
         let mut steps = 0usize;
         while a != b {
-            if self.node[a as usize].dep() < self.node[b as usize].dep() {
+            if self.dep(a) < self.dep(b) {
                 std::mem::swap(&mut a, &mut b);
             }
-            let m = self.node[a as usize].mate;
+            let m = self.mate[a as usize];
             debug_assert!(m != NONE, "a root is never deeper than another base");
-            let up = self.node[m as usize].link;
+            let up = self.st[m as usize][LINK];
             a = self.find(up);
             steps += 1;
-            debug_assert!(steps <= self.node.len(), "lca does not terminate");
+            debug_assert!(steps <= self.st.len(), "lca does not terminate");
         }
         a
     }
@@ -457,29 +417,29 @@ impl Search {
     fn shrink(&mut self, mut x: u32, mut y: u32, p: u32) {
         let mut steps = 0usize;
         while self.find(x) != p {
-            self.node[x as usize].link = y;
-            y = self.node[x as usize].mate;
-            let ny = &mut self.node[y as usize];
-            if ny.label() == ODD {
-                ny.dl = (ny.dl & !LABEL) | EVEN;
+            self.st[x as usize][LINK] = y;
+            y = self.mate[x as usize];
+            if self.label(y) == ODD {
+                let sy = &mut self.st[y as usize];
+                sy[DL] = (sy[DL] & !LABEL) | EVEN;
                 self.queue.push(y);
             }
             if self.find(x) == x {
-                self.node[x as usize].base = p;
+                self.st[x as usize][BASE] = p;
             }
             if self.find(y) == y {
-                self.node[y as usize].base = p;
+                self.st[y as usize][BASE] = p;
             }
-            x = self.node[y as usize].link;
+            x = self.st[y as usize][LINK];
             steps += 1;
-            debug_assert!(steps <= self.node.len(), "shrink does not terminate");
+            debug_assert!(steps <= self.st.len(), "shrink does not terminate");
         }
     }
 
     /// Pairs the even `u` with `v` (even in another tree, or unpaired) and flips the
     /// alternating paths from both back to their roots; freezes both trees.
     fn augment(&mut self, u: u32, v: u32) {
-        let (mu, mv) = (self.node[u as usize].mate, self.node[v as usize].mate);
+        let (mu, mv) = (self.mate[u as usize], self.mate[v as usize]);
         self.set_pair(u, v);
         if mu != NONE {
             self.flip(mu);
@@ -487,10 +447,11 @@ impl Search {
         if mv != NONE {
             self.flip(mv);
         }
-        let (tu, nv) = (self.node[u as usize].tree, self.node[v as usize]);
+        let tu = self.st[u as usize][TREE];
         self.frozen[tu as usize] = true;
-        if nv.label() != UNREACHED {
-            self.frozen[nv.tree as usize] = true;
+        if self.label(v) != UNREACHED {
+            let tv = self.st[v as usize][TREE];
+            self.frozen[tv as usize] = true;
         }
         self.counters.augmenting_paths += 1;
     }
@@ -500,15 +461,15 @@ impl Search {
     fn flip(&mut self, mut x: u32) {
         let mut steps = 0usize;
         loop {
-            let y = self.node[x as usize].link;
-            let t = self.node[y as usize].mate;
+            let y = self.st[x as usize][LINK];
+            let t = self.mate[y as usize];
             self.set_pair(x, y);
             if t == NONE {
                 break;
             }
             x = t;
             steps += 1;
-            debug_assert!(steps <= self.node.len(), "flip does not terminate");
+            debug_assert!(steps <= self.st.len(), "flip does not terminate");
         }
     }
 }

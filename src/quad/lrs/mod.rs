@@ -21,8 +21,9 @@
 //! set or one cleared, one edge added to `M`); `K` is materialised with one O(1) flip per
 //! flagged edge (the flippability re-check of [`Triangulation::flip_at`] costs
 //! O(min degree)), in place of `T`. Memory on top of RS's history: per edge number two
-//! flags and a `u32` (flag time), per flag a `u32` (the flag log), per vertex two `u32`s
-//! and a flag, per face a flag.
+//! flags and a `u32` (flag time), per flag a `u32` (the flag log); when the
+//! specification runs (and in unit tests), also per vertex two `u32`s and a flag and per
+//! face a flag, which only the checks read.
 //!
 //! **Determinism.** No randomness: the output is a function of the input (face list and
 //! vertex ids), because RS is deterministic (vertices processed in id order) and every
@@ -152,6 +153,11 @@ pub fn initial_pairing_variant(tri: Triangulation, variant: Variant) -> Expansio
     ex.finish()
 }
 
+/// Whether the state only the specification reads (`remaining`, `reduced`,
+/// `reduced_face`, `expanded_from`, `group_*`) is kept: when the checks run, and in unit
+/// tests (which corrupt it to show the checks fail); otherwise those fields stay empty.
+const SPEC_STATE: bool = crate::spec::ENABLED || cfg!(test);
+
 /// No time / no group.
 const NONE: u32 = u32::MAX;
 
@@ -204,6 +210,8 @@ struct Expander {
     /// stale: unflipped, or flagged again later).
     flag_log: Vec<EdgeId>,
     m_len: usize,
+    // The next four fields and `group_*` are read by the specification only, and are
+    // kept (non-empty) only if `SPEC_STATE`.
     /// Splits still to come from each vertex (non-zero only for pending `T'` vertices).
     remaining: Vec<u32>,
     /// Whether the vertex is a vertex of `T'`.
@@ -234,15 +242,21 @@ impl Expander {
             numbers.contracted(rec);
         }
         let t = red.tri;
-        let nv = t.vertex_capacity();
-        let mut remaining = vec![0u32; nv];
-        for rec in red.history.records() {
-            remaining[rec.u.index()] += 1;
+        // The state only the specification reads is kept only when it runs.
+        let (mut remaining, mut reduced, mut reduced_face, mut expanded_from) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        if SPEC_STATE {
+            let nv = t.vertex_capacity();
+            remaining = vec![0u32; nv];
+            for rec in red.history.records() {
+                remaining[rec.u.index()] += 1;
+            }
+            reduced = (0..nv).map(|v| t.is_vertex(VertexId(v as u32))).collect();
+            reduced_face = (0..t.face_capacity())
+                .map(|f| t.is_face(FaceId(f as u32)))
+                .collect();
+            expanded_from = vec![NONE; nv];
         }
-        let reduced = (0..nv).map(|v| t.is_vertex(VertexId(v as u32))).collect();
-        let reduced_face = (0..t.face_capacity())
-            .map(|f| t.is_face(FaceId(f as u32)))
-            .collect();
         let ne = numbers.capacity();
         Expander {
             reduced_faces: t.face_count(),
@@ -257,7 +271,7 @@ impl Expander {
             remaining,
             reduced,
             reduced_face,
-            expanded_from: vec![NONE; nv],
+            expanded_from,
             current: None,
             group_flags: Vec::new(),
             group_m: Vec::new(),
@@ -272,14 +286,18 @@ impl Expander {
             self.in_m[e.index()] = true;
             self.m_len += 1;
         }
-        self.group_m.push(e);
+        if SPEC_STATE {
+            self.group_m.push(e);
+        }
     }
 
     fn flag(&mut self, e: EdgeId) {
         self.flipped[e.index()] = true;
         self.flag_time[e.index()] = self.flag_log.len() as u32;
         self.flag_log.push(e);
-        self.group_flags.push(e);
+        if SPEC_STATE {
+            self.group_flags.push(e);
+        }
         self.cases.flags_set += 1;
     }
 
@@ -303,8 +321,10 @@ impl Expander {
         }
         let rec = self.history.undo(&mut self.t)?;
         self.numbers.uncontracted(&rec);
-        self.remaining[rec.u.index()] -= 1;
-        self.expanded_from[rec.v.index()] = rec.u.0;
+        if SPEC_STATE {
+            self.remaining[rec.u.index()] -= 1;
+            self.expanded_from[rec.v.index()] = rec.u.0;
+        }
         self.cases.splits += 1;
         let m_before = self.m_len;
         let flags_before = self.cases.flags_set;
@@ -312,7 +332,7 @@ impl Expander {
         let inserted = self.expand_match(&rec);
         let mut flagged = [None; 2];
         let new_flags = self.cases.flags_set - flags_before;
-        for (k, &e) in self.group_flags[self.group_flags.len() - new_flags..]
+        for (k, &e) in self.flag_log[self.flag_log.len() - new_flags..]
             .iter()
             .enumerate()
         {
