@@ -144,6 +144,51 @@ impl Triangulation {
         plan.link
     }
 
+    /// [`Self::collapse`] for a caller that has just walked `v`'s star: `star_v[k]` and
+    /// `link_v[k]` are the corner and the neighbour of step `k` of [`Self::star`]`(v)`
+    /// (any start). Skips the walk; otherwise the same change. `scratch` is cleared and
+    /// reused. O(d_v).
+    pub(crate) fn collapse_walked(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        star_v: &[Corner],
+        link_v: &[VertexId],
+        scratch: &mut Vec<Corner>,
+    ) -> [VertexId; 2] {
+        debug_assert_eq!(star_v.len(), self.degree(v));
+        debug_assert!(
+            self.degree(u).saturating_mul(self.degree(v)) > 64 * 64
+                || self.link_condition_naive(u, v),
+            "collapse: [{u}, {v}] fails the link condition"
+        );
+        let d = star_v.len();
+        let p = link_v
+            .iter()
+            .position(|&n| n == u)
+            .expect("collapse_walked: [u, v] is not an edge");
+        let q = (p + 1) % d;
+        // As in `plan_collapse`: the step whose exit neighbour is u and the next one are
+        // the two faces of [u, v].
+        let opp1 = self.corner_facing(star_v[p], u);
+        let opp2 = self.opposite(opp1);
+        debug_assert_eq!(star_v[q].face(), opp2.face());
+        scratch.clear();
+        scratch.extend(
+            star_v
+                .iter()
+                .enumerate()
+                .filter(|&(k, _)| k != p && k != q)
+                .map(|(_, &c)| c),
+        );
+        let plan = CollapsePlan {
+            faces: [opp1.face(), opp2.face()],
+            link: [self.vertex(opp1), self.vertex(opp2)],
+        };
+        self.apply_collapse(u, v, &plan, scratch);
+        plan.link
+    }
+
     /// Replaces a closed disc bounded by the 3-cycle `[p, q, x]` with the single face
     /// `[p, q, x]` and returns the new face (it reuses the slot of `faces[0]`).
     ///
@@ -285,10 +330,20 @@ mod tests {
             }
             let mut a = t0.clone();
             let mut b = t0.clone();
+            let mut c = t0.clone();
             a.contract_tested(u, v, &mut crate::History::new());
             b.collapse(u, v, &mut Vec::new());
             assert_eq!(a, b, "[{u}, {v}]");
             b.validate().unwrap();
+            // The walk may start anywhere: start it one step in.
+            let steps: Vec<_> = t0.star(v).collect();
+            let mut star: Vec<_> = steps.iter().map(|s| s.corner).collect();
+            let mut link: Vec<_> = steps.iter().map(|s| s.neighbour).collect();
+            star.rotate_left(1);
+            link.rotate_left(1);
+            c.collapse_walked(u, v, &star, &link, &mut Vec::new());
+            c.validate().unwrap();
+            assert_eq!(c.face_list(), b.face_list(), "[{u}, {v}]");
         }
     }
 

@@ -8,6 +8,9 @@ use super::{naive, spec, Mode, Options, Position, SkipCounts};
 use crate::core::{ConedComponent, Corner, FaceId, Triangulation, VertexId};
 use crate::topology::SurfaceType;
 
+/// Degree up to which `examine` looks neighbours up in a list rather than in the marks.
+const SMALL_LINK: usize = 24;
+
 /// Why an edge is not processed now (frozen edges are counted before planning).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub(super) enum Skip {
@@ -82,6 +85,10 @@ pub(crate) struct Simplifier<'o> {
     pub(super) link: Vec<VertexId>,
     /// A corner at q, then at p, in every face around them (filled by `examine`).
     star_pq: Vec<Corner>,
+    /// The neighbours of q and of p, in the order of their corners in `star_pq`
+    /// (filled by `examine`).
+    nbr_q: Vec<VertexId>,
+    nbr_p: Vec<VertexId>,
     /// The common neighbours of the edge other than its opposite vertices, in order
     /// along the link of `p` from `a` to `b`.
     pub(super) xs: Vec<VertexId>,
@@ -127,6 +134,8 @@ impl<'o> Simplifier<'o> {
             scratch: Vec::new(),
             link: Vec::new(),
             star_pq: Vec::new(),
+            nbr_q: Vec::new(),
+            nbr_p: Vec::new(),
             xs: Vec::new(),
             grow: [Grow::default(), Grow::default()],
             interior: Vec::new(),
@@ -318,26 +327,35 @@ impl<'o> Simplifier<'o> {
         let a = self.tri.vertex(c);
         let b = self.tri.vertex(self.tri.opposite(c));
         let s = self.fresh_stamp();
-        // One walk around each endpoint: q's neighbours marked, p's checked against
-        // them; the corners kept for the guard, which then needs no walk of its own.
+        // One walk around each endpoint: q's neighbours listed (and marked, for a high
+        // degree), p's checked against them; the corners kept for the guard and the
+        // freeze, which then need no walk of their own. A short list scanned linearly
+        // beats the marks, which miss the cache.
+        let big = self.tri.degree(q) > SMALL_LINK;
         let mut loop_q = None;
         self.star_pq.clear();
+        self.nbr_q.clear();
         for st in self.tri.star(q) {
             let n = st.neighbour;
-            self.vmark[n.index()] = s;
+            if big {
+                self.vmark[n.index()] = s;
+            }
             if n.0 >= self.first_virtual {
                 loop_q = Some(n);
             }
+            self.nbr_q.push(n);
             self.star_pq.push(st.corner);
         }
         let mut loop_p = None;
         let mut extra = false;
+        self.nbr_p.clear();
         for st in self.tri.star(p) {
             let n = st.neighbour;
+            self.nbr_p.push(n);
             if n.0 >= self.first_virtual {
                 loop_p = Some(n);
             }
-            if self.vmark[n.index()] == s && n != a && n != b {
+            if n != a && n != b && n != q && self.in_link_q(n, big, s) {
                 extra = true;
             }
             self.star_pq.push(st.corner);
@@ -362,8 +380,12 @@ impl<'o> Simplifier<'o> {
             debug_assert_eq!(self.link.first(), Some(&a));
             debug_assert_eq!(self.link.last(), Some(&b));
             let inner = &self.link[1..self.link.len() - 1];
-            self.xs
-                .extend(inner.iter().copied().filter(|n| self.vmark[n.index()] == s));
+            let xs: Vec<VertexId> = inner
+                .iter()
+                .copied()
+                .filter(|&n| self.in_link_q(n, big, s))
+                .collect();
+            self.xs = xs;
         }
         Ok(EdgeInfo {
             corner: c,
@@ -373,6 +395,16 @@ impl<'o> Simplifier<'o> {
             b,
             boundary: [loop_p.is_some(), loop_q.is_some()],
         })
+    }
+
+    /// Whether `n` is a neighbour of q, for `examine` (marks when q's degree is big).
+    #[inline]
+    fn in_link_q(&self, n: VertexId, big: bool, stamp: u32) -> bool {
+        if big {
+            self.vmark[n.index()] == stamp
+        } else {
+            self.nbr_q.contains(&n)
+        }
     }
 
     /// Decides what to do with the edge opposite `c`, changing nothing but scratch.
@@ -518,7 +550,19 @@ impl<'o> Simplifier<'o> {
             self.grow[side].queue = faces;
         }
         let (keep, gone) = if e.p < e.q { (e.p, e.q) } else { (e.q, e.p) };
-        self.tri.collapse(keep, gone, &mut self.scratch);
+        if plan.discs.iter().all(Option::is_none) {
+            // The stars `examine` walked are still current: no walk needed.
+            let dq = self.nbr_q.len();
+            let (star, link) = if gone == e.q {
+                (&self.star_pq[..dq], &self.nbr_q[..])
+            } else {
+                (&self.star_pq[dq..], &self.nbr_p[..])
+            };
+            self.tri
+                .collapse_walked(keep, gone, star, link, &mut self.scratch);
+        } else {
+            self.tri.collapse(keep, gone, &mut self.scratch);
+        }
         self.pos[keep.index()] = plan.position;
         if !self.quadric.is_empty() {
             let g = self.quadric[gone.index()];
