@@ -1435,23 +1435,7 @@ pub fn simplify_mesh(input: &SimplifyInput) -> (contractible::TriMesh, f64) {
     let mut pos: Vec<[f64; 3]> = (0..n)
         .map(|_| [unit(&mut rng), unit(&mut rng), unit(&mut rng)])
         .collect();
-    for _ in 0..input.smoothing % 4 {
-        let old = pos.clone();
-        for v in tri.vertices() {
-            // Halfway to the neighbours' mean (a full step would collapse K7 to a
-            // point).
-            let mut sum = [0.0; 3];
-            let mut k = 0.0;
-            for w in tri.link(v) {
-                for (s, x) in sum.iter_mut().zip(old[w.index()]) {
-                    *s += x;
-                }
-                k += 1.0;
-            }
-            let o = old[v.index()];
-            pos[v.index()] = [0, 1, 2].map(|i| 0.5 * o[i] + 0.5 * sum[i] / k);
-        }
-    }
+    smooth_positions(&tri, &mut pos, usize::from(input.smoothing % 4));
     let mut faces = tri.face_list();
     let mut holed = vec![false; n];
     for &h in input.holes.iter().take(SIMPLIFY_HOLES) {
@@ -1491,4 +1475,25 @@ pub fn check_simplify_input(input: &SimplifyInput) {
     };
     let before = surface_topology(&mesh.faces).expect("a random surface with holes");
     check_simplify_modes(&mesh, &before, &opts, "simplify input");
+}
+
+/// `rounds` rounds of Laplacian smoothing of `pos` (indexed by vertex id) over `tri`:
+/// each vertex moves halfway to the mean of its neighbours (a full step would collapse
+/// K7 to a point). Shared by the fuzz target and the property tests.
+pub fn smooth_positions(tri: &Triangulation, pos: &mut [[f64; 3]], rounds: usize) {
+    for _ in 0..rounds {
+        let old = pos.to_vec();
+        for v in tri.vertices() {
+            let mut sum = [0.0; 3];
+            let mut k = 0.0;
+            for w in tri.link(v) {
+                for (s, x) in sum.iter_mut().zip(old[w.index()]) {
+                    *s += x;
+                }
+                k += 1.0;
+            }
+            let o = old[v.index()];
+            pos[v.index()] = [0, 1, 2].map(|i| 0.5 * o[i] + 0.5 * sum[i] / k);
+        }
+    }
 }

@@ -877,23 +877,7 @@ fn random_mesh(
     });
     let n = tri.vertex_capacity();
     let mut pos = random_positions(n, seed ^ 0x5eed);
-    for _ in 0..smooth {
-        let old = pos.clone();
-        for v in tri.vertices() {
-            // Halfway to the neighbours' mean (a full step would collapse K7 to a
-            // point).
-            let mut sum = [0.0; 3];
-            let mut k = 0.0;
-            for w in tri.link(v) {
-                for (s, x) in sum.iter_mut().zip(old[w.index()]) {
-                    *s += x;
-                }
-                k += 1.0;
-            }
-            let o = old[v.index()];
-            pos[v.index()] = [0, 1, 2].map(|i| 0.5 * o[i] + 0.5 * sum[i] / k);
-        }
-    }
+    crate::harness::smooth_positions(&tri, &mut pos, smooth as usize);
     let mut faces = tri.face_list();
     let mut used = vec![false; n];
     for &h in holes {
