@@ -27,7 +27,8 @@ pub enum Command {
     Info(InfoArgs),
     /// Generate a closed triangulated surface.
     Gen(GenArgs),
-    /// Convert between mesh formats (by extension), validating the input.
+    /// Convert between mesh formats (by extension), validating the input as surfaces
+    /// (closed or with boundary).
     Convert(ConvertArgs),
     /// Contract edges until every component is irreducible.
     Reduce(ReduceArgs),
@@ -194,7 +195,7 @@ pub struct ConvertArgs {
     pub input: PathBuf,
     /// Output mesh (.off/.obj/.ply, optionally .gz; PLY is written binary little-endian).
     pub output: PathBuf,
-    /// Convert even if the input is not a union of closed surfaces.
+    /// Convert even if the input is not a union of surfaces (closed or with boundary).
     #[arg(long)]
     pub no_validate: bool,
 }

@@ -13,6 +13,8 @@ struct ConvertReport {
     faces: usize,
     /// Components found by validation (`null` with `--no-validate`).
     components: Option<usize>,
+    /// Boundary loops found by validation (`null` with `--no-validate`).
+    boundary_loops: Option<usize>,
     dropped_vertices: usize,
     validated: bool,
 }
@@ -20,10 +22,13 @@ struct ConvertReport {
 pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
     meshio::check_output(&a.output)?;
     let (mesh, _) = meshio::read(&a.input, ui)?;
-    let components = if a.no_validate {
-        None
+    // Surfaces with boundary are valid input: validation refuses only what is not a
+    // surface (non-manifold edges or vertices, bad faces), with its location.
+    let (components, boundary_loops) = if a.no_validate {
+        (None, None)
     } else {
-        Some(meshio::build(&mesh, &a.input, ui)?.0.components.len())
+        let (s, _) = meshio::build_open(&mesh, &a.input, ui)?;
+        (Some(s.components.len()), Some(s.loop_count()))
     };
     // The readers reject out-of-range indices and give one position per vertex.
     let (out, dropped) = mesh.compacted().ok_or_else(|| {
@@ -45,6 +50,7 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
         vertices: out.vertex_count,
         faces: out.faces.len(),
         components,
+        boundary_loops,
         dropped_vertices: dropped,
         validated: !a.no_validate,
     };
@@ -52,11 +58,14 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
         print_json(&report)?;
     } else if !ui.quiet {
         outln!(
-            "wrote {}: {} vertices, {} faces{}",
+            "wrote {}: {} vertices, {} faces{}{}",
             report.output,
             report.vertices,
             report.faces,
-            components.map_or(String::new(), |c| format!(", {c} components"))
+            components.map_or(String::new(), |c| format!(", {c} components")),
+            boundary_loops
+                .filter(|&b| b > 0)
+                .map_or(String::new(), |b| format!(", {b} boundary loops"))
         );
     }
     Ok(())

@@ -252,3 +252,32 @@ fn pinched_meshes_stay_errors_everywhere() {
         );
     }
 }
+
+/// `convert` validates surfaces with boundary like `info` (they are valid input), keeps
+/// them face for face, reports their loops, and still refuses what is not a surface.
+#[test]
+fn convert_keeps_open_meshes_and_refuses_pinched_ones() {
+    let d = Scratch::new("boundary-convert");
+    let src = meshes().join("invalid/open_bunny_stanford.off.gz");
+    let out = d.path("bunny.ply");
+    let j = run_json(&[
+        OsStr::new("convert"),
+        src.as_os_str(),
+        out.as_os_str(),
+        OsStr::new("--json"),
+    ]);
+    assert_eq!(int(&j, "boundary_loops"), 5);
+    assert_eq!(int(&j, "components"), 1);
+    let before = contractible::io::read_tri_mesh(&src).expect("readable");
+    let after = contractible::io::read_tri_mesh(&out).expect("readable");
+    assert_eq!(after.faces.len(), before.faces.len());
+    let (loops_before, chi_before) = loops_and_chi(&before.faces);
+    assert_eq!(loops_and_chi(&after.faces), (loops_before, chi_before));
+    let p = d.path("bowtie.off");
+    write_off(&p, 5, &[[0, 1, 2], [0, 3, 4]]);
+    let q = d.path("bowtie.obj");
+    let r = run(&[OsStr::new("convert"), p.as_os_str(), q.as_os_str()]);
+    assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
+    assert!(stderr(&r).contains("vertex 0 is pinched"), "{}", stderr(&r));
+    assert!(!q.exists(), "no output for a refused input");
+}
