@@ -94,8 +94,9 @@ pub(crate) struct Simplifier<'o> {
     pub(super) xs: Vec<VertexId>,
     pub(super) grow: [Grow; 2],
     interior: Vec<VertexId>,
-    /// The coned surface's type at the start (the specification checks it per pass).
-    pub(super) surface: SurfaceType,
+    /// The coned surface's type at the start, recorded only when the specification
+    /// checks run (it checks it after every pass; computing it is an O(F) pass).
+    pub(super) surface: Option<SurfaceType>,
     /// Whether processEdge (the nested plan) is in use: the nested mode first runs naive
     /// passes to a fixed point, then nested ones (see `run`).
     nested_phase: bool,
@@ -112,12 +113,7 @@ impl<'o> Simplifier<'o> {
         let nf = tri.face_capacity();
         let mut pos = positions;
         pos.resize(nv, [0.0; 3]);
-        // Only the specification reads it (an O(F) orientation pass).
-        let surface = if spec::ENABLED {
-            SurfaceType::of(&tri)
-        } else {
-            SurfaceType::new(2, true).expect("the sphere")
-        };
+        let surface = spec::ENABLED.then(|| SurfaceType::of(&tri));
         let mut s = Simplifier {
             tri,
             pos,
