@@ -73,8 +73,9 @@ pub const ZERO_AREA: f64 = 1e-10;
 /// The fold-over guard for one triangle that moves: `old` is its area normal before,
 /// `new_corners` its corners after. Refuses (returns `false`) a triangle of zero area
 /// after the move, and one whose normal turns by 90° or more (when it had a normal
-/// before: a triangle that was already degenerate only has to end non-degenerate).
-#[inline]
+/// before: a triangle that was already degenerate only has to end non-degenerate). The
+/// reference form of [`fan_move_ok`], which the guard calls.
+#[cfg(test)]
 pub(crate) fn moved_triangle_ok(old: Point, new_corners: [Point; 3]) -> bool {
     let [a, b, c] = new_corners;
     let n = area_normal(a, b, c);
@@ -85,6 +86,27 @@ pub(crate) fn moved_triangle_ok(old: Point, new_corners: [Point; 3]) -> bool {
     }
     let old_l2 = dot(old, old);
     old_l2 == 0.0 || dot(old, n) > 0.0
+}
+
+/// [`moved_triangle_ok`] for the triangle `(x, p1, p2)` whose corner `x` moves to `to`,
+/// the form the guard calls: both normals share the edge `e = p2 − p1` (the normal of
+/// `(y, p1, p2)` is `(p1 − y) × e`), and the longest edge is only computed when the
+/// cheap bound `L² ≤ 2 (|e|² + |p1 − to|²)` cannot rule out a zero area.
+#[inline]
+pub(crate) fn fan_move_ok(x: Point, to: Point, p1: Point, p2: Point) -> bool {
+    let e = sub(p2, p1);
+    let old = cross(sub(p1, x), e);
+    let d = sub(p1, to);
+    let n = cross(d, e);
+    let n2 = dot(n, n);
+    let bound = 2.0 * (dot(e, e) + dot(d, d));
+    if n2 <= ZERO_AREA * ZERO_AREA * bound * bound {
+        let l2 = dot(d, d).max(dot(e, e)).max(dist2(p2, to));
+        if n2 <= ZERO_AREA * ZERO_AREA * l2 * l2 {
+            return false;
+        }
+    }
+    dot(old, old) == 0.0 || dot(old, n) > 0.0
 }
 
 /// A symmetric 4×4 error quadric `Q` (Garland–Heckbert): the squared distance of a point
@@ -222,6 +244,31 @@ mod tests {
         assert!(!moved_triangle_ok(n, [a, b, [0.2, -0.9, 0.0]]));
         assert!(!moved_triangle_ok(n, [a, b, [0.5, 0.0, 0.0]]));
         assert!(moved_triangle_ok([0.0; 3], [a, b, c]));
+    }
+
+    #[test]
+    fn fan_move_agrees_with_the_plain_guard() {
+        // A deterministic sweep of moves around a fixed edge, including slivers.
+        let (x, p1, p2) = ([0.1, -0.7, 0.2], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+        let old = area_normal(x, p1, p2);
+        let mut disagree = 0;
+        for i in 0..40 {
+            for j in 0..40 {
+                let to = [
+                    -1.0 + 0.05 * i as f64,
+                    -1.0 + 0.05 * j as f64,
+                    0.01 * (i as f64 - j as f64),
+                ];
+                if fan_move_ok(x, to, p1, p2) != moved_triangle_ok(old, [to, p1, p2]) {
+                    disagree += 1;
+                }
+            }
+        }
+        // Exactly on the edge's line (zero area) both refuse; elsewhere they agree.
+        assert_eq!(disagree, 0);
+        assert!(!fan_move_ok(x, [0.5, 0.5, 0.0], p1, p2));
+        assert!(fan_move_ok(x, [0.2, -0.5, 0.0], p1, p2));
+        assert!(!fan_move_ok(x, [0.8, 0.9, 0.0], p1, p2));
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! the common-neighbour walk, the position and guard decisions, applying a plan, and the
 //! per-pass compaction.
 
-use super::geometry::{area_normal, dist2, midpoint, moved_triangle_ok, Point, Quadric};
+use super::geometry::{area_normal, dist2, fan_move_ok, midpoint, Point, Quadric};
 use super::nested::{self, Claim, Grow};
 use super::{naive, spec, Mode, Options, Position, SkipCounts};
 use crate::core::{ConedComponent, Corner, FaceId, Triangulation, VertexId};
@@ -498,8 +498,7 @@ impl<'o> Simplifier<'o> {
             if v1 == other || v2 == other || self.is_virtual(v1) || self.is_virtual(v2) {
                 continue;
             }
-            let (p1, p2) = (pos(v1), pos(v2));
-            if !moved_triangle_ok(area_normal(pos(v0), p1, p2), [to, p1, p2]) {
+            if !fan_move_ok(pos(v0), to, pos(v1), pos(v2)) {
                 return false;
             }
         }
