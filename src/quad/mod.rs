@@ -20,6 +20,7 @@ use crate::core::{FaceId, Triangulation};
 use crate::mesh::QuadMesh;
 
 pub mod augment;
+pub mod frink;
 pub mod greedy;
 pub mod lrs;
 pub mod matching;

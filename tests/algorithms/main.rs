@@ -15,6 +15,7 @@ mod irreducible_meshes;
 mod oracles;
 mod quad_augment;
 mod quad_convert;
+mod quad_frink;
 mod quad_greedy;
 mod quad_lrs;
 mod quad_qbench;

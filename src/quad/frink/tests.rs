@@ -1,0 +1,484 @@
+//! Unit tests of Frink's reduction: every lifting case of Appendix A constructed
+//! deliberately (every simple edge, every acceptable reconnection, every perfect matching
+//! of the reduced graph of small cubic graphs), the DFS against the definition, whole
+//! runs on random cubic multigraphs, the refusals, and the specification checks failing.
+
+use super::graph::{Cubic, Dfs, NONE};
+use super::*;
+use crate::rng::Rng;
+use crate::spec::testing::assert_fails;
+
+fn graph(n: usize, edges: &[[u32; 2]]) -> Cubic {
+    match Cubic::from_edges(n, edges) {
+        Ok(g) => g,
+        Err(e) => panic!("test graph: {e}"),
+    }
+}
+
+fn k4() -> Cubic {
+    graph(4, &[[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]])
+}
+
+fn prism() -> Cubic {
+    graph(
+        6,
+        &[
+            [0, 1],
+            [1, 2],
+            [2, 0],
+            [3, 4],
+            [4, 5],
+            [5, 3],
+            [0, 3],
+            [1, 4],
+            [2, 5],
+        ],
+    )
+}
+
+fn k33() -> Cubic {
+    let mut e = Vec::new();
+    for a in 0..3 {
+        for b in 3..6 {
+            e.push([a, b]);
+        }
+    }
+    graph(6, &e)
+}
+
+fn cube() -> Cubic {
+    let mut e = Vec::new();
+    for a in 0..8u32 {
+        for bit in [1, 2, 4] {
+            if a & bit == 0 {
+                e.push([a, a | bit]);
+            }
+        }
+    }
+    graph(8, &e)
+}
+
+fn petersen() -> Cubic {
+    let mut e = Vec::new();
+    for i in 0..5u32 {
+        e.push([i, (i + 1) % 5]);
+        e.push([i, i + 5]);
+        e.push([5 + i, 5 + (i + 2) % 5]);
+    }
+    graph(10, &e)
+}
+
+/// A 4-cycle with every other edge doubled: parallel edges from the start.
+fn doubled_square() -> Cubic {
+    graph(6 - 2, &[[0, 1], [0, 1], [1, 2], [2, 3], [2, 3], [3, 0]])
+}
+
+/// The theta graph: the base case.
+fn theta() -> Cubic {
+    graph(2, &[[0, 1], [0, 1], [0, 1]])
+}
+
+/// The dual of the icosahedron: the dodecahedron (20 nodes).
+fn dodecahedron() -> Cubic {
+    let m = crate::gen::icosahedron();
+    let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("icosahedron");
+    dual_graph(&t).expect("cubic").0
+}
+
+fn small_graphs() -> Vec<(&'static str, Cubic)> {
+    vec![
+        ("theta", theta()),
+        ("K4", k4()),
+        ("doubled square", doubled_square()),
+        ("prism", prism()),
+        ("K3,3", k33()),
+        ("cube", cube()),
+        ("Petersen", petersen()),
+        ("dodecahedron", dodecahedron()),
+    ]
+}
+
+/// Every reduction candidate of `g`: every live `u` and every simple edge `uv` at it,
+/// with the other edges in slot order (as [`Cubic::candidate_at`] builds them, but not
+/// only the first).
+fn all_candidates(g: &Cubic) -> Vec<Candidate> {
+    let mut out = Vec::new();
+    for u in 0..g.node_capacity() as u32 {
+        if !g.is_alive(u) {
+            continue;
+        }
+        let s = g.incident(u);
+        let w = s.map(|e| g.other(e, u));
+        for i in 0..3 {
+            if w[i] == u || (0..3).any(|j| j != i && w[j] == w[i]) {
+                continue;
+            }
+            let (e, v) = (s[i], w[i]);
+            let a = [s[(i + 1) % 3], s[(i + 2) % 3]];
+            let sv = g.incident(v);
+            let j = sv.iter().position(|&f| f == e).expect("e at v");
+            let b = [sv[(j + 1) % 3], sv[(j + 2) % 3]];
+            let x = [
+                g.other(a[0], u),
+                g.other(a[1], u),
+                g.other(b[0], v),
+                g.other(b[1], v),
+            ];
+            out.push(Candidate { u, v, e, a, b, x });
+        }
+    }
+    out
+}
+
+/// Every perfect matching of the live part of `g` (as per-node mate edges), by
+/// backtracking on the smallest unmatched live node.
+fn all_perfect_matchings(g: &Cubic) -> Vec<Vec<u32>> {
+    fn go(g: &Cubic, mate: &mut Vec<u32>, out: &mut Vec<Vec<u32>>) {
+        let next =
+            (0..g.node_capacity() as u32).find(|&x| g.is_alive(x) && mate[x as usize] == NONE);
+        let Some(x) = next else {
+            out.push(mate.clone());
+            return;
+        };
+        for e in g.incident(x) {
+            let w = g.other(e, x);
+            if w != x && mate[w as usize] == NONE {
+                mate[x as usize] = e;
+                mate[w as usize] = e;
+                go(g, mate, out);
+                mate[x as usize] = NONE;
+                mate[w as usize] = NONE;
+            }
+        }
+    }
+    let mut out = Vec::new();
+    go(g, &mut vec![NONE; g.node_capacity()], &mut out);
+    out
+}
+
+/// Independent check: `mate` matches every live node of `g` through one of its edges,
+/// symmetrically, and no other.
+fn assert_perfect(g: &Cubic, mate: &[u32], label: &str) {
+    for x in 0..g.node_capacity() as u32 {
+        if !g.is_alive(x) {
+            continue;
+        }
+        let m = mate[x as usize];
+        assert!(g.incident(x).contains(&m), "{label}: node {x} mate {m}");
+        let w = g.other(m, x);
+        assert!(w != x && mate[w as usize] == m, "{label}: edge {m} at {x}");
+    }
+}
+
+/// Every lifting case of Appendix A, deliberately: for every small graph, every simple
+/// edge, every reconnection whose result is connected and bridgeless, every perfect
+/// matching of the reduced graph, the lift gives a perfect matching of the graph, and
+/// the case taken is the one the matching dictates. All four cases occur, case (iv) with
+/// cycles longer than a 2-cycle of parallel edges and with blossoms.
+#[test]
+fn every_lifting_case_on_every_reduction_of_small_graphs() {
+    let mut cases = [0usize; 3];
+    let (mut iv, mut long_cycles, mut lifts) = (0usize, 0usize, 0usize);
+    let mut search = cycle::CycleSearch::default();
+    for (name, g0) in small_graphs() {
+        for cand in all_candidates(&g0) {
+            for recon in [Reconnection::H1, Reconnection::H2] {
+                let mut g = g0.clone();
+                let r = g.reduce(&cand, recon);
+                if !spec::connected_bridgeless_by_definition(&g) {
+                    continue;
+                }
+                for m1 in all_perfect_matchings(&g) {
+                    let label = format!("{name} {cand:?} {recon:?} {m1:?}");
+                    let (p, q) = (r.new[0], r.new[1]);
+                    let (pm, qm) = (m1[cand.x[0] as usize] == p, m1[cand.x[1] as usize] == q);
+                    let mut h = g.clone();
+                    let mut mate = m1.clone();
+                    let mut stats = Stats::default();
+                    let changed = lift(&mut h, &mut mate, &r, &mut search, &mut stats)
+                        .unwrap_or_else(|e| panic!("{label}: {e}"));
+                    lifts += 1;
+                    assert_eq!(h.node_count(), g0.node_count(), "{label}: undone");
+                    assert_perfect(&h, &mate, &label);
+                    // Only the changed nodes differ from the reduced matching.
+                    for x in 0..h.node_capacity() as u32 {
+                        if m1[x as usize] != mate[x as usize] {
+                            assert!(changed.contains(&x), "{label}: {x} changed silently");
+                        }
+                    }
+                    match (pm, qm) {
+                        (false, false) => assert_eq!(stats.cases, [1, 0, 0], "{label}"),
+                        (true, false) => {
+                            assert_eq!(stats.cases, [0, 1, 0], "{label}");
+                            assert_eq!(mate[cand.u as usize], cand.a[0], "{label}: ux1");
+                        }
+                        (false, true) => {
+                            assert_eq!(stats.cases, [0, 0, 1], "{label}");
+                            assert_eq!(mate[cand.u as usize], cand.a[1], "{label}: ux2");
+                        }
+                        (true, true) => {
+                            assert_eq!(stats.case_iv, 1, "{label}");
+                            assert_eq!(stats.cases[1], 0, "{label}: p left matched");
+                            if stats.cycle_nodes > 2 {
+                                long_cycles += 1;
+                            }
+                        }
+                    }
+                    for (total, c) in cases.iter_mut().zip(stats.cases) {
+                        *total += c;
+                    }
+                    iv += stats.case_iv;
+                }
+            }
+        }
+    }
+    assert!(cases.iter().all(|&c| c > 0), "cases {cases:?}");
+    assert!(
+        iv > 0 && long_cycles > 0,
+        "case (iv): {iv}, long {long_cycles}"
+    );
+    assert!(search.blossoms > 0, "no blossom in the case (iv) searches");
+    assert!(lifts > 1000, "{lifts} lifts");
+}
+
+/// Case (iv) by hand on the cube: reduce at 0–1 (x = 2, 4, 3, 5), `H1` adds 2–3 and
+/// 4–5 beside the existing 2–3 and 4–5; the matching {p, q, 6–7} needs the 2-cycle
+/// p / 2–3 flipped, then case (iii).
+#[test]
+fn case_iv_on_the_cube_flips_the_parallel_two_cycle() {
+    let mut g = cube();
+    let cand = g.candidate_at(0).expect("simple edge");
+    assert_eq!((cand.u, cand.v, cand.x), (0, 1, [2, 4, 3, 5]));
+    let r = g.reduce(&cand, Reconnection::H1);
+    let [p, q] = r.new;
+    let e67 = (0..12u32).find(|&e| g.ends(e) == [6, 7]).expect("6-7");
+    let e23 = (0..12u32).find(|&e| g.ends(e) == [2, 3]).expect("2-3");
+    let mut mate = vec![NONE; 8];
+    for (e, [a, b]) in [(p, [2, 3]), (q, [4, 5]), (e67, [6, 7])] {
+        mate[a] = e;
+        mate[b] = e;
+    }
+    let mut stats = Stats::default();
+    lift(
+        &mut g,
+        &mut mate,
+        &r,
+        &mut cycle::CycleSearch::default(),
+        &mut stats,
+    )
+    .expect("lift");
+    assert_eq!(
+        (stats.case_iv, stats.cases, stats.cycle_nodes),
+        (1, [0, 0, 1], 2)
+    );
+    assert_eq!(mate[2], e23);
+    assert_eq!(mate[0], cand.a[1]);
+    assert_eq!(g.other(mate[0], 0), 4);
+    assert_eq!(g.other(mate[1], 1), 5);
+    assert_perfect(&g, &mate, "cube");
+}
+
+/// A random cubic multigraph on `n` nodes (configuration model: 3n half-edges paired at
+/// random), loops and parallel edges allowed.
+fn random_cubic(n: usize, rng: &mut Rng) -> Cubic {
+    let mut half: Vec<u32> = (0..3 * n as u32).map(|h| h / 3).collect();
+    rng.shuffle(&mut half);
+    let edges: Vec<[u32; 2]> = half.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
+    graph(n, &edges)
+}
+
+/// The DFS lowpoint test agrees with the definition on random cubic multigraphs, and
+/// `solve` matches exactly those that are connected and bridgeless, perfectly.
+#[test]
+fn random_cubic_multigraphs_are_matched_iff_bridgeless() {
+    let mut rng = Rng::new(11);
+    let (mut ok, mut refused, mut iv) = (0, 0, 0);
+    for round in 0..3000 {
+        let n = 2 * (1 + rng.index(12));
+        let g = random_cubic(n, &mut rng);
+        let truth = spec::connected_bridgeless_by_definition(&g);
+        assert_eq!(
+            Dfs::default().connected_bridgeless(&g, 0),
+            truth,
+            "round {round}"
+        );
+        match solve(g.clone(), &mut Naive::new()) {
+            Ok(s) => {
+                assert!(truth, "round {round}: matched a graph with a bridge");
+                assert_perfect(&g, &s.mate, &format!("round {round}"));
+                assert_eq!(s.stats.reductions, n / 2 - 1);
+                ok += 1;
+                iv += s.stats.case_iv;
+            }
+            Err(e) => {
+                assert!(!truth, "round {round}: refused a bridgeless graph: {e}");
+                assert_eq!(e, FrinkError::NotBridgeless);
+                refused += 1;
+            }
+        }
+    }
+    assert!(
+        ok > 500 && refused > 500 && iv > 0,
+        "{ok} matched, {refused} refused, {iv} case (iv)"
+    );
+}
+
+#[test]
+fn every_small_graph_is_matched() {
+    for (name, g) in small_graphs() {
+        let s = solve(g.clone(), &mut Naive::new()).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert_perfect(&g, &s.mate, name);
+        assert_eq!(s.stats.reductions, g.node_count() / 2 - 1, "{name}");
+        let c = s.stats.cases;
+        assert_eq!(c[0] + c[1] + c[2], s.stats.reductions, "{name}");
+    }
+    let empty = solve(graph(0, &[]), &mut Naive::new()).expect("empty");
+    assert!(empty.mate.is_empty());
+}
+
+#[test]
+fn inputs_that_are_not_connected_bridgeless_cubic_are_refused() {
+    assert_eq!(
+        Cubic::from_edges(4, &[[0, 1], [0, 2], [0, 3], [1, 2], [1, 3]]).err(),
+        Some(FrinkError::NotCubic { node: 2 })
+    );
+    assert!(matches!(
+        Cubic::from_edges(2, &[[0, 1], [0, 1], [0, 5]]),
+        Err(FrinkError::NodeOutOfRange { edge: 2, node: 5 })
+    ));
+    // Two K4s.
+    let mut e = vec![[0, 1], [0, 2], [0, 3], [1, 2], [1, 3], [2, 3]];
+    e.extend(e.clone().iter().map(|&[a, b]| [a + 4, b + 4]));
+    assert_eq!(
+        solve(graph(8, &e), &mut Naive::new()).err(),
+        Some(FrinkError::NotBridgeless)
+    );
+    // Two K4s with one edge subdivided each, the new nodes joined by a bridge.
+    let side = |o: u32| {
+        vec![
+            [o, o + 2],
+            [o, o + 3],
+            [o + 1, o + 2],
+            [o + 1, o + 3],
+            [o + 2, o + 3],
+            [o, o + 4],
+            [o + 1, o + 4],
+        ]
+    };
+    let mut e = side(0);
+    e.extend(side(5));
+    e.push([4, 9]);
+    assert_eq!(
+        solve(graph(10, &e), &mut Naive::new()).err(),
+        Some(FrinkError::NotBridgeless)
+    );
+    // A loop (theta with one edge replaced by loops): 0–1 is a bridge.
+    assert_eq!(
+        solve(graph(2, &[[0, 0], [0, 1], [1, 1]]), &mut Naive::new()).err(),
+        Some(FrinkError::NotBridgeless)
+    );
+}
+
+/// A wrong strategy: always `H1`, untested.
+struct AlwaysH1;
+
+impl Strategy for AlwaysH1 {
+    fn choose(&mut self, _: &mut Cubic, _: &Candidate) -> Option<Reconnection> {
+        Some(Reconnection::H1)
+    }
+}
+
+/// A wrong strategy: always the reconnection the naive one rejects, when it rejects one.
+#[derive(Default)]
+struct Contrary(Naive);
+
+impl Strategy for Contrary {
+    fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+        let r = g.reduce(cand, Reconnection::H1);
+        let h1_ok = self.0.dfs.connected_bridgeless(g, cand.x[0]);
+        g.undo(&r);
+        Some(if h1_ok {
+            Reconnection::H2
+        } else {
+            Reconnection::H1
+        })
+    }
+}
+
+/// F1 catches a wrong choice: on K4, `H1` at 0–1 makes two loops; on the prism, the
+/// contrary choice yields a graph with a bridge or a loop.
+#[test]
+fn f1_catches_a_wrong_reconnection() {
+    assert_fails("F1", || {
+        let _ = solve(k4(), &mut AlwaysH1);
+    });
+    assert_fails("F1", || {
+        for (_, g) in small_graphs() {
+            let _ = solve(g, &mut Contrary::default());
+        }
+    });
+    // The check itself, on a reduced graph with a bridge but no loop: the prism reduced
+    // at 0–1 by the rejected reconnection (if that one has no loop).
+    let mut g = prism();
+    let cand = g.candidate_at(0).expect("simple");
+    for recon in [Reconnection::H1, Reconnection::H2] {
+        let r = g.reduce(&cand, recon);
+        let good = spec::connected_bridgeless_by_definition(&g);
+        if !good {
+            assert_fails("F1", || spec::after_reduction(&g, &r));
+        } else {
+            spec::after_reduction(&g, &r);
+        }
+        g.undo(&r);
+    }
+}
+
+/// F2 catches a lift that leaves the matching imperfect.
+#[test]
+fn f2_catches_a_broken_lift() {
+    let mut g = k4();
+    let cand = g.candidate_at(0).expect("simple");
+    let r = g.reduce(&cand, Reconnection::H2);
+    let mut mate = vec![NONE; 4];
+    let e = g.incident(2)[0];
+    mate[2] = e;
+    mate[3] = e;
+    let mut stats = Stats::default();
+    let changed = lift(
+        &mut g,
+        &mut mate,
+        &r,
+        &mut cycle::CycleSearch::default(),
+        &mut stats,
+    )
+    .expect("lift");
+    spec::after_lift(&g, &mate, 2, &changed, &r);
+    spec::at_end(&g, &mate, 2);
+    // Broken: u keeps its mate, v loses it.
+    let mut broken = mate.clone();
+    broken[cand.v as usize] = NONE;
+    assert_fails("F2", || spec::after_lift(&g, &broken, 2, &changed, &r));
+    assert_fails("F2", || spec::at_end(&g, &broken, 2));
+    assert_fails("F2", || spec::after_lift(&g, &mate, 1, &changed, &r));
+}
+
+/// The public entry on the standard surfaces: a perfect pairing of edge-adjacent faces.
+#[test]
+fn perfect_matching_pairs_the_standard_surfaces() {
+    use crate::gen::{
+        icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7,
+    };
+    for m in [
+        tetrahedron(),
+        octahedron(),
+        icosahedron(),
+        torus7(),
+        projective_plane6(),
+        klein_bottle(),
+    ] {
+        let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("standard");
+        let p = perfect_matching(&t);
+        assert!(p.is_perfect(&t));
+        assert_eq!(p.check(&t), Ok(()));
+    }
+}

@@ -1,0 +1,173 @@
+//! `quad::frink`: Frink's reduction with the naive strategy (tri-quad paper, App. A),
+//! checked by code that shares nothing with it: the fuzz harness's
+//! `check_quadrangulation` (face lists, pairs and quads only) and petgraph's
+//! `maximum_matching` of the dual graph (its size must be F/2, as the pairing's). The
+//! naive strategy is O(F²), so the shared meshes are covered up to [`MAX_FACES`] faces.
+//! Under `invariants` (the README's test command) the specification checks F1/F2 run
+//! on every step.
+
+use crate::{common, harness};
+use contractible::gen::{random, RandomParams, SurfaceKind};
+use contractible::quad::frink::{self, Naive};
+use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
+use contractible::{Surfaces, Triangulation};
+
+/// Largest component of a shared mesh run here (the naive strategy is quadratic).
+const MAX_FACES: usize = 6_000;
+
+/// Checks `p` independently: the harness's check of a conversion whose pairing is `p`
+/// (the `algorithm` field is not read by it; the statistics are those of a perfect
+/// initial pairing with no completion), and petgraph's maximum matching size.
+fn check(t: &Triangulation, p: &Pairing, label: &str) {
+    let q = Quadrangulation {
+        algorithm: Algorithm::Matching,
+        tri: t.clone(),
+        pairing: p.clone(),
+        stats: initial_stats(t, p, 0.0),
+    };
+    harness::check_quadrangulation(t, &q, label);
+    let dual = common::dual_graph(t);
+    let m = petgraph::algo::maximum_matching(&dual);
+    assert_eq!(2 * m.len(), t.face_count(), "{label}: petgraph");
+    assert_eq!(m.len(), p.len(), "{label}: size against petgraph");
+}
+
+/// Runs the naive strategy on `t`, checks the result, returns the counters; with
+/// `twice`, runs it again and requires the same pairing.
+fn run(t: &Triangulation, label: &str, twice: bool) -> frink::Stats {
+    let mut naive = Naive::new();
+    let (p, stats) = frink::perfect_matching_with(t, &mut naive);
+    check(t, &p, label);
+    assert_eq!(
+        stats.reductions,
+        t.face_count() / 2 - 1,
+        "{label}: reductions"
+    );
+    assert_eq!(
+        stats.cases.iter().sum::<usize>(),
+        stats.reductions,
+        "{label}: one case per lift"
+    );
+    // One DFS per decision, a second only when H1 fails.
+    let dfs = naive.dfs_runs() as usize;
+    assert_eq!(
+        dfs,
+        2 * stats.reductions - stats.took_h1,
+        "{label}: DFS runs"
+    );
+    if twice {
+        assert!(
+            frink::perfect_matching(t) == p,
+            "{label}: differs between runs"
+        );
+    }
+    stats
+}
+
+#[test]
+fn the_standard_small_surfaces() {
+    use contractible::gen::{
+        icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7,
+    };
+    for (name, m) in [
+        ("tetrahedron", tetrahedron()),
+        ("octahedron", octahedron()),
+        ("icosahedron", icosahedron()),
+        ("torus7", torus7()),
+        ("projective plane", projective_plane6()),
+        ("Klein bottle", klein_bottle()),
+    ] {
+        let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect(name);
+        run(&t, name, true);
+    }
+}
+
+/// Random surfaces of genus 0..8 and Euler genus 1..6 (non-orientable), a few thousand
+/// faces, and smaller ones; case (iv) must occur on some.
+#[test]
+fn random_surfaces_of_every_kind() {
+    let kinds = (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable));
+    let (mut inputs, mut case_iv, mut blossoms) = (0, 0, 0);
+    for kind in kinds {
+        for (seed, min_faces) in [(1u64, 200usize), (2, 3_000)] {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces,
+                flip_percent: 30,
+                seed,
+            });
+            let s = run(
+                &t,
+                &format!("{kind:?} seed {seed} F {}", t.face_count()),
+                true,
+            );
+            inputs += 1;
+            case_iv += s.case_iv;
+            blossoms += s.blossoms;
+        }
+    }
+    eprintln!(
+        "frink random surfaces: {inputs} inputs, {case_iv} case (iv) lifts, {blossoms} blossoms"
+    );
+    assert_eq!(inputs, 30);
+    assert!(case_iv > 0, "case (iv) never occurred");
+}
+
+/// Faces removed by contractions leave holes in the face ids.
+#[test]
+fn triangulations_with_removed_faces() {
+    let t = random(&RandomParams {
+        surface: SurfaceKind::NonOrientable(3),
+        min_faces: 1_000,
+        flip_percent: 30,
+        seed: 5,
+    });
+    let t = contractible::irreducible::rs::reduce(t, &Default::default()).tri;
+    assert!(t.face_capacity() > t.face_count());
+    run(&t, "reduced", true);
+}
+
+/// Every component of the shared closed meshes with at most [`MAX_FACES`] faces.
+#[test]
+fn shared_closed_mesh_components() {
+    let rows: Vec<_> = common::manifest()
+        .into_iter()
+        .filter(|r| r.set == "closed")
+        .collect();
+    assert!(rows.len() >= 90, "{} closed meshes", rows.len());
+    let (mut components, mut faces, mut skipped) = (0usize, 0usize, 0usize);
+    let clock = std::time::Instant::now();
+    for row in &rows {
+        if row.f > MAX_FACES * row.components {
+            skipped += row.components;
+            continue;
+        }
+        let path = common::shared_dir().join("meshes").join(&row.file);
+        let mesh =
+            contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        assert_eq!(s.components.len(), row.components, "{}", row.name);
+        for (k, comp) in s.components.iter().enumerate() {
+            let t = &comp.tri;
+            if t.face_count() > MAX_FACES {
+                skipped += 1;
+                continue;
+            }
+            run(t, &format!("{}#{k}", row.name), false);
+            components += 1;
+            faces += t.face_count();
+        }
+    }
+    eprintln!(
+        "frink: {components} components ({faces} faces) of {} closed meshes in {:.1} s, {skipped} larger skipped",
+        rows.len(),
+        clock.elapsed().as_secs_f64()
+    );
+    assert_eq!(
+        (components, skipped),
+        (339, 65),
+        "components covered, skipped"
+    );
+}
