@@ -66,12 +66,15 @@ pub fn read_input(
 
 /// A vertex count is "many" coincident vertices from this fraction of all vertices on.
 const SOUP_COINCIDENT_FRACTION: usize = 10;
+/// Welding that makes more than this fraction of the faces degenerate is no cure.
+const SOUP_DEGENERATE_FRACTION: usize = 100;
 
 /// One line saying that `mesh` looks like an unwelded triangle soup, and what to do, when
 /// it does: some vertices sit at the position of another (bitwise) and either every edge
 /// is a boundary edge (each in one face, over two faces or more) or at least a tenth of
-/// the vertices are such duplicates. `None` otherwise (welding could not help a mesh
-/// without coincident positions).
+/// the vertices are such duplicates, and welding makes at most one face in a hundred
+/// degenerate. `None` otherwise (welding cannot help a mesh without coincident
+/// positions, nor one whose positions do not tell its vertices apart).
 pub fn soup_hint(mesh: &TriMesh, path: &Path) -> Option<String> {
     let coincident = mesh.coincident_vertex_count();
     if coincident == 0 {
@@ -88,6 +91,17 @@ pub fn soup_hint(mesh: &TriMesh, path: &Path) -> Option<String> {
     let all_boundary = mesh.faces.len() >= 2 && uses.values().all(|&n| n == 1);
     let many = coincident * SOUP_COINCIDENT_FRACTION >= mesh.vertex_count;
     if !(all_boundary || many) {
+        return None;
+    }
+    // Welding must help: a mesh whose positions do not separate its vertices (all at
+    // 0 0 0, as `gen random` writes them) would collapse, so it is no soup.
+    let degenerate = mesh.welded().map_or(usize::MAX, |(w, _)| {
+        w.faces
+            .iter()
+            .filter(|f| f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            .count()
+    });
+    if degenerate.saturating_mul(SOUP_DEGENERATE_FRACTION) > mesh.faces.len() {
         return None;
     }
     let why = if all_boundary {
