@@ -6,6 +6,7 @@
 //!
 //! The conversions between the two live here, written once for the command line, the
 //! examples and library users: [`Mesh::compacted`] (drop unused vertices),
+//! [`Mesh::welded`] (merge vertices at bitwise-equal positions, as STL needs),
 //! [`Triangulation::to_mesh`] and [`Triangulation::to_mesh_with_positions`] (a surface
 //! back to a compact mesh), [`Component::carry`] (per-vertex data of the source mesh,
 //! such as positions, into a component), [`Component::to_mesh`], and
@@ -98,6 +99,73 @@ impl<const N: usize> Mesh<N> {
             faces,
         };
         Some((mesh, self.vertex_count - kept))
+    }
+}
+
+impl<const N: usize> Mesh<N> {
+    /// The mesh with vertices at bitwise-equal positions merged (all three coordinates
+    /// equal bit for bit, so `0.0` and `-0.0` stay apart and NaNs merge only with the
+    /// same NaN), and the number of vertices merged away.
+    ///
+    /// Deterministic: each group of equal positions becomes the vertex of its first
+    /// occurrence (lowest index); the kept vertices keep their relative order, renumbered
+    /// `0..k`; faces keep their order with their corners mapped (a face whose corners
+    /// merge keeps the repeated vertex, for validation to report). Unused vertices are
+    /// kept. A mesh without positions is returned unchanged with a count of 0.
+    ///
+    /// `None` if a face refers to a vertex `>= vertex_count` or `positions` has a length
+    /// other than `vertex_count`. O(V + F) expected (hashing).
+    pub fn welded(&self) -> Option<(Self, usize)> {
+        let Some(positions) = &self.positions else {
+            return self
+                .faces
+                .iter()
+                .flatten()
+                .all(|&v| (v as usize) < self.vertex_count)
+                .then(|| (self.clone(), 0));
+        };
+        if positions.len() != self.vertex_count {
+            return None;
+        }
+        let mut first: std::collections::HashMap<[u64; 3], u32> =
+            std::collections::HashMap::with_capacity(positions.len());
+        let mut new_id = Vec::with_capacity(positions.len());
+        let mut kept = Vec::new();
+        for p in positions {
+            // At most `vertex_count` distinct positions, and face indices are u32.
+            let next = u32::try_from(kept.len()).ok()?;
+            let id = *first.entry(p.map(f64::to_bits)).or_insert(next);
+            if id == next {
+                kept.push(*p);
+            }
+            new_id.push(id);
+        }
+        let faces = self
+            .faces
+            .iter()
+            .map(|f| {
+                let mut g = *f;
+                for v in &mut g {
+                    *v = *new_id.get(*v as usize)?;
+                }
+                Some(g)
+            })
+            .collect::<Option<Vec<_>>>()?;
+        let merged = self.vertex_count - kept.len();
+        Some((Mesh::with_positions(kept, faces), merged))
+    }
+
+    /// How many vertices share their position (bitwise, as in [`Self::welded`]) with a
+    /// vertex of lower index: what welding would merge away. 0 without positions.
+    pub fn coincident_vertex_count(&self) -> usize {
+        let Some(positions) = &self.positions else {
+            return 0;
+        };
+        let mut seen = std::collections::HashSet::with_capacity(positions.len());
+        positions
+            .iter()
+            .filter(|p| !seen.insert(p.map(f64::to_bits)))
+            .count()
     }
 }
 
@@ -212,6 +280,40 @@ mod tests {
     use super::*;
     use crate::core::{History, Surfaces, VertexId};
     use crate::gen;
+
+    #[test]
+    fn welded_merges_bitwise_equal_positions_in_first_occurrence_order() {
+        // Two triangles of a soup sharing an edge by position, an unused vertex, and
+        // 0.0 / -0.0 kept apart.
+        let p = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [-0.0, 0.0, 0.0],
+        ];
+        let m = TriMesh::with_positions(p, vec![[0, 1, 2], [3, 5, 4]]);
+        assert_eq!(m.coincident_vertex_count(), 2);
+        let (w, merged) = m.welded().unwrap();
+        assert_eq!(merged, 2);
+        assert_eq!(w.vertex_count, 5);
+        assert_eq!(w.faces, vec![[0, 1, 2], [1, 3, 2]]);
+        let wp = w.positions.as_ref().unwrap();
+        assert_eq!(wp[3], [1.0, 1.0, 0.0]);
+        assert_eq!(wp[4][0].to_bits(), (-0.0f64).to_bits());
+        // Idempotent; a face whose corners merge keeps its repeated vertex.
+        assert_eq!(w.welded().unwrap(), (w.clone(), 0));
+        let d = TriMesh::with_positions(vec![[0.0; 3], [0.0; 3], [1.0; 3]], vec![[0, 1, 2]]);
+        assert_eq!(d.welded().unwrap().0.faces, vec![[0, 0, 1]]);
+        // No positions: unchanged; inconsistent meshes: None.
+        let c = TriMesh::combinatorial(3, vec![[0, 1, 2]]);
+        assert_eq!(c.welded().unwrap(), (c.clone(), 0));
+        assert_eq!(TriMesh::combinatorial(2, vec![[0, 1, 2]]).welded(), None);
+        let bad = TriMesh::with_positions(vec![[0.0; 3]], vec![[0, 1, 2]]);
+        assert_eq!(bad.welded(), None);
+    }
 
     fn pos(i: usize) -> [f64; 3] {
         [i as f64, 0.5 * i as f64, -(i as f64)]

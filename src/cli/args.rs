@@ -6,7 +6,8 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 /// Topology-preserving edge contraction on closed triangulated surfaces.
 ///
-/// Reads OFF, OBJ and PLY (ascii or binary), optionally gzip-compressed (`.gz`).
+/// Reads OFF, OBJ, PLY (ascii or binary) and STL (binary or ascii), optionally
+/// gzip-compressed (`.gz`).
 /// Exit codes: 0 success, 2 invalid input, 1 other failures.
 #[derive(Parser, Debug)]
 #[command(name = "contractible", version, about, long_about = None)]
@@ -48,8 +49,12 @@ pub enum Command {
 
 #[derive(Args, Debug)]
 pub struct InfoArgs {
-    /// Mesh file (.off/.obj/.ply, optionally .gz).
+    /// Mesh file (.off/.obj/.ply/.stl, optionally .gz).
     pub file: PathBuf,
+    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
+    /// STL files are welded on reading already); the count is reported on stderr.
+    #[arg(long)]
+    pub weld: bool,
 }
 
 #[derive(Args, Debug)]
@@ -61,7 +66,7 @@ pub struct GenArgs {
 /// The output file of a generator.
 #[derive(Args, Debug)]
 pub struct OutArg {
-    /// Output file; the format follows the extension (.off/.obj/.ply, optionally .gz).
+    /// Output file; the format follows the extension (.off/.obj/.ply/.stl, optionally .gz).
     #[arg(short, long)]
     pub output: PathBuf,
 }
@@ -193,11 +198,15 @@ pub struct SubdivideArgs {
 pub struct ConvertArgs {
     /// Input mesh.
     pub input: PathBuf,
-    /// Output mesh (.off/.obj/.ply, optionally .gz; PLY is written binary little-endian).
+    /// Output mesh (.off/.obj/.ply/.stl, optionally .gz; PLY and STL are written binary).
     pub output: PathBuf,
     /// Convert even if the input is not a union of surfaces (closed or with boundary).
     #[arg(long)]
     pub no_validate: bool,
+    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
+    /// STL files are welded on reading already); the count is reported on stderr.
+    #[arg(long)]
+    pub weld: bool,
 }
 
 /// The reduction algorithms.
@@ -238,6 +247,10 @@ pub struct ReduceArgs {
     /// Skip the independent check that every output component is irreducible.
     #[arg(long)]
     pub no_verify: bool,
+    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
+    /// STL files are welded on reading already); the count is reported on stderr.
+    #[arg(long)]
+    pub weld: bool,
 }
 
 /// The tri-quad algorithms.
@@ -283,6 +296,10 @@ pub struct QuadArgs {
     /// triangulation K, which keeps the input's face indices.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
+    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
+    /// STL files are welded on reading already); the count is reported on stderr.
+    #[arg(long)]
+    pub weld: bool,
 }
 
 /// How `simplify` treats edges that fail the link condition.
@@ -354,7 +371,7 @@ pub struct SimplifyArgs {
     /// Input mesh with vertex positions (closed surfaces or surfaces with boundary, any
     /// number of components).
     pub input: PathBuf,
-    /// Output mesh (.off/.obj/.ply, optionally .gz); written only after the result has
+    /// Output mesh (.off/.obj/.ply/.stl, optionally .gz); written only after the result has
     /// passed the topology check.
     #[arg(short, long)]
     pub output: PathBuf,
@@ -379,6 +396,10 @@ pub struct SimplifyArgs {
     /// kept either way.
     #[arg(long)]
     pub allow_foldover: bool,
+    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
+    /// STL files are welded on reading already); the count is reported on stderr.
+    #[arg(long)]
+    pub weld: bool,
 }
 
 #[derive(Args, Debug)]

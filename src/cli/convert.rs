@@ -16,12 +16,15 @@ struct ConvertReport {
     /// Boundary loops found by validation (`null` with `--no-validate`).
     boundary_loops: Option<usize>,
     dropped_vertices: usize,
+    /// Vertices merged by `--weld` (present only with `--weld`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    welded_vertices: Option<usize>,
     validated: bool,
 }
 
 pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
     meshio::check_output(&a.output)?;
-    let (mesh, _) = meshio::read(&a.input, ui)?;
+    let (mesh, _, welded) = meshio::read_input(&a.input, a.weld, ui)?;
     // Surfaces with boundary are valid input: validation refuses only what is not a
     // surface (non-manifold edges or vertices, bad faces), with its location.
     let (components, boundary_loops) = if a.no_validate {
@@ -52,6 +55,7 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
         components,
         boundary_loops,
         dropped_vertices: dropped,
+        welded_vertices: welded,
         validated: !a.no_validate,
     };
     if ui.json {

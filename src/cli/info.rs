@@ -106,6 +106,9 @@ pub struct Report {
     #[serde(skip_serializing_if = "is_zero")]
     pub boundary_loops: usize,
     pub dropped_vertices: usize,
+    /// Vertices merged by `--weld` (present only with `--weld`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub welded_vertices: Option<usize>,
     pub component_list: Vec<ComponentInfo>,
     pub seconds_read: f64,
     pub seconds_build: f64,
@@ -160,6 +163,7 @@ impl Report {
             orientable: list.iter().all(|c| c.surface.is_orientable()),
             boundary_loops: list.iter().map(|c| c.surface.boundary_loops()).sum(),
             dropped_vertices,
+            welded_vertices: None,
             component_list: list,
             seconds_read,
             seconds_build,
@@ -189,6 +193,9 @@ impl Report {
         );
         if self.dropped_vertices > 0 {
             outln!("  unused vertices dropped: {}", self.dropped_vertices);
+        }
+        if let Some(n) = self.welded_vertices {
+            outln!("  vertices merged by --weld: {n}");
         }
         for (i, c) in self.component_list.iter().enumerate().take(max_rows) {
             let lengths = if c.boundary_loop_lengths.is_empty() {
@@ -241,9 +248,10 @@ fn join_lengths(lengths: &[usize], max: usize) -> String {
 }
 
 pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
-    let (mesh, seconds_read) = meshio::read(&a.file, ui)?;
+    let (mesh, seconds_read, welded) = meshio::read_input(&a.file, a.weld, ui)?;
     let (surfaces, seconds_build) = meshio::build_open(&mesh, &a.file, ui)?;
-    let report = Report::of_coned(&a.file, &surfaces, seconds_read, seconds_build);
+    let mut report = Report::of_coned(&a.file, &surfaces, seconds_read, seconds_build);
+    report.welded_vertices = welded;
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {

@@ -33,6 +33,99 @@ pub fn read(path: &Path, ui: Ui) -> Result<(TriMesh, f64), CliError> {
     Ok((mesh, t.elapsed().as_secs_f64()))
 }
 
+/// Reads an input mesh (see [`read`]); with `weld`, merges its vertices at bitwise-equal
+/// positions ([`Mesh::welded`]) and says how many on stderr (unless quiet). Returns the
+/// mesh, the seconds taken (welding included) and the number of vertices merged (`Some`
+/// exactly when `weld`).
+pub fn read_input(
+    path: &Path,
+    weld: bool,
+    ui: Ui,
+) -> Result<(TriMesh, f64, Option<usize>), CliError> {
+    let t = Instant::now();
+    let (mesh, _) = read(path, ui)?;
+    if !weld {
+        return Ok((mesh, t.elapsed().as_secs_f64(), None));
+    }
+    let before = mesh.vertex_count;
+    let (mesh, merged) = mesh.welded().ok_or_else(|| {
+        CliError::Failure(format!(
+            "{}: inconsistent mesh after reading",
+            path.display()
+        ))
+    })?;
+    if !ui.quiet {
+        eprintln!(
+            "{}: --weld merged {merged} vertices at identical positions ({before} -> {} vertices)",
+            path.display(),
+            mesh.vertex_count
+        );
+    }
+    Ok((mesh, t.elapsed().as_secs_f64(), Some(merged)))
+}
+
+/// A vertex count is "many" coincident vertices from this fraction of all vertices on.
+const SOUP_COINCIDENT_FRACTION: usize = 10;
+/// Welding that makes more than this fraction of the faces degenerate is no cure.
+const SOUP_DEGENERATE_FRACTION: usize = 100;
+
+/// One line saying that `mesh` looks like an unwelded triangle soup, and what to do, when
+/// it does: some vertices sit at the position of another (bitwise) and either every edge
+/// is a boundary edge (each in one face, over two faces or more) or at least a tenth of
+/// the vertices are such duplicates, and welding makes at most one face in a hundred
+/// degenerate. `None` otherwise (welding cannot help a mesh without coincident
+/// positions, nor one whose positions do not tell its vertices apart).
+pub fn soup_hint(mesh: &TriMesh, path: &Path) -> Option<String> {
+    let coincident = mesh.coincident_vertex_count();
+    if coincident == 0 {
+        return None;
+    }
+    let mut uses: std::collections::HashMap<(u32, u32), u32> =
+        std::collections::HashMap::with_capacity(mesh.faces.len() * 3 / 2);
+    for f in &mesh.faces {
+        for i in 0..3 {
+            let (a, b) = (f[i], f[(i + 1) % 3]);
+            *uses.entry((a.min(b), a.max(b))).or_insert(0) += 1;
+        }
+    }
+    let all_boundary = mesh.faces.len() >= 2 && uses.values().all(|&n| n == 1);
+    let many = coincident * SOUP_COINCIDENT_FRACTION >= mesh.vertex_count;
+    if !(all_boundary || many) {
+        return None;
+    }
+    // Welding must help: a mesh whose positions do not separate its vertices (all at
+    // 0 0 0, as `gen random` writes them) would collapse, so it is no soup.
+    let degenerate = mesh.welded().map_or(usize::MAX, |(w, _)| {
+        w.faces
+            .iter()
+            .filter(|f| f[0] == f[1] || f[1] == f[2] || f[0] == f[2])
+            .count()
+    });
+    if degenerate.saturating_mul(SOUP_DEGENERATE_FRACTION) > mesh.faces.len() {
+        return None;
+    }
+    let why = if all_boundary {
+        "every edge is a boundary edge and "
+    } else {
+        ""
+    };
+    Some(format!(
+        "{}: this looks like an unwelded triangle soup ({why}{coincident} of {} vertices sit at \
+         the position of another vertex): try --weld, which merges vertices at identical positions",
+        path.display(),
+        mesh.vertex_count
+    ))
+}
+
+/// An invalid-input error for `mesh` with `message`, followed by the soup hint when the
+/// mesh looks like an unwelded soup.
+fn invalid(mesh: &TriMesh, path: &Path, message: String) -> CliError {
+    match soup_hint(mesh, path) {
+        Some(hint) => CliError::Input(format!("{message}\n{hint}")),
+        None => CliError::Input(message),
+    }
+}
+
 /// Validates and splits a mesh into closed surfaces (with a spinner); returns them and
 /// the seconds taken. `path` names the source in messages.
 pub fn build(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(Surfaces, f64), CliError> {
@@ -71,27 +164,38 @@ pub fn build_closed(
                 }
                 Err(e) => format!("nor is it a surface with boundary: {e}"),
             };
-            return Err(CliError::Input(format!(
-                "{}: edge [{a}, {b}] is a boundary edge (face {face}): `{command}` needs closed surfaces ({why})",
-                path.display()
-            )));
+            return Err(invalid(
+                mesh,
+                path,
+                format!(
+                    "{}: edge [{a}, {b}] is a boundary edge (face {face}): `{command}` needs closed surfaces ({why})",
+                    path.display()
+                ),
+            ));
         }
         r => r,
     };
     pb.finish_and_clear();
-    let s = r.map_err(|e| CliError::Input(build_error_message(path, &e)))?;
+    let s = r.map_err(|e| invalid(mesh, path, build_error_message(path, &e)))?;
     warn_dropped(path, s.dropped_vertices.len(), ui);
     Ok((s, t.elapsed().as_secs_f64()))
 }
 
 /// Validates and splits a mesh into compact surfaces that may have boundary, each
-/// closed by coning (with a spinner); returns them and the seconds taken.
+/// closed by coning (with a spinner); returns them and the seconds taken. A valid mesh
+/// that looks like an unwelded soup (every triangle its own disc, say) gets the soup
+/// hint as a warning; an invalid one gets it in the error.
 pub fn build_open(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(ConedSurfaces, f64), CliError> {
     let t = Instant::now();
     let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
     let r = Surfaces::from_mesh_with_boundary(mesh);
     pb.finish_and_clear();
-    let s = r.map_err(|e| CliError::Input(build_error_message(path, &e)))?;
+    let s = r.map_err(|e| invalid(mesh, path, build_error_message(path, &e)))?;
+    if !ui.quiet {
+        if let Some(hint) = soup_hint(mesh, path) {
+            ui.warn(&hint);
+        }
+    }
     warn_dropped(path, s.dropped_vertices.len(), ui);
     Ok((s, t.elapsed().as_secs_f64()))
 }

@@ -96,6 +96,9 @@ pub struct QuadReport {
     pub seed: u64,
     pub component_count: usize,
     pub dropped_vertices: usize,
+    /// Vertices merged by `--weld` (present only with `--weld`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub welded_vertices: Option<usize>,
     #[serde(flatten)]
     pub totals: QuadStats,
     pub components: Vec<QuadStats>,
@@ -156,8 +159,14 @@ pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<
 pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
     for out in a.output.iter() {
         meshio::check_output(out)?;
+        if contractible::io::Format::from_path(out).0 == Some(contractible::io::Format::Stl) {
+            return Err(CliError::Input(format!(
+                "{}: STL holds triangles only; write the quad mesh as .off, .obj or .ply",
+                out.display()
+            )));
+        }
     }
-    let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
+    let (mesh, seconds_read, welded_vertices) = meshio::read_input(&a.input, a.weld, ui)?;
     let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "quad")?;
     let TriMesh {
         vertex_count,
@@ -223,6 +232,7 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         seed: a.seed,
         component_count: stats.len(),
         dropped_vertices,
+        welded_vertices,
         totals,
         components: stats,
         seconds_read,

@@ -99,6 +99,9 @@ pub struct ReduceReport {
     pub seed: u64,
     pub component_count: usize,
     pub dropped_vertices: usize,
+    /// Vertices merged by `--weld` (present only with `--weld`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub welded_vertices: Option<usize>,
     #[serde(flatten)]
     pub totals: ReduceStats,
     pub components: Vec<ReduceStats>,
@@ -184,7 +187,7 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
     if let Some(out) = &a.output {
         meshio::check_output(out)?;
     }
-    let (mesh, seconds_read) = meshio::read(&a.input, ui)?;
+    let (mesh, seconds_read, welded_vertices) = meshio::read_input(&a.input, a.weld, ui)?;
     let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "reduce")?;
     // Keep only what the output needs: the big face list and the triangulations are
     // consumed as the components are reduced (peak memory matters on 4M-face inputs).
@@ -231,6 +234,7 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         seed: a.seed,
         component_count: stats.len(),
         dropped_vertices,
+        welded_vertices,
         totals,
         components: stats,
         seconds_read,

@@ -50,6 +50,10 @@ pub struct SimplifyReport {
     pub stats: Stats,
     /// Unused input vertices (dropped, as every command does).
     pub dropped_vertices: usize,
+    /// Vertices merged by `--weld` (present only with `--weld`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub welded_vertices: Option<usize>,
+
     pub seconds_read: f64,
     /// Validating the input (faces and positions).
     pub seconds_build: f64,
@@ -242,7 +246,7 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         check_eps("--eps-rel", "the fraction of the bounding-box diagonal", r)?;
     }
     let path = &a.input;
-    let (mesh, seconds_read) = meshio::read(path, ui)?;
+    let (mesh, seconds_read, welded_vertices) = meshio::read_input(path, a.weld, ui)?;
     let t = Instant::now();
     let (positions, used) = checked_positions(&mesh, path)?;
     let (surfaces, _) = meshio::build_open(&mesh, path, ui)?;
@@ -309,6 +313,7 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         guard: options.guard,
         stats: out.stats,
         dropped_vertices,
+        welded_vertices,
         seconds_read,
         seconds_build,
         seconds_verify,

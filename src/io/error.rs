@@ -12,7 +12,7 @@ use std::path::PathBuf;
 pub enum Location {
     /// A 1-based line of a text format (OFF, OBJ, ascii PLY, any PLY header).
     Line(usize),
-    /// A 0-based byte offset into the decompressed input (binary PLY payload).
+    /// A 0-based byte offset into the decompressed input (binary PLY or STL).
     ByteOffset(u64),
     /// A 0-based face number, when no finer position is known.
     Face(usize),
@@ -41,13 +41,13 @@ pub enum ReadErrorKind {
     /// The gzip stream could not be decompressed (or a `.gz` file is not gzip).
     #[error("gzip decompression failed: {0}")]
     Decompress(String),
-    /// Neither the extension nor the content identifies OFF, OBJ or PLY.
-    #[error("unknown mesh format (expected OFF, OBJ or PLY)")]
+    /// Neither the extension nor the content identifies OFF, OBJ, PLY or STL.
+    #[error("unknown mesh format (expected OFF, OBJ, PLY or STL)")]
     UnknownFormat,
     /// The header is malformed or declares something unsupported.
     #[error("bad header: {0}")]
     BadHeader(String),
-    /// The input ended (binary PLY) before the declared data was complete.
+    /// The input ended (binary PLY or STL, ASCII STL) before the declared data was complete.
     #[error("input truncated: expected {expected}")]
     Truncated {
         /// What was still expected.
@@ -113,6 +113,9 @@ pub enum ReadErrorKind {
     /// PLY-specific structural problem (including what `ply-rs-bw` reported for the header).
     #[error("PLY: {0}")]
     Ply(String),
+    /// STL-specific structural problem (an ASCII keyword out of place).
+    #[error("STL: {0}")]
+    Stl(String),
     /// Malformed line of a surface list (`NAME: [[a,b,c],...]`, see [`crate::io::list`]).
     #[error("surface list: {0}")]
     List(String),
@@ -190,11 +193,21 @@ pub enum WriteError {
     /// The underlying writer or file failed.
     #[error("I/O error: {0}")]
     Io(#[from] std::io::Error),
-    /// The path's extension is not `.off`, `.obj` or `.ply` (optionally followed by `.gz`).
+    /// The path's extension is not `.off`, `.obj`, `.ply` or `.stl` (optionally followed
+    /// by `.gz`).
     #[error(
-        "cannot choose a format from the file name {0:?} (use .off, .obj or .ply, optionally .gz)"
+        "cannot choose a format from the file name {0:?} (use .off, .obj, .ply or .stl, optionally .gz)"
     )]
     UnknownFormat(PathBuf),
+    /// The format cannot hold this mesh (STL: no positions, non-triangle faces, more
+    /// than `u32::MAX` faces, a coordinate beyond the `f32` range).
+    #[error("cannot write {format}: {reason}")]
+    Unrepresentable {
+        /// The format.
+        format: &'static str,
+        /// Why.
+        reason: String,
+    },
     /// `positions` is present but its length differs from `vertex_count`.
     #[error("mesh has vertex_count {vertex_count} but {positions} positions")]
     PositionCountMismatch {

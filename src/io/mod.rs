@@ -1,4 +1,5 @@
-//! Mesh file I/O (OFF, OBJ, PLY ascii/binary, optionally gzip-compressed).
+//! Mesh file I/O (OFF, OBJ, PLY ascii/binary, STL binary/ASCII, optionally
+//! gzip-compressed).
 //!
 //! Reading guarantees, for every reader and any input bytes:
 //! - no panic, no arithmetic overflow on counts;
@@ -6,9 +7,11 @@
 //!   declared count is checked against the smallest possible encoding of that many records
 //!   in the bytes that remain, before anything is reserved);
 //! - every failure is a [`ReadError`] with a typed [`ReadErrorKind`] and a [`Location`]
-//!   (1-based line for text, byte offset for binary PLY payloads);
+//!   (1-based line for text, byte offset for binary PLY and STL payloads);
 //! - face indices are 0-based as in the file and checked `< vertex_count`; faces must be
 //!   triangles; coordinates must be finite. Manifoldness is *not* checked here.
+//! - STL has no shared vertices: its reader welds corners at bitwise-equal positions
+//!   (see the `stl` module's docs); [`Mesh::welded`] does the same for any mesh.
 //!
 //! Inputs are read completely into memory (and decompressed when gzip) before parsing.
 
@@ -17,6 +20,7 @@ pub mod list;
 mod obj;
 mod off;
 mod ply;
+mod stl;
 mod text;
 
 use std::fmt::Write as _;
@@ -38,10 +42,12 @@ pub enum Format {
     Obj,
     /// Stanford PLY (ascii or binary).
     Ply,
+    /// STL (binary or ASCII when read; written binary), welded on reading.
+    Stl,
 }
 
 impl Format {
-    /// The format named by a path's extension (`.off`, `.obj`, `.ply`, case-insensitive,
+    /// The format named by a path's extension (`.off`, `.obj`, `.ply`, `.stl`, case-insensitive,
     /// optionally followed by `.gz`), and whether the name ends in `.gz`.
     pub fn from_path(path: &Path) -> (Option<Format>, bool) {
         let name = path
@@ -58,17 +64,24 @@ impl Format {
             Some(Format::Obj)
         } else if stem.ends_with(".ply") {
             Some(Format::Ply)
+        } else if stem.ends_with(".stl") {
+            Some(Format::Stl)
         } else {
             None
         };
         (format, gz)
     }
 
-    /// Guesses the format of (decompressed) content from its first non-comment line:
-    /// an `OFF`-family keyword, the `ply` magic, or an OBJ statement. `None` otherwise.
+    /// Guesses the format of (decompressed) content: the `ply` magic; a binary STL whose
+    /// length matches its triangle count, or an ASCII STL's `solid` keyword; else from the
+    /// first non-comment line, an `OFF`-family keyword or an OBJ statement. `None`
+    /// otherwise.
     pub fn sniff(bytes: &[u8]) -> Option<Format> {
         if bytes.starts_with(b"ply") {
             return Some(Format::Ply);
+        }
+        if stl::sniff(bytes) {
+            return Some(Format::Stl);
         }
         let mut lines = text::Lines::new(bytes);
         let (_, line) = lines.next_data_line(b'#')?;
@@ -106,7 +119,7 @@ fn maybe_gunzip(bytes: &[u8]) -> Result<std::borrow::Cow<'_, [u8]>, ReadError> {
 
 /// Reads a triangle mesh from a file.
 ///
-/// Guarantees: the format comes from the extension (`.off`/`.obj`/`.ply`, case-insensitive,
+/// Guarantees: the format comes from the extension (`.off`/`.obj`/`.ply`/`.stl`, case-insensitive,
 /// optionally `.gz`), else from the content ([`Format::sniff`]); gzip content is detected by
 /// its magic bytes whatever the name (a `.gz` name without them is a `Decompress` error).
 /// Errors carry `path`. See the module docs for the per-input guarantees.
@@ -154,6 +167,7 @@ pub fn read_tri_mesh_bytes(bytes: &[u8], format: Option<Format>) -> Result<TriMe
         Format::Off => off::parse_off(&data),
         Format::Obj => obj::parse_obj(&data),
         Format::Ply => ply::parse_ply(&data),
+        Format::Stl => stl::parse_stl(&data),
     }
 }
 
@@ -184,7 +198,8 @@ pub fn check_mesh<const N: usize>(mesh: &Mesh<N>) -> Result<(), WriteError> {
 }
 
 /// Writes a mesh to a file; the format comes from the extension (`.off`, `.obj`, `.ply`,
-/// case-insensitive), a trailing `.gz` gzip-compresses, PLY is binary little-endian.
+/// `.stl`, case-insensitive), a trailing `.gz` gzip-compresses, PLY and STL are binary
+/// little-endian (STL: triangles with positions only, coordinates rounded to `f32`).
 ///
 /// Guarantees: the mesh is checked ([`check_mesh`]) before the file is created; positions
 /// are written with full `f64` precision (they read back bit-exactly); a mesh without
@@ -206,7 +221,8 @@ pub fn write_mesh<const N: usize>(path: &Path, mesh: &Mesh<N>) -> Result<(), Wri
     Ok(())
 }
 
-/// Writes a mesh in `format` (PLY binary little-endian when `ply_binary`, else ascii).
+/// Writes a mesh in `format` (PLY binary little-endian when `ply_binary`, else ascii;
+/// STL always binary).
 ///
 /// Guarantees: as [`write_mesh`]; nothing is written when [`check_mesh`] fails. Output is
 /// buffered internally; the writer is flushed at the end.
@@ -229,6 +245,7 @@ pub fn write_mesh_to<const N: usize>(
             };
             ply::write_ply(&mut w, mesh, enc)?;
         }
+        Format::Stl => stl::write_stl(&mut w, mesh)?,
     }
     w.flush()?;
     Ok(())

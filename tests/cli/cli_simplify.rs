@@ -791,7 +791,7 @@ fn non_manifold_and_unreadable_inputs_are_refused() {
         OsStr::new("simplify"),
         input.as_os_str(),
         OsStr::new("-o"),
-        d.path("out.stl").as_os_str(),
+        d.path("out.xyz").as_os_str(),
         OsStr::new("--eps"),
         OsStr::new("1"),
     ]);

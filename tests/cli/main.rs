@@ -13,3 +13,4 @@ mod cli_iso;
 mod cli_quad;
 mod cli_reduce;
 mod cli_simplify;
+mod cli_stl;

@@ -100,6 +100,7 @@ fn seed_corpora_and_regressions_of_the_parsers() {
         ("parse_off", Some(Format::Off)),
         ("parse_obj", Some(Format::Obj)),
         ("parse_ply", Some(Format::Ply)),
+        ("parse_stl", Some(Format::Stl)),
         ("parse_any", None),
     ] {
         let n = replay(target, |b| harness::check_parse(b, format));

@@ -400,8 +400,14 @@ fn writer_rejects_inconsistent_meshes_before_writing() {
             positions: 6
         }
     ));
-    let e = write_mesh(&tmp("x.stl"), &octahedron()).unwrap_err();
+    let e = write_mesh(&tmp("x.xyz"), &octahedron()).unwrap_err();
     assert!(matches!(e, WriteError::UnknownFormat(_)));
+    // STL holds only triangles with coordinates.
+    let e = write_mesh_to(&mut out, &m, Format::Stl, true).unwrap_err();
+    assert!(matches!(e, WriteError::PositionCountMismatch { .. }), "{e}");
+    let no_positions = contractible::TriMesh::combinatorial(3, vec![[0, 1, 2]]);
+    let e = write_mesh_to(&mut out, &no_positions, Format::Stl, true).unwrap_err();
+    assert!(matches!(e, WriteError::Unrepresentable { .. }), "{e}");
     assert!(out.is_empty());
 }
 
@@ -1159,8 +1165,12 @@ fn binary_ply_errors_have_byte_offsets() {
 
 #[test]
 fn unknown_format_and_bad_gzip() {
-    let e = read_tri_mesh_bytes(b"solid cube\nfacet normal 0 0 1\n", None).unwrap_err();
+    let e = read_tri_mesh_bytes(b"mesh cube\nfacet normal 0 0 1\n", None).unwrap_err();
     assert!(matches!(e.kind, K::UnknownFormat));
+    // `solid` is sniffed as ASCII STL, so this cut file is a located STL error.
+    let e = read_tri_mesh_bytes(b"solid cube\nfacet normal 0 0 1\n", None).unwrap_err();
+    assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+    assert_eq!(e.location, Location::Line(2));
     let e = read_tri_mesh_bytes(&[0x1f, 0x8b, 8, 0, 1, 2], None).unwrap_err();
     assert!(matches!(e.kind, K::Decompress(_)));
     let path = tmp("not_gzip.off.gz");

@@ -1,0 +1,679 @@
+//! STL reading (binary and ASCII) and binary STL writing.
+//!
+//! STL stores a list of independent triangles (a normal and three corner positions
+//! each); there are no shared vertices. The reader therefore *welds* corners by exact
+//! position: two corners are one vertex exactly when their three coordinates are
+//! bitwise equal (so `0.0` and `-0.0` stay apart, and nothing is merged within a
+//! tolerance). Vertices are numbered in order of first appearance, faces are the
+//! triangles in file order (face `i` is triangle `i` of the file). Normals and the binary
+//! attribute bytes are ignored (exporters write NaN normals for slivers; they carry
+//! nothing the topology needs).
+//!
+//! A triangle with two corners at the same position becomes a face with a repeated
+//! vertex. Like the other readers (which accept `3 0 0 1` in an OFF file), this reader
+//! keeps it: validation then refuses the mesh naming that face, which is triangle `i` of
+//! the file.
+//!
+//! **Binary or ASCII.** Many binary files start their free-form 80-byte header with
+//! `solid`, so that word alone does not decide. A file is read as binary when its size is
+//! exactly `84 + 50·n` for the triangle count `n` stored at bytes 80..84; otherwise as
+//! ASCII when it starts with the keyword `solid` (after an optional UTF-8 BOM and
+//! whitespace) and its first 512 bytes are text (no control bytes, which the binary
+//! count and coordinates nearly always contain); otherwise as binary, whose checks then
+//! say what is wrong.
+//!
+//! **Binary.** The declared count is checked against the input's length *before* anything
+//! is reserved: a shorter payload is `Truncated` at the offset of the first incomplete
+//! triangle (or a `CountMismatch` at byte 80 when the payload holds a whole number of
+//! triangles), a longer one is `TrailingData` at the offset where the declared triangles
+//! end. A NaN or infinite coordinate is `BadNumber` at the byte offset of that `f32`.
+//!
+//! **ASCII.** `solid [name]`, then `facet normal nx ny nz`, `outer loop`, three
+//! `vertex x y z`, `endloop`, `endfacet` per triangle, and `endsolid [name]`; keywords are
+//! case-insensitive and may be split over lines in any way (tokens are read across
+//! lines); several `solid ... endsolid` blocks in one file form one mesh. Errors carry the
+//! 1-based line: a missing keyword (`Stl`), a missing or non-finite coordinate
+//! (`MissingValue`, `BadNumber`), a loop without exactly three vertices
+//! (`NonTriangleFace`), input that ends before `endsolid` (`Truncated`), data after the
+//! last `endsolid` (`TrailingData`).
+//!
+//! **Writing** is binary little-endian: an 80-byte header that does not start with `solid`
+//! (so that no reader mistakes it for ASCII), the count, and per face the unit normal of
+//! the positions (zero for a degenerate triangle), the corners as `f32`, and a zero
+//! attribute count. STL can only hold triangles with coordinates, so a mesh without
+//! positions, with non-triangle faces, with more than `u32::MAX` faces or with a
+//! coordinate beyond the `f32` range is refused before anything is written. Coordinates
+//! are rounded to `f32`: positions that differ only below `f32` precision are one vertex
+//! when the file is read back.
+//!
+//! **Why hand-written.** The maintained crate `stl_io` (0.11) was surveyed: it decides
+//! ASCII by a first line starting with `solid ` (so the many binary files whose header
+//! starts that way are misread as ASCII, and an ASCII `solid` without a name is refused),
+//! never compares the binary triangle count with the input's length (a wrong count reads
+//! as an I/O end-of-file error), reports every problem as an `std::io::Error` with no
+//! line or byte offset, and stores `f32` only. The format is small enough that a reader
+//! with the crate's located errors and allocation rules is shorter than the adaptation
+//! around `stl_io` would be.
+
+use std::collections::HashMap;
+use std::io::Write;
+
+use super::error::{token_string, ReadError, ReadErrorKind as K, WriteError};
+use super::text::{is_space, parse_f64, Lines, Tokens};
+use crate::mesh::{Mesh, TriMesh};
+
+/// Bytes before the binary payload: the 80-byte header and the `u32` triangle count.
+const PAYLOAD_START: usize = 84;
+/// Bytes per binary triangle: 12 `f32` (normal, three corners) and a `u16` attribute count.
+const TRIANGLE_BYTES: usize = 50;
+/// How many leading bytes must be text for a `solid` file to be read as ASCII.
+const TEXT_PROBE: usize = 512;
+const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
+/// The header of the files written here (padded with spaces to 80 bytes).
+const WRITE_HEADER: &[u8] = b"binary STL written by contractible";
+
+/// Welds triangle corners by bitwise-equal position while the triangles are read.
+struct Welder {
+    index: HashMap<[u64; 3], u32>,
+    positions: Vec<[f64; 3]>,
+    faces: Vec<[u32; 3]>,
+}
+
+impl Welder {
+    /// Room for `triangles` faces (a count already checked against the input's size).
+    fn with_capacity(triangles: usize) -> Self {
+        // A closed triangle mesh has about half as many vertices as faces.
+        let vertices = triangles / 2 + 3;
+        Welder {
+            index: HashMap::with_capacity(vertices),
+            positions: Vec::with_capacity(vertices),
+            faces: Vec::with_capacity(triangles),
+        }
+    }
+
+    /// The vertex at position `p` (a new one at its first appearance); `None` when a new
+    /// vertex would not be addressable by a `u32`.
+    fn vertex(&mut self, p: [f64; 3]) -> Option<u32> {
+        let key = p.map(f64::to_bits);
+        if let Some(&v) = self.index.get(&key) {
+            return Some(v);
+        }
+        let v = u32::try_from(self.positions.len()).ok()?;
+        self.index.insert(key, v);
+        self.positions.push(p);
+        Some(v)
+    }
+
+    fn finish(self) -> TriMesh {
+        Mesh::with_positions(self.positions, self.faces)
+    }
+}
+
+fn too_many_vertices(count: usize) -> K {
+    K::CountTooLarge {
+        what: "distinct STL vertices",
+        declared: count as u64 + 1,
+    }
+}
+
+/// Whether the length is exactly that of a binary STL with the count at bytes 80..84.
+fn binary_size_matches(bytes: &[u8]) -> bool {
+    match bytes.get(80..PAYLOAD_START) {
+        Some(&[a, b, c, d]) => {
+            let n = u64::from(u32::from_le_bytes([a, b, c, d]));
+            (bytes.len() - PAYLOAD_START) as u64 == n * TRIANGLE_BYTES as u64
+        }
+        _ => false,
+    }
+}
+
+/// The content after an optional UTF-8 BOM and leading whitespace.
+fn text_start(bytes: &[u8]) -> &[u8] {
+    let b = bytes.strip_prefix(UTF8_BOM).unwrap_or(bytes);
+    let skip = b
+        .iter()
+        .position(|&c| !(is_space(c) || c == b'\n'))
+        .unwrap_or(b.len());
+    &b[skip..]
+}
+
+/// Whether `bytes` start with the keyword `solid` (case-insensitive, followed by
+/// whitespace or the end).
+fn starts_with_solid(bytes: &[u8]) -> bool {
+    let b = text_start(bytes);
+    b.get(..5).is_some_and(|k| k.eq_ignore_ascii_case(b"solid"))
+        && b.get(5).is_none_or(|&c| is_space(c) || c == b'\n')
+}
+
+/// Whether the content is to be read as ASCII STL (see the module docs).
+fn is_ascii(bytes: &[u8]) -> bool {
+    starts_with_solid(bytes)
+        && !binary_size_matches(bytes)
+        && bytes
+            .iter()
+            .take(TEXT_PROBE)
+            .all(|&c| c >= 0x20 || is_space(c) || c == b'\n')
+}
+
+/// Whether the content looks like STL: a binary file of consistent size, or ASCII.
+pub(crate) fn sniff(bytes: &[u8]) -> bool {
+    binary_size_matches(bytes) || is_ascii(bytes)
+}
+
+/// Parses STL bytes (binary or ASCII, decided as the module docs say) into a welded
+/// triangle mesh.
+pub(crate) fn parse_stl(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+    if is_ascii(bytes) {
+        parse_ascii(bytes)
+    } else {
+        parse_binary(bytes)
+    }
+}
+
+fn parse_binary(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+    let Some(&[a, b, c, d]) = bytes.get(80..PAYLOAD_START) else {
+        return Err(ReadError::at_byte(
+            K::Truncated {
+                expected: "an 80-byte header and a 4-byte triangle count (binary STL)".into(),
+            },
+            bytes.len(),
+        ));
+    };
+    let declared = u64::from(u32::from_le_bytes([a, b, c, d]));
+    let payload = (bytes.len() - PAYLOAD_START) as u64;
+    let per = TRIANGLE_BYTES as u64;
+    let whole = payload / per;
+    if whole < declared {
+        return Err(if payload % per != 0 {
+            ReadError::new(
+                K::Truncated {
+                    expected: format!(
+                        "triangle {whole} of {declared} ({TRIANGLE_BYTES} bytes), found {} bytes",
+                        payload % per
+                    ),
+                },
+                super::Location::ByteOffset(PAYLOAD_START as u64 + whole * per),
+            )
+        } else {
+            ReadError::at_byte(
+                K::CountMismatch {
+                    what: "triangles",
+                    declared,
+                    found: whole,
+                },
+                80,
+            )
+        });
+    }
+    if payload > declared * per {
+        return Err(ReadError::new(
+            K::TrailingData { what: "triangle" },
+            super::Location::ByteOffset(PAYLOAD_START as u64 + declared * per),
+        ));
+    }
+    // The count now matches the input's length: `declared` triangles are present.
+    let mut welder = Welder::with_capacity(declared as usize);
+    let payload_bytes = bytes.get(PAYLOAD_START..).unwrap_or_default();
+    for (i, t) in payload_bytes.chunks_exact(TRIANGLE_BYTES).enumerate() {
+        let base = PAYLOAD_START + i * TRIANGLE_BYTES;
+        let mut face = [0u32; 3];
+        for (k, slot) in face.iter_mut().enumerate() {
+            let mut p = [0.0f64; 3];
+            for (j, c) in p.iter_mut().enumerate() {
+                // Corners start after the 12-byte normal; `at + 3 < 48 <= t.len()`.
+                let at = 12 + 12 * k + 4 * j;
+                let x = f32::from_le_bytes([t[at], t[at + 1], t[at + 2], t[at + 3]]);
+                if !x.is_finite() {
+                    return Err(ReadError::at_byte(
+                        K::BadNumber {
+                            token: x.to_string(),
+                        },
+                        base + at,
+                    ));
+                }
+                *c = f64::from(x);
+            }
+            *slot = welder.vertex(p).ok_or_else(|| {
+                ReadError::at_byte(too_many_vertices(welder.positions.len()), base)
+            })?;
+        }
+        welder.faces.push(face);
+    }
+    Ok(welder.finish())
+}
+
+/// Whitespace-separated tokens across lines, each with its 1-based line.
+struct TokenStream<'a> {
+    lines: Lines<'a>,
+    tokens: Tokens<'a>,
+    line: usize,
+}
+
+impl<'a> TokenStream<'a> {
+    fn new(bytes: &'a [u8]) -> Self {
+        TokenStream {
+            lines: Lines::new(bytes),
+            tokens: Tokens::new(b""),
+            line: 0,
+        }
+    }
+
+    fn next(&mut self) -> Option<(usize, &'a [u8])> {
+        loop {
+            if let Some(t) = self.tokens.next() {
+                return Some((self.line, t));
+            }
+            let (n, l) = self.lines.next_line()?;
+            self.line = n;
+            self.tokens = Tokens::new(l);
+        }
+    }
+
+    /// Drops the rest of the current line (a solid's name).
+    fn skip_line(&mut self) {
+        self.tokens = Tokens::new(b"");
+    }
+
+    /// The last line read (1 at least), where an unexpected end is reported.
+    fn last_line(&self) -> usize {
+        self.line.max(1)
+    }
+
+    /// The next token, which must be the keyword `kw` (case-insensitive).
+    fn expect(&mut self, kw: &'static str) -> Result<usize, ReadError> {
+        match self.next() {
+            Some((n, t)) if t.eq_ignore_ascii_case(kw.as_bytes()) => Ok(n),
+            Some((n, t)) => Err(ReadError::at_line(
+                K::Stl(format!("expected `{kw}`, found {:?}", token_string(t))),
+                n,
+            )),
+            None => Err(ReadError::at_line(
+                K::Truncated {
+                    expected: format!("`{kw}`"),
+                },
+                self.last_line(),
+            )),
+        }
+    }
+
+    /// The next token, which must exist (`what` names it in the error).
+    fn value(&mut self, what: &'static str) -> Result<(usize, &'a [u8]), ReadError> {
+        self.next().ok_or_else(|| {
+            ReadError::at_line(
+                K::Truncated {
+                    expected: what.into(),
+                },
+                self.last_line(),
+            )
+        })
+    }
+}
+
+fn is_kw(t: &[u8], kw: &str) -> bool {
+    t.eq_ignore_ascii_case(kw.as_bytes())
+}
+
+fn parse_ascii(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+    let body = bytes.strip_prefix(UTF8_BOM).unwrap_or(bytes);
+    let mut ts = TokenStream::new(body);
+    ts.expect("solid")?;
+    ts.skip_line();
+    let mut welder = Welder::with_capacity(0);
+    loop {
+        let (n, t) = ts.value("`facet` or `endsolid`")?;
+        if is_kw(t, "endsolid") {
+            ts.skip_line();
+            match ts.next() {
+                None => break,
+                Some((_, t)) if is_kw(t, "solid") => {
+                    ts.skip_line();
+                    continue;
+                }
+                Some((n, _)) => {
+                    return Err(ReadError::at_line(K::TrailingData { what: "solid" }, n));
+                }
+            }
+        }
+        if !is_kw(t, "facet") {
+            return Err(ReadError::at_line(
+                K::Stl(format!(
+                    "expected `facet` or `endsolid`, found {:?}",
+                    token_string(t)
+                )),
+                n,
+            ));
+        }
+        let face_no = welder.faces.len();
+        ts.expect("normal")?;
+        // The normal is ignored (its three values must be present).
+        for _ in 0..3 {
+            ts.value("a normal component")?;
+        }
+        ts.expect("outer")?;
+        ts.expect("loop")?;
+        let mut face = [0u32; 3];
+        let mut corners = 0u64;
+        let end_line = loop {
+            let (n, t) = ts.value("`vertex` or `endloop`")?;
+            if is_kw(t, "endloop") {
+                break n;
+            }
+            if !is_kw(t, "vertex") {
+                return Err(ReadError::at_line(
+                    K::Stl(format!(
+                        "expected `vertex` or `endloop`, found {:?}",
+                        token_string(t)
+                    )),
+                    n,
+                ));
+            }
+            let mut p = [0.0f64; 3];
+            for (c, name) in p
+                .iter_mut()
+                .zip(["x coordinate", "y coordinate", "z coordinate"])
+            {
+                let (n, tok) = ts.value(name)?;
+                *c = parse_f64(tok).ok_or_else(|| {
+                    ReadError::at_line(
+                        K::BadNumber {
+                            token: token_string(tok),
+                        },
+                        n,
+                    )
+                })?;
+            }
+            if let Some(slot) = usize::try_from(corners).ok().and_then(|i| face.get_mut(i)) {
+                *slot = welder.vertex(p).ok_or_else(|| {
+                    ReadError::at_line(too_many_vertices(welder.positions.len()), n)
+                })?;
+            }
+            corners += 1;
+        };
+        if corners != 3 {
+            return Err(ReadError::at_line(
+                K::NonTriangleFace {
+                    face: face_no,
+                    corners,
+                },
+                end_line,
+            ));
+        }
+        ts.expect("endfacet")?;
+        welder.faces.push(face);
+    }
+    Ok(welder.finish())
+}
+
+/// What makes `mesh` impossible to write as STL, if anything (checked before writing).
+fn unrepresentable<const N: usize>(mesh: &Mesh<N>) -> Option<String> {
+    if N != 3 {
+        return Some(format!(
+            "STL holds triangles only, this mesh has {N}-corner faces"
+        ));
+    }
+    let Some(p) = &mesh.positions else {
+        return Some(
+            "STL stores triangles by their corner positions and this mesh has none".into(),
+        );
+    };
+    if u32::try_from(mesh.faces.len()).is_err() {
+        return Some(format!(
+            "{} faces exceed the binary STL count (u32)",
+            mesh.faces.len()
+        ));
+    }
+    if let Some(v) = p
+        .iter()
+        .position(|q| q.iter().any(|&x| !(x as f32).is_finite()))
+    {
+        return Some(format!("vertex {v} has a coordinate beyond the f32 range"));
+    }
+    None
+}
+
+/// Writes binary little-endian STL (see the module docs). The mesh must pass
+/// [`super::check_mesh`]; anything STL cannot hold is refused before the first byte.
+pub(crate) fn write_stl<const N: usize>(
+    w: &mut impl Write,
+    mesh: &Mesh<N>,
+) -> Result<(), WriteError> {
+    if let Some(reason) = unrepresentable(mesh) {
+        return Err(WriteError::Unrepresentable {
+            format: "STL",
+            reason,
+        });
+    }
+    let (Some(positions), Ok(count)) = (&mesh.positions, u32::try_from(mesh.faces.len())) else {
+        // Excluded by `unrepresentable`.
+        return Err(WriteError::Unrepresentable {
+            format: "STL",
+            reason: "no positions or too many faces".into(),
+        });
+    };
+    let mut header = [b' '; 80];
+    header[..WRITE_HEADER.len()].copy_from_slice(WRITE_HEADER);
+    w.write_all(&header)?;
+    w.write_all(&count.to_le_bytes())?;
+    let mut rec = [0u8; TRIANGLE_BYTES];
+    for f in &mesh.faces {
+        let mut corners = [[0.0f64; 3]; 3];
+        for (c, &v) in corners.iter_mut().zip(f.iter()) {
+            // `check_mesh` guarantees every index is in range.
+            *c = positions.get(v as usize).copied().unwrap_or_default();
+        }
+        let normal = unit_normal(&corners);
+        let values = normal.iter().chain(corners.iter().flatten());
+        for (i, &x) in values.enumerate() {
+            rec[4 * i..4 * i + 4].copy_from_slice(&(x as f32).to_le_bytes());
+        }
+        // rec[48..50]: attribute byte count, zero.
+        w.write_all(&rec)?;
+    }
+    Ok(())
+}
+
+/// The unit normal of a triangle (right-hand rule), or zero when it has no area.
+fn unit_normal([a, b, c]: &[[f64; 3]; 3]) -> [f64; 3] {
+    let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+    let n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    if len > 0.0 && len.is_finite() {
+        n.map(|x| x / len)
+    } else {
+        [0.0; 3]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::io::Location;
+
+    /// A binary STL of `tris` (corner positions), with `count` in the header.
+    fn binary(tris: &[[[f32; 3]; 3]], count: u32) -> Vec<u8> {
+        let mut b = b"solid but binary".to_vec();
+        b.resize(80, 0);
+        b.extend_from_slice(&count.to_le_bytes());
+        for t in tris {
+            b.extend_from_slice(&[0u8; 12]);
+            for c in t.iter().flatten() {
+                b.extend_from_slice(&c.to_le_bytes());
+            }
+            b.extend_from_slice(&[0, 0]);
+        }
+        b
+    }
+
+    const TETRA: [[[f32; 3]; 3]; 4] = [
+        [[0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]],
+        [[0.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]],
+        [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+    ];
+
+    fn ascii(tris: &[[[f32; 3]; 3]]) -> String {
+        let mut s = String::from("solid tetra\n");
+        for t in tris {
+            s.push_str("  facet normal 0 0 0\n    outer loop\n");
+            for [x, y, z] in t {
+                s.push_str(&format!("      vertex {x} {y} {z}\n"));
+            }
+            s.push_str("    endloop\n  endfacet\n");
+        }
+        s.push_str("endsolid tetra\n");
+        s
+    }
+
+    fn err(bytes: &[u8]) -> ReadError {
+        match parse_stl(bytes) {
+            Ok(m) => panic!("accepted: {m:?}"),
+            Err(e) => e,
+        }
+    }
+
+    #[test]
+    fn binary_with_solid_header_is_welded() {
+        let m = parse_stl(&binary(&TETRA, 4)).unwrap();
+        assert_eq!(m.vertex_count, 4);
+        assert_eq!(m.faces, vec![[0, 1, 2], [0, 2, 3], [0, 3, 1], [2, 1, 3]]);
+        let p = m.positions.unwrap();
+        assert_eq!(p[3], [0.0, 0.0, 1.0]);
+    }
+
+    #[test]
+    fn ascii_matches_binary() {
+        let a = parse_stl(ascii(&TETRA).as_bytes()).unwrap();
+        assert_eq!(a, parse_stl(&binary(&TETRA, 4)).unwrap());
+        // Keywords in any case, split over lines, two solids, BOM, no name.
+        let text = "\u{feff}SOLID\nfacet normal 0 0 1 outer loop vertex 0 0 0\nvertex 1 0 0 vertex 0 1 0 endloop\nendfacet ENDSOLID\nsolid b\nfacet normal nan nan nan outer loop vertex 0 0 0 vertex 0 1 0 vertex 0 0 1 endloop endfacet\nendsolid b\n";
+        let m = parse_stl(text.as_bytes()).unwrap();
+        assert_eq!(m.vertex_count, 4);
+        assert_eq!(m.faces, vec![[0, 1, 2], [0, 2, 3]]);
+    }
+
+    #[test]
+    fn binary_count_checked_against_length() {
+        let good = binary(&TETRA, 4);
+        // Cut inside triangle 2.
+        let e = err(&good[..84 + 2 * 50 + 7]);
+        assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+        assert_eq!(e.location, Location::ByteOffset(184));
+        // A whole number of triangles, fewer than declared; a count of u32::MAX on a tiny
+        // input must not allocate.
+        for count in [5, u32::MAX] {
+            let e = err(&binary(&TETRA, count));
+            assert!(
+                matches!(e.kind, K::CountMismatch { declared, found: 4, .. } if declared == u64::from(count)),
+                "{e}"
+            );
+            assert_eq!(e.location, Location::ByteOffset(80));
+        }
+        // More bytes than declared.
+        let e = err(&binary(&TETRA, 3));
+        assert!(matches!(e.kind, K::TrailingData { .. }), "{e}");
+        assert_eq!(e.location, Location::ByteOffset(84 + 150));
+        // Shorter than the header.
+        let e = err(&good[..50]);
+        assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+        assert_eq!(e.location, Location::ByteOffset(50));
+    }
+
+    #[test]
+    fn non_finite_coordinates_are_located() {
+        let mut t = TETRA;
+        t[1][2][1] = f32::NAN;
+        let e = err(&binary(&t, 4));
+        assert!(matches!(e.kind, K::BadNumber { .. }), "{e}");
+        // Triangle 1, corner 2, y: 84 + 50 + 12 + 24 + 4.
+        assert_eq!(e.location, Location::ByteOffset(84 + 50 + 40));
+        let text = ascii(&TETRA).replacen("vertex 1 0 0", "vertex 1 inf 0", 1);
+        let e = err(text.as_bytes());
+        assert!(matches!(e.kind, K::BadNumber { .. }), "{e}");
+        // solid, facet, outer loop, vertex 0 0 0, vertex 0 1 0, then this one.
+        assert_eq!(e.location, Location::Line(6));
+    }
+
+    #[test]
+    fn ascii_errors_are_located() {
+        let full = ascii(&TETRA);
+        let lines: Vec<&str> = full.lines().collect();
+        // Cut after the second facet: `endsolid` missing.
+        let cut = lines[..15].join("\n");
+        let e = err(cut.as_bytes());
+        assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+        assert_eq!(e.location, Location::Line(15));
+        // A quad loop.
+        let quad = full.replacen("    endloop", "      vertex 5 5 5\n    endloop", 1);
+        let e = err(quad.as_bytes());
+        assert!(
+            matches!(
+                e.kind,
+                K::NonTriangleFace {
+                    face: 0,
+                    corners: 4
+                }
+            ),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::Line(8));
+        // A misspelt keyword, a missing coordinate, trailing data.
+        let e = err(full.replacen("outer loop", "outer lop", 1).as_bytes());
+        assert!(matches!(e.kind, K::Stl(_)), "{e}");
+        assert_eq!(e.location, Location::Line(3));
+        let e = err(full.replacen("vertex 0 1 0", "vertex 0 1", 1).as_bytes());
+        assert!(matches!(e.kind, K::BadNumber { .. }), "{e}");
+        let e = err(format!("{full}junk\n").as_bytes());
+        assert!(matches!(e.kind, K::TrailingData { .. }), "{e}");
+        assert_eq!(e.location, Location::Line(lines.len() + 1));
+    }
+
+    #[test]
+    fn degenerate_triangle_keeps_its_repeated_vertex() {
+        let mut t = TETRA.to_vec();
+        t.push([[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]);
+        let m = parse_stl(&binary(&t, 5)).unwrap();
+        assert_eq!(m.faces[4], [0, 0, 2]);
+    }
+
+    #[test]
+    fn written_binary_reads_back() {
+        let m = parse_stl(&binary(&TETRA, 4)).unwrap();
+        let mut out = Vec::new();
+        write_stl(&mut out, &m).unwrap();
+        assert_eq!(out.len(), 84 + 4 * 50);
+        assert!(!out.starts_with(b"solid"));
+        assert!(sniff(&out));
+        assert_eq!(parse_stl(&out).unwrap(), m);
+        // The normal of face 0 (corners (0,0,0), (0,1,0), (1,0,0)) is -z.
+        let nz = f32::from_le_bytes([out[92], out[93], out[94], out[95]]);
+        assert_eq!(nz, -1.0);
+    }
+
+    #[test]
+    fn unwritable_meshes_are_refused_before_writing() {
+        let mut out = Vec::new();
+        let no_pos = TriMesh::combinatorial(3, vec![[0, 1, 2]]);
+        assert!(matches!(
+            write_stl(&mut out, &no_pos),
+            Err(WriteError::Unrepresentable { .. })
+        ));
+        let quad = Mesh::<4>::with_positions(vec![[0.0; 3]; 4], vec![[0, 1, 2, 3]]);
+        assert!(write_stl(&mut out, &quad).is_err());
+        let huge =
+            TriMesh::with_positions(vec![[1e300, 0.0, 0.0], [0.0; 3], [1.0; 3]], vec![[0, 1, 2]]);
+        assert!(write_stl(&mut out, &huge).is_err());
+        assert!(out.is_empty());
+    }
+
+    #[test]
+    fn text_that_is_not_stl_is_not_sniffed() {
+        assert!(!sniff(b"OFF\n3 1 0\n"));
+        assert!(!sniff(b"solidity 1 2 3"));
+        assert!(sniff(b"solid x\nendsolid x\n"));
+    }
+}
