@@ -183,15 +183,17 @@ pub fn build_closed(
 
 /// Validates and splits a mesh into compact surfaces that may have boundary, each
 /// closed by coning (with a spinner); returns them and the seconds taken. A valid mesh
-/// that looks like an unwelded soup (every triangle its own disc, say) gets the soup
-/// hint as a warning; an invalid one gets it in the error.
+/// with boundary that looks like an unwelded soup (every triangle its own disc, say) gets
+/// the soup hint as a warning; an invalid one gets it in the error.
 pub fn build_open(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(ConedSurfaces, f64), CliError> {
     let t = Instant::now();
     let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
     let r = Surfaces::from_mesh_with_boundary(mesh);
     pb.finish_and_clear();
     let s = r.map_err(|e| invalid(mesh, path, build_error_message(path, &e)))?;
-    if !ui.quiet {
+    // A valid mesh of closed surfaces is no soup (a soup's triangles are open discs),
+    // and skipping it spares the position hashing on every large closed input.
+    if !ui.quiet && !s.is_closed() {
         if let Some(hint) = soup_hint(mesh, path) {
             ui.warn(&hint);
         }
