@@ -60,7 +60,8 @@
 //! virtual vertices and cone faces.
 
 use super::build::{
-    check, check_open, face_components, split, BuildError, Checked, Component, OpenCheck, Surfaces,
+    check, check_open, face_components, split, unused_vertices, BuildError, Checked, Component,
+    OpenCheck, Surfaces,
 };
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::tri::Triangulation;
@@ -270,12 +271,8 @@ impl ConedSurfaces {
             }
         };
         let Checked { tri, used } = checked;
-        let dropped_vertices: Vec<u32> = used[..vertex_count]
-            .iter()
-            .enumerate()
-            .filter(|(_, &u)| !u)
-            .map(|(i, _)| i as u32)
-            .collect();
+        // Cone apexes come after the mesh's vertices and are always used.
+        let dropped_vertices = unused_vertices(&used[..vertex_count]);
         let (label, count) = face_components(&tri);
         let virtual_count = (tri.vertex_capacity() - vertex_count) as u32;
         let components = if count == 1 && dropped_vertices.is_empty() {

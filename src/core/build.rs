@@ -507,6 +507,16 @@ fn count_fans(tri: &Triangulation, v: u32) -> usize {
     cycles
 }
 
+/// The indices whose `used` flag is false, in increasing order (the mesh vertices no
+/// face uses, which the builders drop). O(V).
+pub(super) fn unused_vertices(used: &[bool]) -> Vec<u32> {
+    used.iter()
+        .enumerate()
+        .filter(|(_, &u)| !u)
+        .map(|(i, _)| i as u32)
+        .collect()
+}
+
 /// Connected components of the face graph: `label[f]` and the component count. O(F).
 pub(super) fn face_components(tri: &Triangulation) -> (Vec<u32>, usize) {
     let nf = tri.face_capacity();
@@ -585,12 +595,7 @@ impl Surfaces {
     /// [`Self::from_mesh`] on a bare face list.
     pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
         let Checked { tri, used } = check(vertex_count, faces)?;
-        let dropped_vertices: Vec<u32> = used
-            .iter()
-            .enumerate()
-            .filter(|(_, &u)| !u)
-            .map(|(i, _)| i as u32)
-            .collect();
+        let dropped_vertices = unused_vertices(&used);
         let (label, count) = face_components(&tri);
         let components = if count == 1 && dropped_vertices.is_empty() {
             vec![Component {

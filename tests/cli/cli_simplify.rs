@@ -6,6 +6,7 @@
 //! message, nothing on stdout and no file (not even a temporary one) in the directory.
 
 use crate::cli_common;
+use crate::common::{find, union};
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::ffi::{OsStr, OsString};
@@ -17,19 +18,6 @@ use serde_json::Value;
 
 /// (χ, orientable, boundary loops) of one component.
 type Topo = (i64, bool, usize);
-
-fn find(parent: &mut [usize], mut x: usize) -> usize {
-    while parent[x] != x {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    x
-}
-
-fn union(parent: &mut [usize], a: usize, b: usize) {
-    let (ra, rb) = (find(parent, a), find(parent, b));
-    parent[ra.max(rb)] = ra.min(rb);
-}
 
 /// The sorted per-component topology of a face list. Panics unless every edge lies in
 /// one or two faces and every boundary vertex on exactly two boundary edges.

@@ -434,3 +434,19 @@ pub fn small_published_surfaces() -> Vec<(String, Triangulation)> {
     }
     out
 }
+
+/// Union–find: the root of `x`'s set (with path halving), for the independent topology
+/// checkers of the tests.
+pub fn find(parent: &mut [usize], mut x: usize) -> usize {
+    while parent[x] != x {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+    }
+    x
+}
+
+/// Union–find: joins the sets of `a` and `b`; the smaller root index stays the root.
+pub fn union(parent: &mut [usize], a: usize, b: usize) {
+    let (ra, rb) = (find(parent, a), find(parent, b));
+    parent[ra.max(rb)] = ra.min(rb);
+}

@@ -11,6 +11,8 @@ use contractible::gen::{
 };
 use contractible::{Surfaces, TriMesh, Triangulation};
 
+use crate::common::{find, union};
+
 const BOTH: [Tessellation; 2] = [Tessellation::SixTetrahedra, Tessellation::BodyCentred];
 
 /// One connected component as seen by the checker.
@@ -26,21 +28,6 @@ struct Part {
 impl Part {
     fn chi(&self) -> i64 {
         self.v as i64 - self.e as i64 + self.f as i64
-    }
-}
-
-fn find(parent: &mut [usize], mut x: usize) -> usize {
-    while parent[x] != x {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    x
-}
-
-fn union(parent: &mut [usize], a: usize, b: usize) {
-    let (ra, rb) = (find(parent, a), find(parent, b));
-    if ra != rb {
-        parent[ra.max(rb)] = ra.min(rb);
     }
 }
 
