@@ -1,0 +1,209 @@
+"""contractible: topology-preserving edge contraction on triangulated surfaces.
+
+NumPy in, NumPy out. ``V`` is a float64 array of shape (n, 3) (optional where the
+algorithm is combinatorial), ``F`` an integer array of shape (m, 3). Any object with
+``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``, say) is accepted in place of
+``(V, F)``.
+
+Functions:
+    read(path) -> (V, F)                    OFF, OBJ, PLY, STL (optionally .gz)
+    write(path, V, F)                       triangles (m, 3) or quads (m, 4)
+    info(V, F) -> dict                      topology per component (boundary allowed)
+    reduce(V, F, algo="rs", seed=0)         irreducible triangulation  -> Reduced
+    quad(V, F, algo="lrs", seed=0)          perfect triangle pairing   -> Quadrangulated
+    simplify(V, F, eps, mode="nested")      short-edge simplification  -> Simplified
+
+Every problem of a mesh raises :class:`MeshError` (a ``ValueError``) with ``kind`` and
+``location``; a wrong array shape or dtype raises ``ValueError``. The algorithms release
+the GIL. Results are deterministic for a given input and seed and equal to the command
+line's (``contractible reduce|quad|simplify``) for the same mesh.
+"""
+
+from dataclasses import dataclass, field
+from os import PathLike
+from typing import Any, Dict, Optional, Tuple, Union
+
+import numpy as np
+
+from . import _native
+from ._errors import MeshError
+
+__all__ = [
+    "MeshError",
+    "Reduced",
+    "Quadrangulated",
+    "Simplified",
+    "read",
+    "write",
+    "info",
+    "reduce",
+    "quad",
+    "simplify",
+]
+
+__version__ = _native.__version__
+
+
+def _faces(F: Any, corners: Tuple[int, ...] = (3,)) -> np.ndarray:
+    """F as a C-contiguous int64 (m, k) array; ValueError for anything else."""
+    a = np.asarray(F)
+    if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
+        raise ValueError(f"faces must be an integer array, got dtype {a.dtype}")
+    if a.ndim != 2 or a.shape[1] not in corners:
+        want = " or ".join(f"(m, {k})" for k in corners)
+        raise ValueError(f"faces must have shape {want}, got {a.shape}")
+    if a.dtype == np.uint64 and a.size and int(a.max()) > np.iinfo(np.int64).max:
+        bad = int(np.argmax(a.max(axis=1) > np.iinfo(np.int64).max))
+        raise MeshError(f"face {bad}: vertex index out of range", "vertex_out_of_range",
+                        {"face": bad})
+    return np.ascontiguousarray(a, dtype=np.int64)
+
+
+def _vertices(V: Any) -> Optional[np.ndarray]:
+    """V as a C-contiguous float64 (n, 3) array, or None; ValueError for anything else."""
+    if V is None:
+        return None
+    a = np.asarray(V)
+    if not (np.issubdtype(a.dtype, np.floating) or np.issubdtype(a.dtype, np.integer)):
+        raise ValueError(f"vertices must be a real array, got dtype {a.dtype}")
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"vertices must have shape (n, 3), got {a.shape}")
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def _vf(V: Any, F: Any) -> Tuple[Optional[np.ndarray], Any]:
+    """(V, F) from either two arrays or one mesh object with .vertices and .faces."""
+    if F is None and hasattr(V, "vertices") and hasattr(V, "faces"):
+        return V.vertices, V.faces
+    if F is None:
+        raise TypeError("pass (V, F) or one object with .vertices and .faces")
+    return V, F
+
+
+@dataclass
+class Reduced:
+    """An irreducible triangulation of each component (``reduce``).
+
+    Attributes:
+        vertices: positions of the surviving vertices (None without input positions).
+        faces: (k, 3) faces over the survivors, numbered 0.. in input order.
+        vertex_map: (n_out,) the input index of each surviving vertex.
+        stats: the command line's ``reduce --json`` statistics (totals and a
+            ``components`` list).
+        history: the contractions; ``history.records()`` is a (c, 5) array of
+            ``component, u, v, x, y`` (v contracted into u, {x, y} the edge's link;
+            input vertex ids) and ``history.expand(steps)`` the faces (input ids) after
+            undoing the last ``steps`` contractions by vertex splits (all: the input).
+    """
+
+    vertices: Optional[np.ndarray]
+    faces: np.ndarray
+    vertex_map: np.ndarray
+    stats: Dict[str, Any]
+    history: Any = field(repr=False)
+
+
+@dataclass
+class Quadrangulated:
+    """A perfect pairing of the triangles (``quad``).
+
+    Attributes:
+        vertices: the input positions (same vertex set; None without positions).
+        quads: (m/2, 4) quads, input vertex ids.
+        triangles: (m, 3) the paired triangulation K: row i is input face i (after the
+            edge flips of ``lrs``; the input itself for the other algorithms).
+        pairs: (m/2, 2) rows of ``triangles`` paired into one quad each.
+        stats: the command line's ``quad --json`` statistics.
+    """
+
+    vertices: Optional[np.ndarray]
+    quads: np.ndarray
+    triangles: np.ndarray
+    pairs: np.ndarray
+    stats: Dict[str, Any]
+
+    @property
+    def faces(self) -> np.ndarray:
+        """The quads (so that the result is a ``(vertices, faces)`` mesh)."""
+        return self.quads
+
+
+@dataclass
+class Simplified:
+    """The mesh with every edge shorter than ε contracted where the surface allows.
+
+    Attributes:
+        vertices: (k, 3) positions.
+        faces: (f, 3) faces over them.
+        stats: the command line's ``simplify --json`` statistics (``eps`` absolute,
+            ``eps_rel`` when relative).
+    """
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    stats: Dict[str, Any]
+
+
+def read(path: Union[str, "PathLike[str]"]) -> Tuple[Optional[np.ndarray], np.ndarray]:
+    """Reads a triangle mesh (OFF, OBJ, PLY, STL; ``.gz`` allowed).
+
+    Returns ``(V, F)``; ``V`` is None when the file has no coordinates. A malformed file
+    raises :class:`MeshError` with ``location["line"]`` (text) or ``["byte_offset"]``.
+    """
+    V, F, _ = _native.read(str(path))
+    return V, F
+
+
+def write(path: Union[str, "PathLike[str]"], V: Any, F: Any = None) -> None:
+    """Writes triangles (m, 3) or quads (m, 4); the format follows the extension
+    (``.off``, ``.obj``, ``.ply``, ``.stl`` for triangles; ``.gz`` compresses). The file
+    appears complete or not at all (written beside it, then renamed)."""
+    V, F = _vf(V, F)
+    _native.write(str(path), _vertices(V), _faces(F, (3, 4)))
+
+
+def info(V: Any, F: Any = None) -> Dict[str, Any]:
+    """Topology of every component, as ``contractible info --json`` reports it:
+    V, E, F, χ, orientability, genus, boundary loops. Surfaces with boundary are allowed."""
+    V, F = _vf(V, F)
+    return _native.info(_vertices(V), _faces(F))
+
+
+def reduce(V: Any, F: Any = None, algo: str = "rs", seed: int = 0) -> Reduced:
+    """An irreducible triangulation (no edge contractible under the link condition) of
+    every component, by ``rs`` (Ramaswami–Siqueira, default), ``schipper`` or ``brute``
+    (randomised by ``seed``). Closed surfaces only (orientable or not); vertex positions
+    are optional and carried along."""
+    V, F = _vf(V, F)
+    d = _native.reduce(_vertices(V), _faces(F), algo, int(seed))
+    return Reduced(d["vertices"], d["faces"], d["vertex_map"], d["stats"], d["history"])
+
+
+def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0) -> Quadrangulated:
+    """A quadrangulation on the same vertices: a perfect pairing of edge-adjacent
+    triangles by ``lrs`` (contraction/expansion with flips, default), ``ps``
+    (Pulli–Segal), ``sg`` (simple greedy) or ``matching``, each completed by augmenting
+    paths. Closed surfaces only; positions optional."""
+    V, F = _vf(V, F)
+    d = _native.quad(_vertices(V), _faces(F), algo, int(seed))
+    return Quadrangulated(d["vertices"], d["quads"], d["triangles"], d["pairs"], d["stats"])
+
+
+def simplify(V: Any, F: Any = None, eps: Optional[float] = None, *, eps_rel: Optional[float] = None,
+             mode: str = "nested", side: str = "count", position: str = "midpoint",
+             guard: bool = True) -> Simplified:
+    """Contracts every edge shorter than ``eps`` (absolute) or ``eps_rel`` (a fraction of
+    the bounding-box diagonal) without changing the surface: closed surfaces and surfaces
+    with boundary, orientable or not; every boundary loop is kept.
+
+    ``mode``: ``nested`` (the paper's processEdge, default) or ``naive`` (skip edges that
+    fail the link condition). ``side``: ``count``, ``path`` or ``euclidean``.
+    ``position``: ``midpoint`` or ``quadric``. ``guard=False`` allows fold-overs.
+    """
+    V, F = _vf(V, F)
+    if (eps is None) == (eps_rel is None):
+        raise ValueError("give exactly one of eps and eps_rel")
+    value = eps if eps is not None else eps_rel
+    d = _native.simplify(_vertices(V), _faces(F), float(value), eps_rel is not None,
+                         mode, side, position, bool(guard))
+    return Simplified(d["vertices"], d["faces"], d["stats"])
