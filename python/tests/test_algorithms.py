@@ -1,0 +1,278 @@
+"""Every function on real meshes, checked by the independent checks of conftest.py and
+against the command line's outputs for the same files."""
+
+import json
+
+import numpy as np
+import pytest
+
+import contractible as c
+from conftest import (MESHES, closed_meshes, contractible_edges, edges_of,
+                      is_closed_manifold_faces, surface_signature)
+
+SMALL = closed_meshes(12_000)
+SMALL_IDS = [m["name"] for m in SMALL]
+# A spread of sizes, genera and component counts for the comparisons with the CLI.
+CLI_SET = ["tetrahedron", "cube", "tiny_torus", "double_torus", "socket", "casting",
+           "two_objects", "mctet_167cc", "footbones", "high_genus_3"]
+
+
+def load(name):
+    return c.read(MESHES / "closed" / f"{name}.off.gz")
+
+
+@pytest.fixture(scope="module")
+def nonorientable(tmp_path_factory, cli):
+    """Non-orientable closed surfaces made by the CLI's generators (the shared meshes are
+    all orientable): the 6-vertex RP², the 9-vertex Klein bottle, and random surfaces of
+    Euler genus 1, 3 and 6."""
+    d = tmp_path_factory.mktemp("nonorientable")
+    out = []
+    for kind in ["rp2", "klein"]:
+        p = d / f"{kind}.off"
+        cli("gen", kind, "-o", p, "--quiet")
+        out.append(p)
+    for h in [1, 3, 6]:
+        p = d / f"random_h{h}.off"
+        cli("gen", "random", "--crosscaps", h, "--faces", 600, "--seed", h, "-o", p, "--quiet")
+        out.append(p)
+    return out
+
+
+# ------------------------------------------------------------------------ read / info
+
+@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
+def test_read_and_info_match_the_manifest(m):
+    V, F = c.read(MESHES / m["file"])
+    assert V.dtype == np.float64 and V.shape == (int(m["V"]), 3)
+    assert F.dtype == np.int64 and F.shape == (int(m["F"]), 3)
+    i = c.info(V, F)
+    assert (i["vertices"], i["edges"], i["faces"]) == (int(m["V"]), int(m["E"]), int(m["F"]))
+    assert i["components"] == int(m["components"])
+    assert i["euler_characteristic"] == int(m["euler"])
+    assert i["orientable"] == (m["orientable"] == "True")
+    # And against the definition: per-component χ and orientability from the faces.
+    sig = surface_signature(F)
+    assert sorted((d["euler_characteristic"], d["orientable"], 0)
+                  for d in i["component_list"]) == sig
+
+
+@pytest.mark.parametrize("name", CLI_SET)
+def test_info_equals_the_cli(name, cli):
+    V, F = load(name)
+    mine = c.info(V, F)
+    theirs = json.loads(cli("info", MESHES / "closed" / f"{name}.off.gz", "--json").stdout)
+    for k in ["vertices", "edges", "faces", "components", "euler_characteristic",
+              "orientable", "dropped_vertices"]:
+        assert mine[k] == theirs[k], k
+    for a, b in zip(mine["component_list"], theirs["component_list"]):
+        for k in a:
+            assert a[k] == b[k], k
+
+
+def test_info_describes_boundary(cli, tmp_path):
+    p = tmp_path / "hyperboloid.off"
+    cli("gen", "isosurface", "--surface", "hyperboloid", "--resolution", 12, "-o", p, "--quiet")
+    V, F = c.read(p)
+    i = c.info(V, F)
+    assert i["boundary_loops"] == 2
+    assert sorted(s[2] for s in surface_signature(F)) == sorted(
+        d["boundary_loops"] for d in i["component_list"])
+    assert all(len(d["boundary_loop_lengths"]) == d["boundary_loops"]
+               for d in i["component_list"])
+
+
+def test_write_round_trips(tmp_path):
+    V, F = load("casting")
+    for ext in ["off", "obj", "ply", "stl", "off.gz"]:
+        p = tmp_path / f"x.{ext}"
+        c.write(p, V, F)
+        V2, F2 = c.read(p)
+        if ext == "stl":
+            # STL stores corner coordinates (float32), renumbered on welding.
+            assert np.allclose(V2[F2], V[F], rtol=1e-6, atol=1e-6)
+        else:
+            assert np.array_equal(F2, F), ext
+            assert np.array_equal(V2, V), ext
+
+
+# ----------------------------------------------------------------------------- reduce
+
+@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
+def test_reduce_is_irreducible_and_keeps_the_surface(m):
+    V, F = c.read(MESHES / m["file"])
+    r = c.reduce(V, F)
+    assert contractible_edges(r.faces) == []
+    assert surface_signature(r.faces) == surface_signature(F)
+    assert is_closed_manifold_faces(r.faces)
+    # Survivors keep their input positions, numbered in input order.
+    assert np.all(np.diff(r.vertex_map) > 0)
+    assert np.array_equal(r.vertices, V[r.vertex_map])
+    assert r.stats["vertices_out"] == len(r.vertex_map)
+    assert r.stats["faces_out"] == len(r.faces)
+    assert r.stats["component_count"] == int(m["components"])
+
+
+@pytest.mark.parametrize("algo", ["schipper", "brute"])
+@pytest.mark.parametrize("name", ["double_torus", "socket", "footbones"])
+def test_reduce_baselines(name, algo):
+    V, F = load(name)
+    r = c.reduce(V, F, algo=algo, seed=5)
+    assert contractible_edges(r.faces) == []
+    assert surface_signature(r.faces) == surface_signature(F)
+    assert r.stats["algo"] == algo
+
+
+@pytest.mark.parametrize("name", CLI_SET)
+def test_reduce_equals_the_cli(name, cli, tmp_path):
+    src = MESHES / "closed" / f"{name}.off.gz"
+    out = tmp_path / "out.off"
+    theirs = json.loads(cli("reduce", src, "-o", out, "--json", "--seed", 3,
+                            "--algo", "brute").stdout)
+    V, F = c.read(src)
+    r = c.reduce(V, F, algo="brute", seed=3)
+    V2, F2 = c.read(out)
+    assert np.array_equal(r.faces, F2)
+    assert np.allclose(r.vertices, V2)
+    timing = {"seconds"}
+    for k, v in r.stats.items():
+        if k in theirs and k not in timing and k != "components":
+            assert v == theirs[k], k
+    for a, b in zip(r.stats["components"], theirs["components"]):
+        assert {k: v for k, v in a.items() if k not in timing} == \
+            {k: b[k] for k in a if k not in timing}
+
+
+def test_history_replays_the_input():
+    V, F = load("footbones")  # 26 components
+    r = c.reduce(V, F)
+    rec = r.history.records()
+    assert rec.shape == (len(r.history), 5) == (r.stats["contractions"], 5)
+    assert np.array_equal(r.history.expand(), F)
+    # No split undone: the output's faces in input ids.
+    now = r.history.expand(0)
+    assert sorted(map(tuple, np.sort(now, axis=1))) == \
+        sorted(map(tuple, np.sort(r.vertex_map[r.faces], axis=1)))
+    # Undoing the last k contractions brings back exactly the k newest removed vertices.
+    k = 50
+    part = r.history.expand(k)
+    back = set(np.unique(part)) - set(np.unique(now))
+    assert back == set(rec[-k:, 2].tolist())
+    assert surface_signature(part) == surface_signature(F)
+
+
+def test_reduce_nonorientable(nonorientable):
+    for p in nonorientable:
+        V, F = c.read(p)
+        r = c.reduce(V, F)
+        assert contractible_edges(r.faces) == [], p.name
+        sig = surface_signature(F)
+        assert not sig[0][1]
+        assert surface_signature(r.faces) == sig
+
+
+# ------------------------------------------------------------------------------- quad
+
+def check_pairing(F, q):
+    """Perfect pairing of K, K a triangulation of the same surface on the same
+    vertices, quads made of the pairs."""
+    K, P = q.triangles, q.pairs
+    assert K.shape == F.shape
+    assert np.array_equal(np.unique(K), np.unique(F))
+    assert is_closed_manifold_faces(K)
+    assert surface_signature(K) == surface_signature(F)
+    assert np.array_equal(np.sort(P.ravel()), np.arange(len(F)))
+    for (f, g), quad in zip(P.tolist(), q.quads.tolist()):
+        shared = set(K[f]) & set(K[g])
+        assert len(shared) == 2
+        assert set(quad) == set(K[f]) | set(K[g])
+        # The quad's cycle runs around both triangles: the shared edge is its diagonal.
+        a, b = shared
+        i, j = quad.index(a), quad.index(b)
+        assert (i - j) % 4 == 2
+
+
+@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
+def test_quad_lrs_is_perfect(m):
+    V, F = c.read(MESHES / m["file"])
+    q = c.quad(V, F)
+    check_pairing(F, q)
+    # K differs from the input by the flips only: every face not in a flip is unchanged.
+    assert q.stats["quads"] * 2 == len(F)
+    assert q.stats["flips"] >= 0
+
+
+@pytest.mark.parametrize("algo", ["ps", "sg", "matching"])
+@pytest.mark.parametrize("name", ["double_torus", "socket", "casting", "footbones"])
+def test_quad_other_algorithms(name, algo):
+    V, F = load(name)
+    q = c.quad(V, F, algo=algo, seed=2)
+    check_pairing(F, q)
+    assert np.array_equal(q.triangles, F)  # no flips outside LRS
+    assert q.stats["flips"] == 0
+
+
+@pytest.mark.parametrize("name", CLI_SET)
+def test_quad_equals_the_cli(name, cli, tmp_path):
+    src = MESHES / "closed" / f"{name}.off.gz"
+    pairs = tmp_path / "pairs.txt"
+    theirs = json.loads(cli("quad", src, "--pairs", pairs, "--json").stdout)
+    V, F = c.read(src)
+    q = c.quad(V, F)
+    lines = np.loadtxt(pairs, dtype=np.int64, ndmin=2)
+    assert np.array_equal(q.pairs, lines)
+    for k in ["faces", "quads", "initial_unpaired", "flips", "augmenting_paths", "phases"]:
+        assert q.stats[k] == theirs[k], k
+
+
+def test_quad_nonorientable(nonorientable):
+    for p in nonorientable:
+        V, F = c.read(p)
+        for algo in ["lrs", "ps"]:
+            check_pairing(F, c.quad(V, F, algo=algo))
+
+
+# --------------------------------------------------------------------------- simplify
+
+@pytest.mark.parametrize("name", ["casting", "socket", "botijo_11k", "footbones"])
+@pytest.mark.parametrize("mode", ["nested", "naive"])
+def test_simplify_keeps_the_surface(name, mode):
+    V, F = load(name)
+    s = c.simplify(V, F, eps_rel=0.02, mode=mode)
+    assert surface_signature(s.faces) == surface_signature(F)
+    assert is_closed_manifold_faces(s.faces)
+    assert s.vertices.shape == (len(np.unique(s.faces)), 3)
+    assert s.stats["faces_after"] == len(s.faces) < len(F)
+    assert s.stats["eps_rel"] == 0.02
+
+
+def test_simplify_open_surface(cli, tmp_path):
+    p = tmp_path / "h.off"
+    cli("gen", "isosurface", "--surface", "hyperboloid", "--resolution", 24, "-o", p, "--quiet")
+    V, F = c.read(p)
+    s = c.simplify(V, F, eps_rel=0.03)
+    assert surface_signature(s.faces) == surface_signature(F)
+    assert s.stats["boundary_loops"] == 2
+
+
+@pytest.mark.parametrize("name", ["casting", "socket", "footbones"])
+def test_simplify_equals_the_cli(name, cli, tmp_path):
+    src = MESHES / "closed" / f"{name}.off.gz"
+    out = tmp_path / "out.off"
+    theirs = json.loads(cli("simplify", src, "--eps-rel", 0.02, "-o", out, "--json").stdout)
+    V, F = c.read(src)
+    s = c.simplify(V, F, eps_rel=0.02)
+    V2, F2 = c.read(out)
+    assert np.array_equal(s.faces, F2)
+    assert np.allclose(s.vertices, V2, rtol=0, atol=1e-9 * np.abs(V).max())
+    for k in ["eps", "edges_contracted", "discs_removed", "faces_after", "vertices_after",
+              "passes", "short_edges_remaining"]:
+        assert s.stats[k] == pytest.approx(theirs[k]), k
+
+
+def test_results_are_deterministic():
+    V, F = load("socket")
+    for f in [lambda: c.reduce(V, F, algo="brute", seed=9).faces,
+              lambda: c.quad(V, F, algo="sg", seed=9).pairs,
+              lambda: c.simplify(V, F, eps_rel=0.02).faces]:
+        assert np.array_equal(f(), f())
