@@ -23,8 +23,7 @@ use contractible::io::{self, Location, ReadError, WriteError};
 use contractible::irreducible::{self, Reduction};
 use contractible::simplify::{self, Mode, Position, Side, SimplifyError};
 use contractible::{
-    quad, BuildError, ConedSurfaces, Mesh, QuadMesh, SurfaceType, Surfaces, Triangulation,
-    TriMesh,
+    quad, BuildError, ConedSurfaces, Mesh, QuadMesh, SurfaceType, Surfaces, TriMesh, Triangulation,
 };
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2, PyUntypedArrayMethods};
@@ -94,13 +93,17 @@ fn build_error(py: Python<'_>, e: &BuildError) -> PyErr {
         BuildError::VertexLinkNotCycle { vertex, .. } => {
             ("pinched_vertex", vec![("vertex", i64::from(*vertex))])
         }
-        BuildError::PinchedBoundaryVertex { vertex, .. } => {
-            ("pinched_boundary_vertex", vec![("vertex", i64::from(*vertex))])
+        BuildError::PinchedBoundaryVertex { vertex, .. } => (
+            "pinched_boundary_vertex",
+            vec![("vertex", i64::from(*vertex))],
+        ),
+        BuildError::VertexDegreeTooLow { vertex, .. } => (
+            "vertex_degree_too_low",
+            vec![("vertex", i64::from(*vertex))],
+        ),
+        BuildError::UnusedVertex { vertex } => {
+            ("unused_vertex", vec![("vertex", i64::from(*vertex))])
         }
-        BuildError::VertexDegreeTooLow { vertex, .. } => {
-            ("vertex_degree_too_low", vec![("vertex", i64::from(*vertex))])
-        }
-        BuildError::UnusedVertex { vertex } => ("unused_vertex", vec![("vertex", i64::from(*vertex))]),
         BuildError::Disconnected { .. } => ("disconnected", vec![]),
         _ => ("invalid_mesh", vec![]),
     };
@@ -253,13 +256,17 @@ fn put_surface(d: &Bound<'_, PyDict>, s: SurfaceType) -> PyResult<()> {
     Ok(())
 }
 
+/// `read`'s result: positions (if the file has any), faces, vertex count.
+type ReadResult<'py> = (
+    Option<Bound<'py, PyArray2<f64>>>,
+    Bound<'py, PyArray2<i64>>,
+    usize,
+);
+
 /// Reads a mesh file (OFF, OBJ, PLY, STL, optionally gzipped; format by extension, else
-/// sniffed). Returns `(vertices or None, faces)`.
+/// sniffed). Returns `(vertices or None, faces, vertex count)`.
 #[pyfunction]
-fn read(
-    py: Python<'_>,
-    path: PathBuf,
-) -> PyResult<(Option<Bound<'_, PyArray2<f64>>>, Bound<'_, PyArray2<i64>>, usize)> {
+fn read(py: Python<'_>, path: PathBuf) -> PyResult<ReadResult<'_>> {
     let r = py.detach(|| io::read_tri_mesh(&path));
     let m = r.map_err(|e| read_error(py, &path, &e))?;
     let v = m.positions.as_deref().map(|p| vertices_array(py, p));
@@ -286,7 +293,12 @@ fn write(
             let n = match (&vertices, vertex_count) {
                 (Some(v), _) => v.shape()[0],
                 (None, Some(n)) => n,
-                (None, None) => q.iter().flatten().map(|&x| x as usize + 1).max().unwrap_or(0),
+                (None, None) => q
+                    .iter()
+                    .flatten()
+                    .map(|&x| x as usize + 1)
+                    .max()
+                    .unwrap_or(0),
             };
             let positions = positions(py, vertices.as_ref())?;
             for (i, f) in q.iter().enumerate() {
@@ -359,7 +371,9 @@ fn write_any<const N: usize>(
         Err(e) => {
             let _ = std::fs::remove_file(&tmp);
             match e {
-                WriteError::Io(err) => Err(PyOSError::new_err(format!("{}: {err}", path.display()))),
+                WriteError::Io(err) => {
+                    Err(PyOSError::new_err(format!("{}: {err}", path.display())))
+                }
                 e => Err(PyValueError::new_err(format!("{}: {e}", path.display()))),
             }
         }
@@ -470,13 +484,7 @@ impl History {
             let o = &p.vertex_origin;
             for r in p.reduction.history.records() {
                 let id = |v: contractible::VertexId| i64::from(o[v.index()]);
-                flat.extend([
-                    int(c),
-                    id(r.u),
-                    id(r.v),
-                    id(r.link[0]),
-                    id(r.link[1]),
-                ]);
+                flat.extend([int(c), id(r.u), id(r.v), id(r.link[0]), id(r.link[1])]);
             }
         }
         let k = flat.len() / 5;
@@ -491,7 +499,8 @@ impl History {
     #[pyo3(signature = (steps=None))]
     fn expand<'py>(&self, py: Python<'py>, steps: Option<usize>) -> Bound<'py, PyArray2<i64>> {
         let mut left = steps.unwrap_or(usize::MAX);
-        let mut tris: Vec<Triangulation> = self.parts.iter().map(|p| p.reduction.tri.clone()).collect();
+        let mut tris: Vec<Triangulation> =
+            self.parts.iter().map(|p| p.reduction.tri.clone()).collect();
         for (p, t) in self.parts.iter().zip(tris.iter_mut()).rev() {
             let mut h = p.reduction.history.clone();
             while left > 0 && h.undo(t).is_some() {
@@ -561,12 +570,19 @@ fn reduce<'py>(
     let out = TriMesh::reassemble(
         mesh.vertex_count,
         mesh.positions.clone(),
-        parts.iter().map(|p| (&p.reduction.tri, &p.vertex_origin[..])),
+        parts
+            .iter()
+            .map(|p| (&p.reduction.tri, &p.vertex_origin[..])),
     )
     .ok_or_else(|| PyValueError::new_err("inconsistent mesh after validation"))?;
     let mut survivors: Vec<u32> = parts
         .iter()
-        .flat_map(|p| p.reduction.tri.vertices().map(|v| p.vertex_origin[v.index()]))
+        .flat_map(|p| {
+            p.reduction
+                .tri
+                .vertices()
+                .map(|v| p.vertex_origin[v.index()])
+        })
         .collect();
     survivors.sort_unstable();
     let comps = PyList::empty(py);
@@ -600,7 +616,12 @@ fn reduce<'py>(
     stats.set_item("orientable", orientable)?;
     stats.set_item(
         "genus",
-        orientable.then(|| inputs.iter().filter_map(|s| s.orientable_genus()).sum::<i64>()),
+        orientable.then(|| {
+            inputs
+                .iter()
+                .filter_map(|s| s.orientable_genus())
+                .sum::<i64>()
+        }),
     )?;
     stats.set_item(
         "euler_genus",
@@ -609,7 +630,10 @@ fn reduce<'py>(
     stats.set_item("vertices_out", totals.vertices_out)?;
     stats.set_item(
         "edges_out",
-        parts.iter().map(|p| p.reduction.tri.edge_count()).sum::<usize>(),
+        parts
+            .iter()
+            .map(|p| p.reduction.tri.edge_count())
+            .sum::<usize>(),
     )?;
     stats.set_item("faces_out", totals.faces_out)?;
     stats.set_item("link_tests", totals.link_tests)?;
@@ -621,7 +645,10 @@ fn reduce<'py>(
     stats.set_item("seconds", totals.seconds)?;
     stats.set_item("components", comps)?;
     let d = PyDict::new(py);
-    d.set_item("vertices", out.positions.as_deref().map(|p| vertices_array(py, p)))?;
+    d.set_item(
+        "vertices",
+        out.positions.as_deref().map(|p| vertices_array(py, p)),
+    )?;
     d.set_item("faces", index_array(py, &out.faces))?;
     d.set_item("vertex_map", vector(py, &survivors))?;
     d.set_item("stats", stats)?;
@@ -730,7 +757,10 @@ fn quad_py<'py>(
     stats.set_item("quads", quads.len())?;
     stats.set_item(
         "euler_characteristic",
-        stats_list.iter().map(|s| s.2.euler_characteristic()).sum::<i64>(),
+        stats_list
+            .iter()
+            .map(|s| s.2.euler_characteristic())
+            .sum::<i64>(),
     )?;
     stats.set_item("orientable", stats_list.iter().all(|s| s.2.is_orientable()))?;
     stats.set_item("initial_seconds", a)?;
@@ -863,9 +893,8 @@ fn simplify_py<'py>(
                 }
             }
             let p = mesh.positions.as_deref().unwrap_or(&[]);
-            let diag = simplify::bbox_diagonal(
-                p.iter().zip(&used).filter(|(_, &u)| u).map(|(q, _)| *q),
-            );
+            let diag =
+                simplify::bbox_diagonal(p.iter().zip(&used).filter(|(_, &u)| u).map(|(q, _)| *q));
             (eps * diag, diag)
         } else {
             (eps, f64::NAN)

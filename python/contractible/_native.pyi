@@ -1,0 +1,30 @@
+# Type stubs of the native module (python/src/lib.rs). The public API is in __init__.py.
+from os import PathLike
+from typing import Any, Dict, Optional, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+_F64 = npt.NDArray[np.float64]
+_I64 = npt.NDArray[np.int64]
+_Path = Union[str, PathLike[str]]
+
+class History:
+    def __len__(self) -> int: ...
+    def records(self) -> _I64: ...
+    def expand(self, steps: Optional[int] = None) -> _I64: ...
+
+def read(path: _Path) -> Tuple[Optional[_F64], _I64, int]: ...
+def write(path: _Path, vertices: Optional[_F64], faces: _I64,
+          vertex_count: Optional[int] = None) -> None: ...
+def info(vertices: Optional[_F64], faces: _I64,
+         vertex_count: Optional[int] = None) -> Dict[str, Any]: ...
+def reduce(vertices: Optional[_F64], faces: _I64, algo: str = "rs", seed: int = 0,
+           vertex_count: Optional[int] = None) -> Dict[str, Any]: ...
+def quad(vertices: Optional[_F64], faces: _I64, algo: str = "lrs", seed: int = 0,
+         vertex_count: Optional[int] = None) -> Dict[str, Any]: ...
+def simplify(vertices: Optional[_F64], faces: _I64, eps: float, relative: bool = False,
+             mode: str = "nested", side: str = "count", position: str = "midpoint",
+             guard: bool = True) -> Dict[str, Any]: ...
