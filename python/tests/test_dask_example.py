@@ -1,0 +1,69 @@
+"""python/examples/dask_batch.py on a local cluster of 2 worker processes: one line per
+file, in order, equal to the command line's results for the same files; bad files give
+located errors and never stop the run."""
+
+import importlib.util
+import json
+from pathlib import Path
+
+from conftest import MESHES
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "dask_batch.py"
+FILES = [MESHES / "closed" / f"{n}.off.gz" for n in ["casting", "socket", "double_torus",
+                                                      "footbones"]]
+BAD = [MESHES / "invalid" / "open_camelhead.off.gz",
+       MESHES / "invalid" / "nonmanifold_dino.off.gz"]
+TIMING = {"seconds", "initial_seconds", "completion_seconds", "total_seconds"}
+
+
+def load_example():
+    spec = importlib.util.spec_from_file_location("dask_batch", EXAMPLE)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def same_statistics(mine, theirs):
+    """Every non-timing key of the example's result equals the CLI's JSON."""
+    for k, v in mine.items():
+        if k in TIMING or k not in theirs:
+            continue
+        if isinstance(v, list):
+            for a, b in zip(v, theirs[k]):
+                same_statistics(a, b) if isinstance(a, dict) else None
+            assert len(v) == len(theirs[k]), k
+        else:
+            assert v == theirs[k], k
+
+
+def test_dask_batch_reduce_and_quad_equal_the_cli(cli):
+    ex = load_example()
+    files = [str(f) for f in FILES + BAD]
+    for task, extra in [("reduce", ["--algo", "brute", "--seed", "4"]), ("quad", [])]:
+        options = {"algo": "brute", "seed": 4} if task == "reduce" else {}
+        lines = ex.run(files, task, options, workers=2)
+        assert [line["file"] for line in lines] == files
+        for line in lines:
+            r = cli(task, line["file"], "--json", *extra, check=False)
+            if line["ok"]:
+                assert r.returncode == 0, r.stderr
+                same_statistics(line["result"], json.loads(r.stdout))
+            else:
+                assert r.returncode != 0
+                err = line["error"]
+                assert err["kind"] in {"boundary_edge", "non_manifold_edge", "pinched_vertex",
+                                       "multiple_edges"}, err
+                assert err["location"], err
+                # The CLI names the same problem at the same place.
+                first = err["message"].split(":")[0]
+                assert first in r.stderr, (first, r.stderr)
+        assert sum(not line["ok"] for line in lines) == len(BAD)
+
+
+def test_dask_batch_main_writes_json_lines(tmp_path):
+    ex = load_example()
+    out = tmp_path / "info.jsonl"
+    status = ex.main([str(f) for f in FILES] + ["--task", "info", "-o", str(out)])
+    assert status == 0
+    lines = [json.loads(s) for s in out.read_text().splitlines()]
+    assert [line["result"]["faces"] for line in lines] == [10224, 1696, 68, 4204]
