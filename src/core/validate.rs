@@ -344,11 +344,9 @@ impl Triangulation {
         // under `a`, then count the `b`s of each bucket with stamped counters.
         let (start, others) = buckets(
             nv,
-            (0..nc).filter_map(|c| {
-                (self.corner_vertex[c] != NONE).then(|| {
-                    let [a, b] = endpoints(c);
-                    (a, b)
-                })
+            (0..nc).filter(|&c| self.corner_vertex[c] != NONE).map(|c| {
+                let [a, b] = endpoints(c);
+                (a, b)
             }),
         );
         let mut stamp = vec![NONE; nv];
