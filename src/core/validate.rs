@@ -1,7 +1,5 @@
 //! From-scratch structural validation of a [`Triangulation`].
 
-use std::collections::{HashMap, HashSet};
-
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::tri::Triangulation;
 
@@ -225,8 +223,12 @@ impl Triangulation {
     /// Re-checks every structural invariant from scratch, sharing no code with the fast
     /// paths beyond the star walk: array shapes, live counts, the `opposite` involution
     /// and its edge endpoints, degrees, each link a simple cycle of length ≥ 3, no
-    /// duplicate faces, every edge in exactly two faces, connectivity. O(F) expected
-    /// (hash sets). Used by the tests after every operation.
+    /// duplicate faces, every edge in exactly two faces, connectivity. O(V + F) time and
+    /// memory, no hashing: edges and faces are bucketed by their smallest vertex (a
+    /// counting sort), and repeated neighbours are found with per-vertex stamps. The
+    /// error reported, when there are several, is deterministic (the first in the order
+    /// of the checks, then of vertex or face ids). Used by the tests after every
+    /// operation and by the command line's independent checks of large outputs.
     pub fn validate(&self) -> Result<(), ValidationError> {
         let nc = self.corner_vertex.len();
         let nv = self.vertex_corner.len();
@@ -303,7 +305,6 @@ impl Triangulation {
             [a.min(b), a.max(b)]
         };
         let gluing = |corner: usize, problem| ValidationError::Gluing { corner, problem };
-        let mut edge_faces: HashMap<[u32; 2], u32> = HashMap::new();
         for c in 0..nc {
             if self.corner_vertex[c] == NONE {
                 continue;
@@ -338,18 +339,42 @@ impl Triangulation {
                     }
                 )
             );
-            *edge_faces.entry(endpoints(c)).or_insert(0) += 1;
         }
-        for (e, n) in &edge_faces {
-            ensure!(
-                *n == 2,
-                ValidationError::EdgeFaceCount {
-                    edge: *e,
-                    faces: *n
+        // Corners per vertex pair: bucket each live corner's edge `[a, b]` (`a < b`)
+        // under `a`, then count the `b`s of each bucket with stamped counters.
+        let (start, others) = buckets(
+            nv,
+            (0..nc).filter(|&c| self.corner_vertex[c] != NONE).map(|c| {
+                let [a, b] = endpoints(c);
+                (a, b)
+            }),
+        );
+        let mut stamp = vec![NONE; nv];
+        let mut count = vec![0u32; nv];
+        for a in 0..nv {
+            let bucket = &others[start[a] as usize..start[a + 1] as usize];
+            for &b in bucket {
+                let b = b as usize;
+                if stamp[b] != a as u32 {
+                    stamp[b] = a as u32;
+                    count[b] = 0;
                 }
-            );
+                count[b] += 1;
+            }
+            for &b in bucket {
+                let faces = count[b as usize];
+                ensure!(
+                    faces == 2,
+                    ValidationError::EdgeFaceCount {
+                        edge: [a as u32, b],
+                        faces
+                    }
+                );
+            }
         }
+        drop(others);
 
+        stamp.fill(NONE);
         let mut live_vertices = 0;
         for (v, &c) in self.vertex_corner.iter().enumerate() {
             if c == NONE {
@@ -378,15 +403,16 @@ impl Triangulation {
             ensure!(self.degree[v] == corners_at[v], degree_error);
             ensure!(self.degree[v] >= 3, degree_error);
             let link = |problem| ValidationError::Link { vertex: v, problem };
-            let mut seen = HashSet::new();
             let mut walked = 0u32;
             for s in self.star(VertexId(v as u32)) {
                 walked += 1;
                 ensure!(walked <= corners_at[v], link(LinkProblem::DoesNotClose));
+                let n = s.neighbour.index();
                 ensure!(
-                    seen.insert(s.neighbour),
+                    n < nv && stamp[n] != v as u32,
                     link(LinkProblem::Repeats(s.neighbour))
                 );
+                stamp[n] = v as u32;
             }
             ensure!(
                 walked == corners_at[v],
@@ -405,17 +431,39 @@ impl Triangulation {
             }
         );
 
-        let mut face_sets = HashSet::new();
-        for f in self.faces() {
+        // Duplicate faces: bucket each live face's sorted vertices `[a, b, c]` under `a`
+        // (with its id), sort each bucket, and report the smallest face id that repeats
+        // an earlier face (the first duplicate in face order).
+        let keyed = |f: FaceId| {
             let mut k = self.face_vertices(f).map(|v| v.0);
             k.sort_unstable();
-            ensure!(
-                face_sets.insert(k),
-                ValidationError::DuplicateFace {
-                    face: f,
-                    vertices: k
+            k
+        };
+        let (start, mut rest) = buckets(
+            nv,
+            (0..nc as u32 / 3)
+                .filter(|&f| self.corner_vertex[3 * f as usize] != NONE)
+                .map(|f| {
+                    let k = keyed(FaceId(f));
+                    (k[0], (u64::from(k[1]) << 32 | u64::from(k[2]), f))
+                }),
+        );
+        let mut duplicate: Option<u32> = None;
+        for a in 0..nv {
+            let bucket = &mut rest[start[a] as usize..start[a + 1] as usize];
+            bucket.sort_unstable();
+            for w in bucket.windows(2) {
+                if w[0].0 == w[1].0 {
+                    duplicate = Some(duplicate.map_or(w[1].1, |d| d.min(w[1].1)));
                 }
-            );
+            }
+        }
+        if let Some(f) = duplicate {
+            let face = FaceId(f);
+            return Err(ValidationError::DuplicateFace {
+                face,
+                vertices: keyed(face),
+            });
         }
 
         // Connectivity over the dual graph.
@@ -443,6 +491,28 @@ impl Triangulation {
         );
         Ok(())
     }
+}
+
+/// A counting sort of `(key, value)` pairs by key (`key < n`): `start[k]..start[k + 1]`
+/// is the range of key `k`'s values in the second vector, in input order. O(n + pairs).
+fn buckets<T: Copy + Default>(
+    n: usize,
+    pairs: impl Iterator<Item = (u32, T)> + Clone,
+) -> (Vec<u32>, Vec<T>) {
+    let mut start = vec![0u32; n + 1];
+    for (k, _) in pairs.clone() {
+        start[k as usize + 1] += 1;
+    }
+    for k in 0..n {
+        start[k + 1] += start[k];
+    }
+    let mut fill = start.clone();
+    let mut values = vec![T::default(); start[n] as usize];
+    for (k, v) in pairs {
+        values[fill[k as usize] as usize] = v;
+        fill[k as usize] += 1;
+    }
+    (start, values)
 }
 
 #[cfg(test)]
@@ -508,6 +578,24 @@ mod tests {
                 })
             ));
         }
+
+        // Merging the two poles keeps every gluing consistent but puts each edge from
+        // the equator to the merged pole in four faces.
+        let mut t = octa();
+        let (top, bottom) = (4, 5);
+        assert!(t.faces().all(|f| {
+            let vs = t.face_vertices(f);
+            vs.contains(&VertexId(top)) != vs.contains(&VertexId(bottom))
+        }));
+        for v in t.corner_vertex.iter_mut() {
+            if *v == top {
+                *v = bottom;
+            }
+        }
+        assert!(matches!(
+            t.validate(),
+            Err(ValidationError::EdgeFaceCount { faces: 4, edge }) if edge[1] == bottom
+        ));
 
         let mut t = octa();
         t.opposite.pop();
