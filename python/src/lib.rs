@@ -52,6 +52,15 @@ fn int(n: usize) -> i64 {
     i64::try_from(n).unwrap_or(i64::MAX)
 }
 
+/// The location of an edge `[a, b]` found at `face`.
+fn edge(face: usize, a: u32, b: u32) -> Vec<(&'static str, i64)> {
+    vec![
+        ("face", int(face)),
+        ("a", i64::from(a)),
+        ("b", i64::from(b)),
+    ]
+}
+
 /// The `MeshError` of a construction error, located.
 fn build_error(py: Python<'_>, e: &BuildError) -> PyErr {
     let (kind, loc): (&str, Vec<(&str, i64)>) = match e {
@@ -66,30 +75,11 @@ fn build_error(py: Python<'_>, e: &BuildError) -> PyErr {
             "duplicate_face",
             vec![("face", int(*face)), ("first", int(*first))],
         ),
-        BuildError::BoundaryEdge { a, b, face } => (
-            "boundary_edge",
-            vec![
-                ("face", int(*face)),
-                ("a", i64::from(*a)),
-                ("b", i64::from(*b)),
-            ],
-        ),
-        BuildError::NonManifoldEdge { a, b, face, .. } => (
-            "non_manifold_edge",
-            vec![
-                ("face", int(*face)),
-                ("a", i64::from(*a)),
-                ("b", i64::from(*b)),
-            ],
-        ),
-        BuildError::MultipleEdges { a, b, face, .. } => (
-            "multiple_edges",
-            vec![
-                ("face", int(*face)),
-                ("a", i64::from(*a)),
-                ("b", i64::from(*b)),
-            ],
-        ),
+        BuildError::BoundaryEdge { a, b, face } => ("boundary_edge", edge(*face, *a, *b)),
+        BuildError::NonManifoldEdge { a, b, face, .. } => {
+            ("non_manifold_edge", edge(*face, *a, *b))
+        }
+        BuildError::MultipleEdges { a, b, face, .. } => ("multiple_edges", edge(*face, *a, *b)),
         BuildError::VertexLinkNotCycle { vertex, .. } => {
             ("pinched_vertex", vec![("vertex", i64::from(*vertex))])
         }
