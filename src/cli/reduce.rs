@@ -52,7 +52,15 @@ pub const NAIVE_MAX_EDGES: usize = 100_000;
 /// condition), on `tri` alone (nothing the algorithm kept): returns the verdict and the
 /// method ([`NAIVE_MAX_EDGES`]).
 pub fn check_irreducible(tri: &contractible::Triangulation) -> (bool, &'static str) {
-    if tri.edge_count() <= NAIVE_MAX_EDGES {
+    check_irreducible_with(tri, NAIVE_MAX_EDGES)
+}
+
+/// [`check_irreducible`] with the size limit of the naive check as a parameter.
+fn check_irreducible_with(
+    tri: &contractible::Triangulation,
+    naive_max_edges: usize,
+) -> (bool, &'static str) {
+    if tri.edge_count() <= naive_max_edges {
         (tri.is_irreducible_naive(), "naive")
     } else {
         (tri.is_irreducible(), "marked")
@@ -363,4 +371,33 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         )));
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use contractible::gen;
+
+    // Both checks, on irreducible and on reducible surfaces: they agree, and each can
+    // say "no" (the marked one is what large outputs get).
+    #[test]
+    fn the_naive_and_the_marked_checks_agree_and_can_fail() {
+        let cases = [
+            ("tetrahedron", gen::tetrahedron(), true),
+            ("torus7", gen::torus7(), true),
+            ("rp2", gen::projective_plane6(), true),
+            ("octahedron", gen::octahedron(), false),
+            ("icosahedron", gen::icosahedron(), false),
+        ];
+        for (name, mesh, irreducible) in cases {
+            let s = Surfaces::from_mesh(&mesh).expect("a surface");
+            let t = &s.components[0].tri;
+            assert_eq!(
+                check_irreducible_with(t, usize::MAX),
+                (irreducible, "naive"),
+                "{name}"
+            );
+            assert_eq!(check_irreducible_with(t, 0), (irreducible, "marked"), "{name}");
+        }
+    }
 }
