@@ -10,7 +10,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 /// gzip-compressed (`.gz`).
 /// Exit codes: 0 success, 2 invalid input, 1 other failures.
 #[derive(Parser, Debug)]
-#[command(name = "contractible", version, about, long_about = None)]
+#[command(name = "contractible", version, about, long_about = None, after_help = CLI_AFTER_HELP)]
 pub struct Cli {
     /// Print a machine-readable JSON result on stdout (and nothing else there).
     #[arg(long, global = true)]
@@ -22,11 +22,19 @@ pub struct Cli {
     pub command: Command,
 }
 
+/// Formats, outputs, exit codes: what every command shares.
+const CLI_AFTER_HELP: &str = "Files: OFF, OBJ, PLY (ascii or binary) and STL (binary or \
+ascii), optionally gzip-compressed (.gz); the format follows the extension. An output \
+may be `-` (stdout, with --output-format); outputs are checked before any work and \
+written through a temporary file, which SIGINT and SIGTERM remove. Exit codes: 0 \
+success, 2 invalid input or an output that cannot be written, 1 other failures; a \
+closed stdout ends the program as SIGPIPE does.";
+
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Validate a mesh and print its topology per connected component.
     Info(InfoArgs),
-    /// Generate a closed triangulated surface.
+    /// Generate a triangulated surface (closed, except the hyperboloid isosurface).
     Gen(GenArgs),
     /// Convert between mesh formats (by extension), validating the input as surfaces
     /// (closed or with boundary).

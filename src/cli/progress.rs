@@ -115,16 +115,17 @@ impl StageBar {
 
     /// Shows one report of the library.
     pub fn observe(&mut self, p: Progress) {
-        if !self.counting {
-            self.counting = true;
-            self.pb.set_style(stage_bar_style());
-        }
+        // Count first, so that no redraw shows the new stage with the old count.
+        self.pb.set_length(p.total);
+        self.pb.set_position(p.done);
         if p.stage != self.stage {
             self.stage = p.stage;
             self.pb.set_message(format!("{}: {}", self.prefix, p.stage));
         }
-        self.pb.set_length(p.total);
-        self.pb.set_position(p.done);
+        if !self.counting {
+            self.counting = true;
+            self.pb.set_style(stage_bar_style());
+        }
     }
 
     pub fn finish(&self) {

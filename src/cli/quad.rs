@@ -151,10 +151,10 @@ pub fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool 
 pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<QuadStats> {
     let options = Options { seed };
     let n = surfaces.components.len();
-    let mut bar = StageBar::new(ui, "");
+    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
     let mut done = Vec::with_capacity(n);
     for (i, c) in surfaces.components.iter().enumerate() {
-        bar.set_prefix(component_prefix("pairing", algo.name(), i, n));
+        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
         done.push(quad::convert_observed(
             c.tri.clone(),
             algo,
@@ -172,6 +172,9 @@ pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<
         .map(|((q, t), ok)| QuadStats::of(q, SurfaceType::of(t), ok))
         .collect()
 }
+
+/// What the bar of the conversions says.
+const VERB: &str = "pairing";
 
 /// The verification step: [`verify`] on every conversion (a bar over the components,
 /// announced as its own step). Returns the verdicts and the seconds taken.
@@ -228,10 +231,10 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
     let algo: Algorithm = a.algo.into();
     let options = Options { seed: a.seed };
     let n = surfaces.components.len();
-    let mut bar = StageBar::new(ui, "");
+    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
     let mut done = Vec::with_capacity(n);
     for (i, c) in surfaces.components.iter().enumerate() {
-        bar.set_prefix(component_prefix("pairing", algo.name(), i, n));
+        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
         done.push(quad::convert_observed(
             c.tri.clone(),
             algo,

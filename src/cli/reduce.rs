@@ -171,11 +171,11 @@ pub fn reduce_all(
         seed,
         count_retests: true,
     };
-    let mut bar = StageBar::new(ui, "");
+    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
     let mut reductions = Vec::with_capacity(n);
     let mut stats = Vec::with_capacity(n);
     for (i, c) in surfaces.components.iter().enumerate() {
-        bar.set_prefix(component_prefix("reducing", algo.name(), i, n));
+        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
         let input = SurfaceType::of(&c.tri);
         let r =
             irreducible::reduce_observed(c.tri.clone(), algo, &options, &mut |p| bar.observe(p));
@@ -189,6 +189,9 @@ pub fn reduce_all(
     }
     (reductions, stats)
 }
+
+/// What the bar of the reductions says.
+const VERB: &str = "reducing";
 
 /// `VERB (ALGO)`, plus `, component i/n` when there are several.
 pub fn component_prefix(verb: &str, algo: &str, i: usize, n: usize) -> String {
@@ -303,11 +306,11 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         count_retests: true,
     };
     let n = surfaces.components.len();
-    let mut bar = StageBar::new(ui, "");
+    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
     let mut parts = Vec::with_capacity(n);
     let mut stats = Vec::with_capacity(n);
     for (i, c) in surfaces.components.into_iter().enumerate() {
-        bar.set_prefix(component_prefix("reducing", algo.name(), i, n));
+        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
         let input = SurfaceType::of(&c.tri);
         let r = irreducible::reduce_observed(c.tri, algo, &options, &mut |p| bar.observe(p));
         stats.push(ReduceStats::of(&r, input));
@@ -397,7 +400,11 @@ mod tests {
                 (irreducible, "naive"),
                 "{name}"
             );
-            assert_eq!(check_irreducible_with(t, 0), (irreducible, "marked"), "{name}");
+            assert_eq!(
+                check_irreducible_with(t, 0),
+                (irreducible, "marked"),
+                "{name}"
+            );
         }
     }
 }
