@@ -376,7 +376,7 @@ pub struct QuadArgs {
     pub seed: u64,
     /// Write one line per quad with the two input face indices it joins (0-based, in the
     /// order of the quads in the output). For LRS the faces are those of the flipped
-    /// triangulation K, which keeps the input's face indices.
+    /// triangulation K, which keeps the input's face indices. `-` writes them to stdout.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
     /// Merge vertices at bitwise-equal positions before validation (for triangle soups:

@@ -217,7 +217,16 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         None => None,
     };
     if let Some(p) = &a.pairs {
-        meshio::check_side_file(p, &[&a.input])?;
+        if p.as_os_str() == "-" {
+            if output.as_ref().is_some_and(|o| o.path.is_none()) {
+                return Err(CliError::Input(
+                    "-o - and --pairs - would both write to stdout: send one to a file".into(),
+                ));
+            }
+            super::report_to_stderr();
+        } else {
+            meshio::check_side_file(p, &[&a.input])?;
+        }
     }
     let (mesh, seconds_read, welded_vertices) = meshio::read_input(&a.input, a.weld, ui)?;
     let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "quad")?;
@@ -354,8 +363,24 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Writes the pairs file atomically (temporary file renamed into place).
+/// Writes the pairs file atomically (temporary file renamed into place), or to stdout
+/// for `-`.
 fn write_pairs(path: &Path, lines: &[(usize, usize)]) -> Result<(), CliError> {
+    if path.as_os_str() == "-" {
+        use std::io::Write;
+        let mut w = std::io::BufWriter::new(std::io::stdout().lock());
+        let r = lines
+            .iter()
+            .try_for_each(|(f, g)| writeln!(w, "{f} {g}"))
+            .and_then(|()| w.flush());
+        return match r {
+            Ok(()) => Ok(()),
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+                super::signals::die_of_broken_pipe()
+            }
+            Err(e) => Err(CliError::Failure(format!("-: cannot write to stdout: {e}"))),
+        };
+    }
     meshio::write_side_file(path, |w| {
         for (f, g) in lines {
             writeln!(w, "{f} {g}")?;

@@ -152,6 +152,31 @@ fn bad_outputs_are_refused_with_exit_2_and_leave_nothing() {
         ],
         "--output-format off disagrees with the file name, which says ply",
     );
+    bad(
+        &[
+            "quad".as_ref(),
+            t,
+            "-o".as_ref(),
+            "-".as_ref(),
+            "--output-format".as_ref(),
+            "off".as_ref(),
+            "--pairs".as_ref(),
+            "-".as_ref(),
+        ],
+        "would both write to stdout",
+    );
+    assert_eq!(files_in(&dir.0), vec!["t.off".to_string()]);
+    // `--pairs -`: the pairs on stdout, as many lines as quads; the report on stderr.
+    let out = run_ok(&[
+        OsStr::new("--json"),
+        "quad".as_ref(),
+        t,
+        "--pairs".as_ref(),
+        "-".as_ref(),
+    ]);
+    let lines = String::from_utf8_lossy(&out.stdout).lines().count();
+    let j: serde_json::Value = serde_json::from_slice(&out.stderr).expect("JSON on stderr");
+    assert_eq!(lines as i64, cli_common::int(&j, "quads"));
     assert_eq!(files_in(&dir.0), vec!["t.off".to_string()]);
 }
 
@@ -494,10 +519,62 @@ fn every_json_key_has_one_type_in_every_command() {
         "keys with several types:\n{}",
         clashes.join("\n")
     );
-    // Timings are measured, never placeholders: no timing key is ever 0 or negative
-    // except when it rounds to 0 ns, and the built-in inputs of `demo` carry none.
     assert!(seen.contains_key("seconds_verify"));
     assert!(seen.contains_key("seconds_write"));
+}
+
+/// Every `seconds*` value in `v`, recursively, with its key.
+fn timings(v: &serde_json::Value, out: &mut Vec<(String, f64)>) {
+    match v {
+        serde_json::Value::Object(m) => {
+            for (k, x) in m {
+                if k.starts_with("seconds") {
+                    out.push((k.clone(), x.as_f64().unwrap_or(f64::NAN)));
+                }
+                timings(x, out);
+            }
+        }
+        serde_json::Value::Array(a) => a.iter().for_each(|x| timings(x, out)),
+        _ => {}
+    }
+}
+
+#[test]
+fn timings_are_measured_never_placeholders() {
+    // A step that did not run has no timing (see the test above); one that ran took
+    // some nanoseconds at least: a 0 would be a placeholder.
+    let dir = Scratch::new("out-timings");
+    let t = dir.path("t.off");
+    let o = dir.path("o.off");
+    let mut all = Vec::new();
+    for args in [
+        vec![
+            OsStr::new("gen"),
+            "torus7".as_ref(),
+            "-o".as_ref(),
+            t.as_os_str(),
+        ],
+        vec![OsStr::new("info"), t.as_os_str()],
+        vec![OsStr::new("convert"), t.as_os_str(), o.as_os_str()],
+        vec![
+            OsStr::new("reduce"),
+            t.as_os_str(),
+            "-o".as_ref(),
+            o.as_os_str(),
+        ],
+        vec![
+            OsStr::new("quad"),
+            t.as_os_str(),
+            "-o".as_ref(),
+            o.as_os_str(),
+        ],
+        vec![OsStr::new("demo"), "--algos".as_ref(), "rs".as_ref()],
+    ] {
+        timings(&run_json(&args), &mut all);
+    }
+    assert!(all.len() > 20, "{all:?}");
+    let bad: Vec<_> = all.iter().filter(|(_, x)| !(*x > 0.0)).collect();
+    assert!(bad.is_empty(), "{bad:?}");
 }
 
 #[test]
