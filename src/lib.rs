@@ -11,6 +11,7 @@ pub mod gen;
 pub mod io;
 pub mod irreducible;
 pub mod mesh;
+pub mod progress;
 pub mod quad;
 pub mod rng;
 pub mod simplify;

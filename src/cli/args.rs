@@ -10,7 +10,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 /// gzip-compressed (`.gz`).
 /// Exit codes: 0 success, 2 invalid input, 1 other failures.
 #[derive(Parser, Debug)]
-#[command(name = "contractible", version, about, long_about = None)]
+#[command(name = "contractible", version, about, long_about = None, after_help = CLI_AFTER_HELP)]
 pub struct Cli {
     /// Print a machine-readable JSON result on stdout (and nothing else there).
     #[arg(long, global = true)]
@@ -22,16 +22,25 @@ pub struct Cli {
     pub command: Command,
 }
 
+/// Formats, outputs, exit codes: what every command shares.
+const CLI_AFTER_HELP: &str = "Files: OFF, OBJ, PLY (ascii or binary) and STL (binary or \
+ascii), optionally gzip-compressed (.gz); the format follows the extension. An output \
+may be `-` (stdout, with --output-format); outputs are checked before any work and \
+written through a temporary file, which SIGINT and SIGTERM remove. Exit codes: 0 \
+success, 2 invalid input or an output that cannot be written, 1 other failures; a \
+closed stdout ends the program as SIGPIPE does.";
+
 #[derive(Subcommand, Debug)]
 pub enum Command {
     /// Validate a mesh and print its topology per connected component.
     Info(InfoArgs),
-    /// Generate a closed triangulated surface.
+    /// Generate a triangulated surface (closed, except the hyperboloid isosurface).
     Gen(GenArgs),
     /// Convert between mesh formats (by extension), validating the input as surfaces
     /// (closed or with boundary).
     Convert(ConvertArgs),
     /// Contract edges until every component is irreducible.
+    #[command(after_help = REDUCE_AFTER_HELP)]
     Reduce(ReduceArgs),
     /// Pair the triangles of every component into quads on the same vertices (tri-quad
     /// conversion): always a perfect pairing, checked before writing.
@@ -40,11 +49,65 @@ pub enum Command {
     /// short-edge simplification), keeping every component's topology (χ,
     /// orientability, boundary loops): checked before writing. Needs vertex positions;
     /// accepts surfaces with boundary.
+    #[command(
+        after_help = "ε (--eps, or --eps-rel times the bounding-box diagonal) is a \
+length: every edge strictly shorter than ε is a candidate for contraction; the one \
+contracted is replaced by one vertex (--position). It is unrelated to the ε column of \
+`reduce`."
+    )]
     Simplify(SimplifyArgs),
     /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
     /// and the brute force, pair into quads, simplify marching-tetrahedra isosurfaces
     /// (naive and nested, ε = 1 % of the bounding-box diagonal), verify.
+    #[command(after_help = REDUCE_AFTER_HELP)]
     Demo(DemoArgs),
+    /// Print a shell completion script on stdout (e.g. `contractible completions bash >
+    /// /etc/bash_completion.d/contractible`).
+    Completions(CompletionsArgs),
+    /// Print the man page contractible(1) (roff) on stdout (e.g. `contractible man | man
+    /// -l -`).
+    Man,
+}
+
+/// What the columns of `reduce` and `demo` mean.
+const REDUCE_AFTER_HELP: &str = "Columns (the RS paper's counters): ℓ is the number of \
+link-condition tests carried out; ε is the number of edges tested more than once (an edge \
+keeps its identity when a contraction renames an endpoint). In `simplify`, ε is instead \
+the edge length below which edges are contracted. The output is checked independently of \
+the algorithm (no edge passes the link condition: by its definition on small outputs, by \
+the marked-neighbour test on every edge of large ones); the check is its own step, with its \
+own time (seconds_verify).";
+
+#[derive(Args, Debug)]
+pub struct CompletionsArgs {
+    /// The shell to complete for.
+    #[arg(value_enum)]
+    pub shell: clap_complete::Shell,
+}
+
+/// A mesh format, for `--output-format`.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FormatArg {
+    /// Object File Format (ascii).
+    Off,
+    /// Wavefront OBJ.
+    Obj,
+    /// Stanford PLY (written binary little-endian).
+    Ply,
+    /// STL (written binary; triangles only).
+    Stl,
+}
+
+impl From<FormatArg> for contractible::io::Format {
+    fn from(f: FormatArg) -> Self {
+        use contractible::io::Format;
+        match f {
+            FormatArg::Off => Format::Off,
+            FormatArg::Obj => Format::Obj,
+            FormatArg::Ply => Format::Ply,
+            FormatArg::Stl => Format::Stl,
+        }
+    }
 }
 
 #[derive(Args, Debug)]
@@ -66,9 +129,14 @@ pub struct GenArgs {
 /// The output file of a generator.
 #[derive(Args, Debug)]
 pub struct OutArg {
-    /// Output file; the format follows the extension (.off/.obj/.ply/.stl, optionally .gz).
+    /// Output file; the format follows the extension (.off/.obj/.ply/.stl, optionally .gz);
+    /// `-` writes to stdout (with --output-format).
     #[arg(short, long)]
     pub output: PathBuf,
+    /// Format of the output: required with `-o -` (stdout); with a file name it must
+    /// agree with the extension.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub output_format: Option<FormatArg>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -198,8 +266,13 @@ pub struct SubdivideArgs {
 pub struct ConvertArgs {
     /// Input mesh.
     pub input: PathBuf,
-    /// Output mesh (.off/.obj/.ply/.stl, optionally .gz; PLY and STL are written binary).
+    /// Output mesh (.off/.obj/.ply/.stl, optionally .gz; PLY and STL are written binary);
+    /// `-` writes to stdout (with --output-format).
     pub output: PathBuf,
+    /// Format of the output: required with `-o -` (stdout); with a file name it must
+    /// agree with the extension.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub output_format: Option<FormatArg>,
     /// Convert even if the input is not a union of surfaces (closed or with boundary).
     #[arg(long)]
     pub no_validate: bool,
@@ -235,9 +308,14 @@ impl From<Algo> for contractible::irreducible::Algorithm {
 pub struct ReduceArgs {
     /// Input mesh.
     pub input: PathBuf,
-    /// Write the irreducible components here (original coordinates of the survivors).
+    /// Write the irreducible components here (original coordinates of the survivors);
+    /// `-` writes to stdout (with --output-format).
     #[arg(short, long)]
     pub output: Option<PathBuf>,
+    /// Format of the output: required with `-o -` (stdout); with a file name it must
+    /// agree with the extension.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub output_format: Option<FormatArg>,
     /// Algorithm.
     #[arg(long, value_enum, default_value_t = Algo::Rs)]
     pub algo: Algo,
@@ -282,9 +360,14 @@ impl From<QuadAlgo> for contractible::quad::Algorithm {
 pub struct QuadArgs {
     /// Input mesh (closed triangulated surfaces).
     pub input: PathBuf,
-    /// Write the quad mesh here (the input's vertices and positions, one quad per pair).
+    /// Write the quad mesh here (the input's vertices and positions, one quad per pair;
+    /// .off, .obj or .ply); `-` writes to stdout (with --output-format).
     #[arg(short, long)]
     pub output: Option<PathBuf>,
+    /// Format of the output: required with `-o -` (stdout); with a file name it must
+    /// agree with the extension.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub output_format: Option<FormatArg>,
     /// Algorithm.
     #[arg(long, value_enum, default_value_t = QuadAlgo::Lrs)]
     pub algo: QuadAlgo,
@@ -293,7 +376,7 @@ pub struct QuadArgs {
     pub seed: u64,
     /// Write one line per quad with the two input face indices it joins (0-based, in the
     /// order of the quads in the output). For LRS the faces are those of the flipped
-    /// triangulation K, which keeps the input's face indices.
+    /// triangulation K, which keeps the input's face indices. `-` writes them to stdout.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
     /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
@@ -372,9 +455,13 @@ pub struct SimplifyArgs {
     /// number of components).
     pub input: PathBuf,
     /// Output mesh (.off/.obj/.ply/.stl, optionally .gz); written only after the result has
-    /// passed the topology check.
+    /// passed the topology check; `-` writes to stdout (with --output-format).
     #[arg(short, long)]
     pub output: PathBuf,
+    /// Format of the output: required with `-o -` (stdout); with a file name it must
+    /// agree with the extension.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub output_format: Option<FormatArg>,
     /// Contract edges strictly shorter than this length (finite, > 0).
     #[arg(long, allow_negative_numbers = true)]
     pub eps: Option<f64>,

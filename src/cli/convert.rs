@@ -11,27 +11,34 @@ struct ConvertReport {
     output: String,
     vertices: usize,
     faces: usize,
-    /// Components found by validation (`null` with `--no-validate`).
+    /// Components found by validation (absent with `--no-validate`).
+    #[serde(skip_serializing_if = "Option::is_none")]
     components: Option<usize>,
-    /// Boundary loops found by validation (`null` with `--no-validate`).
+    /// Boundary loops found by validation (absent with `--no-validate`).
+    #[serde(skip_serializing_if = "Option::is_none")]
     boundary_loops: Option<usize>,
     dropped_vertices: usize,
     /// Vertices merged by `--weld` (present only with `--weld`).
     #[serde(skip_serializing_if = "Option::is_none")]
     welded_vertices: Option<usize>,
     validated: bool,
+    seconds_read: f64,
+    /// Validating the input (absent with `--no-validate`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    seconds_build: Option<f64>,
+    seconds_write: f64,
 }
 
 pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
-    meshio::check_output(&a.output)?;
-    let (mesh, _, welded) = meshio::read_input(&a.input, a.weld, ui)?;
+    let output = meshio::check_output(&a.output, a.output_format.map(Into::into), &[&a.input])?;
+    let (mesh, seconds_read, welded) = meshio::read_input(&a.input, a.weld, ui)?;
     // Surfaces with boundary are valid input: validation refuses only what is not a
     // surface (non-manifold edges or vertices, bad faces), with its location.
-    let (components, boundary_loops) = if a.no_validate {
-        (None, None)
+    let (components, boundary_loops, seconds_build) = if a.no_validate {
+        (None, None, None)
     } else {
-        let (s, _) = meshio::build_open(&mesh, &a.input, ui)?;
-        (Some(s.components.len()), Some(s.loop_count()))
+        let (s, t) = meshio::build_open(&mesh, &a.input, ui)?;
+        (Some(s.components.len()), Some(s.loop_count()), Some(t))
     };
     // The readers reject out-of-range indices and give one position per vertex.
     let (out, dropped) = mesh.compacted().ok_or_else(|| {
@@ -46,10 +53,10 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
             a.input.display()
         ));
     }
-    meshio::write(&a.output, &out, ui)?;
+    let seconds_write = meshio::write(&output, &out, ui)?;
     let report = ConvertReport {
         input: a.input.display().to_string(),
-        output: a.output.display().to_string(),
+        output: output.display(),
         vertices: out.vertex_count,
         faces: out.faces.len(),
         components,
@@ -57,6 +64,9 @@ pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
         dropped_vertices: dropped,
         welded_vertices: welded,
         validated: !a.no_validate,
+        seconds_read,
+        seconds_build,
+        seconds_write,
     };
     if ui.json {
         print_json(&report)?;

@@ -22,8 +22,9 @@ struct DemoInput {
     name: String,
     info: Report,
     runs: Vec<ReduceStats>,
-    /// Tri-quad conversions of the same input, one per algorithm.
-    quads: Vec<QuadStats>,
+    /// Tri-quad conversions of the same input, one per algorithm (`quads` is the number
+    /// of quads in every other report, hence this name).
+    quad_runs: Vec<QuadStats>,
 }
 
 /// One simplification of a [`DemoIsosurface`].
@@ -99,7 +100,7 @@ fn isosurfaces(ui: Ui) -> Result<Vec<(String, TriMesh)>, CliError> {
 fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface, bool), CliError> {
     let surfaces = ConedSurfaces::from_mesh(mesh)
         .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
-    let info = Report::of_coned(Path::new(&name), &surfaces, 0.0, 0.0);
+    let info = Report::of_coned(Path::new(&name), &surfaces, None, None);
     let types = component_types(&surfaces);
     let diagonal = bbox_diagonal(mesh.positions.iter().flatten().copied());
     let eps = DEMO_EPS_REL * diagonal;
@@ -229,7 +230,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
     for (name, mesh) in inputs(a.seed, ui) {
         let surfaces = Surfaces::from_mesh(&mesh)
             .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
-        let info = Report::of(Path::new(&name), &surfaces, 0.0, 0.0);
+        let info = Report::of(Path::new(&name), &surfaces, None, None);
         if ui.human() {
             info.print_human(5);
             outln!(
@@ -314,7 +315,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             name,
             info,
             runs,
-            quads,
+            quad_runs: quads,
         });
     }
     for (name, mesh) in isosurfaces(ui)? {

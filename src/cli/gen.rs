@@ -7,7 +7,8 @@ use contractible::gen::{self, BrickParams, RandomParams, SurfaceKind};
 use contractible::{Surfaces, TriMesh};
 
 use super::args::{
-    BrickArgs, GenArgs, GenKind, IsoArgs, IsoPreset, RandomArgs, SubdivideArgs, TessellationArg,
+    BrickArgs, FormatArg, GenArgs, GenKind, IsoArgs, IsoPreset, RandomArgs, SubdivideArgs,
+    TessellationArg,
 };
 use super::info::Report;
 use super::progress::spinner;
@@ -205,11 +206,22 @@ struct OpenReport {
     boundary_edges: usize,
     /// Every interior edge is traversed once in each direction.
     consistently_oriented: bool,
+    /// Writing the file (set once written).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    seconds_write: Option<f64>,
+}
+
+/// What `gen` reports for a closed result: `info`'s report of it and the write time.
+#[derive(serde::Serialize, Debug)]
+struct GenReport {
+    #[serde(flatten)]
+    info: Report,
+    seconds_write: f64,
 }
 
 /// Checks an open marching-tetrahedra mesh independently of the generator: every edge
 /// in one or two faces, every interior edge traversed once each way. O(F) expected.
-fn check_open(out: &Path, m: &TriMesh) -> Result<OpenReport, CliError> {
+fn check_open(out: &str, m: &TriMesh) -> Result<OpenReport, CliError> {
     use std::collections::HashMap;
     let mut edge: HashMap<(u32, u32), (usize, bool)> = HashMap::new();
     let mut oriented = true;
@@ -246,7 +258,7 @@ fn check_open(out: &Path, m: &TriMesh) -> Result<OpenReport, CliError> {
         .filter(|&f| root(&mut parent, f) == f)
         .count();
     Ok(OpenReport {
-        file: out.display().to_string(),
+        file: out.to_string(),
         vertices: m.vertex_count,
         edges: edge.len(),
         faces: m.faces.len(),
@@ -254,6 +266,7 @@ fn check_open(out: &Path, m: &TriMesh) -> Result<OpenReport, CliError> {
         euler_characteristic: m.vertex_count as i64 - edge.len() as i64 + m.faces.len() as i64,
         boundary_edges,
         consistently_oriented: oriented,
+        seconds_write: None,
     })
 }
 
@@ -268,30 +281,35 @@ fn isosurface_mesh(a: &IsoArgs, ui: Ui) -> Result<TriMesh, CliError> {
     m
 }
 
-fn output_of(kind: &GenKind) -> &Path {
-    match kind {
-        GenKind::Random(r) => &r.out.output,
-        GenKind::Brick(b) => &b.out.output,
-        GenKind::Subdivide(s) => &s.out.output,
-        GenKind::Isosurface(i) => &i.out.output,
+fn output_of(kind: &GenKind) -> (&Path, Option<FormatArg>) {
+    let o = match kind {
+        GenKind::Random(r) => &r.out,
+        GenKind::Brick(b) => &b.out,
+        GenKind::Subdivide(s) => &s.out,
+        GenKind::Isosurface(i) => &i.out,
         GenKind::Tetrahedron(o)
         | GenKind::Octahedron(o)
         | GenKind::Icosahedron(o)
         | GenKind::Torus7(o)
         | GenKind::Rp2(o)
-        | GenKind::Klein(o) => &o.output,
-    }
+        | GenKind::Klein(o) => o,
+    };
+    (&o.output, o.output_format)
 }
 
 /// Writes an open surface (the hyperboloid) after [`check_open`], and reports it.
-fn write_open(out: &Path, mesh: &TriMesh, ui: Ui) -> Result<(), CliError> {
-    let report = check_open(out, mesh)?;
+fn write_open(out: &meshio::Output, mesh: &TriMesh, ui: Ui) -> Result<(), CliError> {
+    let report = check_open(&out.display(), mesh)?;
     if !report.consistently_oriented {
         return Err(CliError::Failure(
             "generated mesh is not consistently oriented".into(),
         ));
     }
-    meshio::write(out, mesh, ui)?;
+    let seconds_write = meshio::write(out, mesh, ui)?;
+    let report = OpenReport {
+        seconds_write: Some(seconds_write),
+        ..report
+    };
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
@@ -310,8 +328,12 @@ fn write_open(out: &Path, mesh: &TriMesh, ui: Ui) -> Result<(), CliError> {
 }
 
 pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
-    let out = output_of(&a.kind);
-    meshio::check_output(out)?;
+    let (path, format) = output_of(&a.kind);
+    let inputs: Vec<&Path> = match &a.kind {
+        GenKind::Subdivide(s) => vec![s.input.as_path()],
+        _ => Vec::new(),
+    };
+    let out = &meshio::check_output(path, format.map(Into::into), &inputs)?;
     let mesh = match &a.kind {
         GenKind::Random(r) => random_mesh(r, ui)?,
         GenKind::Brick(b) => brick_mesh(b, ui)?,
@@ -336,20 +358,24 @@ pub fn run(a: &GenArgs, ui: Ui) -> Result<(), CliError> {
     };
     let surfaces = Surfaces::from_mesh(&mesh)
         .map_err(|e| CliError::Failure(format!("generated mesh is not a surface: {e}")))?;
-    meshio::write(out, &mesh, ui)?;
-    let report = Report::of(out, &surfaces, 0.0, 0.0);
+    let seconds_write = meshio::write(out, &mesh, ui)?;
+    let report = GenReport {
+        info: Report::of(Path::new(&out.display()), &surfaces, None, None),
+        seconds_write,
+    };
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
         outln!(
             "wrote {}: V={} E={} F={} χ={} components={} {}",
             out.display(),
-            report.vertices,
-            report.edges,
-            report.faces,
-            report.euler_characteristic,
-            report.components,
+            report.info.vertices,
+            report.info.edges,
+            report.info.faces,
+            report.info.euler_characteristic,
+            report.info.components,
             report
+                .info
                 .component_list
                 .first()
                 .map(|c| c.surface.name())

@@ -110,8 +110,12 @@ pub struct Report {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub welded_vertices: Option<usize>,
     pub component_list: Vec<ComponentInfo>,
-    pub seconds_read: f64,
-    pub seconds_build: f64,
+    /// Reading the file (absent for a mesh that was not read: built-in and generated).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds_read: Option<f64>,
+    /// Validating it (absent when not timed).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds_build: Option<f64>,
 }
 
 fn is_zero(n: &usize) -> bool {
@@ -119,7 +123,12 @@ fn is_zero(n: &usize) -> bool {
 }
 
 impl Report {
-    pub fn of(file: &Path, s: &Surfaces, seconds_read: f64, seconds_build: f64) -> Self {
+    pub fn of(
+        file: &Path,
+        s: &Surfaces,
+        seconds_read: Option<f64>,
+        seconds_build: Option<f64>,
+    ) -> Self {
         let list: Vec<ComponentInfo> = s
             .components
             .iter()
@@ -135,7 +144,12 @@ impl Report {
     }
 
     /// The report of a mesh that may have boundary (`info`'s).
-    pub fn of_coned(file: &Path, s: &ConedSurfaces, seconds_read: f64, seconds_build: f64) -> Self {
+    pub fn of_coned(
+        file: &Path,
+        s: &ConedSurfaces,
+        seconds_read: Option<f64>,
+        seconds_build: Option<f64>,
+    ) -> Self {
         let list: Vec<ComponentInfo> = s.components.iter().map(ComponentInfo::of_coned).collect();
         Self::of_list(
             file,
@@ -150,8 +164,8 @@ impl Report {
         file: &Path,
         list: Vec<ComponentInfo>,
         dropped_vertices: usize,
-        seconds_read: f64,
-        seconds_build: f64,
+        seconds_read: Option<f64>,
+        seconds_build: Option<f64>,
     ) -> Self {
         Report {
             file: file.display().to_string(),
@@ -250,7 +264,7 @@ fn join_lengths(lengths: &[usize], max: usize) -> String {
 pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
     let (mesh, seconds_read, welded) = meshio::read_input(&a.file, a.weld, ui)?;
     let (surfaces, seconds_build) = meshio::build_open(&mesh, &a.file, ui)?;
-    let mut report = Report::of_coned(&a.file, &surfaces, seconds_read, seconds_build);
+    let mut report = Report::of_coned(&a.file, &surfaces, Some(seconds_read), Some(seconds_build));
     report.welded_vertices = welded;
     if ui.json {
         print_json(&report)?;

@@ -2,12 +2,16 @@
 //!
 //! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
 //! a disjoint union of closed surfaces — for `info` and `simplify`, of surfaces possibly
-//! with boundary — a mesh without usable positions for `simplify`, bad arguments); 1 any
-//! other failure.
+//! with boundary — a mesh without usable positions for `simplify`, bad arguments, an
+//! output that cannot be written: checked before any work); 1 any other failure. A
+//! closed stdout (`| head`) ends the process as SIGPIPE does by default (status 141 in a
+//! shell, no message, like `yes | head`); SIGINT and SIGTERM remove the output being
+//! written and end it by the signal (130, 143).
 
 /// `println!` for stdout that never panics: a closed stdout (the reader of a pipe went
-/// away, as with `| head`) ends the process quietly with exit code 1 instead of the
-/// panic `println!` gives.
+/// away, as with `| head`) ends the process quietly, as SIGPIPE does, instead of the
+/// panic `println!` gives. While a mesh is written to stdout (`-o -`), the report goes to
+/// stderr instead.
 macro_rules! outln {
     () => {
         $crate::cli::write_stdout_line(format_args!(""))
@@ -20,12 +24,14 @@ macro_rules! outln {
 mod args;
 mod convert;
 mod demo;
+mod docs;
 mod gen;
 mod info;
 mod meshio;
 mod progress;
 mod quad;
 mod reduce;
+mod signals;
 mod simplify;
 
 use std::process::ExitCode;
@@ -89,16 +95,30 @@ pub fn print_json<T: serde::Serialize>(value: &T) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Writes one line to stdout (see `outln!`). Any write error other than a closed pipe
-/// is reported on stderr; both end the process with exit code 1, since the output the
-/// user asked for cannot be delivered.
+/// Whether the report (human or JSON) goes to stderr: stdout carries a mesh (`-o -`).
+static REPORT_TO_STDERR: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+/// Sends the report to stderr from now on (stdout carries the output mesh).
+pub fn report_to_stderr() {
+    REPORT_TO_STDERR.store(true, std::sync::atomic::Ordering::Relaxed);
+}
+
+/// Writes one line of the report to stdout (see `outln!`), or to stderr while stdout
+/// carries a mesh. A closed pipe ends the process as SIGPIPE does (no message); any
+/// other write error (a full disk: `> /dev/full`) is one line on stderr and exit code 1,
+/// since the output the user asked for cannot be delivered.
 pub fn write_stdout_line(args: std::fmt::Arguments<'_>) {
     use std::io::Write;
+    if REPORT_TO_STDERR.load(std::sync::atomic::Ordering::Relaxed) {
+        eprintln!("{args}");
+        return;
+    }
     let mut out = std::io::stdout().lock();
     if let Err(e) = writeln!(out, "{args}").and_then(|()| out.flush()) {
-        if e.kind() != std::io::ErrorKind::BrokenPipe {
-            eprintln!("error: cannot write to stdout: {e}");
+        if e.kind() == std::io::ErrorKind::BrokenPipe {
+            signals::die_of_broken_pipe();
         }
+        eprintln!("error: cannot write to stdout: {e}");
         std::process::exit(1);
     }
 }
@@ -106,6 +126,7 @@ pub fn write_stdout_line(args: std::fmt::Arguments<'_>) {
 /// Parses the command line, runs it and maps the result to an exit code.
 pub fn main() -> ExitCode {
     let cli = Cli::parse();
+    signals::install();
     let ui = Ui {
         json: cli.json,
         quiet: cli.quiet,
@@ -118,6 +139,8 @@ pub fn main() -> ExitCode {
         args::Command::Quad(a) => quad::run(&a, ui),
         args::Command::Simplify(a) => simplify::run(&a, ui),
         args::Command::Demo(a) => demo::run(&a, ui),
+        args::Command::Completions(a) => docs::completions(&a),
+        args::Command::Man => docs::man(),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

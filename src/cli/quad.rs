@@ -1,14 +1,15 @@
 //! `contractible quad IN [-o OUT] [--pairs FILE]`: tri-quad conversion per component.
 
-use std::io::Write;
 use std::path::Path;
+use std::time::Instant;
 
 use contractible::quad::{self, Algorithm, Options, Quadrangulation};
 use contractible::{QuadMesh, SurfaceType, Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::QuadArgs;
-use super::progress::bar;
+use super::progress::{bar, StageBar};
+use super::reduce::component_prefix;
 use super::{meshio, print_json, CliError, Ui};
 
 /// Counters of one conversion (one component, or the totals): the paper's Table 4.3
@@ -94,16 +95,24 @@ pub struct QuadReport {
     pub output: Option<String>,
     pub pairs: Option<String>,
     pub seed: u64,
-    pub component_count: usize,
+    pub components: usize,
     pub dropped_vertices: usize,
     /// Vertices merged by `--weld` (present only with `--weld`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub welded_vertices: Option<usize>,
     #[serde(flatten)]
     pub totals: QuadStats,
-    pub components: Vec<QuadStats>,
+    pub component_list: Vec<QuadStats>,
     pub seconds_read: f64,
     pub seconds_build: f64,
+    /// The independent check of every pairing (its own step, after the conversions).
+    pub seconds_verify: f64,
+    /// Writing the quad mesh (absent without `-o`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds_write: Option<f64>,
+    /// Writing the pairs file (absent without `--pairs`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds_write_pairs: Option<f64>,
 }
 
 /// The independent check of a conversion of `input`: `K` validates from scratch, has the
@@ -136,34 +145,87 @@ pub fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool 
     true
 }
 
-/// Converts (a copy of) every component of `surfaces` with `algo`, each checked by
-/// [`verify`]; returns the per-component counters.
+/// Converts (a copy of) every component of `surfaces` with `algo` (a bar follows the
+/// algorithm inside each component), then checks each by [`verify`] as a step of its
+/// own; returns the per-component counters.
 pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<QuadStats> {
-    let n = surfaces.components.len();
-    let pb = bar(ui, n as u64, format!("pairing ({})", algo.name()));
     let options = Options { seed };
-    let mut stats = Vec::with_capacity(n);
-    for c in &surfaces.components {
-        let q = quad::convert(c.tri.clone(), algo, &options);
-        stats.push(QuadStats::of(
-            &q,
-            SurfaceType::of(&c.tri),
-            verify(&c.tri, &q),
+    let n = surfaces.components.len();
+    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
+    let mut done = Vec::with_capacity(n);
+    for (i, c) in surfaces.components.iter().enumerate() {
+        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
+        done.push(quad::convert_observed(
+            c.tri.clone(),
+            algo,
+            &options,
+            &mut |p| bar.observe(p),
         ));
-        pb.inc(1);
     }
+    bar.finish();
+    let inputs: Vec<&contractible::Triangulation> =
+        surfaces.components.iter().map(|c| &c.tri).collect();
+    let (verdicts, _) = verify_all(&inputs, &done, ui);
+    done.iter()
+        .zip(&inputs)
+        .zip(verdicts)
+        .map(|((q, t), ok)| QuadStats::of(q, SurfaceType::of(t), ok))
+        .collect()
+}
+
+/// What the bar of the conversions says.
+const VERB: &str = "pairing";
+
+/// The verification step: [`verify`] on every conversion (a bar over the components,
+/// announced as its own step). Returns the verdicts and the seconds taken.
+fn verify_all(
+    inputs: &[&contractible::Triangulation],
+    done: &[Quadrangulation],
+    ui: Ui,
+) -> (Vec<bool>, f64) {
+    let t = Instant::now();
+    let pb = bar(
+        ui,
+        done.len() as u64,
+        "verifying: perfect pairings of adjacent faces",
+    );
+    let verdicts = inputs
+        .iter()
+        .zip(done)
+        .map(|(input, q)| {
+            let ok = verify(input, q);
+            pb.inc(1);
+            ok
+        })
+        .collect();
     pb.finish_and_clear();
-    stats
+    (verdicts, t.elapsed().as_secs_f64())
 }
 
 pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
-    for out in a.output.iter() {
-        meshio::check_output(out)?;
-        if contractible::io::Format::from_path(out).0 == Some(contractible::io::Format::Stl) {
-            return Err(CliError::Input(format!(
-                "{}: STL holds triangles only; write the quad mesh as .off, .obj or .ply",
-                out.display()
-            )));
+    let output = match &a.output {
+        Some(out) => {
+            let o = meshio::check_output(out, a.output_format.map(Into::into), &[&a.input])?;
+            if o.format == contractible::io::Format::Stl {
+                return Err(CliError::Input(format!(
+                    "{}: STL holds triangles only; write the quad mesh as .off, .obj or .ply",
+                    o.display()
+                )));
+            }
+            Some(o)
+        }
+        None => None,
+    };
+    if let Some(p) = &a.pairs {
+        if p.as_os_str() == "-" {
+            if output.as_ref().is_some_and(|o| o.path.is_none()) {
+                return Err(CliError::Input(
+                    "-o - and --pairs - would both write to stdout: send one to a file".into(),
+                ));
+            }
+            super::report_to_stderr();
+        } else {
+            meshio::check_side_file(p, &[&a.input])?;
         }
     }
     let (mesh, seconds_read, welded_vertices) = meshio::read_input(&a.input, a.weld, ui)?;
@@ -178,18 +240,34 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
     let algo: Algorithm = a.algo.into();
     let options = Options { seed: a.seed };
     let n = surfaces.components.len();
-    let pb = bar(ui, n as u64, format!("pairing ({})", algo.name()));
+    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
+    let mut done = Vec::with_capacity(n);
+    for (i, c) in surfaces.components.iter().enumerate() {
+        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
+        done.push(quad::convert_observed(
+            c.tri.clone(),
+            algo,
+            &options,
+            &mut |p| bar.observe(p),
+        ));
+    }
+    bar.finish();
+    let inputs: Vec<&contractible::Triangulation> =
+        surfaces.components.iter().map(|c| &c.tri).collect();
+    let (verdicts, seconds_verify) = verify_all(&inputs, &done, ui);
     let mut stats = Vec::with_capacity(n);
     let mut quads: Vec<[u32; 4]> = Vec::new();
     let mut pair_lines: Vec<(usize, usize)> = Vec::new();
-    for c in surfaces.components {
-        let input = SurfaceType::of(&c.tri);
-        let q = quad::convert(c.tri.clone(), algo, &options);
-        let ok = verify(&c.tri, &q);
-        stats.push(QuadStats::of(&q, input, ok));
+    for ((c, q), ok) in surfaces.components.iter().zip(&done).zip(verdicts) {
+        stats.push(QuadStats::of(q, SurfaceType::of(&c.tri), ok));
         if ok {
             for (f, g) in q.pairing.pairs() {
-                let quad = quad::quad_of(&q.tri, f, g).expect("verified pair shares an edge");
+                let quad = quad::quad_of(&q.tri, f, g).ok_or_else(|| {
+                    CliError::Failure(format!(
+                        "internal error: {}: verified pair {f}, {g} shares no edge",
+                        a.input.display()
+                    ))
+                })?;
                 quads.push(quad.map(|v| c.vertex_origin[v as usize]));
                 pair_lines.push((
                     c.face_origin[f.index()] as usize,
@@ -197,9 +275,9 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
                 ));
             }
         }
-        pb.inc(1);
     }
-    pb.finish_and_clear();
+    drop(done);
+    drop(surfaces);
     let totals = QuadStats::total(algo, &stats);
     if !totals.verified {
         let bad: Vec<String> = stats
@@ -214,29 +292,36 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
             bad.join(", ")
         )));
     }
-    if let Some(out) = &a.output {
+    let mut seconds_write = None;
+    if let Some(out) = &output {
         let m = QuadMesh {
             vertex_count,
             positions,
             faces: quads,
         };
-        meshio::write(out, &m, ui)?;
+        seconds_write = Some(meshio::write(out, &m, ui)?);
     }
+    let mut seconds_write_pairs = None;
     if let Some(path) = &a.pairs {
+        let t = Instant::now();
         write_pairs(path, &pair_lines)?;
+        seconds_write_pairs = Some(t.elapsed().as_secs_f64());
     }
     let report = QuadReport {
         file: a.input.display().to_string(),
-        output: a.output.as_deref().map(|p: &Path| p.display().to_string()),
+        output: output.as_ref().map(meshio::Output::display),
         pairs: a.pairs.as_deref().map(|p: &Path| p.display().to_string()),
         seed: a.seed,
-        component_count: stats.len(),
+        components: stats.len(),
         dropped_vertices,
         welded_vertices,
         totals,
-        components: stats,
+        component_list: stats,
         seconds_read,
         seconds_build,
+        seconds_verify,
+        seconds_write,
+        seconds_write_pairs,
     };
     if ui.json {
         print_json(&report)?;
@@ -258,6 +343,19 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
             t.total_seconds,
             t.flips
         );
+        let mut steps = vec![
+            format!("read {:.3} s", report.seconds_read),
+            format!("check input {:.3} s", report.seconds_build),
+            format!("{} {:.3} s", algo.name(), t.total_seconds),
+            format!("verify {:.3} s", report.seconds_verify),
+        ];
+        if let Some(w) = report.seconds_write {
+            steps.push(format!("write {w:.3} s"));
+        }
+        if let Some(w) = report.seconds_write_pairs {
+            steps.push(format!("write pairs {w:.3} s"));
+        }
+        outln!("time: {}", steps.join(", "));
         for o in [&report.output, &report.pairs].into_iter().flatten() {
             outln!("wrote {o}");
         }
@@ -265,20 +363,28 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
     Ok(())
 }
 
-/// Writes the pairs file atomically (temporary file renamed into place).
+/// Writes the pairs file atomically (temporary file renamed into place), or to stdout
+/// for `-`.
 fn write_pairs(path: &Path, lines: &[(usize, usize)]) -> Result<(), CliError> {
-    let tmp = path.with_extension("contractible-tmp");
-    let r = (|| -> std::io::Result<()> {
-        let mut w = std::io::BufWriter::new(std::fs::File::create(&tmp)?);
+    if path.as_os_str() == "-" {
+        use std::io::Write;
+        let mut w = std::io::BufWriter::new(std::io::stdout().lock());
+        let r = lines
+            .iter()
+            .try_for_each(|(f, g)| writeln!(w, "{f} {g}"))
+            .and_then(|()| w.flush());
+        return match r {
+            Ok(()) => Ok(()),
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
+                super::signals::die_of_broken_pipe()
+            }
+            Err(e) => Err(CliError::Failure(format!("-: cannot write to stdout: {e}"))),
+        };
+    }
+    meshio::write_side_file(path, |w| {
         for (f, g) in lines {
             writeln!(w, "{f} {g}")?;
         }
-        w.flush()?;
-        drop(w);
-        std::fs::rename(&tmp, path)
-    })();
-    r.map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        CliError::Failure(format!("{}: {e}", path.display()))
+        Ok(())
     })
 }

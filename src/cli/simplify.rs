@@ -26,7 +26,8 @@ use contractible::{ConedSurfaces, Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::SimplifyArgs;
-use super::progress::bar;
+use super::progress::{spinner, StageBar};
+use super::reduce::component_prefix;
 use super::{meshio, print_json, CliError, Ui};
 
 /// The JSON result of `simplify`: the options, every [`Stats`] field (flattened), and
@@ -141,8 +142,8 @@ pub fn verify(input: &[TypeKey], out: &TriMesh) -> Result<(), String> {
     Ok(())
 }
 
-/// [`simplify::simplify_surfaces`] with a progress bar over the components whose
-/// message follows the passes of the current one.
+/// [`simplify::simplify_surfaces_observed`] with a bar that follows the scan of every
+/// pass of every component (the message names the component and the pass).
 pub fn simplify_with_progress(
     surfaces: ConedSurfaces,
     positions: &[[f64; 3]],
@@ -150,21 +151,31 @@ pub fn simplify_with_progress(
     ui: Ui,
 ) -> Result<Simplified, SimplifyError> {
     let mode = mode_name(options.mode);
-    let pb = bar(
+    let n = surfaces.components.len();
+    let bar = std::cell::RefCell::new(StageBar::new(
         ui,
-        surfaces.components.len() as u64,
-        format!("simplifying ({mode})"),
-    );
+        component_prefix("simplifying", mode, 0, n) + ", pass 1",
+    ));
+    let mut contracted = 0usize;
     let mut on_pass = |r: &PassReport| {
-        pb.set_position(r.component as u64);
-        // Short enough for one terminal line; the bar counts the components.
-        pb.set_message(format!(
-            "simplifying ({mode}), pass {}: {} faces",
-            r.pass, r.faces
+        contracted = if r.pass == 1 { 0 } else { contracted } + r.contracted;
+        // Short enough for one terminal line.
+        bar.borrow_mut().set_prefix(format!(
+            "{}, pass {} ({} contracted so far, {} faces)",
+            component_prefix("simplifying", mode, r.component, n),
+            r.pass + 1,
+            contracted,
+            r.faces
         ));
     };
-    let r = simplify::simplify_surfaces(surfaces, positions, options, &mut on_pass);
-    pb.finish_and_clear();
+    let r = simplify::simplify_surfaces_observed(
+        surfaces,
+        positions,
+        options,
+        &mut on_pass,
+        &mut |p| bar.borrow_mut().observe(p),
+    );
+    bar.borrow().finish();
     r
 }
 
@@ -238,7 +249,7 @@ fn checked_positions<'a>(
 }
 
 pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
-    meshio::check_output(&a.output)?;
+    let output = meshio::check_output(&a.output, a.output_format.map(Into::into), &[&a.input])?;
     if let Some(e) = a.eps {
         check_eps("--eps", "ε", e)?;
     }
@@ -293,17 +304,26 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
     drop(mesh_positions);
     let t = Instant::now();
-    verify(&input_types, &out.mesh).map_err(|e| {
+    let pb = spinner(
+        ui,
+        format!(
+            "verifying: the output ({} faces) rebuilt from its faces has the input's topology",
+            out.mesh.faces.len()
+        ),
+    );
+    let checked = verify(&input_types, &out.mesh);
+    pb.finish_and_clear();
+    checked.map_err(|e| {
         CliError::Failure(format!(
             "internal error: {}: {e}; nothing written",
             path.display()
         ))
     })?;
     let seconds_verify = t.elapsed().as_secs_f64();
-    let seconds_write = meshio::write(&a.output, &out.mesh, ui)?;
+    let seconds_write = meshio::write(&output, &out.mesh, ui)?;
     let report = SimplifyReport {
         file: path.display().to_string(),
-        output: a.output.display().to_string(),
+        output: output.display(),
         eps,
         eps_rel: a.eps_rel,
         bbox_diagonal: diagonal,
@@ -389,6 +409,14 @@ fn print_human(r: &SimplifyReport) {
         s.shortest_remaining_edge
             .map_or_else(|| "-".to_string(), fmt_len),
         s.seconds
+    );
+    outln!(
+        "  time: read {:.3} s, check input {:.3} s, simplify {:.3} s, verify {:.3} s, write {:.3} s",
+        r.seconds_read,
+        r.seconds_build,
+        s.seconds,
+        r.seconds_verify,
+        r.seconds_write
     );
     outln!("wrote {}", r.output);
 }

@@ -45,10 +45,24 @@ use std::time::Instant;
 
 use super::{Algorithm, Options, Reduction, RetestCounter};
 use crate::core::{EdgeId, EdgeNumbering, History, LinkTester, Triangulation};
+use crate::progress::{self, Progress, Throttle};
 use crate::rng::Rng;
 
 /// Runs BF on `tri` (see the module documentation).
-pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
+pub fn reduce(tri: Triangulation, options: &Options) -> Reduction {
+    reduce_observed(tri, options, &mut progress::ignore)
+}
+
+/// [`reduce`], reporting the edges visited in the current pass out of the pass's array
+/// to `observer` (each pass starts again from 0), at most every
+/// [`progress::REPORT_EVERY`] link tests. Same result as [`reduce`].
+pub fn reduce_observed(
+    mut tri: Triangulation,
+    options: &Options,
+    observer: &mut dyn FnMut(Progress),
+) -> Reduction {
+    const STAGE: &str = "edges visited in this pass";
+    let mut throttle = Throttle::new();
     let started = Instant::now();
     let mut stats = super::start_stats(&tri);
     let mut history = History::new();
@@ -62,7 +76,12 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
 
     loop {
         let mut contracted_in_pass = false;
-        for &e in &current {
+        let pass_len = current.len() as u64;
+        observer(Progress::new(STAGE, 0, pass_len));
+        for (i, &e) in current.iter().enumerate() {
+            if throttle.due(stats.link_tests) {
+                observer(Progress::new(STAGE, i as u64, pass_len));
+            }
             let Some(c) = numbers.corner(EdgeId(e)) else {
                 continue; // removed by an earlier contraction
             };
@@ -79,6 +98,7 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
             numbers.contracted(&rec);
             contracted_in_pass = true;
         }
+        observer(Progress::new(STAGE, pass_len, pass_len));
         if !contracted_in_pass {
             break;
         }

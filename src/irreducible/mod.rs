@@ -120,10 +120,23 @@ impl Default for Options {
 
 /// Runs `algorithm` on `tri` (consumed: the reduction happens in place).
 pub fn reduce(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Reduction {
+    reduce_observed(tri, algorithm, options, &mut crate::progress::ignore)
+}
+
+/// [`reduce`], reporting progress inside the reduction to `observer` (see
+/// [`crate::progress`]; RS and Schipper count settled vertices, the brute force the
+/// edges visited in its current pass). The result is the same as [`reduce`]'s; the
+/// reports cost one comparison per step.
+pub fn reduce_observed(
+    tri: Triangulation,
+    algorithm: Algorithm,
+    options: &Options,
+    observer: &mut dyn FnMut(crate::progress::Progress),
+) -> Reduction {
     match algorithm {
-        Algorithm::Rs => rs::reduce(tri, options),
-        Algorithm::Schipper => schipper::reduce(tri, options),
-        Algorithm::Brute => brute::reduce(tri, options),
+        Algorithm::Rs => rs::reduce_observed(tri, options, observer),
+        Algorithm::Schipper => schipper::reduce_observed(tri, options, observer),
+        Algorithm::Brute => brute::reduce_observed(tri, options, observer),
     }
 }
 

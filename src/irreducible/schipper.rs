@@ -52,9 +52,26 @@ use std::time::Instant;
 
 use super::{Algorithm, Options, Reduction, RetestCounter};
 use crate::core::{Corner, History, Triangulation, VertexId};
+use crate::progress::{self, Progress, Throttle};
 
 /// Runs S on `tri` (see the module documentation).
-pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
+pub fn reduce(tri: Triangulation, options: &Options) -> Reduction {
+    reduce_observed(tri, options, &mut progress::ignore)
+}
+
+/// [`reduce`], reporting the vertices settled (trapped or contracted away: no longer
+/// loose) out of the input's vertices to `observer`, at most every
+/// [`progress::REPORT_EVERY`] vertices examined. Same result as [`reduce`].
+pub fn reduce_observed(
+    mut tri: Triangulation,
+    options: &Options,
+    observer: &mut dyn FnMut(Progress),
+) -> Reduction {
+    const STAGE: &str = "vertices settled";
+    let total = tri.vertex_count() as u64;
+    observer(Progress::new(STAGE, 0, total));
+    let mut throttle = Throttle::new();
+    let mut examined = 0u64;
     let started = Instant::now();
     let mut stats = super::start_stats(&tri);
     let mut history = History::new();
@@ -77,6 +94,10 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
     // Edges of the vertex being examined: (neighbour, corner opposite the edge).
     let mut edges: Vec<(VertexId, Corner)> = Vec::new();
     while let Some(&(_, u_raw)) = loose.first() {
+        examined += 1;
+        if throttle.due(examined) {
+            observer(Progress::new(STAGE, total - loose.len() as u64, total));
+        }
         let u = VertexId(u_raw);
         edges.clear();
         for s in tri.star(u) {
@@ -115,6 +136,7 @@ pub fn reduce(mut tri: Triangulation, options: &Options) -> Reduction {
         }
     }
 
+    observer(Progress::new(STAGE, total, total));
     stats.edges_tested_more_than_once = counter.more_than_once();
     super::finish(Algorithm::Schipper, tri, history, stats, started)
 }

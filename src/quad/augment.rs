@@ -86,6 +86,10 @@
 
 use super::Pairing;
 use crate::core::{FaceId, Triangulation};
+use crate::progress::{self, Progress};
+
+/// The stage the completion reports progress in.
+pub const PAIRED: &str = "faces paired";
 
 /// Counters of one completion.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -108,23 +112,49 @@ pub struct Completion {
 /// first, by one read-only pass in O(F)): completing it would otherwise read
 /// faces that are not there. If `tri.face_capacity() >= 2^30`.
 pub fn complete(tri: &Triangulation, pairing: &mut Pairing) -> Completion {
-    run(tri, pairing).0
+    run(tri, pairing, &mut progress::ignore).0
 }
 
-/// [`complete`], also returning the number of blossoms shrunk (for tests).
-pub(crate) fn run(tri: &Triangulation, pairing: &mut Pairing) -> (Completion, u64) {
+/// [`complete`], reporting the faces paired out of all faces (stage "faces paired") to
+/// `observer` when it starts, after the linear pass and after every phase. Same result
+/// as [`complete`].
+pub fn complete_observed(
+    tri: &Triangulation,
+    pairing: &mut Pairing,
+    observer: &mut dyn FnMut(Progress),
+) -> Completion {
+    run(tri, pairing, observer).0
+}
+
+/// [`complete_observed`], also returning the number of blossoms shrunk (for tests).
+pub(crate) fn run(
+    tri: &Triangulation,
+    pairing: &mut Pairing,
+    observer: &mut dyn FnMut(Progress),
+) -> (Completion, u64) {
     let roots = match check_and_roots(tri, pairing) {
         Ok(r) => r,
         Err(e) => panic!("augment::complete: {e}"),
     };
+    let faces = tri.face_count() as u64;
+    let mut report = |unpaired: usize| {
+        observer(Progress::new(
+            PAIRED,
+            faces.saturating_sub(unpaired as u64),
+            faces,
+        ))
+    };
+    report(roots.len());
     if roots.is_empty() {
         return (Completion::default(), 0);
     }
     let mut search = Search::new(tri, &mut pairing.mate);
     let mut roots = search.linear_pass(roots);
+    report(roots.len());
     while !roots.is_empty() {
         let paths = search.phase(&roots);
         roots.retain(|&r| search.mate[r as usize] == NONE);
+        report(roots.len());
         if paths == 0 {
             // A maximum matching that is not perfect: impossible on a closed
             // triangulation (Petersen), so only a broken input could get here; stop
@@ -683,7 +713,7 @@ mod tests {
                             }
                         }
                         assert_eq!(p.check(t), Ok(()));
-                        let (c, blossoms) = run(t, &mut p);
+                        let (c, blossoms) = run(t, &mut p, &mut progress::ignore);
                         assert!(p.is_perfect(t) && p.check(t).is_ok());
                         assert_eq!(c.augmenting_paths, 1);
                         assert!(blossoms > 0, "a path was found without a blossom");
@@ -714,7 +744,7 @@ mod tests {
                 seed: 7 + k as u64,
             });
             let mut p = Pairing::new(t.face_capacity());
-            let (c, _) = run(&t, &mut p);
+            let (c, _) = run(&t, &mut p, &mut progress::ignore);
             assert!(p.is_perfect(&t) && p.check(&t).is_ok());
             assert_eq!(c.augmenting_paths, t.face_count() / 2);
         }

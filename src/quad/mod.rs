@@ -136,6 +136,25 @@ pub fn initial_stats(tri: &Triangulation, initial: &Pairing, seconds: f64) -> St
 /// Deterministic: the result (all but the timings) is a function of the input (ids and
 /// corner slots included), the algorithm and `options.seed`.
 pub fn convert(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Quadrangulation {
+    convert_observed(tri, algorithm, options, &mut crate::progress::ignore)
+}
+
+/// The stage of [`convert_observed`]'s reports during the initial step.
+pub const INITIAL: &str = "initial pairing (faces paired)";
+
+/// [`convert`], reporting progress to `observer`: the initial step as one unit (stage
+/// [`INITIAL`]: 0 faces when it starts, the faces it paired when it ends), then the
+/// completion's faces paired after its linear pass and after every phase
+/// ([`augment::complete_observed`]). Same result as [`convert`].
+pub fn convert_observed(
+    tri: Triangulation,
+    algorithm: Algorithm,
+    options: &Options,
+    observer: &mut dyn FnMut(crate::progress::Progress),
+) -> Quadrangulation {
+    use crate::progress::Progress;
+    let faces = tri.face_count() as u64;
+    observer(Progress::new(INITIAL, 0, faces));
     let started = Instant::now();
     let (tri, pairing, flips) = match algorithm {
         Algorithm::Lrs => {
@@ -156,10 +175,11 @@ pub fn convert(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Q
         }
     };
     let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
+    observer(Progress::new(INITIAL, 2 * pairing.len() as u64, faces));
     stats.flips = flips;
     let mut pairing = pairing;
     let completion_started = Instant::now();
-    let work = augment::complete(&tri, &mut pairing);
+    let work = augment::complete_observed(&tri, &mut pairing, observer);
     stats.completion_seconds = completion_started.elapsed().as_secs_f64();
     stats.total_seconds = stats.initial_seconds + stats.completion_seconds;
     stats.augmenting_paths = work.augmenting_paths;

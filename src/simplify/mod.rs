@@ -311,6 +311,26 @@ pub fn simplify_surfaces(
     options: &Options,
     on_pass: &mut dyn FnMut(&PassReport),
 ) -> Result<Simplified, SimplifyError> {
+    simplify_surfaces_observed(
+        surfaces,
+        positions,
+        options,
+        on_pass,
+        &mut crate::progress::ignore,
+    )
+}
+
+/// [`simplify_surfaces`], also reporting progress inside every pass to `observer`: the
+/// face slots scanned out of the component's slots (stage "faces scanned in this pass",
+/// restarting at 0 with each pass), at most every [`crate::progress::REPORT_EVERY`]
+/// slots. Same result as [`simplify_surfaces`].
+pub fn simplify_surfaces_observed(
+    surfaces: ConedSurfaces,
+    positions: &[[f64; 3]],
+    options: &Options,
+    on_pass: &mut dyn FnMut(&PassReport),
+    observer: &mut dyn FnMut(crate::progress::Progress),
+) -> Result<Simplified, SimplifyError> {
     let start = Instant::now();
     let eps = options.eps;
     if !(eps.is_finite() && eps > 0.0) {
@@ -358,14 +378,17 @@ pub fn simplify_surfaces(
             .map(|&m| positions[m as usize])
             .collect();
         let mut sim = pass::Simplifier::new(component, local, options);
-        let run = sim.run(&mut |pass, contracted, faces| {
-            on_pass(&PassReport {
-                component: k,
-                pass,
-                contracted,
-                faces,
-            })
-        });
+        let run = sim.run(
+            &mut |pass, contracted, faces| {
+                on_pass(&PassReport {
+                    component: k,
+                    pass,
+                    contracted,
+                    faces,
+                })
+            },
+            observer,
+        );
         stats.edges_contracted += run.edges_contracted;
         stats.discs_removed += run.discs_removed;
         stats.vertices_removed_inside += run.vertices_removed_inside;

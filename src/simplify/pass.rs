@@ -6,7 +6,11 @@ use super::geometry::{area_normal, dist2, fan_move_ok, midpoint, Point, Quadric}
 use super::nested::{self, Claim, Grow};
 use super::{naive, spec, Mode, Options, Position, SkipCounts};
 use crate::core::{ConedComponent, Corner, FaceId, Triangulation, VertexId};
+use crate::progress::{Progress, Throttle};
 use crate::topology::SurfaceType;
+
+/// The stage of the progress reports inside a pass.
+pub const SCANNED: &str = "faces scanned in this pass";
 
 /// Degree up to which `examine` looks neighbours up in a list rather than in the marks.
 const SMALL_LINK: usize = 24;
@@ -215,9 +219,15 @@ impl<'o> Simplifier<'o> {
     /// every edge the naive mode does and then more (the nested mode dominates the naive
     /// one on every input), and it removes discs, which discards the geometry inside
     /// them, only for edges that no sequence of plain contractions reached.
-    pub(super) fn run(&mut self, on_pass: &mut dyn FnMut(usize, usize, usize)) -> Run {
+    /// `observer` hears, inside each pass, the face slots scanned out of the pass's
+    /// slots (stage [`SCANNED`]), at most every [`crate::progress::REPORT_EVERY`] slots.
+    pub(super) fn run(
+        &mut self,
+        on_pass: &mut dyn FnMut(usize, usize, usize),
+        observer: &mut dyn FnMut(Progress),
+    ) -> Run {
         loop {
-            let contracted = self.pass();
+            let contracted = self.pass(observer);
             self.run.passes += 1;
             self.run.edges_contracted += contracted;
             // Compact once a third of the slots are dead: the scan of the next passes
@@ -249,10 +259,16 @@ impl<'o> Simplifier<'o> {
     }
 
     /// One pass; returns the number of contractions.
-    fn pass(&mut self) -> usize {
+    fn pass(&mut self, observer: &mut dyn FnMut(Progress)) -> usize {
         self.pass += 1;
         let mut contracted = 0;
+        let slots = self.tri.face_capacity() as u64;
+        observer(Progress::new(SCANNED, 0, slots));
+        let mut throttle = Throttle::new();
         for fi in 0..self.tri.face_capacity() as u32 {
+            if throttle.due(u64::from(fi)) {
+                observer(Progress::new(SCANNED, u64::from(fi), slots));
+            }
             let f = FaceId(fi);
             if !self.tri.is_face(f) {
                 continue;
@@ -313,6 +329,7 @@ impl<'o> Simplifier<'o> {
                 }
             }
         }
+        observer(Progress::new(SCANNED, slots, slots));
         contracted
     }
 

@@ -13,6 +13,7 @@ mod harness;
 mod irreducible_algorithms;
 mod irreducible_meshes;
 mod oracles;
+mod progress;
 mod quad_augment;
 mod quad_convert;
 mod quad_frink;

@@ -140,10 +140,7 @@ fn check_quad(input: &Path, algo: &str, dir: &Scratch) {
     let faces = mesh.faces.len();
     assert_eq!(int(&j, "faces") as usize, faces, "{label}");
     assert_eq!(int(&j, "quads") as usize, faces / 2, "{label}");
-    assert_eq!(
-        int(&j, "component_count") as usize,
-        surfaces.components.len()
-    );
+    assert_eq!(int(&j, "components") as usize, surfaces.components.len());
     if algo != "lrs" {
         assert_eq!(int(&j, "flips"), 0, "{label}: only LRS flips");
     }
@@ -295,7 +292,7 @@ fn demo_converts_its_surfaces_with_every_algorithm() {
     let j = run_json(&["demo", "--algos", "rs"]);
     assert_eq!(j["verified"], true);
     for input in j["inputs"].as_array().expect("inputs") {
-        let quads = input["quads"].as_array().expect("quads");
+        let quads = input["quad_runs"].as_array().expect("quad_runs");
         let names: Vec<&str> = quads.iter().map(|q| q["algo"].as_str().unwrap()).collect();
         assert_eq!(names, ALGOS);
         for q in quads {
@@ -321,8 +318,10 @@ fn a_closed_stdout_ends_the_run_without_a_panic() {
         let out = child.wait_with_output().expect("wait");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(!err.contains("panicked"), "{args:?}: {err}");
+        // Killed by SIGPIPE, as `yes | head` (or done before the first write).
+        use std::os::unix::process::ExitStatusExt;
         assert!(
-            matches!(out.status.code(), Some(0 | 1)),
+            out.status.code() == Some(0) || out.status.signal() == Some(13),
             "{args:?}: {:?}",
             out.status
         );

@@ -10,6 +10,7 @@ mod cli_gen;
 mod cli_info;
 mod cli_invalid;
 mod cli_iso;
+mod cli_output;
 mod cli_quad;
 mod cli_reduce;
 mod cli_simplify;

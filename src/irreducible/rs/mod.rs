@@ -28,6 +28,10 @@ use std::time::Instant;
 
 use super::{finish, start_stats, Algorithm, Options, Reduction, RetestCounter};
 use crate::core::{Corner, History, Triangulation, VertexId};
+use crate::progress::{self, Progress, Throttle};
+
+/// The stage RS reports progress in.
+const SETTLED: &str = "vertices settled";
 
 mod spec;
 
@@ -300,17 +304,42 @@ struct Rs {
 
 /// Runs RS on `tri`. See the module documentation.
 pub fn reduce(tri: Triangulation, options: &Options) -> Reduction {
-    reduce_variant(tri, options, Variant::default()).0
+    reduce_observed(tri, options, &mut progress::ignore)
+}
+
+/// [`reduce`], reporting the vertices settled (processed until trapped, or contracted
+/// away) out of the input's vertices to `observer` at most every
+/// [`progress::REPORT_EVERY`] settled vertices or link tests (genus 0 makes every
+/// contraction while the first vertex is processed, so the count moves inside that
+/// vertex too). Same result as [`reduce`].
+pub fn reduce_observed(
+    tri: Triangulation,
+    options: &Options,
+    observer: &mut dyn FnMut(Progress),
+) -> Reduction {
+    reduce_variant_observed(tri, options, Variant::default(), observer).0
 }
 
 /// RS with a deliberate [`Variant`]; also returns how many contractions happened while
 /// the first vertex was processed (Sec. 4.6).
 #[doc(hidden)]
 pub fn reduce_variant(tri: Triangulation, options: &Options, variant: Variant) -> (Reduction, u64) {
+    reduce_variant_observed(tri, options, variant, &mut progress::ignore)
+}
+
+fn reduce_variant_observed(
+    tri: Triangulation,
+    options: &Options,
+    variant: Variant,
+    observer: &mut dyn FnMut(Progress),
+) -> (Reduction, u64) {
     let started = Instant::now();
     let mut stats = start_stats(&tri);
+    let total = tri.vertex_count() as u64;
+    observer(Progress::new(SETTLED, 0, total));
     let mut rs = Rs::new(tri, options, variant);
-    rs.run();
+    rs.run(&mut |done| observer(Progress::new(SETTLED, done, total)));
+    observer(Progress::new(SETTLED, total, total));
     stats.link_tests = rs.link_tests;
     stats.edges_tested_more_than_once = rs.counter.more_than_once();
     let first = rs.contractions_first_vertex;
@@ -353,24 +382,35 @@ impl Rs {
     }
 
     /// Alg. 4.2: the queue Q is the vertex ids in increasing order.
-    fn run(&mut self) {
+    fn run(&mut self, report: &mut dyn FnMut(u64)) {
+        let mut throttle = Throttle::new();
         for u in 0..self.tri.vertex_capacity() as u32 {
             let u = VertexId(u);
             if self.processed[u.index()] {
                 continue;
             }
-            self.process(u);
+            self.process(u, &mut throttle, report);
         }
     }
 
+    /// Vertices settled so far: processed until trapped, or contracted away.
+    fn settled(&self) -> u64 {
+        self.processed_count + self.history.len() as u64
+    }
+
     /// Alg. 4.2 l.6–36: processes `u` until it is trapped.
-    fn process(&mut self, u: VertexId) {
+    fn process(&mut self, u: VertexId, throttle: &mut Throttle, report: &mut dyn FnMut(u64)) {
         let before = self.history.len();
         self.begin(u);
         loop {
             // l.22–30
             spec::at_line_22(self, crate::spec::FULL_CHECK_DEGREE);
             while let Some(v) = self.lists.pop_front(LUE) {
+                // Progress: settled vertices plus link tests, so that a vertex whose
+                // tests contract nothing for a while still moves the count's clock.
+                if throttle.due(self.settled() + self.link_tests) {
+                    report(self.settled());
+                }
                 spec::leaving_lue(self, v);
                 self.t[v.index()] = Stamp::at(self.ts);
                 if self.degree(v) == 3 || (self.variant.degree3_path_up_to_4 && self.degree(v) == 4)

@@ -1,0 +1,152 @@
+//! The progress observers of the long algorithms (`reduce_observed`, `convert_observed`,
+//! `simplify_surfaces_observed`): they report inside a component (not only when it is
+//! done), within each stage `done` never decreases and never exceeds `total`, a finished
+//! stage ends at `done == total`, reports are throttled, and the result is exactly the
+//! unobserved one.
+
+use contractible::gen::{self, Implicit, IsoParams, RandomParams, SurfaceKind, Tessellation};
+use contractible::irreducible::{self, Algorithm, Options};
+use contractible::progress::{Progress, REPORT_EVERY};
+use contractible::quad;
+use contractible::simplify;
+use contractible::{ConedSurfaces, Triangulation};
+
+/// Checks the invariants of a sequence of reports; returns how many there were.
+fn check_reports(reports: &[Progress], label: &str) -> usize {
+    assert!(!reports.is_empty(), "{label}: no report");
+    let mut prev: Option<Progress> = None;
+    for &p in reports {
+        assert!(p.done <= p.total, "{label}: {p:?}");
+        if let Some(q) = prev {
+            // A stage restarts (a new pass, the next step) only from a finished one.
+            if q.stage == p.stage && p.done < q.done {
+                assert_eq!(
+                    q.done, q.total,
+                    "{label}: {q:?} -> {p:?} went back mid-stage"
+                );
+            }
+        }
+        prev = Some(p);
+    }
+    let last = reports[reports.len() - 1];
+    assert_eq!(last.done, last.total, "{label}: ends at {last:?}");
+    reports.len()
+}
+
+fn random_surface(kind: SurfaceKind, faces: usize) -> Triangulation {
+    gen::random(&RandomParams {
+        surface: kind,
+        min_faces: faces,
+        flip_percent: 30,
+        seed: 11,
+    })
+}
+
+#[test]
+fn reductions_report_inside_the_component_and_match_the_unobserved_result() {
+    let sphere = random_surface(SurfaceKind::Orientable(0), 200_000);
+    let n = sphere.vertex_count() as u64;
+    let options = Options {
+        seed: 5,
+        count_retests: true,
+    };
+    for algo in [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute] {
+        let label = algo.name();
+        let mut reports = Vec::new();
+        let observed =
+            irreducible::reduce_observed(sphere.clone(), algo, &options, &mut |p| reports.push(p));
+        let plain = irreducible::reduce(sphere.clone(), algo, &options);
+        assert_eq!(
+            observed.tri.vertex_count(),
+            plain.tri.vertex_count(),
+            "{label}"
+        );
+        assert_eq!(observed.stats.link_tests, plain.stats.link_tests, "{label}");
+        assert_eq!(
+            observed.stats.contractions, plain.stats.contractions,
+            "{label}"
+        );
+        assert_eq!(
+            observed.stats.edges_tested_more_than_once, plain.stats.edges_tested_more_than_once,
+            "{label}"
+        );
+        let count = check_reports(&reports, label);
+        // Inside the only component: many reports strictly between 0 and the end (genus
+        // 0: RS makes every contraction while processing its first vertex, and still
+        // reports), but not one per step.
+        let middle = reports
+            .iter()
+            .filter(|p| p.done > 0 && p.done < p.total)
+            .count();
+        assert!(middle >= 10, "{label}: {middle} reports inside the work");
+        assert!(
+            (count as u64) < 4 * n / REPORT_EVERY + 64,
+            "{label}: {count} reports for {n} vertices"
+        );
+        if algo != Algorithm::Brute {
+            assert!(reports.iter().all(|p| p.total == n), "{label}");
+        }
+    }
+}
+
+#[test]
+fn tri_quad_reports_the_initial_step_and_the_completion() {
+    let t = random_surface(SurfaceKind::NonOrientable(3), 20_000);
+    let faces = t.face_count() as u64;
+    for algo in [
+        quad::Algorithm::Lrs,
+        quad::Algorithm::Ps,
+        quad::Algorithm::Sg,
+        quad::Algorithm::Matching,
+    ] {
+        let label = algo.name();
+        let options = quad::Options { seed: 2 };
+        let mut reports = Vec::new();
+        let q = quad::convert_observed(t.clone(), algo, &options, &mut |p| reports.push(p));
+        let plain = quad::convert(t.clone(), algo, &options);
+        assert_eq!(q.pairing, plain.pairing, "{label}");
+        check_reports(&reports, label);
+        assert_eq!(
+            reports[0],
+            Progress::new(quad::INITIAL, 0, faces),
+            "{label}"
+        );
+        assert!(
+            reports
+                .iter()
+                .any(|p| p.stage == quad::INITIAL && p.done > 0)
+                || algo == quad::Algorithm::Matching,
+            "{label}: the initial step paired nothing"
+        );
+        let last = reports[reports.len() - 1];
+        assert_eq!((last.done, last.total), (faces, faces), "{label}");
+    }
+}
+
+#[test]
+fn simplification_reports_every_pass_and_matches_the_unobserved_result() {
+    let params = IsoParams::new(Implicit::GenusG { g: 2 }, Tessellation::BodyCentred, 48);
+    let mesh = gen::isosurface(&params).expect("isosurface");
+    let surfaces = ConedSurfaces::from_mesh(&mesh).expect("surface");
+    let positions = mesh.positions.clone().expect("positions");
+    let options = simplify::Options::new(0.01 * simplify::bbox_diagonal(positions.iter().copied()));
+    let mut reports = Vec::new();
+    let mut passes = 0;
+    let observed = simplify::simplify_surfaces_observed(
+        surfaces.clone(),
+        &positions,
+        &options,
+        &mut |_| passes += 1,
+        &mut |p| reports.push(p),
+    )
+    .expect("simplify");
+    let plain =
+        simplify::simplify_surfaces(surfaces, &positions, &options, &mut |_| {}).expect("simplify");
+    assert_eq!(observed.mesh.faces, plain.mesh.faces);
+    check_reports(&reports, "simplify");
+    // Every pass starts at 0 and ends at its total, with reports in between on a mesh
+    // this size.
+    let starts = reports.iter().filter(|p| p.done == 0).count();
+    assert_eq!(starts, passes);
+    assert!(reports.iter().any(|p| p.done > 0 && p.done < p.total));
+}
