@@ -89,7 +89,7 @@ class Reduced:
         faces: (k, 3) faces over the survivors, numbered 0.. in input order.
         vertex_map: (n_out,) the input index of each surviving vertex.
         stats: the command line's ``reduce --json`` statistics (totals and a
-            ``components`` list).
+            ``component_list``).
         history: the contractions; ``history.records()`` is a (c, 5) array of
             ``component, u, v, x, y`` (v contracted into u, {x, y} the edge's link;
             input vertex ids) and ``history.expand(steps)`` the faces (input ids) after

@@ -524,7 +524,7 @@ fn reduce_algorithm(name: &str) -> PyResult<irreducible::Algorithm> {
 /// Irreducible triangulations of every component (closed surfaces only). Returns a dict:
 /// `vertices` (survivors' positions or None), `faces` (over the survivors, renumbered
 /// in input order), `vertex_map` (input id of each survivor), `stats` (the command
-/// line's `reduce --json` totals and `components`), `history`.
+/// line's `reduce --json` totals and `component_list`), `history`.
 #[pyfunction]
 #[pyo3(signature = (vertices, faces, algo="rs", seed=0, vertex_count=None))]
 fn reduce<'py>(
@@ -597,7 +597,7 @@ fn reduce<'py>(
     let stats = PyDict::new(py);
     stats.set_item("algo", algo)?;
     stats.set_item("seed", seed)?;
-    stats.set_item("component_count", parts.len())?;
+    stats.set_item("components", parts.len())?;
     stats.set_item("dropped_vertices", dropped)?;
     stats.set_item("vertices_in", totals.vertices_in)?;
     stats.set_item("edges_in", totals.edges_in)?;
@@ -633,7 +633,7 @@ fn reduce<'py>(
     )?;
     stats.set_item("contractions", totals.contractions)?;
     stats.set_item("seconds", totals.seconds)?;
-    stats.set_item("components", comps)?;
+    stats.set_item("component_list", comps)?;
     let d = PyDict::new(py);
     d.set_item(
         "vertices",
@@ -741,7 +741,7 @@ fn quad_py<'py>(
     let stats = PyDict::new(py);
     stats.set_item("algo", algo)?;
     stats.set_item("seed", seed)?;
-    stats.set_item("component_count", stats_list.len())?;
+    stats.set_item("components", stats_list.len())?;
     stats.set_item("dropped_vertices", dropped)?;
     stats.set_item("faces", faces_total)?;
     stats.set_item("quads", quads.len())?;
@@ -768,7 +768,7 @@ fn quad_py<'py>(
     stats.set_item("flips", flips)?;
     stats.set_item("augmenting_paths", paths)?;
     stats.set_item("phases", phases)?;
-    stats.set_item("components", comps)?;
+    stats.set_item("component_list", comps)?;
     let d = PyDict::new(py);
     d.set_item(
         "vertices",
