@@ -49,12 +49,73 @@ pub enum Command {
 
 #[derive(Args, Debug)]
 pub struct InfoArgs {
-    /// Mesh file (.off/.obj/.ply/.stl, optionally .gz).
+    /// Mesh file (.off/.obj/.ply/.stl, optionally .gz; `-` for standard input).
     pub file: PathBuf,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
+    #[command(flatten)]
+    pub input_opts: InputOpts,
+}
+
+/// How an input mesh is read: shared by every command that reads one.
+#[derive(Args, Debug, Clone)]
+pub struct InputOpts {
+    /// Merge vertices before validation, for triangle soups: `--weld` merges vertices at
+    /// bitwise-equal positions (STL files are welded so on reading already);
+    /// `--weld=EPS` merges vertices within distance EPS, transitively (a chain of close
+    /// vertices becomes one), each group becoming its lowest-numbered vertex. The count
+    /// is reported on stderr; a face whose corners merge is an error naming it, never
+    /// dropped silently.
+    #[arg(
+        long,
+        value_name = "EPS",
+        num_args = 0..=1,
+        require_equals = true,
+        default_missing_value = "0",
+        value_parser = parse_tolerance
+    )]
+    pub weld: Option<f64>,
+    /// Split faces with more than 3 corners into triangles: a quad along its shorter
+    /// diagonal, any other polygon as a fan from its first corner. Without it, such
+    /// faces are refused (`info` describes polygon meshes as they are).
     #[arg(long)]
-    pub weld: bool,
+    pub triangulate: bool,
+    /// The input's format, when neither its content nor its name tells (as for `-`,
+    /// standard input). By default the content decides, else the extension; a name that
+    /// disagrees with the content gets a warning.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub format: Option<FormatArg>,
+}
+
+/// Input formats for `--format`.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FormatArg {
+    /// Object File Format (ASCII).
+    Off,
+    /// Wavefront OBJ.
+    Obj,
+    /// Stanford PLY (ascii or binary).
+    Ply,
+    /// STL (binary or ASCII).
+    Stl,
+}
+
+impl From<FormatArg> for contractible::io::Format {
+    fn from(f: FormatArg) -> Self {
+        use contractible::io::Format;
+        match f {
+            FormatArg::Off => Format::Off,
+            FormatArg::Obj => Format::Obj,
+            FormatArg::Ply => Format::Ply,
+            FormatArg::Stl => Format::Stl,
+        }
+    }
+}
+
+/// A weld tolerance: a finite number >= 0.
+fn parse_tolerance(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && x >= 0.0 => Ok(x),
+        _ => Err(format!("{s:?} is not a distance (a finite number >= 0)")),
+    }
 }
 
 #[derive(Args, Debug)]
@@ -184,9 +245,11 @@ pub struct IsoArgs {
 
 #[derive(Args, Debug)]
 pub struct SubdivideArgs {
-    /// Input surface.
+    /// Input surface (`-` for standard input).
     #[arg(long)]
     pub input: PathBuf,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
     /// Number of 1-to-4 subdivision rounds.
     #[arg(long, default_value_t = 1)]
     pub levels: u32,
@@ -196,17 +259,15 @@ pub struct SubdivideArgs {
 
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Input mesh.
+    /// Input mesh (`-` for standard input).
     pub input: PathBuf,
     /// Output mesh (.off/.obj/.ply/.stl, optionally .gz; PLY and STL are written binary).
     pub output: PathBuf,
     /// Convert even if the input is not a union of surfaces (closed or with boundary).
     #[arg(long)]
     pub no_validate: bool,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 /// The reduction algorithms.
@@ -233,7 +294,7 @@ impl From<Algo> for contractible::irreducible::Algorithm {
 
 #[derive(Args, Debug)]
 pub struct ReduceArgs {
-    /// Input mesh.
+    /// Input mesh (`-` for standard input).
     pub input: PathBuf,
     /// Write the irreducible components here (original coordinates of the survivors).
     #[arg(short, long)]
@@ -247,10 +308,8 @@ pub struct ReduceArgs {
     /// Skip the independent check that every output component is irreducible.
     #[arg(long)]
     pub no_verify: bool,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 /// The tri-quad algorithms.
@@ -296,10 +355,8 @@ pub struct QuadArgs {
     /// triangulation K, which keeps the input's face indices.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 /// How `simplify` treats edges that fail the link condition.
@@ -396,10 +453,8 @@ pub struct SimplifyArgs {
     /// kept either way.
     #[arg(long)]
     pub allow_foldover: bool,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 #[derive(Args, Debug)]

@@ -24,13 +24,13 @@ struct ConvertReport {
 
 pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
     meshio::check_output(&a.output)?;
-    let (mesh, _, welded) = meshio::read_input(&a.input, a.weld, ui)?;
+    let (mesh, _, welded, names) = meshio::read_input(&a.input, &a.input_opts, ui)?;
     // Surfaces with boundary are valid input: validation refuses only what is not a
     // surface (non-manifold edges or vertices, bad faces), with its location.
     let (components, boundary_loops) = if a.no_validate {
         (None, None)
     } else {
-        let (s, _) = meshio::build_open(&mesh, &a.input, ui)?;
+        let (s, _) = meshio::build_open(&mesh, &names, ui)?;
         (Some(s.components.len()), Some(s.loop_count()))
     };
     // The readers reject out-of-range indices and give one position per vertex.

@@ -316,6 +316,28 @@ impl PolyMesh {
         })
     }
 
+    /// The 1-based file line of every face (text formats).
+    pub fn lines(&self) -> Option<&[u32]> {
+        self.lines.as_deref()
+    }
+
+    /// The mesh with its vertices merged by `map` (from [`crate::mesh::weld_map`] of its
+    /// positions): corners renamed, positions those of the kept vertices, faces and their
+    /// lines unchanged. `None` if a corner or a kept vertex has no entry in the map or
+    /// the positions.
+    pub fn welded_by(&self, map: &crate::mesh::WeldMap) -> Option<Self> {
+        let positions = match &self.positions {
+            Some(p) => Some(
+                map.kept
+                    .iter()
+                    .map(|&v| p.get(v as usize).copied())
+                    .collect::<Option<Vec<_>>>()?,
+            ),
+            None => None,
+        };
+        self.renamed(&map.new_id, map.kept.len(), positions)
+    }
+
     /// The mesh with vertices merged as [`Mesh::welded_within`] does (`tolerance` 0:
     /// bitwise-equal positions), and the number of vertices merged away. A mesh without
     /// positions is returned unchanged. `None` if a corner is out of range or
