@@ -303,11 +303,7 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
 
     // Duplicates: good faces ordered by vertex set, then index.
     let mut order: Vec<u32> = (0..nf as u32).filter(|&f| good[f as usize]).collect();
-    order.sort_unstable_by(|&a, &b| {
-        key_of(a as usize)
-            .cmp(key_of(b as usize))
-            .then(a.cmp(&b))
-    });
+    order.sort_unstable_by(|&a, &b| key_of(a as usize).cmp(key_of(b as usize)).then(a.cmp(&b)));
     let mut dups: Vec<(usize, usize)> = Vec::new();
     for w in order.chunk_by(|&a, &b| key_of(a as usize) == key_of(b as usize)) {
         for &f in &w[1..] {
@@ -326,10 +322,10 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
     let mut uses: Vec<Use> = Vec::new();
     let mut corner_base = 0usize;
     let mut corner_vertex: Vec<u32> = Vec::new();
-    for f in 0..nf {
+    for (f, &ok) in good.iter().enumerate() {
         let c = mesh.corners(f);
         corner_vertex.extend_from_slice(c);
-        if good[f] {
+        if ok {
             let k = c.len();
             for i in 0..k {
                 let (x, y) = (c[i], c[(i + 1) % k]);
@@ -396,8 +392,7 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
     for (f, &ok) in good.iter().enumerate() {
         let k = mesh.corners(f).len();
         if ok {
-            for c in base..base + k {
-                let v = corner_vertex[c];
+            for (c, &v) in corner_vertex.iter().enumerate().skip(base).take(k) {
                 if !on_nonmanifold[v as usize] {
                     fans.push((v, find(&mut corner_parent, c as u32)));
                 }
@@ -459,7 +454,9 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
         .count();
 
     // Orientation, when every edge is in at most two faces.
-    let has_nonmanifold = groups.iter().any(|g| g.kind == ProblemKind::NonManifoldEdge);
+    let has_nonmanifold = groups
+        .iter()
+        .any(|g| g.kind == ProblemKind::NonManifoldEdge);
     let (orientable, consistently_oriented) = if has_nonmanifold {
         (None, None)
     } else {

@@ -448,7 +448,9 @@ mod tests {
         // Independent check: the groups are the components of the all-pairs graph.
         let mut state = 12345u64;
         let mut next = || {
-            state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
             ((state >> 33) as f64) / f64::from(1u32 << 31)
         };
         for tol in [0.02, 0.05, 0.1] {
@@ -471,10 +473,13 @@ mod tests {
                     break;
                 }
             }
-            for v in 0..p.len() {
-                assert_eq!(w.kept[w.new_id[v] as usize] as usize, label[v], "tol {tol}");
+            for (v, &l) in label.iter().enumerate() {
+                assert_eq!(w.kept[w.new_id[v] as usize] as usize, l, "tol {tol}");
             }
-            assert!(w.kept.len() < p.len(), "tol {tol}: nothing merged, weak test");
+            assert!(
+                w.kept.len() < p.len(),
+                "tol {tol}: nothing merged, weak test"
+            );
         }
     }
 

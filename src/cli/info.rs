@@ -328,12 +328,19 @@ fn plural(n: usize, one: &str, many: &str) -> String {
 fn count_words(kind: ProblemKind, n: usize) -> String {
     match kind {
         ProblemKind::NoFaces => "no faces".into(),
-        ProblemKind::IndexOutOfRange => plural(n, "face with a missing vertex", "faces with a missing vertex"),
+        ProblemKind::IndexOutOfRange => plural(
+            n,
+            "face with a missing vertex",
+            "faces with a missing vertex",
+        ),
         ProblemKind::DegenerateFace => plural(n, "degenerate face", "degenerate faces"),
         ProblemKind::DuplicateFace => plural(n, "duplicate face", "duplicate faces"),
         ProblemKind::NonManifoldEdge => plural(n, "non-manifold edge", "non-manifold edges"),
         ProblemKind::PinchedVertex => plural(n, "pinched vertex", "pinched vertices"),
-        ProblemKind::Boundary => format!("open surface, {}", plural(n, "boundary loop", "boundary loops")),
+        ProblemKind::Boundary => format!(
+            "open surface, {}",
+            plural(n, "boundary loop", "boundary loops")
+        ),
     }
 }
 
@@ -391,7 +398,11 @@ fn example(p: &Problem, names: &Names, vertex_count: usize) -> ExampleJson {
         Problem::DegenerateFace { face: f, vertex } => {
             add_face(f);
             (
-                format!("{} uses vertex {} twice", names.face(f), names.vertex_number(vertex)),
+                format!(
+                    "{} uses vertex {} twice",
+                    names.face(f),
+                    names.vertex_number(vertex)
+                ),
                 vec![names.vertex_number(vertex)],
                 None,
             )
@@ -400,7 +411,11 @@ fn example(p: &Problem, names: &Names, vertex_count: usize) -> ExampleJson {
             add_face(f);
             add_face(first);
             (
-                format!("{} repeats the vertices of {}", names.face(f), names.face(first)),
+                format!(
+                    "{} repeats the vertices of {}",
+                    names.face(f),
+                    names.face(first)
+                ),
                 vec![],
                 None,
             )
@@ -430,7 +445,12 @@ fn example(p: &Problem, names: &Names, vertex_count: usize) -> ExampleJson {
             vec![names.vertex_number(vertex)],
             Some(sheets),
         ),
-        Problem::BoundaryLoop { a, b, face: f, edges } => {
+        Problem::BoundaryLoop {
+            a,
+            b,
+            face: f,
+            edges,
+        } => {
             add_face(f);
             (
                 format!(
@@ -550,7 +570,10 @@ impl DiagnosisReport {
             outln!(
                 "  not a surface: {}",
                 plural(
-                    d.groups.iter().filter(|g| g.kind != ProblemKind::Boundary).count(),
+                    d.groups
+                        .iter()
+                        .filter(|g| g.kind != ProblemKind::Boundary)
+                        .count(),
                     "kind of problem",
                     "kinds of problems"
                 )
@@ -576,16 +599,12 @@ impl DiagnosisReport {
 
 /// Prints the diagnosis (human or JSON) and returns the error for a non-surface.
 fn report_diagnosis(
+    mut report: DiagnosisReport,
     d: &Diagnosis,
     names: &Names,
-    vertex_count: usize,
-    corners: (usize, usize),
-    welded: Option<usize>,
-    soup: Option<String>,
     core_error: Option<String>,
     ui: Ui,
 ) -> Result<(), CliError> {
-    let mut report = DiagnosisReport::of(d, names, vertex_count, corners, welded, soup);
     if let (true, Some(e)) = (report.surface, &core_error) {
         // The builder refused what the diagnosis accepts (a case it does not classify):
         // never call such a mesh a surface.
@@ -628,21 +647,19 @@ pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
     if !loaded.poly.is_triangle_mesh() && !a.input_opts.triangulate {
         let corners = loaded.poly.corner_range();
         let d = diagnose(&loaded.poly, EXAMPLES);
-        return report_diagnosis(
+        let report = DiagnosisReport::of(
             &d,
             &loaded.names,
             loaded.poly.vertex_count,
             corners,
             loaded.welded,
             None,
-            None,
-            ui,
         );
+        return report_diagnosis(report, &d, &loaded.names, None, ui);
     }
     let welded = loaded.welded;
-    let polygons_before = (!loaded.poly.is_triangle_mesh()).then(|| {
-        loaded.poly.faces().filter(|f| f.len() > 3).count()
-    });
+    let polygons_before = (!loaded.poly.is_triangle_mesh())
+        .then(|| loaded.poly.faces().filter(|f| f.len() > 3).count());
     let (mesh, names) = meshio::triangles(loaded, &a.input_opts, &a.file, ui)?;
     let seconds_read = t.elapsed().as_secs_f64();
     let t = std::time::Instant::now();
@@ -651,23 +668,24 @@ pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
         Err(e) => {
             let d = diagnose(&mesh, EXAMPLES);
             let soup = meshio::soup_hint(&mesh, &names);
-            return report_diagnosis(
-                &d,
-                &names,
-                mesh.vertex_count,
-                (3, 3),
-                welded,
-                soup,
-                Some(meshio::build_error_message(&names, &e)),
-                ui,
-            );
+            let report = DiagnosisReport::of(&d, &names, mesh.vertex_count, (3, 3), welded, soup);
+            let core = meshio::build_error_message(&names, &e);
+            return report_diagnosis(report, &d, &names, Some(core), ui);
         }
     };
     meshio::warn_soup_and_dropped(&mesh, &surfaces, &names, ui);
     let seconds_build = t.elapsed().as_secs_f64();
-    let mut report = Report::of_coned(Path::new(&names.shown), &surfaces, seconds_read, seconds_build);
+    let mut report = Report::of_coned(
+        Path::new(&names.shown),
+        &surfaces,
+        seconds_read,
+        seconds_build,
+    );
     report.welded_vertices = welded;
-    report.triangulated_polygons = a.input_opts.triangulate.then_some(polygons_before.unwrap_or(0));
+    report.triangulated_polygons = a
+        .input_opts
+        .triangulate
+        .then_some(polygons_before.unwrap_or(0));
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {

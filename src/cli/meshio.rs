@@ -272,8 +272,9 @@ pub fn load(path: &Path, opts: &InputOpts, ui: Ui) -> Result<Loaded, CliError> {
             names.shown
         )));
     };
-    let map = contractible::mesh::weld_map(positions, eps)
-        .ok_or_else(|| CliError::Input(format!("{}: cannot weld: too many vertices", names.shown)))?;
+    let map = contractible::mesh::weld_map(positions, eps).ok_or_else(|| {
+        CliError::Input(format!("{}: cannot weld: too many vertices", names.shown))
+    })?;
     let welded = poly.welded_by(&map).ok_or_else(|| {
         CliError::Failure(format!("{}: inconsistent mesh after reading", names.shown))
     })?;
@@ -290,7 +291,8 @@ pub fn load(path: &Path, opts: &InputOpts, ui: Ui) -> Result<Loaded, CliError> {
     let merged = poly.vertex_count - welded.vertex_count;
     if !ui.quiet {
         let how = if eps == 0.0 {
-            "--weld merged {merged} vertices at identical positions".replace("{merged}", &merged.to_string())
+            "--weld merged {merged} vertices at identical positions"
+                .replace("{merged}", &merged.to_string())
         } else {
             format!("--weld={eps} merged {merged} vertices within {eps} of another")
         };
@@ -313,7 +315,12 @@ pub fn load(path: &Path, opts: &InputOpts, ui: Ui) -> Result<Loaded, CliError> {
 
 /// The loaded faces as triangles: cut when `--triangulate` (the count of polygons cut on
 /// stderr unless quiet), else refused at the first polygon with a hint.
-pub fn triangles(l: Loaded, opts: &InputOpts, path: &Path, ui: Ui) -> Result<(TriMesh, Names), CliError> {
+pub fn triangles(
+    l: Loaded,
+    opts: &InputOpts,
+    path: &Path,
+    ui: Ui,
+) -> Result<(TriMesh, Names), CliError> {
     let mut names = l.names;
     if opts.triangulate {
         let t = l.poly.triangulated();
@@ -399,8 +406,7 @@ pub fn soup_hint(mesh: &TriMesh, names: &Names) -> Option<String> {
     Some(format!(
         "{}: this looks like an unwelded triangle soup ({why}{coincident} of {} vertices sit at \
          the position of another vertex): try --weld, which merges vertices at identical positions",
-        names.shown,
-        mesh.vertex_count
+        names.shown, mesh.vertex_count
     ))
 }
 
@@ -420,7 +426,8 @@ pub fn build(mesh: &TriMesh, names: &Names, ui: Ui) -> Result<(Surfaces, f64), C
     let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
     let r = Surfaces::from_mesh(mesh);
     pb.finish_and_clear();
-    let s = r.map_err(|e| CliError::Input(format!("{}{SEE_INFO}", build_error_message(names, &e))))?;
+    let s =
+        r.map_err(|e| CliError::Input(format!("{}{SEE_INFO}", build_error_message(names, &e))))?;
     warn_dropped(names, s.dropped_vertices.len(), ui);
     Ok((s, t.elapsed().as_secs_f64()))
 }
@@ -458,7 +465,7 @@ pub fn build_closed(
                 mesh,
                 names,
                 format!(
-                    "{}: edge {} is a boundary edge ({}): `{command}` needs closed surfaces ({why})",
+                    "{}: edge {} is a boundary edge, only in {}: `{command}` needs closed surfaces ({why})",
                     names.shown,
                     names.edge(a, b),
                     names.face(face)
@@ -483,11 +490,7 @@ pub fn build_closed(
 /// closed by coning (with a spinner); returns them and the seconds taken. A valid mesh
 /// with boundary that looks like an unwelded soup (every triangle its own disc, say) gets
 /// the soup hint as a warning; an invalid one gets it in the error.
-pub fn build_open(
-    mesh: &TriMesh,
-    names: &Names,
-    ui: Ui,
-) -> Result<(ConedSurfaces, f64), CliError> {
+pub fn build_open(mesh: &TriMesh, names: &Names, ui: Ui) -> Result<(ConedSurfaces, f64), CliError> {
     let t = Instant::now();
     let s = try_build_open(mesh, ui).map_err(|e| {
         invalid(
@@ -523,7 +526,10 @@ pub fn warn_soup_and_dropped(mesh: &TriMesh, s: &ConedSurfaces, names: &Names, u
 
 fn warn_dropped(names: &Names, dropped: usize, ui: Ui) {
     if dropped > 0 {
-        ui.warn(&format!("{}: {dropped} unused vertices dropped", names.shown));
+        ui.warn(&format!(
+            "{}: {dropped} unused vertices dropped",
+            names.shown
+        ));
     }
 }
 

@@ -219,8 +219,7 @@ pub fn read_poly_mesh(path: &Path, format: Option<Format>) -> Result<Decoded, Re
 /// when it can, else the extension), then [`PolyMesh::into_tri_mesh`] (a face with other
 /// than 3 corners is `NonTriangleFace`). Errors carry `path`.
 pub fn read_tri_mesh(path: &Path) -> Result<TriMesh, ReadError> {
-    read_poly_mesh(path, None)
-        .and_then(|d| d.mesh.into_tri_mesh().map_err(|e| e.with_path(path)))
+    read_poly_mesh(path, None).and_then(|d| d.mesh.into_tri_mesh().map_err(|e| e.with_path(path)))
 }
 
 /// Reads a triangle mesh in `format` from a reader (read to the end; gzip content is

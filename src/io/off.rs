@@ -10,9 +10,9 @@
 
 use std::io::Write;
 
+use super::error::Location;
 use super::error::{token_string, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
-use super::error::Location;
 use super::poly::PolyMesh;
 use super::text::{parse_f64, parse_i64, parse_u64, Lines, Tokens};
 use crate::mesh::Mesh;
