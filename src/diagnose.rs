@@ -590,6 +590,57 @@ mod tests {
         assert_eq!(kinds(&empty), vec![(ProblemKind::NoFaces, 1)]);
     }
 
+    /// Cross-check with the independent builder on random small face lists: the builder
+    /// accepts exactly what the diagnosis calls a surface (up to the builder's extra
+    /// degree rule), and then both agree on V, E, F, χ, components, orientability and
+    /// boundary loops.
+    #[test]
+    fn agrees_with_the_surface_builder_on_random_face_lists() {
+        let mut state = 7u64;
+        let mut next = |n: u64| {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 33) % n
+        };
+        let mut accepted = 0;
+        for _ in 0..20000 {
+            let nv = 3 + next(5) as u32;
+            let nf = 1 + next(9) as usize;
+            let faces: Vec<[u32; 3]> = (0..nf)
+                .map(|_| [next(nv.into()) as u32, next(nv.into()) as u32, next(nv.into()) as u32])
+                .collect();
+            let mesh = TriMesh::combinatorial(nv as usize, faces);
+            let d = diagnose(&mesh, 3);
+            match crate::Surfaces::from_mesh_with_boundary(&mesh) {
+                Ok(s) => {
+                    accepted += 1;
+                    assert!(d.is_surface(), "{:?}: {d:?}", mesh.faces);
+                    let t: Vec<_> = s.components.iter().map(|c| c.surface_type()).collect();
+                    let counts = s.components.iter().map(|c| c.open_counts());
+                    let (v, e, f) = counts.fold((0, 0, 0), |a, c| (a.0 + c.0, a.1 + c.1, a.2 + c.2));
+                    assert_eq!((d.vertices, d.edges, d.faces), (v, e, f), "{:?}", mesh.faces);
+                    assert_eq!(d.components, s.components.len());
+                    assert_eq!(
+                        d.euler_characteristic,
+                        t.iter().map(|x| x.euler_characteristic()).sum::<i64>()
+                    );
+                    assert_eq!(d.orientable, Some(t.iter().all(|x| x.is_orientable())));
+                    assert_eq!(
+                        d.boundary_loops,
+                        t.iter().map(|x| x.boundary_loops()).sum::<usize>()
+                    );
+                }
+                Err(e) => assert!(
+                    !d.is_surface() || matches!(e, crate::BuildError::VertexDegreeTooLow { .. }),
+                    "{:?}: builder says {e}, diagnosis {d:?}",
+                    mesh.faces
+                ),
+            }
+        }
+        assert!(accepted > 100, "only {accepted} surfaces drawn: weak test");
+    }
+
     #[test]
     fn quads_of_a_cube_are_a_closed_orientable_surface() {
         let cube: Vec<[u32; 4]> = vec![
