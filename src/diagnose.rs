@@ -608,7 +608,13 @@ mod tests {
             let nv = 3 + next(5) as u32;
             let nf = 1 + next(9) as usize;
             let faces: Vec<[u32; 3]> = (0..nf)
-                .map(|_| [next(nv.into()) as u32, next(nv.into()) as u32, next(nv.into()) as u32])
+                .map(|_| {
+                    [
+                        next(nv.into()) as u32,
+                        next(nv.into()) as u32,
+                        next(nv.into()) as u32,
+                    ]
+                })
                 .collect();
             let mesh = TriMesh::combinatorial(nv as usize, faces);
             let d = diagnose(&mesh, 3);
@@ -618,8 +624,14 @@ mod tests {
                     assert!(d.is_surface(), "{:?}: {d:?}", mesh.faces);
                     let t: Vec<_> = s.components.iter().map(|c| c.surface_type()).collect();
                     let counts = s.components.iter().map(|c| c.open_counts());
-                    let (v, e, f) = counts.fold((0, 0, 0), |a, c| (a.0 + c.0, a.1 + c.1, a.2 + c.2));
-                    assert_eq!((d.vertices, d.edges, d.faces), (v, e, f), "{:?}", mesh.faces);
+                    let (v, e, f) =
+                        counts.fold((0, 0, 0), |a, c| (a.0 + c.0, a.1 + c.1, a.2 + c.2));
+                    assert_eq!(
+                        (d.vertices, d.edges, d.faces),
+                        (v, e, f),
+                        "{:?}",
+                        mesh.faces
+                    );
                     assert_eq!(d.components, s.components.len());
                     assert_eq!(
                         d.euler_characteristic,
