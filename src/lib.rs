@@ -7,6 +7,7 @@
 #![warn(missing_docs)]
 
 pub mod core;
+pub mod diagnose;
 pub mod gen;
 pub mod io;
 pub mod irreducible;

@@ -6,7 +6,8 @@
 //!
 //! The conversions between the two live here, written once for the command line, the
 //! examples and library users: [`Mesh::compacted`] (drop unused vertices),
-//! [`Mesh::welded`] (merge vertices at bitwise-equal positions, as STL needs),
+//! [`Mesh::welded`] (merge vertices at bitwise-equal positions, as STL needs) and
+//! [`Mesh::welded_within`] (within a distance),
 //! [`Triangulation::to_mesh`] and [`Triangulation::to_mesh_with_positions`] (a surface
 //! back to a compact mesh), [`Component::carry`] (per-vertex data of the source mesh,
 //! such as positions, into a component), [`Component::to_mesh`], and
@@ -116,6 +117,24 @@ impl<const N: usize> Mesh<N> {
     /// `None` if a face refers to a vertex `>= vertex_count` or `positions` has a length
     /// other than `vertex_count`. O(V + F) expected (hashing).
     pub fn welded(&self) -> Option<(Self, usize)> {
+        self.welded_within(0.0)
+    }
+
+    /// [`Self::welded`] with a distance: with `tolerance > 0`, vertices closer than or
+    /// at `tolerance` (Euclidean) are merged, transitively (a chain of close vertices
+    /// becomes one vertex even if its ends are farther apart); `tolerance == 0` is
+    /// exactly [`Self::welded`] (bitwise-equal positions). See [`weld_map`] for the
+    /// rule and its cost.
+    ///
+    /// Deterministic: each group becomes its lowest-index vertex, at that vertex's
+    /// position; kept vertices keep their relative order, renumbered `0..k`; faces keep
+    /// their order with their corners mapped (a face whose corners merge keeps the
+    /// repeated vertex, for validation to report: nothing is dropped). Unused vertices
+    /// are kept. A mesh without positions is returned unchanged with a count of 0.
+    ///
+    /// `None` if a face refers to a vertex `>= vertex_count`, `positions` has a length
+    /// other than `vertex_count`, or `tolerance` is negative or not finite.
+    pub fn welded_within(&self, tolerance: f64) -> Option<(Self, usize)> {
         let Some(positions) = &self.positions else {
             return self
                 .faces
@@ -127,26 +146,15 @@ impl<const N: usize> Mesh<N> {
         if positions.len() != self.vertex_count {
             return None;
         }
-        let mut first: std::collections::HashMap<[u64; 3], u32> =
-            std::collections::HashMap::with_capacity(positions.len());
-        let mut new_id = Vec::with_capacity(positions.len());
-        let mut kept = Vec::new();
-        for p in positions {
-            // At most `vertex_count` distinct positions, and face indices are u32.
-            let next = u32::try_from(kept.len()).ok()?;
-            let id = *first.entry(p.map(f64::to_bits)).or_insert(next);
-            if id == next {
-                kept.push(*p);
-            }
-            new_id.push(id);
-        }
+        let w = weld_map(positions, tolerance)?;
+        let kept: Vec<[f64; 3]> = w.kept.iter().map(|&v| positions[v as usize]).collect();
         let faces = self
             .faces
             .iter()
             .map(|f| {
                 let mut g = *f;
                 for v in &mut g {
-                    *v = *new_id.get(*v as usize)?;
+                    *v = *w.new_id.get(*v as usize)?;
                 }
                 Some(g)
             })
@@ -167,6 +175,104 @@ impl<const N: usize> Mesh<N> {
             .filter(|p| !seen.insert(p.map(f64::to_bits)))
             .count()
     }
+}
+
+/// Which vertex each vertex becomes when positions are welded: see [`weld_map`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct WeldMap {
+    /// `new_id[v]` is the new index of vertex `v` (`0..kept.len()`).
+    pub new_id: Vec<u32>,
+    /// The kept vertices (one per group, its lowest index), in increasing order:
+    /// `kept[new_id[v]]` is the representative of `v`'s group.
+    pub kept: Vec<u32>,
+}
+
+/// Groups the vertices at `positions` for welding.
+///
+/// - `tolerance == 0`: vertices whose three coordinates are bitwise equal form a group
+///   (so `0.0` and `-0.0` stay apart). O(V) expected (hashing).
+/// - `tolerance > 0`: the groups are the connected components of the graph joining two
+///   vertices at Euclidean distance `<= tolerance` (union–find, so merging is
+///   transitive). Vertices are hashed into a grid of cells of side `tolerance`; each
+///   vertex is compared with the earlier vertices of its own and the 26 neighbouring
+///   cells, which contain every vertex within `tolerance`. O(V + number of pairs in
+///   neighbouring cells), expected O(V) when few vertices share a cell.
+///
+/// Deterministic whatever the order of the work: a group's representative is its lowest
+/// index, and the kept vertices keep their relative order.
+///
+/// `None` if `tolerance` is negative or not finite, or there are more than `u32::MAX`
+/// vertices.
+pub fn weld_map(positions: &[[f64; 3]], tolerance: f64) -> Option<WeldMap> {
+    if !(tolerance >= 0.0 && tolerance.is_finite()) {
+        return None;
+    }
+    u32::try_from(positions.len()).ok()?;
+    // parent[v] <= v always, so a root is the lowest index of its group.
+    let mut parent: Vec<u32> = (0..positions.len() as u32).collect();
+    fn find(parent: &mut [u32], mut v: u32) -> u32 {
+        while parent[v as usize] != v {
+            let p = parent[v as usize];
+            parent[v as usize] = parent[p as usize];
+            v = p;
+        }
+        v
+    }
+    if tolerance == 0.0 {
+        let mut first: std::collections::HashMap<[u64; 3], u32> =
+            std::collections::HashMap::with_capacity(positions.len());
+        for (v, p) in positions.iter().enumerate() {
+            let r = *first.entry(p.map(f64::to_bits)).or_insert(v as u32);
+            parent[v] = r;
+        }
+    } else {
+        let cell = |p: &[f64; 3]| p.map(|x| (x / tolerance).floor() as i64);
+        let t2 = tolerance * tolerance;
+        let mut grid: std::collections::HashMap<[i64; 3], Vec<u32>> =
+            std::collections::HashMap::with_capacity(positions.len());
+        for (v, p) in positions.iter().enumerate() {
+            let c = cell(p);
+            for dx in -1i64..=1 {
+                for dy in -1i64..=1 {
+                    for dz in -1i64..=1 {
+                        let key = [
+                            c[0].saturating_add(dx),
+                            c[1].saturating_add(dy),
+                            c[2].saturating_add(dz),
+                        ];
+                        let Some(others) = grid.get(&key) else {
+                            continue;
+                        };
+                        for &u in others {
+                            let q = &positions[u as usize];
+                            let d2 = (p[0] - q[0]).powi(2)
+                                + (p[1] - q[1]).powi(2)
+                                + (p[2] - q[2]).powi(2);
+                            if d2 <= t2 {
+                                let (a, b) = (find(&mut parent, u), find(&mut parent, v as u32));
+                                let (lo, hi) = (a.min(b), a.max(b));
+                                parent[hi as usize] = lo;
+                            }
+                        }
+                    }
+                }
+            }
+            grid.entry(c).or_default().push(v as u32);
+        }
+    }
+    let mut new_id = vec![0u32; positions.len()];
+    let mut kept = Vec::new();
+    for v in 0..positions.len() {
+        let r = find(&mut parent, v as u32);
+        if r as usize == v {
+            new_id[v] = kept.len() as u32;
+            kept.push(r);
+        } else {
+            // r < v, so its new id is already set.
+            new_id[v] = new_id[r as usize];
+        }
+    }
+    Some(WeldMap { new_id, kept })
 }
 
 impl TriMesh {
@@ -313,6 +419,68 @@ mod tests {
         assert_eq!(TriMesh::combinatorial(2, vec![[0, 1, 2]]).welded(), None);
         let bad = TriMesh::with_positions(vec![[0.0; 3]], vec![[0, 1, 2]]);
         assert_eq!(bad.welded(), None);
+    }
+
+    #[test]
+    fn welded_within_merges_chains_to_their_lowest_index() {
+        // 0 -- 1 -- 2 are 0.6 apart (0 and 2 are 1.2 apart), 3 is far, 4 sits on 1.
+        let p = vec![
+            [0.0, 0.0, 0.0],
+            [0.6, 0.0, 0.0],
+            [1.2, 0.0, 0.0],
+            [9.0, 0.0, 0.0],
+            [0.6, 0.0, 0.0],
+        ];
+        let m = TriMesh::with_positions(p.clone(), vec![[0, 3, 2], [4, 3, 1]]);
+        let (w, merged) = m.welded_within(0.7).unwrap();
+        assert_eq!(merged, 3);
+        assert_eq!(w.positions, Some(vec![p[0], p[3]]));
+        assert_eq!(w.faces, vec![[0, 1, 0], [0, 1, 0]]);
+        // Below the spacing only the exact copy merges; 0 is the bitwise rule.
+        assert_eq!(m.welded_within(0.5).unwrap().1, 1);
+        assert_eq!(m.welded_within(0.0), m.welded());
+        assert_eq!(m.welded_within(-1.0), None);
+        assert_eq!(m.welded_within(f64::NAN), None);
+    }
+
+    #[test]
+    fn weld_map_matches_all_pairs_union_find() {
+        // Independent check: the groups are the components of the all-pairs graph.
+        let mut state = 12345u64;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            ((state >> 33) as f64) / f64::from(1u32 << 31)
+        };
+        for tol in [0.02, 0.05, 0.1] {
+            let p: Vec<[f64; 3]> = (0..300).map(|_| [next(), next(), next() * 0.1]).collect();
+            let w = weld_map(&p, tol).unwrap();
+            let mut label: Vec<usize> = (0..p.len()).collect();
+            // Repeated relaxation to the minimum label over close pairs.
+            loop {
+                let mut changed = false;
+                for i in 0..p.len() {
+                    for j in 0..p.len() {
+                        let d2: f64 = (0..3).map(|k| (p[i][k] - p[j][k]).powi(2)).sum();
+                        if d2 <= tol * tol && label[j] < label[i] {
+                            label[i] = label[j];
+                            changed = true;
+                        }
+                    }
+                }
+                if !changed {
+                    break;
+                }
+            }
+            for (v, &l) in label.iter().enumerate() {
+                assert_eq!(w.kept[w.new_id[v] as usize] as usize, l, "tol {tol}");
+            }
+            assert!(
+                w.kept.len() < p.len(),
+                "tol {tol}: nothing merged, weak test"
+            );
+        }
     }
 
     fn pos(i: usize) -> [f64; 3] {

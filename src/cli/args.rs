@@ -85,16 +85,16 @@ pub struct CompletionsArgs {
     pub shell: clap_complete::Shell,
 }
 
-/// A mesh format, for `--output-format`.
+/// A mesh format, for `--format` (input) and `--output-format`.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum FormatArg {
-    /// Object File Format (ascii).
+    /// Object File Format (ASCII).
     Off,
     /// Wavefront OBJ.
     Obj,
-    /// Stanford PLY (written binary little-endian).
+    /// Stanford PLY (read ascii or binary; written binary little-endian).
     Ply,
-    /// STL (written binary; triangles only).
+    /// STL (read binary or ASCII; written binary; triangles only).
     Stl,
 }
 
@@ -112,12 +112,48 @@ impl From<FormatArg> for contractible::io::Format {
 
 #[derive(Args, Debug)]
 pub struct InfoArgs {
-    /// Mesh file (.off/.obj/.ply/.stl, optionally .gz).
+    /// Mesh file (.off/.obj/.ply/.stl, optionally .gz; `-` for standard input).
     pub file: PathBuf,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
+    #[command(flatten)]
+    pub input_opts: InputOpts,
+}
+
+/// How an input mesh is read: shared by every command that reads one.
+#[derive(Args, Debug, Clone)]
+pub struct InputOpts {
+    /// Merge vertices before validation, for triangle soups: `--weld` merges vertices at
+    /// bitwise-equal positions (STL files are welded so on reading already);
+    /// `--weld=EPS` merges vertices within distance EPS, transitively (a chain of close
+    /// vertices becomes one), each group becoming its lowest-numbered vertex. The count
+    /// is reported on stderr; a face whose corners merge is an error naming it, never
+    /// dropped silently.
+    #[arg(
+        long,
+        value_name = "EPS",
+        num_args = 0..=1,
+        require_equals = true,
+        default_missing_value = "0",
+        value_parser = parse_tolerance
+    )]
+    pub weld: Option<f64>,
+    /// Split faces with more than 3 corners into triangles: a quad along its shorter
+    /// diagonal, any other polygon as a fan from its first corner. Without it, such
+    /// faces are refused (`info` describes polygon meshes as they are).
     #[arg(long)]
-    pub weld: bool,
+    pub triangulate: bool,
+    /// The input's format, when neither its content nor its name tells (as for `-`,
+    /// standard input). By default the content decides, else the extension; a name that
+    /// disagrees with the content gets a warning.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub format: Option<FormatArg>,
+}
+
+/// A weld tolerance: a finite number >= 0.
+fn parse_tolerance(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(x) if x.is_finite() && x >= 0.0 => Ok(x),
+        _ => Err(format!("{s:?} is not a distance (a finite number >= 0)")),
+    }
 }
 
 #[derive(Args, Debug)]
@@ -252,9 +288,11 @@ pub struct IsoArgs {
 
 #[derive(Args, Debug)]
 pub struct SubdivideArgs {
-    /// Input surface.
+    /// Input surface (`-` for standard input).
     #[arg(long)]
     pub input: PathBuf,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
     /// Number of 1-to-4 subdivision rounds.
     #[arg(long, default_value_t = 1)]
     pub levels: u32,
@@ -264,7 +302,7 @@ pub struct SubdivideArgs {
 
 #[derive(Args, Debug)]
 pub struct ConvertArgs {
-    /// Input mesh.
+    /// Input mesh (`-` for standard input).
     pub input: PathBuf,
     /// Output mesh (.off/.obj/.ply/.stl, optionally .gz; PLY and STL are written binary);
     /// `-` writes to stdout (with --output-format).
@@ -276,10 +314,8 @@ pub struct ConvertArgs {
     /// Convert even if the input is not a union of surfaces (closed or with boundary).
     #[arg(long)]
     pub no_validate: bool,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 /// The reduction algorithms.
@@ -306,7 +342,7 @@ impl From<Algo> for contractible::irreducible::Algorithm {
 
 #[derive(Args, Debug)]
 pub struct ReduceArgs {
-    /// Input mesh.
+    /// Input mesh (`-` for standard input).
     pub input: PathBuf,
     /// Write the irreducible components here (original coordinates of the survivors);
     /// `-` writes to stdout (with --output-format).
@@ -325,10 +361,8 @@ pub struct ReduceArgs {
     /// Skip the independent check that every output component is irreducible.
     #[arg(long)]
     pub no_verify: bool,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 /// The tri-quad algorithms.
@@ -379,10 +413,8 @@ pub struct QuadArgs {
     /// triangulation K, which keeps the input's face indices. `-` writes them to stdout.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 /// How `simplify` treats edges that fail the link condition.
@@ -483,10 +515,8 @@ pub struct SimplifyArgs {
     /// kept either way.
     #[arg(long)]
     pub allow_foldover: bool,
-    /// Merge vertices at bitwise-equal positions before validation (for triangle soups:
-    /// STL files are welded on reading already); the count is reported on stderr.
-    #[arg(long)]
-    pub weld: bool,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
 }
 
 #[derive(Args, Debug)]

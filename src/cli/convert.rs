@@ -31,13 +31,13 @@ struct ConvertReport {
 
 pub fn run(a: &ConvertArgs, ui: Ui) -> Result<(), CliError> {
     let output = meshio::check_output(&a.output, a.output_format.map(Into::into), &[&a.input])?;
-    let (mesh, seconds_read, welded) = meshio::read_input(&a.input, a.weld, ui)?;
+    let (mesh, seconds_read, welded, names) = meshio::read_input(&a.input, &a.input_opts, ui)?;
     // Surfaces with boundary are valid input: validation refuses only what is not a
     // surface (non-manifold edges or vertices, bad faces), with its location.
     let (components, boundary_loops, seconds_build) = if a.no_validate {
         (None, None, None)
     } else {
-        let (s, t) = meshio::build_open(&mesh, &a.input, ui)?;
+        let (s, t) = meshio::build_open(&mesh, &names, ui)?;
         (Some(s.components.len()), Some(s.loop_count()), Some(t))
     };
     // The readers reject out-of-range indices and give one position per vertex.

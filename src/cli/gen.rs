@@ -118,8 +118,8 @@ fn brick_mesh(a: &BrickArgs, ui: Ui) -> Result<TriMesh, CliError> {
 }
 
 fn subdivide_mesh(a: &SubdivideArgs, ui: Ui) -> Result<TriMesh, CliError> {
-    let (mesh, _) = meshio::read(&a.input, ui)?;
-    meshio::build(&mesh, &a.input, ui)?;
+    let (mesh, _, _, names) = meshio::read_input(&a.input, &a.input_opts, ui)?;
+    meshio::build(&mesh, &names, ui)?;
     // `build` accepted every face index, and the readers give one position per vertex.
     let (mesh, _) = mesh.compacted().ok_or_else(|| {
         CliError::Failure(format!(

@@ -3,101 +3,370 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use contractible::io::{self, Location, ReadError, ReadErrorKind, WriteError};
+use contractible::io::{self, Location, PolyMesh, ReadError, ReadErrorKind, WriteError};
 use contractible::{BuildError, ConedSurfaces, Mesh, Surfaces, TriMesh};
 
+use super::args::InputOpts;
 use super::progress::{byte_spinner, bytes_bar, spinner};
 use super::signals;
 use super::{CliError, Ui};
 
+/// How messages name the faces and vertices of an input: as its file does (from 1 in
+/// OBJ, from 0 elsewhere), with the file line of each face when the format is text,
+/// through triangulation (a triangle is named by its polygon) and welding (a merged
+/// vertex by its lowest-numbered original).
+#[derive(Clone, Debug, Default)]
+pub struct Names {
+    /// The input as shown in messages (`<stdin>` for `-`).
+    pub shown: String,
+    one_based: bool,
+    lines: Option<Vec<u32>>,
+    face_origin: Option<Vec<u32>>,
+    vertex_origin: Option<Vec<u32>>,
+}
+
+impl Names {
+    /// Names for `path`, before anything is known about its content.
+    pub fn of_path(path: &Path) -> Self {
+        Names {
+            shown: shown(path),
+            ..Names::default()
+        }
+    }
+
+    /// The face of the file that face `f` of the mesh comes from (0-based).
+    fn file_face(&self, f: usize) -> usize {
+        match &self.face_origin {
+            Some(o) => o.get(f).map_or(f, |&p| p as usize),
+            None => f,
+        }
+    }
+
+    /// The face number as the file counts, and its line when known.
+    pub fn face_number(&self, f: usize) -> (usize, Option<usize>) {
+        let p = self.file_face(f);
+        let line = self
+            .lines
+            .as_ref()
+            .and_then(|l| l.get(p))
+            .map(|&n| n as usize);
+        (p + usize::from(self.one_based), line)
+    }
+
+    /// `face N (line L)`.
+    pub fn face(&self, f: usize) -> String {
+        match self.face_number(f) {
+            (n, Some(l)) => format!("face {n} (line {l})"),
+            (n, None) => format!("face {n}"),
+        }
+    }
+
+    /// The vertex number as the file counts.
+    pub fn vertex_number(&self, v: u32) -> u64 {
+        let v = match &self.vertex_origin {
+            Some(o) => o.get(v as usize).copied().unwrap_or(v),
+            None => v,
+        };
+        u64::from(v) + u64::from(self.one_based)
+    }
+
+    /// `[a, b]` with file vertex numbers.
+    pub fn edge(&self, a: u32, b: u32) -> String {
+        format!("[{}, {}]", self.vertex_number(a), self.vertex_number(b))
+    }
+
+    /// Whether vertices and faces are counted from 1 (OBJ).
+    pub fn one_based(&self) -> bool {
+        self.one_based
+    }
+}
+
+/// How the input is shown in messages: `<stdin>` for `-`.
+pub fn shown(path: &Path) -> String {
+    if is_stdin(path) {
+        "<stdin>".into()
+    } else {
+        path.display().to_string()
+    }
+}
+
+fn is_stdin(path: &Path) -> bool {
+    path.as_os_str() == "-"
+}
+
 /// `FILE: LOCATION: MESSAGE` (location left out when unknown).
 pub fn read_error_message(path: &Path, e: &ReadError) -> String {
+    let shown = shown(path);
+    let hint = match e.kind {
+        ReadErrorKind::NonTriangleFace { corners, .. } if corners > 3 => {
+            " (use --triangulate to split polygons into triangles; `info` describes polygon meshes as they are)"
+        }
+        ReadErrorKind::UnknownFormat if is_stdin(path) => " (use --format to name it)",
+        _ => "",
+    };
     match e.location {
-        Location::Unknown => format!("{}: {}", path.display(), e.kind),
-        loc => format!("{}: {loc}: {}", path.display(), e.kind),
+        Location::Unknown => format!("{shown}: {}{hint}", e.kind),
+        loc => format!("{shown}: {loc}: {}{hint}", e.kind),
     }
 }
 
 /// `FILE: MESSAGE` for a mesh that is not a union of closed surfaces (or, for `info`,
-/// of surfaces with boundary).
-pub fn build_error_message(path: &Path, e: &BuildError) -> String {
-    format!("{}: {e}", path.display())
+/// of surfaces with boundary), with faces and vertices named as the file does.
+pub fn build_error_message(names: &Names, e: &BuildError) -> String {
+    format!("{}: {}", names.shown, describe_build_error(names, e))
 }
 
-/// Reads a triangle mesh: the file's bytes with a bar showing the bytes read and the
-/// percentage, then the parsing with a spinner; returns it and the seconds taken. Same
-/// result and errors as [`io::read_tri_mesh`].
-pub fn read(path: &Path, ui: Ui) -> Result<(TriMesh, f64), CliError> {
-    let t = Instant::now();
-    let r = read_bytes(path, ui).and_then(|bytes| {
-        let pb = spinner(
-            ui,
-            format!("parsing {} ({} bytes)", path.display(), bytes.len()),
-        );
-        let (format, gz) = io::Format::from_path(path);
-        let r = if gz && !bytes.starts_with(&[0x1f, 0x8b]) {
-            Err(ReadError::new(
-                ReadErrorKind::Decompress(
-                    "file name ends in .gz but the content is not gzip".into(),
-                ),
-                Location::ByteOffset(0),
-            ))
-        } else {
-            io::read_tri_mesh_bytes(&bytes, format)
-        };
+/// A validation error in words, faces and vertices named as the file does.
+fn describe_build_error(names: &Names, e: &BuildError) -> String {
+    let v = |x: u32| names.vertex_number(x);
+    let f = |x: usize| names.face(x);
+    let m = match e {
+        BuildError::VertexOutOfRange {
+            face,
+            vertex,
+            vertex_count,
+        } => format!(
+            "{}: vertex index {} out of range (vertex count {vertex_count})",
+            f(*face),
+            u64::from(*vertex) + u64::from(names.one_based)
+        ),
+        BuildError::DegenerateFace { face, vertices } => format!(
+            "{} is degenerate: vertices [{}, {}, {}]",
+            f(*face),
+            v(vertices[0]),
+            v(vertices[1]),
+            v(vertices[2])
+        ),
+        BuildError::DuplicateFace {
+            face,
+            first,
+            vertices,
+        } => format!(
+            "{} duplicates {} (vertices [{}, {}, {}])",
+            f(*face),
+            f(*first),
+            v(vertices[0]),
+            v(vertices[1]),
+            v(vertices[2])
+        ),
+        BuildError::BoundaryEdge { a, b, face } => format!(
+            "edge {} is a boundary edge: it lies only in {}",
+            names.edge(*a, *b),
+            f(*face)
+        ),
+        BuildError::NonManifoldEdge { a, b, faces, face } => format!(
+            "edge {} is non-manifold: it lies in {faces} faces (first: {})",
+            names.edge(*a, *b),
+            f(*face)
+        ),
+        BuildError::MultipleEdges {
+            a,
+            b,
+            edges,
+            faces,
+            face,
+        } => format!(
+            "vertices {} and {} are joined by {edges} edges ({faces} faces, first: {})",
+            v(*a),
+            v(*b),
+            f(*face)
+        ),
+        BuildError::VertexLinkNotCycle {
+            vertex,
+            cycles,
+            faces,
+        } => format!(
+            "vertex {}: its link is not one cycle but {cycles} cycles (faces around it: {faces})",
+            v(*vertex)
+        ),
+        BuildError::PinchedBoundaryVertex {
+            vertex,
+            boundary_edges,
+        } => format!(
+            "vertex {} is pinched: {boundary_edges} boundary edges meet there (a manifold boundary vertex has 2)",
+            v(*vertex)
+        ),
+        BuildError::VertexDegreeTooLow { vertex, degree } => format!(
+            "vertex {} has degree {degree} (at least 3 required)",
+            v(*vertex)
+        ),
+        e => e.to_string(),
+    };
+    m
+}
+
+/// What other commands add to a validation error: where to see every problem.
+const SEE_INFO: &str = "; `contractible info` lists every problem";
+
+/// An input read as its file has it (polygons kept), welded when asked.
+pub struct Loaded {
+    /// The faces, welded when asked.
+    pub poly: PolyMesh,
+    /// How messages name its faces and vertices.
+    pub names: Names,
+    /// Vertices merged by `--weld` (`Some` exactly when `--weld`).
+    pub welded: Option<usize>,
+}
+
+/// Reads the input (a file, with a bar over its bytes, or standard input for `-`): the content
+/// decides the format when it can, else `--format`, else the extension; a disagreement
+/// and skipped OBJ statements are warned about. Then `--weld` if asked, with its count on
+/// stderr (unless quiet).
+pub fn load(path: &Path, opts: &InputOpts, ui: Ui) -> Result<Loaded, CliError> {
+    let declared = opts.format.map(io::Format::from);
+    let r = if is_stdin(path) {
+        let pb = spinner(ui, format!("reading {}", shown(path)));
+        let mut bytes = Vec::new();
+        use std::io::Read;
+        let r = std::io::stdin()
+            .lock()
+            .read_to_end(&mut bytes)
+            .map_err(|e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown))
+            .and_then(|_| io::decode(&bytes, declared));
         pb.finish_and_clear();
         r
-    });
-    let mesh = r
-        .map_err(|e| e.with_path(path))
-        .map_err(|e| CliError::Input(read_error_message(path, &e)))?;
-    Ok((mesh, t.elapsed().as_secs_f64()))
-}
-
-/// The bytes of `path`, read with a bar over the file's size.
-fn read_bytes(path: &Path, ui: Ui) -> Result<Vec<u8>, ReadError> {
-    use std::io::Read;
-    let io_error = |e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown);
-    let file = std::fs::File::open(path).map_err(io_error)?;
-    let len = file.metadata().map_err(io_error)?.len();
-    let pb = bytes_bar(ui, len, format!("reading {}", path.display()));
-    // The size is a hint for the allocation only: the file may change while read.
-    let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
-    let r = pb.wrap_read(file).read_to_end(&mut bytes);
-    pb.finish_and_clear();
-    r.map_err(io_error)?;
-    Ok(bytes)
-}
-
-/// Reads an input mesh (see [`read`]); with `weld`, merges its vertices at bitwise-equal
-/// positions ([`Mesh::welded`]) and says how many on stderr (unless quiet). Returns the
-/// mesh, the seconds taken (welding included) and the number of vertices merged (`Some`
-/// exactly when `weld`).
-pub fn read_input(
-    path: &Path,
-    weld: bool,
-    ui: Ui,
-) -> Result<(TriMesh, f64, Option<usize>), CliError> {
-    let t = Instant::now();
-    let (mesh, _) = read(path, ui)?;
-    if !weld {
-        return Ok((mesh, t.elapsed().as_secs_f64(), None));
+    } else {
+        // The bytes with a bar (size known), then the parsing with a spinner.
+        read_bytes(path, ui).and_then(|bytes| {
+            let pb = spinner(
+                ui,
+                format!("parsing {} ({} bytes)", path.display(), bytes.len()),
+            );
+            let r = io::decode_named(path, &bytes, declared);
+            pb.finish_and_clear();
+            r
+        })
+    };
+    let decoded = r.map_err(|e| CliError::Input(read_error_message(path, &e)))?;
+    let mut names = Names::of_path(path);
+    if let Some(d) = decoded.disagreement() {
+        let by = if opts.format.is_some() {
+            "--format"
+        } else {
+            "the file name"
+        };
+        ui.warn(&format!(
+            "{}: the content is {}, not {d} as {by} says: reading it as {}",
+            names.shown, decoded.format, decoded.format
+        ));
     }
-    let before = mesh.vertex_count;
-    let (mesh, merged) = mesh.welded().ok_or_else(|| {
-        CliError::Failure(format!(
-            "{}: inconsistent mesh after reading",
-            path.display()
-        ))
+    let poly = decoded.mesh;
+    let skipped = poly.skipped_statements();
+    if skipped.total() > 0 {
+        let mut kinds: Vec<String> = skipped
+            .kinds
+            .iter()
+            .map(|(k, n, line)| format!("`{k}` ×{n} (first at line {line})"))
+            .collect();
+        if skipped.others > 0 {
+            kinds.push(format!("{} others", skipped.others));
+        }
+        ui.warn(&format!(
+            "{}: skipped {} OBJ statements this tool does not use: {}",
+            names.shown,
+            skipped.total(),
+            kinds.join(", ")
+        ));
+    }
+    names.one_based = poly.one_based();
+    names.lines = poly.lines().map(<[u32]>::to_vec);
+    let Some(eps) = opts.weld else {
+        return Ok(Loaded {
+            poly,
+            names,
+            welded: None,
+        });
+    };
+    let Some(positions) = &poly.positions else {
+        return Err(CliError::Input(format!(
+            "{}: --weld needs vertex positions, and this mesh has none",
+            names.shown
+        )));
+    };
+    let map = contractible::mesh::weld_map(positions, eps).ok_or_else(|| {
+        CliError::Input(format!("{}: cannot weld: too many vertices", names.shown))
     })?;
+    let welded = poly.welded_by(&map).ok_or_else(|| {
+        CliError::Failure(format!("{}: inconsistent mesh after reading", names.shown))
+    })?;
+    let repeats = |f: &[u32]| {
+        let mut g = f.to_vec();
+        g.sort_unstable();
+        g.windows(2).any(|w| w[0] == w[1])
+    };
+    let degenerate_by_weld = poly
+        .faces()
+        .zip(welded.faces())
+        .filter(|(a, b)| !repeats(a) && repeats(b))
+        .count();
+    let merged = poly.vertex_count - welded.vertex_count;
     if !ui.quiet {
+        let how = if eps == 0.0 {
+            "--weld merged {merged} vertices at identical positions"
+                .replace("{merged}", &merged.to_string())
+        } else {
+            format!("--weld={eps} merged {merged} vertices within {eps} of another")
+        };
+        let broken = match degenerate_by_weld {
+            0 => String::new(),
+            n => format!("; {n} faces became degenerate (their corners merged)"),
+        };
         eprintln!(
-            "{}: --weld merged {merged} vertices at identical positions ({before} -> {} vertices)",
-            path.display(),
-            mesh.vertex_count
+            "{}: {how} ({} -> {} vertices){broken}",
+            names.shown, poly.vertex_count, welded.vertex_count
         );
     }
-    Ok((mesh, t.elapsed().as_secs_f64(), Some(merged)))
+    names.vertex_origin = Some(map.kept);
+    Ok(Loaded {
+        poly: welded,
+        names,
+        welded: Some(merged),
+    })
+}
+
+/// The loaded faces as triangles: cut when `--triangulate` (the count of polygons cut on
+/// stderr unless quiet), else refused at the first polygon with a hint.
+pub fn triangles(
+    l: Loaded,
+    opts: &InputOpts,
+    path: &Path,
+    ui: Ui,
+) -> Result<(TriMesh, Names), CliError> {
+    let mut names = l.names;
+    if opts.triangulate {
+        let t = l.poly.triangulated();
+        if t.polygons > 0 && !ui.quiet {
+            eprintln!(
+                "{}: --triangulate split {} polygons into triangles ({} -> {} faces)",
+                names.shown,
+                t.polygons,
+                l.poly.face_count(),
+                t.mesh.faces.len()
+            );
+        }
+        names.face_origin = Some(t.origin);
+        return Ok((t.mesh, names));
+    }
+    let mesh = l
+        .poly
+        .into_tri_mesh()
+        .map_err(|e| CliError::Input(read_error_message(path, &e)))?;
+    Ok((mesh, names))
+}
+
+/// Reads an input triangle mesh ([`load`], then [`triangles`]). Returns the mesh, the
+/// seconds taken (welding included), the number of vertices merged (`Some` exactly when
+/// `--weld`) and the names for messages.
+pub fn read_input(
+    path: &Path,
+    opts: &InputOpts,
+    ui: Ui,
+) -> Result<(TriMesh, f64, Option<usize>, Names), CliError> {
+    let t = Instant::now();
+    let l = load(path, opts, ui)?;
+    let welded = l.welded;
+    let (mesh, names) = triangles(l, opts, path, ui)?;
+    Ok((mesh, t.elapsed().as_secs_f64(), welded, names))
 }
 
 /// A vertex count is "many" coincident vertices from this fraction of all vertices on.
@@ -111,7 +380,7 @@ const SOUP_DEGENERATE_FRACTION: usize = 100;
 /// the vertices are such duplicates, and welding makes at most one face in a hundred
 /// degenerate. `None` otherwise (welding cannot help a mesh without coincident
 /// positions, nor one whose positions do not tell its vertices apart).
-pub fn soup_hint(mesh: &TriMesh, path: &Path) -> Option<String> {
+pub fn soup_hint(mesh: &TriMesh, names: &Names) -> Option<String> {
     let coincident = mesh.coincident_vertex_count();
     if coincident == 0 {
         return None;
@@ -148,15 +417,14 @@ pub fn soup_hint(mesh: &TriMesh, path: &Path) -> Option<String> {
     Some(format!(
         "{}: this looks like an unwelded triangle soup ({why}{coincident} of {} vertices sit at \
          the position of another vertex): try --weld, which merges vertices at identical positions",
-        path.display(),
-        mesh.vertex_count
+        names.shown, mesh.vertex_count
     ))
 }
 
 /// An invalid-input error for `mesh` with `message`, followed by the soup hint when the
 /// mesh looks like an unwelded soup.
-fn invalid(mesh: &TriMesh, path: &Path, message: String) -> CliError {
-    match soup_hint(mesh, path) {
+fn invalid(mesh: &TriMesh, names: &Names, message: String) -> CliError {
+    match soup_hint(mesh, names) {
         Some(hint) => CliError::Input(format!("{message}\n{hint}")),
         None => CliError::Input(message),
     }
@@ -164,13 +432,14 @@ fn invalid(mesh: &TriMesh, path: &Path, message: String) -> CliError {
 
 /// Validates and splits a mesh into closed surfaces (with a spinner); returns them and
 /// the seconds taken. `path` names the source in messages.
-pub fn build(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(Surfaces, f64), CliError> {
+pub fn build(mesh: &TriMesh, names: &Names, ui: Ui) -> Result<(Surfaces, f64), CliError> {
     let t = Instant::now();
     let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
     let r = Surfaces::from_mesh(mesh);
     pb.finish_and_clear();
-    let s = r.map_err(|e| CliError::Input(build_error_message(path, &e)))?;
-    warn_dropped(path, s.dropped_vertices.len(), ui);
+    let s =
+        r.map_err(|e| CliError::Input(format!("{}{SEE_INFO}", build_error_message(names, &e))))?;
+    warn_dropped(names, s.dropped_vertices.len(), ui);
     Ok((s, t.elapsed().as_secs_f64()))
 }
 
@@ -179,7 +448,7 @@ pub fn build(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(Surfaces, f64), Cli
 /// many boundary loops it has.
 pub fn build_closed(
     mesh: &TriMesh,
-    path: &Path,
+    names: &Names,
     ui: Ui,
     command: &str,
 ) -> Result<(Surfaces, f64), CliError> {
@@ -198,22 +467,33 @@ pub fn build_closed(
                     let loops = if n == 1 { "loop" } else { "loops" };
                     format!("this mesh has {n} boundary {loops}; `info` describes it")
                 }
-                Err(e) => format!("nor is it a surface with boundary: {e}"),
+                Err(e) => format!(
+                    "nor is it a surface with boundary: {}{SEE_INFO}",
+                    describe_build_error(names, &e)
+                ),
             };
             return Err(invalid(
                 mesh,
-                path,
+                names,
                 format!(
-                    "{}: edge [{a}, {b}] is a boundary edge (face {face}): `{command}` needs closed surfaces ({why})",
-                    path.display()
+                    "{}: edge {} is a boundary edge, only in {}: `{command}` needs closed surfaces ({why})",
+                    names.shown,
+                    names.edge(a, b),
+                    names.face(face)
                 ),
             ));
         }
         r => r,
     };
     pb.finish_and_clear();
-    let s = r.map_err(|e| invalid(mesh, path, build_error_message(path, &e)))?;
-    warn_dropped(path, s.dropped_vertices.len(), ui);
+    let s = r.map_err(|e| {
+        invalid(
+            mesh,
+            names,
+            format!("{}{SEE_INFO}", build_error_message(names, &e)),
+        )
+    })?;
+    warn_dropped(names, s.dropped_vertices.len(), ui);
     Ok((s, t.elapsed().as_secs_f64()))
 }
 
@@ -221,31 +501,62 @@ pub fn build_closed(
 /// closed by coning (with a spinner); returns them and the seconds taken. A valid mesh
 /// with boundary that looks like an unwelded soup (every triangle its own disc, say) gets
 /// the soup hint as a warning; an invalid one gets it in the error.
-pub fn build_open(mesh: &TriMesh, path: &Path, ui: Ui) -> Result<(ConedSurfaces, f64), CliError> {
+pub fn build_open(mesh: &TriMesh, names: &Names, ui: Ui) -> Result<(ConedSurfaces, f64), CliError> {
     let t = Instant::now();
-    let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
-    let r = Surfaces::from_mesh_with_boundary(mesh);
-    pb.finish_and_clear();
-    let s = r.map_err(|e| invalid(mesh, path, build_error_message(path, &e)))?;
-    // A valid mesh of closed surfaces is no soup (a soup's triangles are open discs),
-    // and skipping it spares the position hashing on every large closed input.
-    if !ui.quiet && !s.is_closed() {
-        if let Some(hint) = soup_hint(mesh, path) {
-            ui.warn(&hint);
-        }
-    }
-    warn_dropped(path, s.dropped_vertices.len(), ui);
+    let s = try_build_open(mesh, ui).map_err(|e| {
+        invalid(
+            mesh,
+            names,
+            format!("{}{SEE_INFO}", build_error_message(names, &e)),
+        )
+    })?;
+    warn_soup_and_dropped(mesh, &s, names, ui);
     Ok((s, t.elapsed().as_secs_f64()))
 }
 
-fn warn_dropped(path: &Path, dropped: usize, ui: Ui) {
+/// [`Surfaces::from_mesh_with_boundary`] with a spinner.
+pub fn try_build_open(mesh: &TriMesh, ui: Ui) -> Result<ConedSurfaces, BuildError> {
+    let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
+    let r = Surfaces::from_mesh_with_boundary(mesh);
+    pb.finish_and_clear();
+    r
+}
+
+/// After a successful [`try_build_open`]: the soup hint for an open mesh and the count
+/// of unused vertices, as warnings.
+pub fn warn_soup_and_dropped(mesh: &TriMesh, s: &ConedSurfaces, names: &Names, ui: Ui) {
+    // A valid mesh of closed surfaces is no soup (a soup's triangles are open discs),
+    // and skipping it spares the position hashing on every large closed input.
+    if !ui.quiet && !s.is_closed() {
+        if let Some(hint) = soup_hint(mesh, names) {
+            ui.warn(&hint);
+        }
+    }
+    warn_dropped(names, s.dropped_vertices.len(), ui);
+}
+
+fn warn_dropped(names: &Names, dropped: usize, ui: Ui) {
     if dropped > 0 {
         ui.warn(&format!(
-            "{}: {} unused vertices dropped",
-            path.display(),
-            dropped
+            "{}: {dropped} unused vertices dropped",
+            names.shown
         ));
     }
+}
+
+/// The bytes of `path`, read with a bar over the file's size.
+fn read_bytes(path: &Path, ui: Ui) -> Result<Vec<u8>, ReadError> {
+    use std::io::Read;
+    let io_error = |e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown);
+    let file = std::fs::File::open(path).map_err(io_error)?;
+    let len = file.metadata().map_err(io_error)?.len();
+    let pb = bytes_bar(ui, len, format!("reading {}", path.display()));
+    // The size is a hint for the allocation only: the file may change while read.
+    let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
+    let r = pb.wrap_read(file).read_to_end(&mut bytes);
+    pb.finish_and_clear();
+    r.map_err(io_error)?;
+    Ok(bytes)
 }
 
 /// A temporary path beside `out` that keeps its file name (hence its extension).

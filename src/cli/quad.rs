@@ -228,8 +228,9 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
             meshio::check_side_file(p, &[&a.input])?;
         }
     }
-    let (mesh, seconds_read, welded_vertices) = meshio::read_input(&a.input, a.weld, ui)?;
-    let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "quad")?;
+    let (mesh, seconds_read, welded_vertices, names) =
+        meshio::read_input(&a.input, &a.input_opts, ui)?;
+    let (surfaces, seconds_build) = meshio::build_closed(&mesh, &names, ui, "quad")?;
     let TriMesh {
         vertex_count,
         positions,

@@ -289,8 +289,9 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         .as_deref()
         .map(|o| meshio::check_output(o, a.output_format.map(Into::into), &[&a.input]))
         .transpose()?;
-    let (mesh, seconds_read, welded_vertices) = meshio::read_input(&a.input, a.weld, ui)?;
-    let (surfaces, seconds_build) = meshio::build_closed(&mesh, &a.input, ui, "reduce")?;
+    let (mesh, seconds_read, welded_vertices, names) =
+        meshio::read_input(&a.input, &a.input_opts, ui)?;
+    let (surfaces, seconds_build) = meshio::build_closed(&mesh, &names, ui, "reduce")?;
     // Keep only what the output needs: the big face list and the triangulations are
     // consumed as the components are reduced (peak memory matters on 4M-face inputs).
     let TriMesh {

@@ -257,10 +257,10 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         check_eps("--eps-rel", "the fraction of the bounding-box diagonal", r)?;
     }
     let path = &a.input;
-    let (mesh, seconds_read, welded_vertices) = meshio::read_input(path, a.weld, ui)?;
+    let (mesh, seconds_read, welded_vertices, names) = meshio::read_input(path, &a.input_opts, ui)?;
     let t = Instant::now();
     let (positions, used) = checked_positions(&mesh, path)?;
-    let (surfaces, _) = meshio::build_open(&mesh, path, ui)?;
+    let (surfaces, _) = meshio::build_open(&mesh, &names, ui)?;
     let dropped_vertices = surfaces.dropped_vertices.len();
     let input_types = component_types(&surfaces);
     let diagonal = bbox_diagonal(used.iter().map(|&v| positions[v]));

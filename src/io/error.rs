@@ -6,8 +6,8 @@ use std::path::PathBuf;
 /// Where in the input a [`ReadError`] was detected.
 ///
 /// Guarantees: line numbers are 1-based lines of the (decompressed) text; byte offsets are
-/// 0-based offsets into the decompressed input; face numbers are 0-based face indices in
-/// file order.
+/// 0-based offsets into the decompressed input; face numbers count faces in file order as
+/// the file does (from 1 in OBJ, from 0 elsewhere).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Location {
     /// A 1-based line of a text format (OFF, OBJ, ascii PLY, any PLY header).
@@ -83,10 +83,11 @@ pub enum ReadErrorKind {
         /// The count the header declares.
         declared: u64,
     },
-    /// A face does not have exactly 3 corners.
+    /// A face does not have exactly 3 corners (the triangle readers), or fewer than 3
+    /// (every reader, [`crate::io::PolyMesh`] included).
     #[error("face {face} has {corners} corners, only triangles are accepted")]
     NonTriangleFace {
-        /// 0-based face number.
+        /// Face number as the file counts: from 1 in OBJ, from 0 elsewhere.
         face: usize,
         /// Its number of corners.
         corners: u64,
@@ -94,9 +95,10 @@ pub enum ReadErrorKind {
     /// A face refers to a vertex that does not exist.
     #[error("face {face} refers to vertex {index}, but there are {vertex_count} vertices")]
     IndexOutOfRange {
-        /// 0-based face number.
+        /// Face number as the file counts: from 1 in OBJ, from 0 elsewhere.
         face: usize,
-        /// The 0-based index as read (negative for bad relative OBJ or signed PLY indices).
+        /// The index as written in the file (1-based or negative relative in OBJ, 0-based
+        /// and possibly negative for signed PLY indices elsewhere).
         index: i64,
         /// Number of vertices in the file.
         vertex_count: usize,

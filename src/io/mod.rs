@@ -8,8 +8,14 @@
 //!   in the bytes that remain, before anything is reserved);
 //! - every failure is a [`ReadError`] with a typed [`ReadErrorKind`] and a [`Location`]
 //!   (1-based line for text, byte offset for binary PLY and STL payloads);
-//! - face indices are 0-based as in the file and checked `< vertex_count`; faces must be
-//!   triangles; coordinates must be finite. Manifoldness is *not* checked here.
+//! - face indices are checked `< vertex_count` and stored 0-based; coordinates must be
+//!   finite. Faces need at least 3 corners: [`PolyMesh`] keeps polygons (with the file
+//!   line of each face), the triangle readers ([`read_tri_mesh`]...) refuse them naming
+//!   the first. Messages number faces and indices as the file does: from 1 in OBJ, from
+//!   0 elsewhere. Manifoldness is *not* checked here ([`crate::diagnose`] lists every
+//!   problem, [`crate::Surfaces`] builds).
+//! - a UTF-8 byte order mark before a text format (OFF, OBJ, PLY, ASCII STL) is skipped;
+//!   for binary PLY, byte offsets then count from after it.
 //! - STL has no shared vertices: its reader welds corners at bitwise-equal positions
 //!   (see the `stl` module's docs); [`Mesh::welded`] does the same for any mesh.
 //!
@@ -20,6 +26,7 @@ pub mod list;
 mod obj;
 mod off;
 mod ply;
+mod poly;
 mod stl;
 mod text;
 
@@ -30,6 +37,7 @@ use std::path::Path;
 
 pub use error::{Location, ReadError, ReadErrorKind, WriteError};
 pub use ply::PlyEncoding;
+pub use poly::{PolyMesh, SkippedStatements, Triangulated};
 
 use crate::mesh::{Mesh, TriMesh};
 
@@ -75,13 +83,14 @@ impl Format {
     /// Guesses the format of (decompressed) content: the `ply` magic; a binary STL whose
     /// length matches its triangle count, or an ASCII STL's `solid` keyword; else from the
     /// first non-comment line, an `OFF`-family keyword or an OBJ statement. `None`
-    /// otherwise.
+    /// otherwise. A UTF-8 byte order mark at the start is skipped.
     pub fn sniff(bytes: &[u8]) -> Option<Format> {
-        if bytes.starts_with(b"ply") {
-            return Some(Format::Ply);
-        }
         if stl::sniff(bytes) {
             return Some(Format::Stl);
+        }
+        let bytes = strip_bom(bytes);
+        if bytes.starts_with(b"ply") {
+            return Some(Format::Ply);
         }
         let mut lines = text::Lines::new(bytes);
         let (_, line) = lines.next_data_line(b'#')?;
@@ -95,7 +104,7 @@ impl Format {
             }
         }
         match first {
-            b"v" | b"vn" | b"vt" | b"f" | b"o" | b"g" | b"s" | b"usemtl" | b"mtllib" => {
+            b"v" | b"vn" | b"vt" | b"vp" | b"f" | b"o" | b"g" | b"s" | b"usemtl" | b"mtllib" => {
                 Some(Format::Obj)
             }
             _ => None,
@@ -117,28 +126,107 @@ fn maybe_gunzip(bytes: &[u8]) -> Result<std::borrow::Cow<'_, [u8]>, ReadError> {
     Ok(std::borrow::Cow::Owned(out))
 }
 
-/// Reads a triangle mesh from a file.
+/// The UTF-8 byte order mark some editors put at the start of text files.
+const BOM: &[u8] = b"\xEF\xBB\xBF";
+
+/// `bytes` without a leading UTF-8 byte order mark.
+fn strip_bom(bytes: &[u8]) -> &[u8] {
+    bytes.strip_prefix(BOM).unwrap_or(bytes)
+}
+
+/// A mesh read by [`decode`] or [`read_poly_mesh`], with the format used and the format
+/// the caller (extension or option) declared.
+#[derive(Clone, Debug)]
+pub struct Decoded {
+    /// The faces as the file has them.
+    pub mesh: PolyMesh,
+    /// The format the content was parsed as.
+    pub format: Format,
+    /// The format declared by the caller (`None`: nothing declared, the content decided).
+    pub declared: Option<Format>,
+}
+
+impl Decoded {
+    /// The declared format when the content was read as another one (callers should warn).
+    pub fn disagreement(&self) -> Option<Format> {
+        self.declared.filter(|&d| d != self.format)
+    }
+}
+
+impl std::fmt::Display for Format {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Format::Off => "OFF",
+            Format::Obj => "OBJ",
+            Format::Ply => "PLY",
+            Format::Stl => "STL",
+        })
+    }
+}
+
+/// Reads a mesh from in-memory bytes whose format was `declared` (by a file extension or
+/// an option): the content decides when [`Format::sniff`] recognises it (the result
+/// records a disagreement, [`Decoded::disagreement`]), the declared format otherwise.
 ///
-/// Guarantees: the format comes from the extension (`.off`/`.obj`/`.ply`/`.stl`, case-insensitive,
-/// optionally `.gz`), else from the content ([`Format::sniff`]); gzip content is detected by
-/// its magic bytes whatever the name (a `.gz` name without them is a `Decompress` error).
-/// Errors carry `path`. See the module docs for the per-input guarantees.
-pub fn read_tri_mesh(path: &Path) -> Result<TriMesh, ReadError> {
-    let (format, gz) = Format::from_path(path);
-    let result = std::fs::read(path)
-        .map_err(|e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown))
-        .and_then(|bytes| {
-            if gz && !bytes.starts_with(&GZIP_MAGIC) {
-                return Err(ReadError::new(
-                    ReadErrorKind::Decompress(
-                        "file name ends in .gz but the content is not gzip".into(),
-                    ),
-                    Location::ByteOffset(0),
-                ));
-            }
-            read_tri_mesh_bytes(&bytes, format)
-        });
+/// Guarantees: as [`read_tri_mesh_bytes`] (no panic, bounded allocation); gzip detected
+/// by its magic bytes; `UnknownFormat` when neither decides.
+pub fn decode(bytes: &[u8], declared: Option<Format>) -> Result<Decoded, ReadError> {
+    let data = maybe_gunzip(bytes)?;
+    let format = Format::sniff(&data)
+        .or(declared)
+        .ok_or_else(|| ReadError::new(ReadErrorKind::UnknownFormat, Location::Unknown))?;
+    let mesh = parse(&data, format)?;
+    Ok(Decoded {
+        mesh,
+        format,
+        declared,
+    })
+}
+
+fn parse(data: &[u8], format: Format) -> Result<PolyMesh, ReadError> {
+    match format {
+        Format::Off => off::parse_off(strip_bom(data)),
+        Format::Obj => obj::parse_obj(strip_bom(data)),
+        Format::Ply => ply::parse_ply(strip_bom(data)),
+        // The STL reader skips a BOM itself where it applies (ASCII only).
+        Format::Stl => stl::parse_stl(data).map(PolyMesh::from),
+    }
+}
+
+/// Reads a mesh file as [`decode`] does, the declared format being `format` or else the
+/// extension's (`.off`/`.obj`/`.ply`/`.stl`, case-insensitive, optionally `.gz`); gzip
+/// content is detected by its magic bytes whatever the name (a `.gz` name without them is
+/// a `Decompress` error). Errors carry `path`.
+pub fn read_poly_mesh(path: &Path, format: Option<Format>) -> Result<Decoded, ReadError> {
+    std::fs::read(path)
+        .map_err(|e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown).with_path(path))
+        .and_then(|bytes| decode_named(path, &bytes, format))
+}
+
+/// [`read_poly_mesh`] on the bytes of the file `path` already read (by a caller that
+/// shows the reading's progress, say): the same checks, format rules and errors.
+pub fn decode_named(
+    path: &Path,
+    bytes: &[u8],
+    format: Option<Format>,
+) -> Result<Decoded, ReadError> {
+    let (from_name, gz) = Format::from_path(path);
+    let result = if gz && !bytes.starts_with(&GZIP_MAGIC) {
+        Err(ReadError::new(
+            ReadErrorKind::Decompress("file name ends in .gz but the content is not gzip".into()),
+            Location::ByteOffset(0),
+        ))
+    } else {
+        decode(bytes, format.or(from_name))
+    };
     result.map_err(|e| e.with_path(path))
+}
+
+/// Reads a triangle mesh from a file: [`read_poly_mesh`] (the content decides the format
+/// when it can, else the extension), then [`PolyMesh::into_tri_mesh`] (a face with other
+/// than 3 corners is `NonTriangleFace`). Errors carry `path`.
+pub fn read_tri_mesh(path: &Path) -> Result<TriMesh, ReadError> {
+    read_poly_mesh(path, None).and_then(|d| d.mesh.into_tri_mesh().map_err(|e| e.with_path(path)))
 }
 
 /// Reads a triangle mesh in `format` from a reader (read to the end; gzip content is
@@ -151,24 +239,25 @@ pub fn read_tri_mesh_from(mut reader: impl Read, format: Format) -> Result<TriMe
     read_tri_mesh_bytes(&bytes, Some(format))
 }
 
-/// Reads a triangle mesh from in-memory bytes (gzip detected by magic bytes; the format
-/// sniffed from the content when `format` is `None`).
+/// Reads a polygon mesh from in-memory bytes in `format` (gzip detected by magic bytes;
+/// the format sniffed from the content when `format` is `None`).
 ///
 /// Guarantees: never panics and never allocates more than a small multiple of the
 /// (decompressed) input size, whatever the bytes; suitable as a fuzzing entry point.
-pub fn read_tri_mesh_bytes(bytes: &[u8], format: Option<Format>) -> Result<TriMesh, ReadError> {
+pub fn read_poly_mesh_bytes(bytes: &[u8], format: Option<Format>) -> Result<PolyMesh, ReadError> {
     let data = maybe_gunzip(bytes)?;
     let format = match format {
         Some(f) => f,
         None => Format::sniff(&data)
             .ok_or_else(|| ReadError::new(ReadErrorKind::UnknownFormat, Location::Unknown))?,
     };
-    match format {
-        Format::Off => off::parse_off(&data),
-        Format::Obj => obj::parse_obj(&data),
-        Format::Ply => ply::parse_ply(&data),
-        Format::Stl => stl::parse_stl(&data),
-    }
+    parse(&data, format)
+}
+
+/// Reads a triangle mesh from in-memory bytes: [`read_poly_mesh_bytes`], then
+/// [`PolyMesh::into_tri_mesh`]. Same guarantees.
+pub fn read_tri_mesh_bytes(bytes: &[u8], format: Option<Format>) -> Result<TriMesh, ReadError> {
+    read_poly_mesh_bytes(bytes, format)?.into_tri_mesh()
 }
 
 /// Checks what the writers rely on: `positions` (if any) has `vertex_count` finite entries,

@@ -6,28 +6,37 @@
 //! use and drops unreferenced ones, so the mesh would not have "indices as in the file";
 //! (c) its errors carry no line number. The subset needed here is small: `v x y z [...]`
 //! lines give positions, `f` lines give faces (`i`, `i/t`, `i//n`, `i/t/n`; negative indices
-//! are relative to the vertices read so far), everything else (`vn`, `vt`, `o`, `g`, `s`,
-//! `usemtl`, `mtllib`, `l`, `p`, ...) is ignored. All objects/groups form one mesh.
-//! Not supported: `\` line continuations.
+//! are relative to the vertices read so far; faces may have any number `>= 3` of corners).
+//! `vn`, `vt`, `vp`, `o`, `g`, `s`, `usemtl`, `mtllib` carry nothing the topology needs
+//! and are ignored; every other statement (`l`, `p`, curves, unknown keywords) is skipped
+//! and *counted* ([`super::SkippedStatements`]), so that callers can say what was left
+//! out. All objects/groups form one mesh. Not supported: `\` line continuations.
+//!
+//! OBJ numbers vertices and faces from 1, so do its errors: face numbers count `f`
+//! statements from 1, and an out-of-range index is reported as written (1-based, or
+//! negative when relative).
 
 use std::io::Write;
 
 use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
+use super::poly::PolyMesh;
 use super::text::{parse_f64, parse_i64, Lines, Tokens};
-use crate::mesh::{Mesh, TriMesh};
+use crate::mesh::Mesh;
 
-/// Parses OBJ bytes into a triangle mesh; see the module docs for the accepted subset.
-pub(crate) fn parse_obj(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+/// Parses OBJ bytes into a polygon mesh; see the module docs for the accepted subset.
+pub(crate) fn parse_obj(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
     let mut lines = Lines::new(bytes);
     let mut positions: Vec<[f64; 3]> = Vec::new();
-    let mut faces: Vec<[u32; 3]> = Vec::new();
+    let mut mesh = PolyMesh::new(0, None, true, true);
+    let mut face: Vec<u32> = Vec::new();
     // Face indices are checked against the final vertex count (forward references are
     // tolerated by most tools); `max_index` finds out cheaply whether any is out of range.
     let mut max_index: u64 = 0;
     while let Some((n, line)) = lines.next_data_line(b'#') {
         let mut t = Tokens::new(line);
-        match t.next().unwrap_or_default() {
+        let keyword = t.next().unwrap_or_default();
+        match keyword {
             b"v" => {
                 let mut p = [0.0; 3];
                 for (c, name) in p
@@ -51,36 +60,25 @@ pub(crate) fn parse_obj(bytes: &[u8]) -> Result<TriMesh, ReadError> {
                 positions.push(p);
             }
             b"f" => {
-                let face_no = faces.len();
-                let mut face = [0u32; 3];
-                let mut corners = 0u64;
+                let face_no = mesh.face_count() + 1;
+                face.clear();
                 for tok in t {
-                    corners += 1;
-                    let slot = usize::try_from(corners - 1)
-                        .ok()
-                        .and_then(|i| face.get_mut(i));
-                    let Some(slot) = slot else { continue };
-                    *slot = parse_ref(tok, positions.len(), face_no, n)?;
-                    max_index = max_index.max(u64::from(*slot));
+                    let v = parse_ref(tok, positions.len(), face_no, n)?;
+                    max_index = max_index.max(u64::from(v));
+                    face.push(v);
                 }
-                if corners != 3 {
-                    return Err(ReadError::at_line(
-                        K::NonTriangleFace {
-                            face: face_no,
-                            corners,
-                        },
-                        n,
-                    ));
-                }
-                faces.push(face);
+                mesh.push_face(&face, Location::Line(n))?;
             }
-            _ => {}
+            b"vn" | b"vt" | b"vp" | b"o" | b"g" | b"s" | b"usemtl" | b"mtllib" => {}
+            other => mesh.skipped.add(other, n),
         }
     }
-    if !faces.is_empty() && max_index >= positions.len() as u64 {
-        return Err(locate_bad_face(bytes, &faces, positions.len()));
+    if mesh.face_count() > 0 && max_index >= positions.len() as u64 {
+        return Err(locate_bad_face(&mesh, positions.len()));
     }
-    Ok(Mesh::with_positions(positions, faces))
+    mesh.vertex_count = positions.len();
+    mesh.positions = Some(positions);
+    Ok(mesh)
 }
 
 fn bad_number(tok: &[u8], line: usize) -> ReadError {
@@ -92,7 +90,8 @@ fn bad_number(tok: &[u8], line: usize) -> ReadError {
     )
 }
 
-/// The 0-based position index of one face corner `i[/t[/n]]`.
+/// The 0-based position index of one face corner `i[/t[/n]]` (`face` is 1-based; an
+/// out-of-range index is reported as written).
 fn parse_ref(tok: &[u8], seen: usize, face: usize, line: usize) -> Result<u32, ReadError> {
     let vtok = tok.split(|&b| b == b'/').next().unwrap_or_default();
     if tok.split(|&b| b == b'/').count() > 3 {
@@ -130,40 +129,32 @@ fn parse_ref(tok: &[u8], seen: usize, face: usize, line: usize) -> Result<u32, R
         i => i - 1,
     };
     if zero_based < 0 {
-        return Err(out_of_range(zero_based));
+        return Err(out_of_range(i));
     }
-    u32::try_from(zero_based).map_err(|_| out_of_range(zero_based))
+    u32::try_from(zero_based).map_err(|_| out_of_range(i))
 }
 
-/// Error for the first face with an index `>= vertex_count`, with its line found by rescanning.
-fn locate_bad_face(bytes: &[u8], faces: &[[u32; 3]], vertex_count: usize) -> ReadError {
-    let Some((face_no, index)) = faces.iter().enumerate().find_map(|(i, f)| {
-        f.iter()
-            .find(|&&v| v as usize >= vertex_count)
-            .map(|&v| (i, v))
-    }) else {
-        // Unreachable by construction; still a typed error rather than a panic.
-        return ReadError::new(
-            K::Obj("internal: no bad face found".into()),
-            Location::Unknown,
-        );
-    };
-    let kind = K::IndexOutOfRange {
-        face: face_no,
-        index: i64::from(index),
-        vertex_count,
-    };
-    let mut lines = Lines::new(bytes);
-    let mut seen = 0usize;
-    while let Some((n, line)) = lines.next_data_line(b'#') {
-        if Tokens::new(line).next() == Some(b"f") {
-            if seen == face_no {
-                return ReadError::at_line(kind, n);
-            }
-            seen += 1;
+/// Error for the first face with an index `>= vertex_count`, at its line (1-based face
+/// number and index, as the file writes them).
+fn locate_bad_face(mesh: &PolyMesh, vertex_count: usize) -> ReadError {
+    for (i, f) in mesh.faces().enumerate() {
+        if let Some(&v) = f.iter().find(|&&v| v as usize >= vertex_count) {
+            let kind = K::IndexOutOfRange {
+                face: i + 1,
+                index: i64::from(v) + 1,
+                vertex_count,
+            };
+            return match mesh.face_line(i) {
+                Some(n) => ReadError::at_line(kind, n),
+                None => ReadError::new(kind, Location::Face(i + 1)),
+            };
         }
     }
-    ReadError::new(kind, Location::Face(face_no))
+    // Unreachable by construction; still a typed error rather than a panic.
+    ReadError::new(
+        K::Obj("internal: no bad face found".into()),
+        Location::Unknown,
+    )
 }
 
 /// Writes OBJ: one `v x y z` line per vertex (`0 0 0` without positions) and one

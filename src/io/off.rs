@@ -3,24 +3,27 @@
 //! Accepted input: an `OFF` keyword (optionally prefixed by `ST`, `C`, `N` letters, as in
 //! `COFF`, `NOFF`, `STCNOFF`; the extra per-vertex values are ignored), the counts
 //! `V F [E]` on the keyword line or the next data line, then one vertex per line
-//! (`x y z [ignored...]`) and one face per line (`3 a b c [ignored colour...]`).
+//! (`x y z [ignored...]`) and one face per line (`k a b c ... [ignored colour...]`, any
+//! `k >= 3`; [`super::PolyMesh`] keeps polygons, the triangle readers refuse them).
 //! `#` starts a comment anywhere; blank lines are skipped. Not supported (clear errors):
 //! `OFF BINARY`, `4OFF`/`nOFF` (other dimensions), records split across several lines.
 
 use std::io::Write;
 
+use super::error::Location;
 use super::error::{token_string, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
+use super::poly::PolyMesh;
 use super::text::{parse_f64, parse_i64, parse_u64, Lines, Tokens};
-use crate::mesh::{Mesh, TriMesh};
+use crate::mesh::Mesh;
 
 /// Smallest possible vertex line: `0 0 0` plus a newline.
 const MIN_VERTEX_BYTES: u64 = 6;
 /// Smallest possible face line: `3 0 0 0` plus a newline.
 const MIN_FACE_BYTES: u64 = 8;
 
-/// Parses ASCII OFF bytes into a triangle mesh; see the module docs for the accepted syntax.
-pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+/// Parses ASCII OFF bytes into a polygon mesh; see the module docs for the accepted syntax.
+pub(crate) fn parse_off(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
     let mut lines = Lines::new(bytes);
     let (hline, header) = lines.next_data_line(b'#').ok_or_else(|| {
         ReadError::at_line(
@@ -126,7 +129,9 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         positions.push(p);
     }
 
-    let mut faces = Vec::with_capacity(nf_cap);
+    let mut mesh = PolyMesh::new(nv as usize, Some(positions), true, false);
+    mesh.reserve(nf_cap);
+    let mut face: Vec<u32> = Vec::new();
     for f in 0..nf {
         let Some((n, line)) = lines.next_data_line(b'#') else {
             return Err(ReadError::at_line(
@@ -149,7 +154,7 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
                 n,
             )
         })?;
-        if k != 3 {
+        if k < 3 {
             return Err(ReadError::at_line(
                 K::NonTriangleFace {
                     face: f as usize,
@@ -158,8 +163,9 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
                 n,
             ));
         }
-        let mut face = [0u32; 3];
-        for c in &mut face {
+        face.clear();
+        // Each index is a token of this line, so `k` is bounded by the input.
+        for _ in 0..k {
             let tok = t.next().ok_or_else(|| {
                 ReadError::at_line(
                     K::MissingValue {
@@ -176,7 +182,7 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
                     n,
                 )
             })?;
-            *c = match u32::try_from(idx) {
+            face.push(match u32::try_from(idx) {
                 Ok(v) if u64::from(v) < nv => v,
                 _ => {
                     return Err(ReadError::at_line(
@@ -188,9 +194,9 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
                         n,
                     ))
                 }
-            };
+            });
         }
-        faces.push(face);
+        mesh.push_face(&face, Location::Line(n))?;
     }
 
     // More records than declared is an error; trailing blank lines and comments are not.
@@ -208,7 +214,7 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<TriMesh, ReadError> {
             first,
         ));
     }
-    Ok(Mesh::with_positions(positions, faces))
+    Ok(mesh)
 }
 
 /// Accepts `OFF` with an optional prefix made of the letters `S`, `T`, `C`, `N`.

@@ -19,8 +19,9 @@ use std::io::Write;
 
 use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
+use super::poly::PolyMesh;
 use super::text::{is_space, parse_i64, Lines, Tokens};
-use crate::mesh::{Mesh, TriMesh};
+use crate::mesh::Mesh;
 
 /// How a PLY file encodes its payload.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -472,8 +473,8 @@ impl Payload for Ascii<'_> {
     }
 }
 
-/// Parses PLY bytes (ascii or binary) into a triangle mesh; see the module docs.
-pub(crate) fn parse_ply(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+/// Parses PLY bytes (ascii or binary) into a polygon mesh; see the module docs.
+pub(crate) fn parse_ply(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
     let header = parse_header(bytes)?;
     match header.encoding {
         PlyEncoding::Ascii => {
@@ -496,14 +497,15 @@ pub(crate) fn parse_ply(bytes: &[u8]) -> Result<TriMesh, ReadError> {
     }
 }
 
-fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, ReadError> {
+fn read_payload(header: &Header, src: &mut impl Payload) -> Result<PolyMesh, ReadError> {
     let nv = header
         .elements
         .iter()
         .find(|e| e.kind == ElementKind::Vertex)
         .map_or(0, |e| e.count as usize);
     let mut positions: Vec<[f64; 3]> = Vec::new();
-    let mut faces: Vec<[u32; 3]> = Vec::new();
+    let mut mesh = PolyMesh::new(nv, None, header.encoding == PlyEncoding::Ascii, false);
+    let mut face: Vec<u32> = Vec::new();
     for e in &header.elements {
         if e.properties.is_empty() {
             continue;
@@ -519,12 +521,12 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
         let cap = e.count.min((header.payload_len / min_record.max(1)) as u64) as usize;
         match e.kind {
             ElementKind::Vertex => positions.reserve_exact(cap),
-            ElementKind::Face => faces.reserve_exact(cap),
+            ElementKind::Face => mesh.reserve(cap),
             ElementKind::Other => {}
         }
         for i in 0..e.count {
             let mut xyz = [0.0; 3];
-            let mut corners = None;
+            let mut corners: Option<Location> = None;
             for p in &e.properties {
                 let what = || format!("{} {i} of {} (property `{}`)", e.name, e.count, p.name);
                 match p.ty {
@@ -560,7 +562,7 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
                             Value::Float(_) => unreachable_float(loc)?,
                         };
                         if p.role == Role::Corners {
-                            if n != 3 {
+                            if n < 3 {
                                 return Err(ReadError::new(
                                     K::NonTriangleFace {
                                         face: i as usize,
@@ -569,15 +571,17 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
                                     loc,
                                 ));
                             }
-                            let mut f = [0u32; 3];
-                            for c in &mut f {
+                            face.clear();
+                            // Each item consumes at least one byte (or token), so this
+                            // loop is bounded by the input length.
+                            for _ in 0..n {
                                 let idx = src.value(item, &what)?;
                                 let loc = src.last();
                                 let idx = match idx {
                                     Value::Int(v) => v,
                                     Value::Float(_) => unreachable_float(loc)?,
                                 };
-                                *c = match u32::try_from(idx) {
+                                face.push(match u32::try_from(idx) {
                                     Ok(v) if (v as usize) < nv => v,
                                     _ => {
                                         return Err(ReadError::new(
@@ -589,9 +593,9 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
                                             loc,
                                         ))
                                     }
-                                };
+                                });
                             }
-                            corners = Some(f);
+                            corners = Some(loc);
                         } else {
                             // Each item consumes at least one byte, so this loop is bounded by
                             // the input length (truncation ends it early).
@@ -605,8 +609,8 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
             match e.kind {
                 ElementKind::Vertex => positions.push(xyz),
                 ElementKind::Face => {
-                    if let Some(f) = corners {
-                        faces.push(f);
+                    if let Some(at) = corners {
+                        mesh.push_face(&face, at)?;
                     }
                 }
                 ElementKind::Other => {}
@@ -614,7 +618,9 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<TriMesh, Read
         }
     }
     src.finish()?;
-    Ok(Mesh::with_positions(positions, faces))
+    mesh.vertex_count = positions.len();
+    mesh.positions = Some(positions);
+    Ok(mesh)
 }
 
 /// Integer-typed values never decode as floats; typed error instead of a panic anyway.

@@ -213,7 +213,7 @@ fn reduce_and_quad_refuse_open_meshes() {
                 err.starts_with(&format!("error: {}: edge [", input.display())),
                 "{err}"
             );
-            assert!(err.contains("] is a boundary edge (face "), "{err}");
+            assert!(err.contains("] is a boundary edge, only in face "), "{err}");
             assert!(err.trim_end().ends_with(&want), "{cmd}: {err}");
         }
     }
@@ -226,8 +226,8 @@ fn reduce_and_quad_refuse_open_meshes() {
         .map(|x| x.parse().unwrap())
         .collect();
     let face: usize = {
-        let s = &inner[inner.find("(face ").unwrap() + 6..];
-        s[..s.find(')').unwrap()].parse().unwrap()
+        let s = &inner[inner.find("only in face ").unwrap() + 13..];
+        s[..s.find(' ').unwrap()].parse().unwrap()
     };
     let faces = without_star(&contractible::gen::projective_plane6(), 0);
     let holding: Vec<usize> = (0..faces.len())
@@ -241,7 +241,7 @@ fn pinched_meshes_stay_errors_everywhere() {
     let d = Scratch::new("boundary-pinch");
     let p = d.path("bowtie.off");
     write_off(&p, 5, &[[0, 1, 2], [0, 3, 4]]);
-    for cmd in ["info", "reduce", "quad"] {
+    for cmd in ["reduce", "quad"] {
         let out = run(&[OsStr::new(cmd), p.as_os_str()]);
         let err = stderr(&out);
         assert_eq!(out.status.code(), Some(2), "{cmd}: {err}");
@@ -251,6 +251,15 @@ fn pinched_meshes_stay_errors_everywhere() {
             "{cmd}: {err}"
         );
     }
+    // `info` lists the problem with the others (here: alone, and the boundary).
+    let out = run(&[OsStr::new("info"), p.as_os_str()]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("not a surface: 1 pinched vertex"));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("vertex 0: 2 surface sheets meet here"),
+        "{text}"
+    );
 }
 
 /// `convert` validates surfaces with boundary like `info` (they are valid input), keeps

@@ -573,7 +573,10 @@ fn timings_are_measured_never_placeholders() {
         timings(&run_json(&args), &mut all);
     }
     assert!(all.len() > 20, "{all:?}");
-    let bad: Vec<_> = all.iter().filter(|(_, x)| x.is_nan() || *x <= 0.0).collect();
+    let bad: Vec<_> = all
+        .iter()
+        .filter(|(_, x)| x.is_nan() || *x <= 0.0)
+        .collect();
     assert!(bad.is_empty(), "{bad:?}");
 }
 

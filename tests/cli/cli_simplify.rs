@@ -755,7 +755,7 @@ fn non_manifold_and_unreadable_inputs_are_refused() {
         &dino,
         &["--eps-rel", "0.01"],
         &format!(
-            "{}: vertices 15404 and 15545 are joined by 2 edges (4 faces, first: face 30555)",
+            "{}: vertices 15404 and 15545 are joined by 2 edges (4 faces, first: face 30555 (line 54538))",
             dino.display()
         ),
     );

@@ -205,12 +205,13 @@ fn obj_soup_fails_with_the_soup_hint_and_succeeds_with_weld() {
 }
 
 /// Runs `info` on `bytes` written to `name`; asserts exit code 2, no panic, and that the
-/// message contains every one of `needles`.
+/// output (stdout and stderr) contains every one of `needles`.
 fn assert_refused(dir: &Scratch, name: &str, bytes: &[u8], needles: &[&str]) {
     let path = dir.path(name);
     std::fs::write(&path, bytes).unwrap();
     let out = run(&[Path::new("info"), &path]);
-    let err = stderr(&out);
+    // Syntax errors are on stderr; problems of the surface are listed on stdout.
+    let err = format!("{}{}", String::from_utf8_lossy(&out.stdout), stderr(&out));
     assert_eq!(out.status.code(), Some(2), "{name}: {err}");
     assert!(!err.contains("panicked"), "{name}: {err}");
     for n in needles {

@@ -8,6 +8,7 @@ mod common;
 mod cli_boundary;
 mod cli_gen;
 mod cli_info;
+mod cli_input;
 mod cli_invalid;
 mod cli_iso;
 mod cli_output;

@@ -812,6 +812,8 @@ fn obj_features_and_indices_as_in_file() {
     assert_eq!(m.positions.unwrap()[4], [0.0, 0.0, 1.0]);
 }
 
+/// OBJ counts from 1, and so do its messages: face numbers count `f` statements from 1,
+/// indices are reported as written.
 #[test]
 fn obj_errors_have_kind_and_line() {
     let cases: Vec<(&str, KindCheck, Location)> = vec![
@@ -821,7 +823,7 @@ fn obj_errors_have_kind_and_line() {
                 matches!(
                     k,
                     K::NonTriangleFace {
-                        face: 0,
+                        face: 1,
                         corners: 4
                     }
                 )
@@ -834,7 +836,7 @@ fn obj_errors_have_kind_and_line() {
                 matches!(
                     k,
                     K::NonTriangleFace {
-                        face: 0,
+                        face: 1,
                         corners: 2
                     }
                 )
@@ -879,8 +881,8 @@ fn obj_errors_have_kind_and_line() {
                 matches!(
                     k,
                     K::IndexOutOfRange {
-                        face: 0,
-                        index: -1,
+                        face: 1,
+                        index: -4,
                         vertex_count: 3
                     }
                 )
@@ -893,8 +895,8 @@ fn obj_errors_have_kind_and_line() {
                 matches!(
                     k,
                     K::IndexOutOfRange {
-                        face: 1,
-                        index: 3,
+                        face: 2,
+                        index: 4,
                         vertex_count: 3
                     }
                 )
@@ -903,7 +905,7 @@ fn obj_errors_have_kind_and_line() {
         ),
         (
             "v 0 0 0\nf 1 1 9999999999\n",
-            |k| matches!(k, K::IndexOutOfRange { face: 0, .. }),
+            |k| matches!(k, K::IndexOutOfRange { face: 1, .. }),
             Location::Line(2),
         ),
         (

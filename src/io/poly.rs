@@ -1,0 +1,438 @@
+//! Polygon meshes as files hold them: faces with any number (at least 3) of corners,
+//! with the file line of each face when the format is text.
+//!
+//! The library's algorithms work on triangle meshes ([`TriMesh`]); a [`PolyMesh`] is what
+//! the readers produce before that restriction is applied, so that a quad file can be
+//! described ([`crate::diagnose`]) or triangulated ([`PolyMesh::triangulated`]) rather
+//! than refused.
+
+use super::error::{Location, ReadError, ReadErrorKind as K};
+use crate::mesh::{Mesh, TriMesh};
+
+/// An indexed mesh whose faces have 3 or more corners each, with where each face came
+/// from in its file.
+///
+/// Guarantees (for meshes from the readers): every corner is `< vertex_count`; every face
+/// has at least 3 corners; `positions`, when present, has `vertex_count` entries;
+/// `face_line(i)` is the 1-based line of face `i` for text formats (OFF, OBJ, ascii PLY).
+/// Faces are stored flat (one `u32` per corner plus one per face), so a triangle file
+/// costs about a third more than its [`TriMesh`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct PolyMesh {
+    /// Number of vertices.
+    pub vertex_count: usize,
+    /// Vertex coordinates, if the file has any.
+    pub positions: Option<Vec<[f64; 3]>>,
+    /// Corners of all faces, face after face.
+    corners: Vec<u32>,
+    /// `ends[i]` is one past the last corner of face `i`.
+    ends: Vec<u32>,
+    /// The 1-based file line of each face (text formats only).
+    lines: Option<Vec<u32>>,
+    /// Whether the file numbers vertices and faces from 1 (OBJ).
+    one_based: bool,
+    /// The first face with more than 3 corners, with its most precise location.
+    first_polygon: Option<(usize, u64, Location)>,
+    /// OBJ statements the reader did not use (see [`SkippedStatements`]).
+    pub(crate) skipped: SkippedStatements,
+}
+
+/// How many of each OBJ statement the reader skipped without using it (`l`, `p`, curves,
+/// anything unknown; the statements it knows and deliberately ignores, `vn`, `vt`, `vp`,
+/// `o`, `g`, `s`, `usemtl`, `mtllib`, are not counted).
+///
+/// Guarantees: at most [`SkippedStatements::MAX_KINDS`] keywords are kept, in order of
+/// first appearance; the rest are added up in `others`.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SkippedStatements {
+    /// `(keyword, count, first line)` per kept keyword.
+    pub kinds: Vec<(String, usize, usize)>,
+    /// Skipped statements whose keyword is not kept.
+    pub others: usize,
+}
+
+impl SkippedStatements {
+    /// How many distinct keywords are kept.
+    pub const MAX_KINDS: usize = 8;
+
+    /// Counts one skipped statement.
+    pub(crate) fn add(&mut self, keyword: &[u8], line: usize) {
+        if let Some(k) = self.kinds.iter_mut().find(|k| k.0.as_bytes() == keyword) {
+            k.1 += 1;
+        } else if self.kinds.len() < Self::MAX_KINDS {
+            let kw = super::error::token_string(keyword);
+            self.kinds.push((kw, 1, line));
+        } else {
+            self.others += 1;
+        }
+    }
+
+    /// Total number of skipped statements.
+    pub fn total(&self) -> usize {
+        self.kinds.iter().map(|k| k.1).sum::<usize>() + self.others
+    }
+}
+
+/// A triangle mesh made from a [`PolyMesh`], with the polygon each triangle comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Triangulated {
+    /// The triangles, polygon after polygon, each polygon's triangles in fan order.
+    pub mesh: TriMesh,
+    /// `origin[t]` is the polygon face triangle `t` was cut from.
+    pub origin: Vec<u32>,
+    /// How many faces had more than 3 corners.
+    pub polygons: usize,
+}
+
+impl PolyMesh {
+    /// An empty mesh on `vertex_count` vertices, ready for a reader to fill.
+    pub(crate) fn new(
+        vertex_count: usize,
+        positions: Option<Vec<[f64; 3]>>,
+        text: bool,
+        one_based: bool,
+    ) -> Self {
+        PolyMesh {
+            vertex_count,
+            positions,
+            corners: Vec::new(),
+            ends: Vec::new(),
+            lines: text.then(Vec::new),
+            one_based,
+            first_polygon: None,
+            skipped: SkippedStatements::default(),
+        }
+    }
+
+    /// A mesh from face lists (no file lines, 0-based numbering). Faces with fewer than
+    /// 3 corners are an error naming the first; indices are *not* checked here (the
+    /// validation reports them).
+    pub fn from_faces<F: AsRef<[u32]>>(
+        vertex_count: usize,
+        positions: Option<Vec<[f64; 3]>>,
+        faces: impl IntoIterator<Item = F>,
+    ) -> Result<Self, ReadError> {
+        let mut m = PolyMesh::new(vertex_count, positions, false, false);
+        for (i, f) in faces.into_iter().enumerate() {
+            m.push_face(f.as_ref(), Location::Face(i))?;
+        }
+        Ok(m)
+    }
+
+    /// Reserves room for `faces` more faces (of 3 corners).
+    pub(crate) fn reserve(&mut self, faces: usize) {
+        self.ends.reserve(faces);
+        self.corners.reserve(faces.saturating_mul(3));
+        if let Some(l) = &mut self.lines {
+            l.reserve(faces);
+        }
+    }
+
+    /// Appends a face read at `at` (its line when text). Faces with fewer than 3 corners
+    /// are refused (`NonTriangleFace`); more corners than `u32` can count are refused.
+    pub(crate) fn push_face(&mut self, corners: &[u32], at: Location) -> Result<(), ReadError> {
+        let face = self.ends.len();
+        if corners.len() < 3 {
+            return Err(ReadError::new(
+                K::NonTriangleFace {
+                    face: self.number(face),
+                    corners: corners.len() as u64,
+                },
+                at,
+            ));
+        }
+        if corners.len() > 3 && self.first_polygon.is_none() {
+            self.first_polygon = Some((face, corners.len() as u64, at));
+        }
+        self.corners.extend_from_slice(corners);
+        let end = u32::try_from(self.corners.len()).map_err(|_| {
+            ReadError::new(
+                K::CountTooLarge {
+                    what: "face corners",
+                    declared: self.corners.len() as u64,
+                },
+                at,
+            )
+        })?;
+        self.ends.push(end);
+        if let (Some(lines), Location::Line(n)) = (&mut self.lines, at) {
+            lines.push(u32::try_from(n).unwrap_or(u32::MAX));
+        }
+        Ok(())
+    }
+
+    /// Number of faces.
+    pub fn face_count(&self) -> usize {
+        self.ends.len()
+    }
+
+    /// The corners of face `i` (empty if there is no such face).
+    pub fn face(&self, i: usize) -> &[u32] {
+        let start = match i.checked_sub(1) {
+            None => 0,
+            Some(j) => self.ends.get(j).map_or(0, |&e| e as usize),
+        };
+        let end = self.ends.get(i).map_or(start, |&e| e as usize);
+        self.corners.get(start..end).unwrap_or(&[])
+    }
+
+    /// The faces in file order.
+    pub fn faces(&self) -> impl Iterator<Item = &[u32]> + '_ {
+        (0..self.face_count()).map(|i| self.face(i))
+    }
+
+    /// The 1-based file line of face `i` (text formats).
+    pub fn face_line(&self, i: usize) -> Option<usize> {
+        self.lines.as_ref()?.get(i).map(|&n| n as usize)
+    }
+
+    /// Whether the file numbers vertices and faces from 1 (OBJ): messages about it should
+    /// too.
+    pub fn one_based(&self) -> bool {
+        self.one_based
+    }
+
+    /// Face `i` as the file counts it (`i + 1` for OBJ).
+    pub fn number(&self, i: usize) -> usize {
+        i + usize::from(self.one_based)
+    }
+
+    /// Whether every face is a triangle.
+    pub fn is_triangle_mesh(&self) -> bool {
+        self.first_polygon.is_none()
+    }
+
+    /// The smallest and largest corner counts of a face (`(0, 0)` without faces).
+    pub fn corner_range(&self) -> (usize, usize) {
+        let mut r: Option<(usize, usize)> = None;
+        for f in self.faces() {
+            let n = f.len();
+            r = Some(r.map_or((n, n), |(a, b)| (a.min(n), b.max(n))));
+        }
+        r.unwrap_or((0, 0))
+    }
+
+    /// OBJ statements the reader skipped.
+    pub fn skipped_statements(&self) -> &SkippedStatements {
+        &self.skipped
+    }
+
+    /// The triangle mesh, when every face is a triangle; otherwise `NonTriangleFace`
+    /// naming the first polygon (as the file numbers it) at its line or byte offset.
+    pub fn into_tri_mesh(self) -> Result<TriMesh, ReadError> {
+        if let Some((face, corners, at)) = self.first_polygon {
+            return Err(ReadError::new(
+                K::NonTriangleFace {
+                    face: self.number(face),
+                    corners,
+                },
+                at,
+            ));
+        }
+        let faces = self
+            .corners
+            .chunks_exact(3)
+            .map(|c| [c[0], c[1], c[2]])
+            .collect();
+        Ok(Mesh {
+            vertex_count: self.vertex_count,
+            positions: self.positions,
+            faces,
+        })
+    }
+
+    /// Every face cut into triangles, orientation kept: a quad with positions along its
+    /// shorter diagonal (corners 0–2 unless 1–3 is strictly shorter), any other polygon
+    /// as a fan from its first corner. Triangles keep the polygons' order. O(corners).
+    pub fn triangulated(&self) -> Triangulated {
+        let mut faces = Vec::with_capacity(self.corners.len().saturating_sub(2 * self.ends.len()));
+        let mut origin = Vec::with_capacity(faces.capacity());
+        let mut polygons = 0;
+        for (i, f) in self.faces().enumerate() {
+            if f.len() > 3 {
+                polygons += 1;
+            }
+            let start = if f.len() == 4 && self.shorter_diagonal_is_13(f) {
+                1
+            } else {
+                0
+            };
+            let k = f.len();
+            for j in 1..k - 1 {
+                faces.push([f[start], f[(start + j) % k], f[(start + j + 1) % k]]);
+                // Face numbers fit u32: the corner count does.
+                origin.push(i as u32);
+            }
+        }
+        Triangulated {
+            mesh: Mesh {
+                vertex_count: self.vertex_count,
+                positions: self.positions.clone(),
+                faces,
+            },
+            origin,
+            polygons,
+        }
+    }
+
+    /// For a quad `f`: whether the diagonal from corner 1 to 3 is strictly shorter than
+    /// the one from 0 to 2 (false without positions).
+    fn shorter_diagonal_is_13(&self, f: &[u32]) -> bool {
+        let Some(p) = &self.positions else {
+            return false;
+        };
+        let at = |i: usize| p.get(f[i] as usize);
+        let (Some(a), Some(b), Some(c), Some(d)) = (at(0), at(1), at(2), at(3)) else {
+            return false;
+        };
+        let d2 = |x: &[f64; 3], y: &[f64; 3]| {
+            (x[0] - y[0]).powi(2) + (x[1] - y[1]).powi(2) + (x[2] - y[2]).powi(2)
+        };
+        d2(b, d) < d2(a, c)
+    }
+
+    /// The mesh with its corners renamed by `new_id` (welding), `vertex_count` and
+    /// `positions` replaced. `None` if a corner has no entry in `new_id`.
+    pub(crate) fn renamed(
+        &self,
+        new_id: &[u32],
+        vertex_count: usize,
+        positions: Option<Vec<[f64; 3]>>,
+    ) -> Option<Self> {
+        let corners = self
+            .corners
+            .iter()
+            .map(|&v| new_id.get(v as usize).copied())
+            .collect::<Option<Vec<_>>>()?;
+        Some(PolyMesh {
+            vertex_count,
+            positions,
+            corners,
+            ends: self.ends.clone(),
+            lines: self.lines.clone(),
+            one_based: self.one_based,
+            first_polygon: self.first_polygon,
+            skipped: self.skipped.clone(),
+        })
+    }
+
+    /// The 1-based file line of every face (text formats).
+    pub fn lines(&self) -> Option<&[u32]> {
+        self.lines.as_deref()
+    }
+
+    /// The mesh with its vertices merged by `map` (from [`crate::mesh::weld_map`] of its
+    /// positions): corners renamed, positions those of the kept vertices, faces and their
+    /// lines unchanged. `None` if a corner or a kept vertex has no entry in the map or
+    /// the positions.
+    pub fn welded_by(&self, map: &crate::mesh::WeldMap) -> Option<Self> {
+        let positions = match &self.positions {
+            Some(p) => Some(
+                map.kept
+                    .iter()
+                    .map(|&v| p.get(v as usize).copied())
+                    .collect::<Option<Vec<_>>>()?,
+            ),
+            None => None,
+        };
+        self.renamed(&map.new_id, map.kept.len(), positions)
+    }
+
+    /// The mesh with vertices merged as [`Mesh::welded_within`] does (`tolerance` 0:
+    /// bitwise-equal positions), and the number of vertices merged away. A mesh without
+    /// positions is returned unchanged. `None` if a corner is out of range or
+    /// `tolerance` is negative or not finite.
+    pub fn welded_within(&self, tolerance: f64) -> Option<(Self, usize)> {
+        let Some(p) = &self.positions else {
+            return self
+                .corners
+                .iter()
+                .all(|&v| (v as usize) < self.vertex_count)
+                .then(|| (self.clone(), 0));
+        };
+        let w = crate::mesh::weld_map(p, tolerance)?;
+        let kept: Vec<[f64; 3]> = w.kept.iter().map(|&v| p[v as usize]).collect();
+        let merged = self.vertex_count - kept.len();
+        let n = kept.len();
+        Some((self.renamed(&w.new_id, n, Some(kept))?, merged))
+    }
+}
+
+impl From<TriMesh> for PolyMesh {
+    /// The triangle mesh as a polygon mesh (no file lines, 0-based numbering).
+    fn from(m: TriMesh) -> Self {
+        let ends = (1..=m.faces.len()).map(|i| (3 * i) as u32).collect();
+        PolyMesh {
+            vertex_count: m.vertex_count,
+            positions: m.positions,
+            corners: m.faces.into_iter().flatten().collect(),
+            ends,
+            lines: None,
+            one_based: false,
+            first_polygon: None,
+            skipped: SkippedStatements::default(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quads_are_cut_along_the_shorter_diagonal_and_polygons_fanned() {
+        // A unit square stretched along x: diagonal 0-2 and 1-3 equal -> 0-2; then a
+        // kite whose 1-3 diagonal is shorter.
+        let p = vec![
+            [0.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [2.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [-5.0, 0.5, 0.0],
+        ];
+        let m = PolyMesh::from_faces(
+            5,
+            Some(p),
+            [vec![0, 1, 2, 3], vec![4, 0, 2, 3], vec![0, 1, 2, 3, 4]],
+        )
+        .unwrap();
+        assert!(!m.is_triangle_mesh());
+        assert_eq!(m.corner_range(), (4, 5));
+        let t = m.triangulated();
+        assert_eq!(
+            t.mesh.faces,
+            vec![
+                [0, 1, 2],
+                [0, 2, 3],
+                // |0-3| = 1 < |4-2| = 7.02: start at corner 1 (vertex 0).
+                [0, 2, 3],
+                [0, 3, 4],
+                [0, 1, 2],
+                [0, 2, 3],
+                [0, 3, 4]
+            ]
+        );
+        assert_eq!(t.origin, vec![0, 0, 1, 1, 2, 2, 2]);
+        assert_eq!(t.polygons, 3);
+        let e = m.clone().into_tri_mesh().unwrap_err();
+        assert!(matches!(
+            e.kind,
+            K::NonTriangleFace {
+                face: 0,
+                corners: 4
+            }
+        ));
+        assert!(PolyMesh::from_faces(3, None, [vec![0, 1]]).is_err());
+    }
+
+    #[test]
+    fn triangle_meshes_convert_both_ways() {
+        let t = TriMesh::combinatorial(4, vec![[0, 1, 2], [0, 2, 3]]);
+        let p = PolyMesh::from(t.clone());
+        assert!(p.is_triangle_mesh());
+        assert_eq!(p.face(1), &[0, 2, 3]);
+        assert_eq!(p.face(2), &[] as &[u32]);
+        assert_eq!(p.triangulated().mesh, t);
+        assert_eq!(p.into_tri_mesh().unwrap(), t);
+    }
+}
