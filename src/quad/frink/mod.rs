@@ -74,10 +74,13 @@
 //! never occurs; this reference takes the first simple edge of the smallest live node, so
 //! (iv) does occur and is exercised). Recorded in `spec/ERRATA.md`.
 
+mod cover;
 mod cycle;
 mod graph;
+mod lct;
 mod spec;
 
+pub use cover::{CoverCounters, CoverTree};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};
 
 use super::Pairing;
@@ -131,6 +134,15 @@ pub trait Strategy {
     /// Called once before the first reduction, with the input graph.
     fn start(&mut self, g: &Cubic) {
         let _ = g;
+    }
+
+    /// The next reduction, if the strategy chooses it itself (Frink leaves the edge
+    /// free); `None`: [`solve`]'s default, the first simple edge of the smallest live
+    /// node ([`Cubic::candidate_at`]). Must be a valid reduction of `g` (e.g. from
+    /// [`Cubic::candidate_for`]); [`Strategy::choose`] is then called with it.
+    fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
+        let _ = g;
+        None
     }
 
     /// A reconnection of the reduction `cand` of `g` whose result is connected and
@@ -231,9 +243,12 @@ pub fn solve<S: Strategy>(mut g: Cubic, strategy: &mut S) -> Result<Solution, Fr
         while !g.is_alive(cursor) {
             cursor += 1;
         }
-        let cand = g
-            .candidate_at(cursor)
-            .ok_or(FrinkError::NoReductionEdge(cursor))?;
+        let cand = match strategy.pick(&g) {
+            Some(c) => c,
+            None => g
+                .candidate_at(cursor)
+                .ok_or(FrinkError::NoReductionEdge(cursor))?,
+        };
         let recon = strategy
             .choose(&mut g, &cand)
             .ok_or(FrinkError::NoReconnection {
