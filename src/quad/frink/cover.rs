@@ -86,6 +86,9 @@ pub struct CoverTree {
     fresh: bool,
     dfs: Dfs,
     counters: CoverCounters,
+    /// Test knob: find no tree-stable configuration (every step naive, then a rebuild).
+    #[cfg(test)]
+    pub(crate) only_fallback: bool,
 }
 
 impl CoverTree {
@@ -149,9 +152,10 @@ impl CoverTree {
                 }
             }
         }
+        // Link-cut ids: vertex x is 2x, the tree edge to x's DFS parent is 2x + 1 (so a
+        // vertex and its parent edge share a cache line); the other odd ids are free.
         let mut parent = vec![NONE; 2 * n];
-        let mut vals = vec![0i32; 2 * n];
-        vals[..n].fill(INF);
+        let mut vals = vec![INF; 2 * n];
         let mut sum = vec![0i32; n];
         for &x in &order {
             for e in g.slots[x as usize] {
@@ -164,7 +168,6 @@ impl CoverTree {
             }
         }
         self.free.clear();
-        let mut next_slot = 0u32;
         for &x in order.iter().rev() {
             let e = pe[x as usize];
             if e == NONE {
@@ -172,17 +175,17 @@ impl CoverTree {
             }
             let p = g.other(e, x);
             sum[p as usize] += sum[x as usize];
-            let k = n as u32 + next_slot;
-            next_slot += 1;
+            let k = 2 * x + 1;
             self.enode[e as usize] = k;
             vals[k as usize] = sum[x as usize];
-            parent[x as usize] = k;
-            parent[k as usize] = p;
+            parent[2 * x as usize] = k;
+            parent[k as usize] = 2 * p;
             self.tdeg[x as usize] += 1;
             self.tdeg[p as usize] += 1;
         }
-        self.free.extend((n as u32 + next_slot..2 * n as u32).rev());
-        self.lct = Lct::with_parents(vals, parent);
+        self.free
+            .extend((0..n as u32).rev().filter(|&x| pe[x as usize] == NONE).map(|x| 2 * x + 1));
+        self.lct = Lct::with_parents(&vals, &parent);
         for &x in order.iter().rev() {
             self.push(x);
         }
@@ -195,22 +198,30 @@ impl CoverTree {
         }
         self.enode[e as usize] = k;
         self.lct.set_isolated(k, count);
-        self.lct.link(a, k);
-        self.lct.link(k, b);
+        self.lct.link(2 * a, k);
+        self.lct.link(k, 2 * b);
     }
 
     /// Cuts tree edge `e` = `a`–`b` out; returns its count. Does not free its slot.
     fn tree_cut(&mut self, e: u32, a: u32, b: u32) -> i32 {
         let k = self.enode[e as usize];
-        self.lct.cut(a, k);
-        self.lct.cut(k, b);
+        self.lct.cut(2 * a, k);
+        self.lct.cut(k, 2 * b);
         self.lct.isolated_value(k)
     }
 
     fn tree_relink(&mut self, e: u32, a: u32, b: u32) {
         let k = self.enode[e as usize];
-        self.lct.link(a, k);
-        self.lct.link(k, b);
+        self.lct.link(2 * a, k);
+        self.lct.link(k, 2 * b);
+    }
+
+    fn padd(&mut self, a: u32, b: u32, d: i32) {
+        self.lct.path_add(2 * a, 2 * b, d);
+    }
+
+    fn pmin(&mut self, a: u32, b: u32) -> i32 {
+        self.lct.path_min(2 * a, 2 * b)
     }
 
     fn release(&mut self, e: u32) {
@@ -269,7 +280,7 @@ impl CoverTree {
             if self.is_tree(e) {
                 cut.push((e, [s, t]));
             } else {
-                self.lct.path_add(s, t, -1);
+                self.padd(s, t, -1);
                 removed.push([map(s), map(t)]);
             }
         }
@@ -283,9 +294,9 @@ impl CoverTree {
                 continue;
             }
             for [a, b] in ends {
-                self.lct.path_add(a, b, 1);
+                self.padd(a, b, 1);
             }
-            let ok = removed.iter().all(|&[a, b]| self.lct.path_min(a, b) >= 1);
+            let ok = removed.iter().all(|&[a, b]| self.pmin(a, b) >= 1);
             if ok {
                 for &(e, _) in &cut {
                     self.release(e);
@@ -306,7 +317,7 @@ impl CoverTree {
                 });
             }
             for [a, b] in ends {
-                self.lct.path_add(a, b, -1);
+                self.padd(a, b, -1);
             }
         }
         // Restore (impossible on a bridgeless graph, kept for robustness).
@@ -316,7 +327,7 @@ impl CoverTree {
         for e in five {
             if !self.is_tree(e) {
                 let [s, t] = g.ends(e);
-                self.lct.path_add(s, t, 1);
+                self.padd(s, t, 1);
             }
         }
         None
@@ -344,20 +355,27 @@ impl CoverTree {
         } else {
             Reconnection::H2
         };
-        self.lct.path_add(u, a, -1);
-        self.lct.path_add(v, b, -1);
-        let c = self.tree_cut(fu, y, u);
-        self.tree_cut(cand.e, u, v);
-        self.tree_cut(fv, v, z);
+        self.padd(u, a, -1);
+        self.padd(v, b, -1);
         // The new tree edge (x[iu], x[2 + iv]) is p in H1 iff iu = 0, and in H2 (iu ≠ iv)
         // p = x1x4 iff iu = 0: so it is new edge number iu either way.
         let which = iu;
         let id = g.ends.len() as u32 + which as u32;
-        self.tree_link(id, y, z, c);
-        self.lct.path_add(a, b, 1);
-        let ok = [(y, a), (z, a), (y, b), (z, b), (y, z)]
+        // Every remaining tree path through y u v z crosses all three edges, so the new
+        // edge yz takes their common count (that of uv).
+        let k = self.free.pop().expect("a free link-cut slot (n − 1 tree edges at most)");
+        if self.enode.len() <= id as usize {
+            self.enode.resize(id as usize + 1, NONE);
+        }
+        self.enode[id as usize] = k;
+        let ke = self.enode[cand.e as usize];
+        self.lct.replace_path(2 * y, 2 * z, k, ke);
+        self.padd(a, b, 1);
+        // The counts that dropped lie on the old paths u…a and v…b, now inside a…y or
+        // a…z (one contains the other and the edge yz), b…y or b…z.
+        let ok = [(y, a), (z, a), (y, b), (z, b)]
             .iter()
-            .all(|&(s, t)| self.lct.path_min(s, t) >= 1);
+            .all(|&(s, t)| self.pmin(s, t) >= 1);
         if ok {
             for e in [fu, cand.e, fv] {
                 self.release(e);
@@ -369,20 +387,24 @@ impl CoverTree {
                 lost: [NONE, NONE],
             });
         }
-        self.lct.path_add(a, b, -1);
+        self.padd(a, b, -1);
         self.tree_cut(id, y, z);
         self.release(id);
         self.tree_relink(fu, y, u);
         self.tree_relink(cand.e, u, v);
         self.tree_relink(fv, v, z);
-        self.lct.path_add(u, a, 1);
-        self.lct.path_add(v, b, 1);
+        self.padd(u, a, 1);
+        self.padd(v, b, 1);
         self.counters.s4_skipped += 1;
         None
     }
 
     /// Tries every tree-stable configuration with `x` as `u`.
     fn try_at(&mut self, g: &Cubic, x: u32) -> Option<Plan> {
+        #[cfg(test)]
+        if self.only_fallback {
+            return None;
+        }
         if !g.is_alive(x) {
             return None;
         }

@@ -15,21 +15,37 @@
 /// No node.
 const NIL: u32 = u32::MAX;
 
+/// One node: splay children, splay parent or path-parent (told apart by
+/// [`Lct::is_root`]), its value, the minimum over its splay subtree (its part of the
+/// preferred path), and the pending addition / reversal of that subtree (already applied
+/// to this node). Packed in one record so that a node costs one cache line.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    ch: [u32; 2],
+    par: u32,
+    val: i32,
+    min: i32,
+    add: i32,
+    rev: bool,
+}
+
+impl Node {
+    fn single(v: i32, par: u32) -> Node {
+        Node {
+            ch: [NIL; 2],
+            par,
+            val: v,
+            min: v,
+            add: 0,
+            rev: false,
+        }
+    }
+}
+
 /// Link–cut forest over nodes `0..n` with an `i32` value per node.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Lct {
-    /// Splay-tree children.
-    ch: Vec<[u32; 2]>,
-    /// Splay parent, or path-parent when this node is a splay root (the two are told
-    /// apart by [`Lct::is_root`]).
-    par: Vec<u32>,
-    val: Vec<i32>,
-    /// Minimum of `val` over this node's splay subtree (its part of the preferred path).
-    min: Vec<i32>,
-    /// Pending addition to the whole splay subtree (already applied to `val`/`min` here).
-    add: Vec<i32>,
-    /// Pending reversal of the splay subtree's children (already applied here).
-    rev: Vec<bool>,
+    t: Vec<Node>,
     stack: Vec<u32>,
 }
 
@@ -37,14 +53,8 @@ impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
     #[cfg(test)]
     pub(crate) fn new(vals: &[i32]) -> Self {
-        let n = vals.len();
         Lct {
-            ch: vec![[NIL; 2]; n],
-            par: vec![NIL; n],
-            val: vals.to_vec(),
-            min: vals.to_vec(),
-            add: vec![0; n],
-            rev: vec![false; n],
+            t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
             stack: Vec::new(),
         }
     }
@@ -52,102 +62,99 @@ impl Lct {
     /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root), node `i`
     /// with value `vals[i]`; `parent` must describe a forest. O(n): every node starts as
     /// its own preferred path, with its tree parent as path-parent.
-    pub(crate) fn with_parents(vals: Vec<i32>, parent: Vec<u32>) -> Self {
-        let n = vals.len();
-        debug_assert_eq!(parent.len(), n);
+    pub(crate) fn with_parents(vals: &[i32], parent: &[u32]) -> Self {
+        debug_assert_eq!(parent.len(), vals.len());
         Lct {
-            ch: vec![[NIL; 2]; n],
-            par: parent,
-            min: vals.clone(),
-            val: vals,
-            add: vec![0; n],
-            rev: vec![false; n],
+            t: vals
+                .iter()
+                .zip(parent)
+                .map(|(&v, &p)| Node::single(v, p))
+                .collect(),
             stack: Vec::new(),
         }
     }
 
     /// Sets the value of `x`, which must be a single-node tree (not linked).
     pub(crate) fn set_isolated(&mut self, x: u32, v: i32) {
-        debug_assert!(self.par[x as usize] == NIL && self.ch[x as usize] == [NIL; 2]);
-        self.val[x as usize] = v;
-        self.min[x as usize] = v;
-        self.add[x as usize] = 0;
-        self.rev[x as usize] = false;
+        let n = &self.t[x as usize];
+        debug_assert!(n.par == NIL && n.ch == [NIL; 2]);
+        self.t[x as usize] = Node::single(v, NIL);
     }
 
     /// The value of `x` once it is cut off (a single-node tree).
     pub(crate) fn isolated_value(&self, x: u32) -> i32 {
-        self.val[x as usize]
+        self.t[x as usize].val
     }
 
     fn is_root(&self, x: u32) -> bool {
-        let p = self.par[x as usize];
-        p == NIL || (self.ch[p as usize][0] != x && self.ch[p as usize][1] != x)
+        let p = self.t[x as usize].par;
+        p == NIL || (self.t[p as usize].ch[0] != x && self.t[p as usize].ch[1] != x)
     }
 
     fn apply_add(&mut self, x: u32, d: i32) {
         if x != NIL {
-            let i = x as usize;
-            self.val[i] += d;
-            self.min[i] += d;
-            self.add[i] += d;
+            let n = &mut self.t[x as usize];
+            n.val += d;
+            n.min += d;
+            n.add += d;
         }
     }
 
     fn apply_rev(&mut self, x: u32) {
         if x != NIL {
-            let i = x as usize;
-            self.ch[i].swap(0, 1);
-            self.rev[i] ^= true;
+            let n = &mut self.t[x as usize];
+            n.ch.swap(0, 1);
+            n.rev ^= true;
         }
     }
 
     fn push(&mut self, x: u32) {
-        let i = x as usize;
-        let [a, b] = self.ch[i];
-        if self.add[i] != 0 {
-            let d = self.add[i];
+        let n = &mut self.t[x as usize];
+        let [a, b] = n.ch;
+        let (d, r) = (n.add, n.rev);
+        n.add = 0;
+        n.rev = false;
+        if d != 0 {
             self.apply_add(a, d);
             self.apply_add(b, d);
-            self.add[i] = 0;
         }
-        if self.rev[i] {
+        if r {
             self.apply_rev(a);
             self.apply_rev(b);
-            self.rev[i] = false;
         }
     }
 
     fn pull(&mut self, x: u32) {
-        let i = x as usize;
-        let mut m = self.val[i];
-        for c in self.ch[i] {
-            if c != NIL && self.min[c as usize] < m {
-                m = self.min[c as usize];
-            }
+        let [a, b] = self.t[x as usize].ch;
+        let mut m = self.t[x as usize].val;
+        if a != NIL {
+            m = m.min(self.t[a as usize].min);
         }
-        self.min[i] = m;
+        if b != NIL {
+            m = m.min(self.t[b as usize].min);
+        }
+        self.t[x as usize].min = m;
     }
 
     fn rotate(&mut self, x: u32) {
-        let p = self.par[x as usize];
-        let g = self.par[p as usize];
-        let dir = usize::from(self.ch[p as usize][1] == x);
-        let b = self.ch[x as usize][dir ^ 1];
+        let p = self.t[x as usize].par;
+        let g = self.t[p as usize].par;
+        let dir = usize::from(self.t[p as usize].ch[1] == x);
+        let b = self.t[x as usize].ch[dir ^ 1];
         if !self.is_root(p) {
             let gi = g as usize;
-            if self.ch[gi][0] == p {
-                self.ch[gi][0] = x;
+            if self.t[gi].ch[0] == p {
+                self.t[gi].ch[0] = x;
             } else {
-                self.ch[gi][1] = x;
+                self.t[gi].ch[1] = x;
             }
         }
-        self.par[x as usize] = g;
-        self.ch[x as usize][dir ^ 1] = p;
-        self.par[p as usize] = x;
-        self.ch[p as usize][dir] = b;
+        self.t[x as usize].par = g;
+        self.t[x as usize].ch[dir ^ 1] = p;
+        self.t[p as usize].par = x;
+        self.t[p as usize].ch[dir] = b;
         if b != NIL {
-            self.par[b as usize] = p;
+            self.t[b as usize].par = p;
         }
         self.pull(p);
         self.pull(x);
@@ -159,17 +166,17 @@ impl Lct {
         let mut y = x;
         self.stack.push(y);
         while !self.is_root(y) {
-            y = self.par[y as usize];
+            y = self.t[y as usize].par;
             self.stack.push(y);
         }
         while let Some(z) = self.stack.pop() {
             self.push(z);
         }
         while !self.is_root(x) {
-            let p = self.par[x as usize];
+            let p = self.t[x as usize].par;
             if !self.is_root(p) {
-                let g = self.par[p as usize];
-                let zigzig = (self.ch[g as usize][0] == p) == (self.ch[p as usize][0] == x);
+                let g = self.t[p as usize].par;
+                let zigzig = (self.t[g as usize].ch[0] == p) == (self.t[p as usize].ch[0] == x);
                 self.rotate(if zigzig { p } else { x });
             }
             self.rotate(x);
@@ -183,10 +190,10 @@ impl Lct {
         let mut y = x;
         while y != NIL {
             self.splay(y);
-            self.ch[y as usize][1] = last;
+            self.t[y as usize].ch[1] = last;
             self.pull(y);
             last = y;
-            y = self.par[y as usize];
+            y = self.t[y as usize].par;
         }
         self.splay(x);
     }
@@ -202,7 +209,7 @@ impl Lct {
         let mut y = x;
         loop {
             self.push(y);
-            let l = self.ch[y as usize][0];
+            let l = self.t[y as usize].ch[0];
             if l == NIL {
                 break;
             }
@@ -221,7 +228,7 @@ impl Lct {
     pub(crate) fn link(&mut self, x: u32, y: u32) {
         debug_assert!(!self.connected(x, y), "link inside one tree");
         self.make_root(x);
-        self.par[x as usize] = y;
+        self.t[x as usize].par = y;
     }
 
     /// Removes the edge `x`–`y`, which must exist.
@@ -229,14 +236,60 @@ impl Lct {
         self.make_root(x);
         self.access(y);
         debug_assert!(
-            self.ch[y as usize][0] == x && self.ch[x as usize][1] == NIL,
+            self.t[y as usize].ch[0] == x && self.t[x as usize].ch[1] == NIL,
             "cut of a non-edge"
         );
-        self.ch[y as usize][0] = NIL;
-        self.par[x as usize] = NIL;
+        self.t[y as usize].ch[0] = NIL;
+        self.t[x as usize].par = NIL;
         self.pull(y);
         // Leave x's own value exact (its subtree tags are pushed on the next splay).
         self.push(x);
+    }
+
+    /// Replaces the tree path `y`…`z` (`y ≠ z`, not adjacent) by `y`–`k`–`z`: every node
+    /// strictly between them becomes a single-node tree (keeping its value) and `k`, a
+    /// single-node tree before, gets the value of `copy_from`, one of those interior
+    /// nodes. The interior nodes must have no tree neighbours off the path (they would
+    /// be cut off with it). O(log n) amortised plus the path length.
+    pub(crate) fn replace_path(&mut self, y: u32, z: u32, k: u32, copy_from: u32) {
+        self.make_root(y);
+        self.access(z);
+        // z's splay tree now holds exactly the path y…z, and y is the tree root, so the
+        // splay root z has no path-parent. Push every tag down, collect the interior.
+        let mut todo = std::mem::take(&mut self.stack);
+        let mut interior: Vec<u32> = Vec::new();
+        todo.clear();
+        todo.push(z);
+        while let Some(a) = todo.pop() {
+            self.push(a);
+            for c in self.t[a as usize].ch {
+                if c != NIL {
+                    todo.push(c);
+                }
+            }
+            if a != y && a != z {
+                interior.push(a);
+            }
+        }
+        self.stack = todo;
+        debug_assert!(interior.contains(&copy_from), "copy_from not inside the path");
+        let v = self.t[copy_from as usize].val;
+        for a in interior {
+            let val = self.t[a as usize].val;
+            self.t[a as usize] = Node::single(val, NIL);
+        }
+        debug_assert!(self.t[k as usize].par == NIL && self.t[k as usize].ch == [NIL; 2]);
+        for end in [y, z] {
+            let n = &mut self.t[end as usize];
+            n.ch = [NIL; 2];
+            n.par = k;
+            n.min = n.val;
+        }
+        self.t[k as usize] = Node {
+            ch: [y, z],
+            ..Node::single(v, NIL)
+        };
+        self.pull(k);
     }
 
     /// Exposes the `x`–`y` path as one splay tree rooted at `y`; they must be connected.
@@ -254,7 +307,7 @@ impl Lct {
     /// Minimum value on the `x`–`y` path (both included).
     pub(crate) fn path_min(&mut self, x: u32, y: u32) -> i32 {
         self.expose(x, y);
-        self.min[y as usize]
+        self.t[y as usize].min
     }
 }
 
@@ -307,6 +360,7 @@ mod tests {
 
     #[test]
     fn agrees_with_a_naive_forest_on_random_operations() {
+        let mut replaced = 0;
         for seed in 1..=60u64 {
             let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
             let n = 2 + (next(&mut s) % 14) as usize;
@@ -322,7 +376,7 @@ mod tests {
                 let y = (next(&mut s) % n as u64) as u32;
                 let path = naive.path(x, y);
                 assert_eq!(lct.connected(x, y), path.is_some(), "seed {seed}");
-                match next(&mut s) % 5 {
+                match next(&mut s) % 6 {
                     0 if path.is_none() => {
                         lct.link(x, y);
                         naive.adj[x as usize].push(y);
@@ -339,6 +393,36 @@ mod tests {
                         }
                         naive.adj[a as usize].retain(|&c| c != b);
                         naive.adj[b as usize].retain(|&c| c != a);
+                    }
+                    3 if path.as_ref().is_some_and(|p| {
+                        p.len() >= 3
+                            && p[1..p.len() - 1]
+                                .iter()
+                                .all(|&c| naive.adj[c as usize].len() == 2)
+                    }) =>
+                    {
+                        // Replace the chain x…y by x–k–y, k an isolated node.
+                        let p = path.as_ref().expect("checked");
+                        let Some(k) = (0..n as u32).find(|&k| naive.adj[k as usize].is_empty())
+                        else {
+                            continue;
+                        };
+                        let from = p[1 + (next(&mut s) as usize) % (p.len() - 2)];
+                        lct.replace_path(x, y, k, from);
+                        replaced += 1;
+                        let v = naive.val[from as usize];
+                        for w in p.windows(2) {
+                            let (a, b) = (w[0], w[1]);
+                            naive.adj[a as usize].retain(|&c| c != b);
+                            naive.adj[b as usize].retain(|&c| c != a);
+                            edges.retain(|&e| e != (a, b) && e != (b, a));
+                        }
+                        naive.val[k as usize] = v;
+                        for (a, b) in [(x, k), (k, y)] {
+                            naive.adj[a as usize].push(b);
+                            naive.adj[b as usize].push(a);
+                            edges.push((a, b));
+                        }
                     }
                     2 if path.is_some() => {
                         let d = (next(&mut s) % 7) as i32 - 3;
@@ -360,5 +444,6 @@ mod tests {
                 assert_eq!(lct.path_min(x, x), naive.val[x as usize], "seed {seed}");
             }
         }
+        assert!(replaced > 50, "replace_path exercised {replaced} times");
     }
 }

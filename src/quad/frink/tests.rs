@@ -562,6 +562,30 @@ fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
     assert!(counters.s1 > 0 && counters.s2 > 0 && counters.s4 > 0, "{counters:?}");
 }
 
+/// The fallback (no tree-stable configuration: rebuild, then a naive step, then a
+/// rebuild), forced on every step: still every choice valid and the matching perfect.
+#[test]
+fn cover_tree_fallback_steps() {
+    let mut rng = Rng::new(5);
+    let mut graphs = 0;
+    for round in 0..400 {
+        let n = 2 * (1 + rng.index(10));
+        let g = random_cubic(n, &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let mut s = Checked::default();
+        s.inner.only_fallback = true;
+        let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
+        assert_perfect(&g, &sol.mate, &format!("round {round}"));
+        let c = s.inner.counters();
+        assert_eq!(c.naive_steps as usize, sol.stats.reductions);
+        assert_eq!(c.s1 + c.s2 + c.s4, 0);
+        graphs += 1;
+    }
+    assert!(graphs > 50);
+}
+
 /// Duals of random closed surfaces, orientable genus 0..8 and non-orientable: every
 /// step checked, the pairing perfect.
 #[test]
