@@ -191,17 +191,6 @@ impl CoverTree {
         }
     }
 
-    fn tree_link(&mut self, e: u32, a: u32, b: u32, count: i32) {
-        let k = self.free.pop().expect("a free link-cut slot (n − 1 tree edges at most)");
-        if self.enode.len() <= e as usize {
-            self.enode.resize(e as usize + 1, NONE);
-        }
-        self.enode[e as usize] = k;
-        self.lct.set_isolated(k, count);
-        self.lct.link(2 * a, k);
-        self.lct.link(k, 2 * b);
-    }
-
     /// Cuts tree edge `e` = `a`–`b` out; returns its count. Does not free its slot.
     fn tree_cut(&mut self, e: u32, a: u32, b: u32) -> i32 {
         let k = self.enode[e as usize];
