@@ -183,8 +183,12 @@ impl CoverTree {
             self.tdeg[x as usize] += 1;
             self.tdeg[p as usize] += 1;
         }
-        self.free
-            .extend((0..n as u32).rev().filter(|&x| pe[x as usize] == NONE).map(|x| 2 * x + 1));
+        self.free.extend(
+            (0..n as u32)
+                .rev()
+                .filter(|&x| pe[x as usize] == NONE)
+                .map(|x| 2 * x + 1),
+        );
         self.lct = Lct::with_parents(&vals, &parent);
         for &x in order.iter().rev() {
             self.push(x);
@@ -352,7 +356,10 @@ impl CoverTree {
         let id = g.ends.len() as u32 + which as u32;
         // Every remaining tree path through y u v z crosses all three edges, so the new
         // edge yz takes their common count (that of uv).
-        let k = self.free.pop().expect("a free link-cut slot (n − 1 tree edges at most)");
+        let k = self
+            .free
+            .pop()
+            .expect("a free link-cut slot (n − 1 tree edges at most)");
         if self.enode.len() <= id as usize {
             self.enode.resize(id as usize + 1, NONE);
         }

@@ -74,13 +74,6 @@ impl Lct {
         }
     }
 
-    /// Sets the value of `x`, which must be a single-node tree (not linked).
-    pub(crate) fn set_isolated(&mut self, x: u32, v: i32) {
-        let n = &self.t[x as usize];
-        debug_assert!(n.par == NIL && n.ch == [NIL; 2]);
-        self.t[x as usize] = Node::single(v, NIL);
-    }
-
     /// The value of `x` once it is cut off (a single-node tree).
     pub(crate) fn isolated_value(&self, x: u32) -> i32 {
         self.t[x as usize].val
@@ -272,7 +265,10 @@ impl Lct {
             }
         }
         self.stack = todo;
-        debug_assert!(interior.contains(&copy_from), "copy_from not inside the path");
+        debug_assert!(
+            interior.contains(&copy_from),
+            "copy_from not inside the path"
+        );
         let v = self.t[copy_from as usize].val;
         for a in interior {
             let val = self.t[a as usize].val;

@@ -512,7 +512,10 @@ impl Strategy for Checked {
             ok
         });
         let k = usize::from(chosen == Reconnection::H2);
-        assert!(ok[k], "CoverTree chose a reconnection with a bridge: {cand:?}");
+        assert!(
+            ok[k],
+            "CoverTree chose a reconnection with a bridge: {cand:?}"
+        );
         self.steps += 1;
         self.single += u64::from(ok[0] != ok[1]);
         Some(chosen)
@@ -558,8 +561,14 @@ fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
         counters.naive_steps += c.naive_steps;
     }
     eprintln!("cover tree: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {counters:?}");
-    assert!(graphs > 500 && single > 100, "{graphs} graphs, {single} forced steps");
-    assert!(counters.s1 > 0 && counters.s2 > 0 && counters.s4 > 0, "{counters:?}");
+    assert!(
+        graphs > 500 && single > 100,
+        "{graphs} graphs, {single} forced steps"
+    );
+    assert!(
+        counters.s1 > 0 && counters.s2 > 0 && counters.s4 > 0,
+        "{counters:?}"
+    );
 }
 
 /// The fallback (no tree-stable configuration: rebuild, then a naive step, then a
