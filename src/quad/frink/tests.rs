@@ -492,6 +492,9 @@ struct Checked {
     dfs: Dfs,
     steps: u64,
     single: u64,
+    /// Broken variant for the test of this check: the other reconnection whenever only
+    /// one is valid.
+    flip: bool,
 }
 
 impl Strategy for Checked {
@@ -504,13 +507,20 @@ impl Strategy for Checked {
     }
 
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
-        let chosen = self.inner.choose(g, cand)?;
+        let mut chosen = self.inner.choose(g, cand)?;
         let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
             let r = g.reduce(cand, recon);
             let ok = self.dfs.connected_bridgeless(g, cand.x[0]);
             g.undo(&r);
             ok
         });
+        if self.flip && ok[0] != ok[1] {
+            // The broken variant: the other reconnection, where it is the invalid one.
+            chosen = match chosen {
+                Reconnection::H1 => Reconnection::H2,
+                Reconnection::H2 => Reconnection::H1,
+            };
+        }
         let k = usize::from(chosen == Reconnection::H2);
         assert!(
             ok[k],
@@ -569,6 +579,37 @@ fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
         counters.s1 > 0 && counters.s2 > 0 && counters.s4 > 0,
         "{counters:?}"
     );
+}
+
+/// The agreement check can fail: with the choice flipped it catches the first step where
+/// only the strategy's reconnection was valid.
+#[test]
+fn the_agreement_check_catches_a_flipped_choice() {
+    let mut rng = Rng::new(23);
+    let mut caught = 0;
+    for _ in 0..200 {
+        let g = random_cubic(2 * (3 + rng.index(10)), &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let r = std::panic::catch_unwind(|| {
+            let mut s = Checked {
+                flip: true,
+                ..Checked::default()
+            };
+            let _ = solve(g.clone(), &mut s);
+        });
+        if let Err(e) = r {
+            let m = e
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            assert!(m.contains("chose a reconnection with a bridge"), "{m}");
+            caught += 1;
+        }
+    }
+    assert!(caught > 20, "caught {caught}");
 }
 
 /// The fallback (no tree-stable configuration: rebuild, then a naive step, then a
