@@ -61,6 +61,11 @@ fn run_json(tri: &Triangulation, alg: Algorithm, seed: u64, name: &str) -> Value
         Algorithm::Ps => (tri.clone(), quad::pulli_segal::initial_pairing(tri, &opts)),
         Algorithm::Sg => (tri.clone(), quad::greedy::initial_pairing(tri, &opts)),
         Algorithm::Matching => (tri.clone(), quad::matching::initial_pairing(tri)),
+        Algorithm::DsNaive => (tri.clone(), quad::frink::perfect_matching(tri)),
+        Algorithm::FrinkLct => (
+            tri.clone(),
+            quad::frink::perfect_matching_with(tri, &mut quad::frink::CoverTree::new()).0,
+        ),
     };
     let mut full = initial.clone();
     let work = quad::augment::complete(&k, &mut full);

@@ -94,6 +94,18 @@ fn initial_step(t: Triangulation, alg: Algorithm, options: &Options) -> (Triangu
             let p = matching::initial_pairing(&t);
             (t, p)
         }
+        Algorithm::DsNaive => {
+            let p = contractible::quad::frink::perfect_matching(&t);
+            (t, p)
+        }
+        Algorithm::FrinkLct => {
+            let p = contractible::quad::frink::perfect_matching_with(
+                &t,
+                &mut contractible::quad::frink::CoverTree::new(),
+            )
+            .0;
+            (t, p)
+        }
     }
 }
 

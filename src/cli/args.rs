@@ -376,6 +376,11 @@ pub enum QuadAlgo {
     Sg,
     /// Edmonds' matching on the whole dual graph.
     Matching,
+    /// Frink's reduction, naive DFS strategy (quadratic: refused above 100,000 faces per
+    /// component).
+    DsNaive,
+    /// Frink's reduction, link–cut cover-count strategy.
+    FrinkLct,
 }
 
 impl From<QuadAlgo> for contractible::quad::Algorithm {
@@ -386,6 +391,8 @@ impl From<QuadAlgo> for contractible::quad::Algorithm {
             QuadAlgo::Ps => Algorithm::Ps,
             QuadAlgo::Sg => Algorithm::Sg,
             QuadAlgo::Matching => Algorithm::Matching,
+            QuadAlgo::DsNaive => Algorithm::DsNaive,
+            QuadAlgo::FrinkLct => Algorithm::FrinkLct,
         }
     }
 }

@@ -12,6 +12,9 @@ use super::progress::{bar, StageBar};
 use super::reduce::component_prefix;
 use super::{meshio, print_json, CliError, Ui};
 
+/// Largest component `--algo ds-naive` accepts (its naive strategy is O(F²)).
+pub const DS_NAIVE_MAX_FACES: usize = 100_000;
+
 /// Counters of one conversion (one component, or the totals): the paper's Table 4.3
 /// columns (a)–(e) plus the work of each step.
 #[derive(Serialize, Debug, Clone)]
@@ -239,6 +242,20 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
     drop(faces);
     let dropped_vertices = surfaces.dropped_vertices.len();
     let algo: Algorithm = a.algo.into();
+    if algo == Algorithm::DsNaive {
+        // O(F²): about F²/4 node visits, minutes beyond this size.
+        if let Some(c) = surfaces
+            .components
+            .iter()
+            .find(|c| c.tri.face_count() > DS_NAIVE_MAX_FACES)
+        {
+            return Err(CliError::Input(format!(
+                "{}: --algo ds-naive is quadratic and refuses components above {DS_NAIVE_MAX_FACES} faces (this one has {}); use --algo frink-lct",
+                a.input.display(),
+                c.tri.face_count()
+            )));
+        }
+    }
     let options = Options { seed: a.seed };
     let n = surfaces.components.len();
     let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));

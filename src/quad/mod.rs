@@ -39,6 +39,12 @@ pub enum Algorithm {
     Sg,
     /// Edmonds on the whole dual graph ([`matching`]).
     Matching,
+    /// Frink's reduction with the naive DFS strategy ([`frink::Naive`], O(F²); the
+    /// reference of the tri-quad paper's DS route). Perfect directly: no completion.
+    DsNaive,
+    /// Frink's reduction with the link–cut cover-count strategy ([`frink::CoverTree`]).
+    /// Perfect directly: no completion.
+    FrinkLct,
 }
 
 impl Algorithm {
@@ -49,6 +55,8 @@ impl Algorithm {
             Algorithm::Ps => "ps",
             Algorithm::Sg => "sg",
             Algorithm::Matching => "matching",
+            Algorithm::DsNaive => "ds-naive",
+            Algorithm::FrinkLct => "frink-lct",
         }
     }
 }
@@ -172,6 +180,22 @@ pub fn convert_observed(
         Algorithm::Matching => {
             let p = matching::initial_pairing(&tri);
             (tri, p, 0)
+        }
+        Algorithm::DsNaive | Algorithm::FrinkLct => {
+            let p = if algorithm == Algorithm::DsNaive {
+                frink::perfect_matching(&tri)
+            } else {
+                frink::perfect_matching_with(&tri, &mut frink::CoverTree::new()).0
+            };
+            // Perfect by Frink's construction: (c) = 0 and no completion, (d) = 0.
+            let mut stats = initial_stats(&tri, &p, started.elapsed().as_secs_f64());
+            stats.total_seconds = stats.initial_seconds;
+            return Quadrangulation {
+                algorithm,
+                tri,
+                pairing: p,
+                stats,
+            };
         }
     };
     let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());

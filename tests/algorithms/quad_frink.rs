@@ -8,7 +8,7 @@
 
 use crate::{common, harness};
 use contractible::gen::{random, RandomParams, SurfaceKind};
-use contractible::quad::frink::{self, Naive};
+use contractible::quad::frink::{self, CoverTree, Naive};
 use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
 use contractible::{Surfaces, Triangulation};
 
@@ -170,4 +170,73 @@ fn shared_closed_mesh_components() {
         (339, 65),
         "components covered, skipped"
     );
+}
+
+/// Runs the link–cut cover-count strategy on `t` and checks the result independently
+/// (the harness check always, petgraph's matching size up to [`MAX_FACES`] faces).
+fn run_cover(t: &Triangulation, label: &str) -> frink::CoverCounters {
+    let mut s = CoverTree::new();
+    let (p, stats) = frink::perfect_matching_with(t, &mut s);
+    if t.face_count() <= MAX_FACES {
+        check(t, &p, label);
+    } else {
+        let q = Quadrangulation {
+            algorithm: Algorithm::FrinkLct,
+            tri: t.clone(),
+            pairing: p.clone(),
+            stats: initial_stats(t, &p, 0.0),
+        };
+        harness::check_quadrangulation(t, &q, label);
+    }
+    assert_eq!(stats.reductions, t.face_count() / 2 - 1, "{label}");
+    if t.face_count() <= MAX_FACES {
+        let (again, _) = frink::perfect_matching_with(t, &mut CoverTree::new());
+        assert!(again == p, "{label}: differs between runs");
+    }
+    s.counters()
+}
+
+/// The link–cut strategy on every component of every shared closed mesh (no size limit:
+/// up to 199k faces), random surfaces of every kind and the standard ones.
+#[test]
+fn cover_tree_on_every_shared_closed_mesh_and_random_surfaces() {
+    let rows: Vec<_> = common::manifest()
+        .into_iter()
+        .filter(|r| r.set == "closed")
+        .collect();
+    let (mut components, mut faces) = (0usize, 0usize);
+    let mut fallbacks = 0;
+    let clock = std::time::Instant::now();
+    for row in &rows {
+        let path = common::shared_dir().join("meshes").join(&row.file);
+        let mesh =
+            contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        for (k, comp) in s.components.iter().enumerate() {
+            let c = run_cover(&comp.tri, &format!("{}#{k}", row.name));
+            fallbacks += c.naive_steps;
+            components += 1;
+            faces += comp.tri.face_count();
+        }
+    }
+    eprintln!(
+        "frink-lct: {components} components ({faces} faces) of {} closed meshes in {:.1} s, {fallbacks} naive steps",
+        rows.len(),
+        clock.elapsed().as_secs_f64()
+    );
+    assert_eq!(components, 339 + 65, "every component");
+    let kinds = (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable));
+    for kind in kinds {
+        for (seed, min_faces) in [(1u64, 200usize), (2, 3_000)] {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces,
+                flip_percent: 30,
+                seed,
+            });
+            run_cover(&t, &format!("{kind:?} seed {seed}"));
+        }
+    }
 }

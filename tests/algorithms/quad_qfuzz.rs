@@ -182,6 +182,10 @@ fn library_reproduces_every_quad_vector_exactly() {
                 Algorithm::Ps => quad::pulli_segal::initial_pairing(&tri, &opts),
                 Algorithm::Sg => quad::greedy::initial_pairing(&tri, &opts),
                 Algorithm::Matching => quad::matching::initial_pairing(&tri),
+                Algorithm::DsNaive => quad::frink::perfect_matching(&tri),
+                Algorithm::FrinkLct => {
+                    quad::frink::perfect_matching_with(&tri, &mut quad::frink::CoverTree::new()).0
+                }
             };
             assert_eq!(
                 pairs_json(&initial),

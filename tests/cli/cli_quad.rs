@@ -13,7 +13,7 @@ use std::path::Path;
 
 use cli_common::{int, load, meshes, run, run_json, Scratch};
 
-const ALGOS: [&str; 4] = ["lrs", "ps", "sg", "matching"];
+const ALGOS: [&str; 6] = ["lrs", "ps", "sg", "matching", "ds-naive", "frink-lct"];
 
 /// Vertex positions and quads of an ASCII OFF file.
 fn read_quad_off(path: &Path) -> (Vec<[f64; 3]>, Vec<[u32; 4]>) {
@@ -144,6 +144,13 @@ fn check_quad(input: &Path, algo: &str, dir: &Scratch) {
     if algo != "lrs" {
         assert_eq!(int(&j, "flips"), 0, "{label}: only LRS flips");
     }
+    if algo == "ds-naive" || algo == "frink-lct" {
+        // Frink's reduction is perfect by construction: (c) = 0, no completion, (d) = 0.
+        assert_eq!(int(&j, "initial_unpaired"), 0, "{label}: (c)");
+        assert_eq!(j["completion_seconds"].as_f64(), Some(0.0), "{label}: (d)");
+        assert_eq!(int(&j, "augmenting_paths"), 0, "{label}");
+        assert_eq!(j["initial_paired_percent"].as_f64(), Some(100.0), "{label}");
+    }
 
     let (positions, quads) = read_quad_off(&out);
     assert_eq!(
@@ -265,6 +272,43 @@ fn non_orientable_inputs_convert_too() {
     }
 }
 
+/// `--algo ds-naive` is quadratic: a component above 100,000 faces is refused up front
+/// (exit 2, the size and the alternative named), and `frink-lct` converts it.
+#[test]
+fn ds_naive_refuses_large_components() {
+    let dir = Scratch::new("quad-ds-naive");
+    let path = dir.path("big.off");
+    let out = run(&[
+        OsStr::new("gen"),
+        OsStr::new("random"),
+        OsStr::new("--faces"),
+        OsStr::new("100100"),
+        OsStr::new("-o"),
+        path.as_os_str(),
+    ]);
+    assert!(out.status.success());
+    let out = run(&[
+        OsStr::new("quad"),
+        path.as_os_str(),
+        OsStr::new("--algo"),
+        OsStr::new("ds-naive"),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("ds-naive") && err.contains("100000") && err.contains("frink-lct"),
+        "{err}"
+    );
+    let j = run_json(&[
+        OsStr::new("quad"),
+        path.as_os_str(),
+        OsStr::new("--algo"),
+        OsStr::new("frink-lct"),
+    ]);
+    assert_eq!(j["verified"], true);
+    assert_eq!(int(&j, "quads") as usize, int(&j, "faces") as usize / 2);
+}
+
 #[test]
 fn open_and_non_manifold_meshes_are_refused_with_their_location() {
     let dir = Scratch::new("quad-invalid");
@@ -289,12 +333,13 @@ fn open_and_non_manifold_meshes_are_refused_with_their_location() {
 
 #[test]
 fn demo_converts_its_surfaces_with_every_algorithm() {
+    // The demo runs the paper's initial-pairing algorithms (not Frink's).
     let j = run_json(&["demo", "--algos", "rs"]);
     assert_eq!(j["verified"], true);
     for input in j["inputs"].as_array().expect("inputs") {
         let quads = input["quad_runs"].as_array().expect("quad_runs");
         let names: Vec<&str> = quads.iter().map(|q| q["algo"].as_str().unwrap()).collect();
-        assert_eq!(names, ALGOS);
+        assert_eq!(names, ALGOS[..4]);
         for q in quads {
             assert_eq!(q["verified"], true);
             assert_eq!(int(q, "quads") * 2, int(q, "faces"));

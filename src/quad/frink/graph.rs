@@ -166,6 +166,33 @@ impl Cubic {
         Some(Candidate { u, v, e, a, b, x })
     }
 
+    /// The reduction with edge `e` at live node `u` (`e` must be at `u`), if it is a valid
+    /// one: `e` simple, no loop at `u` or at its other end. O(1). Same neighbourhood order
+    /// as [`Cubic::candidate_at`] (the slots after `e`'s, cyclically).
+    pub fn candidate_for(&self, u: u32, e: u32) -> Option<Candidate> {
+        let s = self.slots[u as usize];
+        let i = s.iter().position(|&f| f == e)?;
+        let w = s.map(|f| self.other(f, u));
+        let v = w[i];
+        if w.contains(&u) || (0..3).any(|j| j != i && w[j] == v) {
+            return None;
+        }
+        let a = [s[(i + 1) % 3], s[(i + 2) % 3]];
+        let sv = self.slots[v as usize];
+        let j = sv.iter().position(|&f| f == e)?;
+        let b = [sv[(j + 1) % 3], sv[(j + 2) % 3]];
+        let x = [
+            self.other(a[0], u),
+            self.other(a[1], u),
+            self.other(b[0], v),
+            self.other(b[1], v),
+        ];
+        if x[2] == v || x[3] == v {
+            return None;
+        }
+        Some(Candidate { u, v, e, a, b, x })
+    }
+
     /// Replaces the first occurrence of `old` in the slots of `x` by `new`.
     fn replace_slot(&mut self, x: u32, old: u32, new: u32) {
         let s = &mut self.slots[x as usize];

@@ -38,19 +38,31 @@
 //!    above, so after each lift the matching is perfect on the then-current graph.
 //!
 //! # Strategies
-//! The choice between `H1` and `H2` is a [`Strategy`]. [`Naive`] is the reference:
-//! it applies `H1` tentatively and tests it by one iterative DFS lowpoint computation
-//! (connected and bridgeless), else tests `H2` the same way: O(n) per step.
-//! (Biedl–Bose–Demaine–Lubiw decide in O(log⁴ n) amortised, Diks–Stańczyk in O(log² n);
-//! not implemented yet.)
+//! The choice between `H1` and `H2` is a [`Strategy`], which may also pick the reduction
+//! edge itself ([`Strategy::pick`]; step 1 above is the default). [`Naive`] is the
+//! reference: it applies `H1` tentatively and tests it by one iterative DFS lowpoint
+//! computation (connected and bridgeless), else tests `H2` the same way: O(n) per step.
+//! [`CoverTree`] (module `cover`, this crate's own design in the spirit of
+//! Gawrychowski–Wasylkiewicz, ESA 2024, whose case analysis could not be read here; it is
+//! not their algorithm) keeps a spanning tree of the current graph in a link–cut tree
+//! (module `lct`) with a cover count per tree edge, picks reductions for which the tree
+//! changes only locally and decides them exactly in O(log n) amortised; it falls back to
+//! a tree rebuild and a naive step when no such reduction is found (never observed on
+//! the B family or the shared meshes). Biedl–Bose–Demaine–Lubiw (O(log⁴ n) amortised,
+//! dynamic 2-edge-connectivity) and Diks–Stańczyk (O(log² n), dynamic connectivity plus
+//! dynamic trees; only the abstract and slides were readable) are not implemented.
 //!
 //! # Complexity
 //! With [`Naive`]: O(n²) time in the worst case and in practice (n/2 reductions, each
 //! one or two DFS of the current graph, which shrinks by two nodes per step: about
 //! n²/4 node visits), plus O(n·α(n)) per case-(iv) lift for the Edmonds search (bounded
-//! by the part of the graph it labels). Memory: O(n): the graph (8 bytes per edge,
-//! `5n/2 − 2` edges ever created), one 72-byte record per reduction, the DFS and search
-//! scratch (about 30 bytes per node).
+//! by the part of the graph it labels). With [`CoverTree`]: O(log n) amortised per
+//! reduction plus O(n) per fallback step, O(n²) in the worst case, O(n log n) when no
+//! fallback occurs; the case-(iv) searches come on top with either strategy (about a
+//! quarter of the time on the B family, docs/benchmarks.md). Memory: O(n): the graph
+//! (8 bytes per edge, `5n/2 − 2` edges ever created), one 72-byte record per reduction,
+//! the DFS and search scratch (about 30 bytes per node); [`CoverTree`] adds about 80
+//! bytes per node.
 //!
 //! # Determinism
 //! No randomness: the output is a function of the graph (node and edge ids, slot order),
@@ -72,12 +84,16 @@
 //! augmenting path between the ends of `p` in `H_k − p` (see module `cycle`). Which edge
 //! is reduced is left open (BBDL choose an edge next to a forbidden edge so that (iv)
 //! never occurs; this reference takes the first simple edge of the smallest live node, so
-//! (iv) does occur and is exercised). Recorded in `spec/ERRATA.md`.
+//! (iv) does occur and is exercised; [`CoverTree`] picks tree-stable edges, where (iv)
+//! occurs too). Recorded in `spec/ERRATA.md` (T9–T12).
 
+mod cover;
 mod cycle;
 mod graph;
+mod lct;
 mod spec;
 
+pub use cover::{CoverCounters, CoverTree};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};
 
 use super::Pairing;
@@ -131,6 +147,15 @@ pub trait Strategy {
     /// Called once before the first reduction, with the input graph.
     fn start(&mut self, g: &Cubic) {
         let _ = g;
+    }
+
+    /// The next reduction, if the strategy chooses it itself (Frink leaves the edge
+    /// free); `None`: [`solve`]'s default, the first simple edge of the smallest live
+    /// node ([`Cubic::candidate_at`]). Must be a valid reduction of `g` (e.g. from
+    /// [`Cubic::candidate_for`]); [`Strategy::choose`] is then called with it.
+    fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
+        let _ = g;
+        None
     }
 
     /// A reconnection of the reduction `cand` of `g` whose result is connected and
@@ -231,9 +256,12 @@ pub fn solve<S: Strategy>(mut g: Cubic, strategy: &mut S) -> Result<Solution, Fr
         while !g.is_alive(cursor) {
             cursor += 1;
         }
-        let cand = g
-            .candidate_at(cursor)
-            .ok_or(FrinkError::NoReductionEdge(cursor))?;
+        let cand = match strategy.pick(&g) {
+            Some(c) => c,
+            None => g
+                .candidate_at(cursor)
+                .ok_or(FrinkError::NoReductionEdge(cursor))?,
+        };
         let recon = strategy
             .choose(&mut g, &cand)
             .ok_or(FrinkError::NoReconnection {

@@ -482,3 +482,182 @@ fn perfect_matching_pairs_the_standard_surfaces() {
         assert_eq!(p.check(&t), Ok(()));
     }
 }
+
+/// [`CoverTree`] checked at every step against the definition through the naive DFS:
+/// its reconnection must be connected and bridgeless (so where only one of `H1`, `H2`
+/// is, it is that one).
+#[derive(Default)]
+struct Checked {
+    inner: CoverTree,
+    dfs: Dfs,
+    steps: u64,
+    single: u64,
+    /// Broken variant for the test of this check: the other reconnection whenever only
+    /// one is valid.
+    flip: bool,
+}
+
+impl Strategy for Checked {
+    fn start(&mut self, g: &Cubic) {
+        self.inner.start(g);
+    }
+
+    fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
+        self.inner.pick(g)
+    }
+
+    fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+        let mut chosen = self.inner.choose(g, cand)?;
+        let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
+            let r = g.reduce(cand, recon);
+            let ok = self.dfs.connected_bridgeless(g, cand.x[0]);
+            g.undo(&r);
+            ok
+        });
+        if self.flip && ok[0] != ok[1] {
+            // The broken variant: the other reconnection, where it is the invalid one.
+            chosen = match chosen {
+                Reconnection::H1 => Reconnection::H2,
+                Reconnection::H2 => Reconnection::H1,
+            };
+        }
+        let k = usize::from(chosen == Reconnection::H2);
+        assert!(
+            ok[k],
+            "CoverTree chose a reconnection with a bridge: {cand:?}"
+        );
+        self.steps += 1;
+        self.single += u64::from(ok[0] != ok[1]);
+        Some(chosen)
+    }
+
+    fn applied(&mut self, g: &Cubic, r: &Reduction) {
+        self.inner.applied(g, r);
+    }
+}
+
+/// Runs the checked cover-tree strategy on `g` (connected and bridgeless) and checks the
+/// matching; returns the strategy.
+fn run_cover(g: &Cubic, label: &str) -> Checked {
+    let mut s = Checked::default();
+    let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("{label}: {e}"));
+    assert_perfect(g, &sol.mate, label);
+    assert_eq!(sol.stats.reductions, g.node_count() / 2 - 1, "{label}");
+    s
+}
+
+#[test]
+fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
+    for (name, g) in small_graphs() {
+        run_cover(&g, name);
+    }
+    let mut rng = Rng::new(23);
+    let (mut graphs, mut steps, mut single) = (0, 0, 0);
+    let mut counters = CoverCounters::default();
+    for round in 0..3000 {
+        let n = 2 * (1 + rng.index(20));
+        let g = random_cubic(n, &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let s = run_cover(&g, &format!("round {round}"));
+        graphs += 1;
+        steps += s.steps;
+        single += s.single;
+        let c = s.inner.counters();
+        counters.s1 += c.s1;
+        counters.s2 += c.s2;
+        counters.s4 += c.s4;
+        counters.naive_steps += c.naive_steps;
+    }
+    eprintln!("cover tree: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {counters:?}");
+    assert!(
+        graphs > 500 && single > 100,
+        "{graphs} graphs, {single} forced steps"
+    );
+    assert!(
+        counters.s1 > 0 && counters.s2 > 0 && counters.s4 > 0,
+        "{counters:?}"
+    );
+}
+
+/// The agreement check can fail: with the choice flipped it catches the first step where
+/// only the strategy's reconnection was valid.
+#[test]
+fn the_agreement_check_catches_a_flipped_choice() {
+    let mut rng = Rng::new(23);
+    let mut caught = 0;
+    for _ in 0..200 {
+        let g = random_cubic(2 * (3 + rng.index(10)), &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let r = std::panic::catch_unwind(|| {
+            let mut s = Checked {
+                flip: true,
+                ..Checked::default()
+            };
+            let _ = solve(g.clone(), &mut s);
+        });
+        if let Err(e) = r {
+            let m = e
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            assert!(m.contains("chose a reconnection with a bridge"), "{m}");
+            caught += 1;
+        }
+    }
+    assert!(caught > 20, "caught {caught}");
+}
+
+/// The fallback (no tree-stable configuration: rebuild, then a naive step, then a
+/// rebuild), forced on every step: still every choice valid and the matching perfect.
+#[test]
+fn cover_tree_fallback_steps() {
+    let mut rng = Rng::new(5);
+    let mut graphs = 0;
+    for round in 0..400 {
+        let n = 2 * (1 + rng.index(10));
+        let g = random_cubic(n, &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let mut s = Checked::default();
+        s.inner.only_fallback = true;
+        let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
+        assert_perfect(&g, &sol.mate, &format!("round {round}"));
+        let c = s.inner.counters();
+        assert_eq!(c.naive_steps as usize, sol.stats.reductions);
+        assert_eq!(c.s1 + c.s2 + c.s4, 0);
+        graphs += 1;
+    }
+    assert!(graphs > 50);
+}
+
+/// Duals of random closed surfaces, orientable genus 0..8 and non-orientable: every
+/// step checked, the pairing perfect.
+#[test]
+fn cover_tree_on_random_surfaces() {
+    use crate::gen::{random, RandomParams, SurfaceKind};
+    let kinds = (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable));
+    for kind in kinds {
+        for seed in 1..=2u64 {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces: 400,
+                flip_percent: 30,
+                seed,
+            });
+            let (g, _) = dual_graph(&t).expect("dual");
+            let s = run_cover(&g, &format!("{kind:?} seed {seed}"));
+            assert!(s.steps > 0);
+            let (p, _) = perfect_matching_with(&t, &mut CoverTree::new());
+            assert!(p.is_perfect(&t), "{kind:?} seed {seed}");
+            assert_eq!(p.check(&t), Ok(()));
+        }
+    }
+}

@@ -1,0 +1,73 @@
+//! Frink's reduction on paper family members (`B0`…`B9`, `C0`…`C7`; the biggest
+//! component): wall time of `frink::solve` on the dual graph with the link–cut
+//! cover-count strategy (and, with `--naive`, the naive one), the run's counters and the
+//! strategy's (how many steps were tree-stable, how many rebuilds / naive steps).
+//!
+//! Wall and CPU time of the thread (which means more on a shared machine).
+//!
+//! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive]`
+
+use std::time::Instant;
+
+use contractible::gen::paper_family;
+use contractible::quad::frink::{self, CoverTree, Naive};
+use contractible::Surfaces;
+
+fn main() {
+    let mut names = Vec::new();
+    let mut naive = false;
+    for a in std::env::args().skip(1) {
+        if a == "--naive" {
+            naive = true;
+        } else {
+            names.push(a);
+        }
+    }
+    for name in names {
+        let mut c = name.chars();
+        let group = c.next().expect("member name");
+        let mesh = paper_family(group, c.as_str().parse().expect("member index"));
+        let s = Surfaces::from_mesh(&mesh).expect("closed surface");
+        let tri = s
+            .components
+            .into_iter()
+            .max_by_key(|c| c.tri.face_count())
+            .expect("a component")
+            .tri;
+        let f = tri.face_count();
+        let (g, _) = frink::dual_graph(&tri).expect("dual");
+        let nlogn = f as f64 * (f as f64).log2();
+        let mut lct = CoverTree::new();
+        let (t, c0) = (Instant::now(), cpu());
+        let sol = frink::solve(g.clone(), &mut lct).expect("bridgeless");
+        let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
+        println!(
+            "{name}: F {f} frink-lct {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2 F; {:?}; {:?}",
+            cpu_secs * 1e9 / nlogn,
+            sol.stats,
+            lct.counters()
+        );
+        if naive {
+            let (t, c0) = (Instant::now(), cpu());
+            let sol = frink::solve(g, &mut Naive::new()).expect("bridgeless");
+            let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
+            println!(
+                "{name}: F {f} ds-naive {secs:.3} s (cpu {cpu_secs:.2} s), {:.2} ns cpu per F²; case (iv) {}",
+                cpu_secs * 1e9 / (f as f64 * f as f64),
+                sol.stats.case_iv
+            );
+        }
+    }
+}
+
+/// CPU seconds of the calling thread (from `/proc/thread-self/stat`, 10 ms ticks; 0
+/// where that file does not exist), as `examples/quad_profile.rs`.
+fn cpu() -> f64 {
+    let Ok(stat) = std::fs::read_to_string("/proc/thread-self/stat") else {
+        return 0.0;
+    };
+    let rest = stat.rsplit(')').next().unwrap_or("");
+    let f: Vec<&str> = rest.split_whitespace().collect();
+    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
+    (ticks(11) + ticks(12)) / 100.0
+}

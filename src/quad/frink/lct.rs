@@ -1,0 +1,445 @@
+//! A link–cut tree (Sleator–Tarjan 1983, splay-based) on flat arrays with `u32` indices:
+//! a forest of rooted-at-will trees supporting link, cut, re-rooting, and on the path
+//! between two nodes "add `d` to every value" and "minimum value".
+//!
+//! # Guarantees
+//! Every operation keeps the represented forest and the node values exactly as a naive
+//! forest would (tested against one in the unit tests below, exhaustively on random
+//! operation sequences). [`Lct::link`] and [`Lct::cut`] assume their preconditions (the
+//! nodes in different trees; an existing edge) and check them with `debug_assert!`.
+//!
+//! # Complexity
+//! O(log n) amortised per operation (splay trees with the access lemma); memory 25 bytes
+//! per node. No recursion: push-downs along a splay path use an explicit stack.
+
+/// No node.
+const NIL: u32 = u32::MAX;
+
+/// One node: splay children, splay parent or path-parent (told apart by
+/// [`Lct::is_root`]), its value, the minimum over its splay subtree (its part of the
+/// preferred path), and the pending addition / reversal of that subtree (already applied
+/// to this node). Packed in one record so that a node costs one cache line.
+#[derive(Clone, Copy, Debug)]
+struct Node {
+    ch: [u32; 2],
+    par: u32,
+    val: i32,
+    min: i32,
+    add: i32,
+    rev: bool,
+}
+
+impl Node {
+    fn single(v: i32, par: u32) -> Node {
+        Node {
+            ch: [NIL; 2],
+            par,
+            val: v,
+            min: v,
+            add: 0,
+            rev: false,
+        }
+    }
+}
+
+/// Link–cut forest over nodes `0..n` with an `i32` value per node.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Lct {
+    t: Vec<Node>,
+    stack: Vec<u32>,
+}
+
+impl Lct {
+    /// `n` single-node trees, node `i` with value `vals[i]`.
+    #[cfg(test)]
+    pub(crate) fn new(vals: &[i32]) -> Self {
+        Lct {
+            t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
+            stack: Vec::new(),
+        }
+    }
+
+    /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root), node `i`
+    /// with value `vals[i]`; `parent` must describe a forest. O(n): every node starts as
+    /// its own preferred path, with its tree parent as path-parent.
+    pub(crate) fn with_parents(vals: &[i32], parent: &[u32]) -> Self {
+        debug_assert_eq!(parent.len(), vals.len());
+        Lct {
+            t: vals
+                .iter()
+                .zip(parent)
+                .map(|(&v, &p)| Node::single(v, p))
+                .collect(),
+            stack: Vec::new(),
+        }
+    }
+
+    /// The value of `x` once it is cut off (a single-node tree).
+    pub(crate) fn isolated_value(&self, x: u32) -> i32 {
+        self.t[x as usize].val
+    }
+
+    fn is_root(&self, x: u32) -> bool {
+        let p = self.t[x as usize].par;
+        p == NIL || (self.t[p as usize].ch[0] != x && self.t[p as usize].ch[1] != x)
+    }
+
+    fn apply_add(&mut self, x: u32, d: i32) {
+        if x != NIL {
+            let n = &mut self.t[x as usize];
+            n.val += d;
+            n.min += d;
+            n.add += d;
+        }
+    }
+
+    fn apply_rev(&mut self, x: u32) {
+        if x != NIL {
+            let n = &mut self.t[x as usize];
+            n.ch.swap(0, 1);
+            n.rev ^= true;
+        }
+    }
+
+    fn push(&mut self, x: u32) {
+        let n = &mut self.t[x as usize];
+        let [a, b] = n.ch;
+        let (d, r) = (n.add, n.rev);
+        n.add = 0;
+        n.rev = false;
+        if d != 0 {
+            self.apply_add(a, d);
+            self.apply_add(b, d);
+        }
+        if r {
+            self.apply_rev(a);
+            self.apply_rev(b);
+        }
+    }
+
+    fn pull(&mut self, x: u32) {
+        let [a, b] = self.t[x as usize].ch;
+        let mut m = self.t[x as usize].val;
+        if a != NIL {
+            m = m.min(self.t[a as usize].min);
+        }
+        if b != NIL {
+            m = m.min(self.t[b as usize].min);
+        }
+        self.t[x as usize].min = m;
+    }
+
+    fn rotate(&mut self, x: u32) {
+        let p = self.t[x as usize].par;
+        let g = self.t[p as usize].par;
+        let dir = usize::from(self.t[p as usize].ch[1] == x);
+        let b = self.t[x as usize].ch[dir ^ 1];
+        if !self.is_root(p) {
+            let gi = g as usize;
+            if self.t[gi].ch[0] == p {
+                self.t[gi].ch[0] = x;
+            } else {
+                self.t[gi].ch[1] = x;
+            }
+        }
+        self.t[x as usize].par = g;
+        self.t[x as usize].ch[dir ^ 1] = p;
+        self.t[p as usize].par = x;
+        self.t[p as usize].ch[dir] = b;
+        if b != NIL {
+            self.t[b as usize].par = p;
+        }
+        self.pull(p);
+        self.pull(x);
+    }
+
+    fn splay(&mut self, x: u32) {
+        // Push pending tags from the splay root down to x first (iteratively).
+        self.stack.clear();
+        let mut y = x;
+        self.stack.push(y);
+        while !self.is_root(y) {
+            y = self.t[y as usize].par;
+            self.stack.push(y);
+        }
+        while let Some(z) = self.stack.pop() {
+            self.push(z);
+        }
+        while !self.is_root(x) {
+            let p = self.t[x as usize].par;
+            if !self.is_root(p) {
+                let g = self.t[p as usize].par;
+                let zigzig = (self.t[g as usize].ch[0] == p) == (self.t[p as usize].ch[0] == x);
+                self.rotate(if zigzig { p } else { x });
+            }
+            self.rotate(x);
+        }
+    }
+
+    /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay
+    /// tree, which holds exactly that path.
+    fn access(&mut self, x: u32) {
+        let mut last = NIL;
+        let mut y = x;
+        while y != NIL {
+            self.splay(y);
+            self.t[y as usize].ch[1] = last;
+            self.pull(y);
+            last = y;
+            y = self.t[y as usize].par;
+        }
+        self.splay(x);
+    }
+
+    /// Makes `x` the root of its tree.
+    pub(crate) fn make_root(&mut self, x: u32) {
+        self.access(x);
+        self.apply_rev(x);
+    }
+
+    fn find_root(&mut self, x: u32) -> u32 {
+        self.access(x);
+        let mut y = x;
+        loop {
+            self.push(y);
+            let l = self.t[y as usize].ch[0];
+            if l == NIL {
+                break;
+            }
+            y = l;
+        }
+        self.splay(y);
+        y
+    }
+
+    /// Whether `x` and `y` are in the same tree.
+    pub(crate) fn connected(&mut self, x: u32, y: u32) -> bool {
+        x == y || self.find_root(x) == self.find_root(y)
+    }
+
+    /// Adds the edge `x`–`y`; they must be in different trees.
+    pub(crate) fn link(&mut self, x: u32, y: u32) {
+        debug_assert!(!self.connected(x, y), "link inside one tree");
+        self.make_root(x);
+        self.t[x as usize].par = y;
+    }
+
+    /// Removes the edge `x`–`y`, which must exist.
+    pub(crate) fn cut(&mut self, x: u32, y: u32) {
+        self.make_root(x);
+        self.access(y);
+        debug_assert!(
+            self.t[y as usize].ch[0] == x && self.t[x as usize].ch[1] == NIL,
+            "cut of a non-edge"
+        );
+        self.t[y as usize].ch[0] = NIL;
+        self.t[x as usize].par = NIL;
+        self.pull(y);
+        // Leave x's own value exact (its subtree tags are pushed on the next splay).
+        self.push(x);
+    }
+
+    /// Replaces the tree path `y`…`z` (`y ≠ z`, not adjacent) by `y`–`k`–`z`: every node
+    /// strictly between them becomes a single-node tree (keeping its value) and `k`, a
+    /// single-node tree before, gets the value of `copy_from`, one of those interior
+    /// nodes. The interior nodes must have no tree neighbours off the path (they would
+    /// be cut off with it). O(log n) amortised plus the path length.
+    pub(crate) fn replace_path(&mut self, y: u32, z: u32, k: u32, copy_from: u32) {
+        self.make_root(y);
+        self.access(z);
+        // z's splay tree now holds exactly the path y…z, and y is the tree root, so the
+        // splay root z has no path-parent. Push every tag down, collect the interior.
+        let mut todo = std::mem::take(&mut self.stack);
+        let mut interior: Vec<u32> = Vec::new();
+        todo.clear();
+        todo.push(z);
+        while let Some(a) = todo.pop() {
+            self.push(a);
+            for c in self.t[a as usize].ch {
+                if c != NIL {
+                    todo.push(c);
+                }
+            }
+            if a != y && a != z {
+                interior.push(a);
+            }
+        }
+        self.stack = todo;
+        debug_assert!(
+            interior.contains(&copy_from),
+            "copy_from not inside the path"
+        );
+        let v = self.t[copy_from as usize].val;
+        for a in interior {
+            let val = self.t[a as usize].val;
+            self.t[a as usize] = Node::single(val, NIL);
+        }
+        debug_assert!(self.t[k as usize].par == NIL && self.t[k as usize].ch == [NIL; 2]);
+        for end in [y, z] {
+            let n = &mut self.t[end as usize];
+            n.ch = [NIL; 2];
+            n.par = k;
+            n.min = n.val;
+        }
+        self.t[k as usize] = Node {
+            ch: [y, z],
+            ..Node::single(v, NIL)
+        };
+        self.pull(k);
+    }
+
+    /// Exposes the `x`–`y` path as one splay tree rooted at `y`; they must be connected.
+    fn expose(&mut self, x: u32, y: u32) {
+        self.make_root(x);
+        self.access(y);
+    }
+
+    /// Adds `d` to the value of every node on the `x`–`y` path (both included).
+    pub(crate) fn path_add(&mut self, x: u32, y: u32, d: i32) {
+        self.expose(x, y);
+        self.apply_add(y, d);
+    }
+
+    /// Minimum value on the `x`–`y` path (both included).
+    pub(crate) fn path_min(&mut self, x: u32, y: u32) -> i32 {
+        self.expose(x, y);
+        self.t[y as usize].min
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Lct;
+
+    /// The naive forest: adjacency sets and values; path by BFS.
+    struct Naive {
+        adj: Vec<Vec<u32>>,
+        val: Vec<i32>,
+    }
+
+    impl Naive {
+        fn path(&self, x: u32, y: u32) -> Option<Vec<u32>> {
+            let n = self.adj.len();
+            let mut prev = vec![u32::MAX; n];
+            let mut seen = vec![false; n];
+            let mut queue = std::collections::VecDeque::from([x]);
+            seen[x as usize] = true;
+            while let Some(a) = queue.pop_front() {
+                for &b in &self.adj[a as usize] {
+                    if !seen[b as usize] {
+                        seen[b as usize] = true;
+                        prev[b as usize] = a;
+                        queue.push_back(b);
+                    }
+                }
+            }
+            if !seen[y as usize] {
+                return None;
+            }
+            let mut p = vec![y];
+            let mut c = y;
+            while c != x {
+                c = prev[c as usize];
+                p.push(c);
+            }
+            Some(p)
+        }
+    }
+
+    /// A small deterministic generator (xorshift), so the test needs no dependency.
+    fn next(s: &mut u64) -> u64 {
+        *s ^= *s << 13;
+        *s ^= *s >> 7;
+        *s ^= *s << 17;
+        *s
+    }
+
+    #[test]
+    fn agrees_with_a_naive_forest_on_random_operations() {
+        let mut replaced = 0;
+        for seed in 1..=60u64 {
+            let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+            let n = 2 + (next(&mut s) % 14) as usize;
+            let vals: Vec<i32> = (0..n).map(|_| (next(&mut s) % 20) as i32).collect();
+            let mut lct = Lct::new(&vals);
+            let mut naive = Naive {
+                adj: vec![Vec::new(); n],
+                val: vals,
+            };
+            let mut edges: Vec<(u32, u32)> = Vec::new();
+            for _ in 0..400 {
+                let x = (next(&mut s) % n as u64) as u32;
+                let y = (next(&mut s) % n as u64) as u32;
+                let path = naive.path(x, y);
+                assert_eq!(lct.connected(x, y), path.is_some(), "seed {seed}");
+                match next(&mut s) % 6 {
+                    0 if path.is_none() => {
+                        lct.link(x, y);
+                        naive.adj[x as usize].push(y);
+                        naive.adj[y as usize].push(x);
+                        edges.push((x, y));
+                    }
+                    1 if !edges.is_empty() => {
+                        let k = (next(&mut s) % edges.len() as u64) as usize;
+                        let (a, b) = edges.swap_remove(k);
+                        if next(&mut s) % 2 == 0 {
+                            lct.cut(a, b);
+                        } else {
+                            lct.cut(b, a);
+                        }
+                        naive.adj[a as usize].retain(|&c| c != b);
+                        naive.adj[b as usize].retain(|&c| c != a);
+                    }
+                    3 if path.as_ref().is_some_and(|p| {
+                        p.len() >= 3
+                            && p[1..p.len() - 1]
+                                .iter()
+                                .all(|&c| naive.adj[c as usize].len() == 2)
+                    }) =>
+                    {
+                        // Replace the chain x…y by x–k–y, k an isolated node.
+                        let p = path.as_ref().expect("checked");
+                        let Some(k) = (0..n as u32).find(|&k| naive.adj[k as usize].is_empty())
+                        else {
+                            continue;
+                        };
+                        let from = p[1 + (next(&mut s) as usize) % (p.len() - 2)];
+                        lct.replace_path(x, y, k, from);
+                        replaced += 1;
+                        let v = naive.val[from as usize];
+                        for w in p.windows(2) {
+                            let (a, b) = (w[0], w[1]);
+                            naive.adj[a as usize].retain(|&c| c != b);
+                            naive.adj[b as usize].retain(|&c| c != a);
+                            edges.retain(|&e| e != (a, b) && e != (b, a));
+                        }
+                        naive.val[k as usize] = v;
+                        for (a, b) in [(x, k), (k, y)] {
+                            naive.adj[a as usize].push(b);
+                            naive.adj[b as usize].push(a);
+                            edges.push((a, b));
+                        }
+                    }
+                    2 if path.is_some() => {
+                        let d = (next(&mut s) % 7) as i32 - 3;
+                        lct.path_add(x, y, d);
+                        for &c in path.as_ref().into_iter().flatten() {
+                            naive.val[c as usize] += d;
+                        }
+                    }
+                    _ => {
+                        if let Some(p) = &path {
+                            let m = p.iter().map(|&c| naive.val[c as usize]).min();
+                            assert_eq!(Some(lct.path_min(x, y)), m, "seed {seed}");
+                        }
+                    }
+                }
+            }
+            // Every node's own value, read as the minimum of its one-node path.
+            for x in 0..n as u32 {
+                assert_eq!(lct.path_min(x, x), naive.val[x as usize], "seed {seed}");
+            }
+        }
+        assert!(replaced > 50, "replace_path exercised {replaced} times");
+    }
+}
