@@ -61,6 +61,10 @@ contracted is replaced by one vertex (--position). It is unrelated to the ε col
     /// (naive and nested, ε = 1 % of the bounding-box diagonal), verify.
     #[command(after_help = REDUCE_AFTER_HELP)]
     Demo(DemoArgs),
+    /// Run one task (info, reduce, quad or simplify) over many files in parallel: one
+    /// JSON line per file, in input order; a failing file never stops the batch.
+    #[command(after_help = BATCH_AFTER_HELP)]
+    Batch(BatchArgs),
     /// Print a shell completion script on stdout (e.g. `contractible completions bash >
     /// /etc/bash_completion.d/contractible`).
     Completions(CompletionsArgs),
@@ -68,6 +72,14 @@ contracted is replaced by one vertex (--position). It is unrelated to the ε col
     /// -l -`).
     Man,
 }
+
+/// How `batch` reports.
+const BATCH_AFTER_HELP: &str = "Each file runs as `contractible TASK FILE [-o \
+OUTDIR/NAME.TASK.EXT] [TASK OPTIONS]` would (the options after `--` go to the task's own \
+parser), quietly, one file per thread. Each line is {\"file\", \"task\", \"ok\", \
+\"result\": the task's --json report, \"error\": {\"kind\", \"exit_code\", \
+\"message\"}}; `info` on a broken mesh gives both (the problems and the error). Exit \
+code 0 when every file succeeded, 1 when any failed.";
 
 /// What the columns of `reduce` and `demo` mean.
 const REDUCE_AFTER_HELP: &str = "Columns (the RS paper's counters): ℓ is the number of \
@@ -534,4 +546,46 @@ pub struct DemoArgs {
     /// Algorithms to compare (comma-separated).
     #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Algo::Rs, Algo::Schipper, Algo::Brute])]
     pub algos: Vec<Algo>,
+}
+
+/// The tasks `batch` runs.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BatchTask {
+    /// `contractible info`.
+    Info,
+    /// `contractible reduce`.
+    Reduce,
+    /// `contractible quad`.
+    Quad,
+    /// `contractible simplify` (give --eps or --eps-rel after `--`).
+    Simplify,
+}
+
+#[derive(Args, Debug)]
+pub struct BatchArgs {
+    /// Directories (every .off/.obj/.ply/.stl file below them, optionally .gz), glob
+    /// patterns (quoted: `'meshes/**/*.stl'`) or files; sorted, duplicates removed.
+    #[arg(required = true, num_args = 1..)]
+    pub inputs: Vec<String>,
+    /// The task to run on every file.
+    #[arg(long, value_enum)]
+    pub task: BatchTask,
+    /// Write each output mesh under this directory (the input's path relative to the
+    /// inputs' common directory, the task before the extension: `x.reduce.off.gz`).
+    /// Without it, no mesh is written (`simplify` needs it).
+    #[arg(short, long, value_name = "OUTDIR")]
+    pub output: Option<PathBuf>,
+    /// Files processed at once (default: the number of CPUs).
+    #[arg(long, short = 'j')]
+    pub jobs: Option<usize>,
+    /// Write the JSON lines to this file instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub jsonl: Option<PathBuf>,
+    /// Skip the files that already have a line in the --jsonl file and append the others.
+    #[arg(long)]
+    pub resume: bool,
+    /// Options of the task, after `--` (e.g. `-- --algo brute --seed 3`,
+    /// `-- --eps-rel 0.01`).
+    #[arg(last = true, allow_hyphen_values = true)]
+    pub options: Vec<String>,
 }

@@ -304,7 +304,7 @@ struct ProblemJson {
 
 /// `info`'s result for a mesh that is not a surface, or for a polygon mesh.
 #[derive(Serialize, Debug)]
-struct DiagnosisReport {
+pub struct DiagnosisReport {
     file: String,
     /// Whether the faces form a union of surfaces (possibly with boundary).
     surface: bool,
@@ -611,17 +611,16 @@ impl DiagnosisReport {
     }
 }
 
-/// Prints the diagnosis (human or JSON) and returns the error for a non-surface.
-fn report_diagnosis(
+/// The diagnosis made final: a mesh the builder refused although the diagnosis accepts
+/// it (a case it does not classify) is never called a surface. Returns the report and,
+/// for a non-surface, the error.
+fn finish_diagnosis(
     mut report: DiagnosisReport,
     d: &Diagnosis,
     names: &Names,
     core_error: Option<String>,
-    ui: Ui,
-) -> Result<(), CliError> {
+) -> (DiagnosisReport, Option<CliError>) {
     if let (true, Some(e)) = (report.surface, &core_error) {
-        // The builder refused what the diagnosis accepts (a case it does not classify):
-        // never call such a mesh a surface.
         report.surface = false;
         report.closed = false;
         report.problems.push(ProblemJson {
@@ -637,25 +636,43 @@ fn report_diagnosis(
             }],
         });
     }
-    if ui.json {
-        print_json(&report)?;
-    } else if !ui.quiet {
-        report.print_human(d);
-    }
     if report.surface {
-        return Ok(());
+        return (report, None);
     }
     let mut summary = report.summary(d);
     if let Some(e) = core_error.filter(|_| summary.is_empty()) {
         summary = e;
     }
-    Err(CliError::Input(format!(
-        "{}: not a surface: {summary}",
-        names.shown
-    )))
+    let err = CliError::Input(format!("{}: not a surface: {summary}", names.shown));
+    (report, Some(err))
 }
 
-pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
+/// What `info` found: the description of a surface (with or without boundary), or the
+/// diagnosis of a mesh that is not one (or of a polygon mesh) with its error.
+pub enum Outcome {
+    /// A surface.
+    Surface(Box<Report>),
+    /// Every problem (or a polygon mesh's description); `error` is set for a non-surface.
+    Diagnosis {
+        /// The report.
+        report: Box<DiagnosisReport>,
+        /// What the human-readable listing needs.
+        diagnosis: Box<Diagnosis>,
+        /// The error (exit code 2) of a non-surface.
+        error: Option<CliError>,
+    },
+}
+
+/// Runs `info` without printing anything but warnings (unless quiet).
+pub fn compute(a: &InfoArgs, ui: Ui) -> Result<Outcome, CliError> {
+    let diagnosis = |report, d: Diagnosis, names: &Names, core| {
+        let (report, error) = finish_diagnosis(report, &d, names, core);
+        Outcome::Diagnosis {
+            report: Box::new(report),
+            diagnosis: Box::new(d),
+            error,
+        }
+    };
     let t = std::time::Instant::now();
     let loaded = meshio::load(&a.file, &a.input_opts, ui)?;
     if !loaded.poly.is_triangle_mesh() && !a.input_opts.triangulate {
@@ -669,7 +686,7 @@ pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
             loaded.welded,
             None,
         );
-        return report_diagnosis(report, &d, &loaded.names, None, ui);
+        return Ok(diagnosis(report, d, &loaded.names, None));
     }
     let welded = loaded.welded;
     let polygons_before = (!loaded.poly.is_triangle_mesh())
@@ -684,7 +701,7 @@ pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
             let soup = meshio::soup_hint(&mesh, &names);
             let report = DiagnosisReport::of(&d, &names, mesh.vertex_count, (3, 3), welded, soup);
             let core = meshio::build_error_message(&names, &e);
-            return report_diagnosis(report, &d, &names, Some(core), ui);
+            return Ok(diagnosis(report, d, &names, Some(core)));
         }
     };
     meshio::warn_soup_and_dropped(&mesh, &surfaces, &names, ui);
@@ -700,10 +717,30 @@ pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
         .input_opts
         .triangulate
         .then_some(polygons_before.unwrap_or(0));
-    if ui.json {
-        print_json(&report)?;
-    } else if !ui.quiet {
-        report.print_human(20);
+    Ok(Outcome::Surface(Box::new(report)))
+}
+
+pub fn run(a: &InfoArgs, ui: Ui) -> Result<(), CliError> {
+    match compute(a, ui)? {
+        Outcome::Surface(report) => {
+            if ui.json {
+                print_json(&report)?;
+            } else if !ui.quiet {
+                report.print_human(20);
+            }
+            Ok(())
+        }
+        Outcome::Diagnosis {
+            report,
+            diagnosis,
+            error,
+        } => {
+            if ui.json {
+                print_json(&report)?;
+            } else if !ui.quiet {
+                report.print_human(&diagnosis);
+            }
+            error.map_or(Ok(()), Err)
+        }
     }
-    Ok(())
 }

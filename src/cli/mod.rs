@@ -22,6 +22,7 @@ macro_rules! outln {
 }
 
 mod args;
+mod batch;
 mod convert;
 mod demo;
 mod docs;
@@ -139,6 +140,7 @@ pub fn main() -> ExitCode {
         args::Command::Quad(a) => quad::run(&a, ui),
         args::Command::Simplify(a) => simplify::run(&a, ui),
         args::Command::Demo(a) => demo::run(&a, ui),
+        args::Command::Batch(a) => batch::run(&a, ui),
         args::Command::Completions(a) => docs::completions(&a),
         args::Command::Man => docs::man(),
     };

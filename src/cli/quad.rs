@@ -205,7 +205,8 @@ fn verify_all(
     (verdicts, t.elapsed().as_secs_f64())
 }
 
-pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
+/// Runs the command without printing its report (warnings and bars follow `ui`).
+pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
     let output = match &a.output {
         Some(out) => {
             let o = meshio::check_output(out, a.output_format.map(Into::into), &[&a.input])?;
@@ -341,6 +342,11 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         seconds_write,
         seconds_write_pairs,
     };
+    Ok(report)
+}
+
+pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
+    let report = compute(a, ui)?;
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
@@ -349,7 +355,7 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
             "{} ({}): {} triangles -> {} quads; initial {:.4} s, {:.3} % paired ({} unpaired); \
              completion {:.4} s ({} augmenting paths, {} phases); total {:.4} s; {} flips",
             report.file,
-            algo.name(),
+            t.algo,
             t.faces,
             t.quads,
             t.initial_seconds,
@@ -364,7 +370,7 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         let mut steps = vec![
             format!("read {:.3} s", report.seconds_read),
             format!("check input {:.3} s", report.seconds_build),
-            format!("{} {:.3} s", algo.name(), t.total_seconds),
+            format!("{} {:.3} s", t.algo, t.total_seconds),
             format!("verify {:.3} s", report.seconds_verify),
         ];
         if let Some(w) = report.seconds_write {

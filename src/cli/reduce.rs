@@ -283,7 +283,8 @@ fn print_table(stats: &[ReduceStats], totals: &ReduceStats, max_rows: usize) {
     row("total".into(), totals);
 }
 
-pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
+/// Runs the command without printing its report (warnings and bars follow `ui`).
+pub fn compute(a: &ReduceArgs, ui: Ui) -> Result<ReduceReport, CliError> {
     let output = a
         .output
         .as_deref()
@@ -350,31 +351,41 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         seconds_verify,
         seconds_write,
     };
+    Ok(report)
+}
+
+pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
+    let report = compute(a, ui)?;
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {
-        outln!("{} ({}):", report.file, algo.name());
+        outln!("{} ({}):", report.file, report.totals.algo);
         print_table(&report.component_list, &report.totals, 20);
         outln!("{}", timings(&report));
         if let (Some(o), Some(_)) = (&report.output, report.seconds_write) {
             outln!("wrote {o}");
         }
     }
-    if report.totals.irreducible == Some(false) {
-        let bad: Vec<String> = report
-            .component_list
-            .iter()
-            .enumerate()
-            .filter(|(_, s)| s.irreducible == Some(false))
-            .map(|(i, _)| i.to_string())
-            .collect();
-        return Err(CliError::Failure(format!(
-            "{}: output of component(s) {} still has a contractible edge (independent link test); nothing written",
-            report.file,
-            bad.join(", ")
-        )));
+    failure(&report).map_or(Ok(()), Err)
+}
+
+/// The error of a report whose output failed the independent irreducibility check.
+pub fn failure(report: &ReduceReport) -> Option<CliError> {
+    if report.totals.irreducible != Some(false) {
+        return None;
     }
-    Ok(())
+    let bad: Vec<String> = report
+        .component_list
+        .iter()
+        .enumerate()
+        .filter(|(_, s)| s.irreducible == Some(false))
+        .map(|(i, _)| i.to_string())
+        .collect();
+    Some(CliError::Failure(format!(
+        "{}: output of component(s) {} still has a contractible edge (independent link test); nothing written",
+        report.file,
+        bad.join(", ")
+    )))
 }
 
 #[cfg(test)]

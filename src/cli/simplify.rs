@@ -248,7 +248,8 @@ fn checked_positions<'a>(
     Ok((positions, used))
 }
 
-pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
+/// Runs the command without printing its report (warnings and bars follow `ui`).
+pub fn compute(a: &SimplifyArgs, ui: Ui) -> Result<SimplifyReport, CliError> {
     let output = meshio::check_output(&a.output, a.output_format.map(Into::into), &[&a.input])?;
     if let Some(e) = a.eps {
         check_eps("--eps", "ε", e)?;
@@ -339,6 +340,11 @@ pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
         seconds_verify,
         seconds_write,
     };
+    Ok(report)
+}
+
+pub fn run(a: &SimplifyArgs, ui: Ui) -> Result<(), CliError> {
+    let report = compute(a, ui)?;
     if ui.json {
         print_json(&report)?;
     } else if !ui.quiet {

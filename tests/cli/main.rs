@@ -5,6 +5,7 @@ mod cli_common;
 #[path = "../common/mod.rs"]
 mod common;
 
+mod cli_batch;
 mod cli_boundary;
 mod cli_gen;
 mod cli_info;

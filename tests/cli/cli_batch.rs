@@ -1,0 +1,241 @@
+//! `contractible batch`: one line per file in input order, the task's own report (equal
+//! to the single-file command's), located errors that never stop the batch, outputs
+//! under OUTDIR, `--resume`, and the same lines whatever `--jobs`.
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+
+use crate::cli_common::{meshes, run, run_json, stderr, Scratch};
+
+/// The lines of a JSON-lines text.
+fn lines(text: &str) -> Vec<Value> {
+    text.lines()
+        .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}")))
+        .collect()
+}
+
+/// A JSON value without its timings (keys starting with `seconds` or ending in
+/// `_seconds`), recursively, so that two runs can be compared.
+fn untimed(v: &Value) -> Value {
+    match v {
+        Value::Object(m) => Value::Object(
+            m.iter()
+                .filter(|(k, _)| !k.starts_with("seconds") && !k.ends_with("_seconds"))
+                .map(|(k, v)| (k.clone(), untimed(v)))
+                .collect(),
+        ),
+        Value::Array(a) => Value::Array(a.iter().map(untimed).collect()),
+        v => v.clone(),
+    }
+}
+
+/// Every mesh file of `dir` (one level), sorted: what batch must list.
+fn files_of(dir: &Path) -> Vec<PathBuf> {
+    let mut v: Vec<PathBuf> = std::fs::read_dir(dir)
+        .expect("dir")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.to_string_lossy().ends_with(".off.gz"))
+        .collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
+    let d = Scratch::new("batch-all");
+    let jsonl = d.path("r.jsonl");
+    let out = run(&[
+        "batch".as_ref(),
+        meshes().as_os_str(),
+        "--task".as_ref(),
+        "reduce".as_ref(),
+        "--jsonl".as_ref(),
+        jsonl.as_os_str(),
+        "-j".as_ref(),
+        "2".as_ref(),
+    ]);
+    // Some files are invalid: exit 1, with a summary.
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert!(stderr(&out).contains("files failed"), "{}", stderr(&out));
+    let got = lines(&std::fs::read_to_string(&jsonl).expect("jsonl"));
+    let mut expected: Vec<PathBuf> = files_of(&meshes().join("closed"));
+    expected.extend(files_of(&meshes().join("invalid")));
+    expected.sort();
+    let names: Vec<String> = got
+        .iter()
+        .map(|l| l["file"].as_str().unwrap().to_string())
+        .collect();
+    let want: Vec<String> = expected.iter().map(|p| p.display().to_string()).collect();
+    assert_eq!(names, want);
+    for l in &got {
+        let file = l["file"].as_str().unwrap();
+        let invalid = file.contains("/invalid/");
+        assert_eq!(l["ok"], !invalid, "{l}");
+        assert_eq!(l["task"], "reduce");
+        if invalid {
+            let e = &l["error"];
+            assert_eq!(e["kind"], "input", "{l}");
+            assert_eq!(e["exit_code"], 2, "{l}");
+            let m = e["message"].as_str().unwrap();
+            assert!(m.starts_with(file), "{m}");
+            assert!(
+                m.contains("face") || m.contains("vertex") || m.contains("edge"),
+                "{m}"
+            );
+        } else {
+            assert_eq!(l["result"]["irreducible"], true, "{l}");
+        }
+    }
+    // The results are the single-file command's, for a spread of files.
+    for name in ["socket", "footbones", "tetrahedron", "two_objects"] {
+        let file = meshes().join("closed").join(format!("{name}.off.gz"));
+        let line = got
+            .iter()
+            .find(|l| l["file"] == file.display().to_string())
+            .expect("line");
+        let alone = run_json(&["reduce".as_ref(), file.as_os_str()]);
+        assert_eq!(untimed(&line["result"]), untimed(&alone), "{name}");
+    }
+}
+
+#[test]
+fn lines_do_not_depend_on_the_number_of_jobs_and_resume_completes_a_cut_run() {
+    let d = Scratch::new("batch-resume");
+    let pattern = meshes().join("closed").join("c*.off.gz");
+    let one = d.path("one.jsonl");
+    let two = d.path("two.jsonl");
+    for (jobs, path) in [("1", &one), ("2", &two)] {
+        let out = run(&[
+            "batch".as_ref(),
+            pattern.as_os_str(),
+            "--task".as_ref(),
+            "quad".as_ref(),
+            "--jsonl".as_ref(),
+            path.as_os_str(),
+            "-j".as_ref(),
+            jobs.as_ref(),
+            "--".as_ref(),
+            "--algo".as_ref(),
+            "sg".as_ref(),
+            "--seed".as_ref(),
+            "7".as_ref(),
+        ]);
+        assert!(out.status.success(), "{}", stderr(&out));
+    }
+    let a = lines(&std::fs::read_to_string(&one).unwrap());
+    let b = lines(&std::fs::read_to_string(&two).unwrap());
+    assert!(a.len() >= 5);
+    assert_eq!(
+        a.iter().map(untimed).collect::<Vec<_>>(),
+        b.iter().map(untimed).collect::<Vec<_>>()
+    );
+    // Cut the file after two lines plus half a line, as an interruption would.
+    let text = std::fs::read_to_string(&one).unwrap();
+    let kept: Vec<&str> = text.lines().take(2).collect();
+    let half = &text.lines().nth(2).unwrap()[..20];
+    std::fs::write(&one, format!("{}\n{half}", kept.join("\n"))).unwrap();
+    let out = run(&[
+        "--quiet".as_ref(),
+        "batch".as_ref(),
+        pattern.as_os_str(),
+        "--task".as_ref(),
+        "quad".as_ref(),
+        "--jsonl".as_ref(),
+        one.as_os_str(),
+        "--resume".as_ref(),
+        "--".as_ref(),
+        "--algo".as_ref(),
+        "sg".as_ref(),
+        "--seed".as_ref(),
+        "7".as_ref(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = std::fs::read_to_string(&one).unwrap();
+    // The cut line stays as it was (unparseable) and its file runs again.
+    let resumed: Vec<Value> = text
+        .lines()
+        .filter_map(|l| serde_json::from_str(l).ok())
+        .collect();
+    assert_eq!(resumed.len(), a.len());
+    assert_eq!(
+        resumed.iter().map(untimed).collect::<Vec<_>>(),
+        a.iter().map(untimed).collect::<Vec<_>>()
+    );
+}
+
+#[test]
+fn outputs_go_under_outdir_and_info_reports_problems_with_the_error() {
+    let d = Scratch::new("batch-out");
+    let outdir = d.path("out");
+    let files = [
+        meshes().join("closed").join("casting.off.gz"),
+        meshes().join("closed").join("socket.off.gz"),
+    ];
+    let out = run(&[
+        "batch".as_ref(),
+        files[0].as_os_str(),
+        files[1].as_os_str(),
+        "--task".as_ref(),
+        "simplify".as_ref(),
+        "-o".as_ref(),
+        outdir.as_os_str(),
+        "--".as_ref(),
+        "--eps-rel".as_ref(),
+        "0.02".as_ref(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    for (name, l) in ["casting", "socket"]
+        .iter()
+        .zip(lines(&String::from_utf8_lossy(&out.stdout)))
+    {
+        let written = outdir.join(format!("{name}.simplify.off.gz"));
+        assert_eq!(l["result"]["output"], written.display().to_string());
+        let info = run_json(&["info".as_ref(), written.as_os_str()]);
+        assert_eq!(info["faces"], l["result"]["faces_after"]);
+    }
+    // info on a broken mesh: the problems and the error, in one line.
+    let crank = meshes().join("invalid").join("dupfaces_crank.off.gz");
+    let out = run(&[
+        "batch".as_ref(),
+        crank.as_os_str(),
+        "--task".as_ref(),
+        "info".as_ref(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    let l = &lines(&String::from_utf8_lossy(&out.stdout))[0];
+    assert_eq!(l["ok"], false);
+    assert!(
+        l["error"]["message"]
+            .as_str()
+            .unwrap()
+            .contains("12 duplicate faces"),
+        "{l}"
+    );
+    let problems = l["result"]["problems"].as_array().expect("problems");
+    assert!(problems.iter().any(|p| p["count"] == 12), "{l}");
+}
+
+#[test]
+fn bad_arguments_fail_before_any_work() {
+    let closed = meshes().join("closed");
+    let cases: [&[&str]; 5] = [
+        &["--task", "reduce", "--", "--algo", "nope"],
+        &["--task", "simplify"],
+        &["--task", "info", "-o", "/tmp/x"],
+        &["--task", "reduce", "--resume"],
+        &["--task", "reduce", "--", "--no-such-flag"],
+    ];
+    for extra in cases {
+        let mut args: Vec<&std::ffi::OsStr> = vec!["batch".as_ref(), closed.as_os_str()];
+        args.extend(extra.iter().map(std::ffi::OsStr::new));
+        let t = std::time::Instant::now();
+        let out = run(&args);
+        assert_eq!(out.status.code(), Some(2), "{extra:?}: {}", stderr(&out));
+        assert!(out.stdout.is_empty(), "{extra:?}");
+        assert!(t.elapsed().as_secs_f64() < 5.0);
+    }
+    let out = run(&["batch", "/no/such/dir/*.off", "--task", "info"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(stderr(&out).contains("no file matches"), "{}", stderr(&out));
+}
