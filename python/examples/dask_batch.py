@@ -9,13 +9,14 @@ holds up a batch of quick ones). A worker reads the file with the package, runs 
 returns one JSON-ready dict per file, in the order the files were given:
 
     {"file": ..., "task": ..., "ok": true,  "result": {<the statistics of the task>}}
-    {"file": ..., "task": ..., "ok": false, "error": {"kind": ..., "message": ...,
+    {"file": ..., "task": ..., "ok": false, "error": {"kind": "input", "exit_code": 2,
+                                                      "message": ..., "problem": ...,
                                                       "location": {...}}}
 
-``result`` holds the same statistics as the command line's ``--json`` for that task
-(``info``: the topology report; ``reduce``/``quad``/``simplify``: the statistics of the
-Python result). A bad file never stops the run: its line carries the error with its
-location (``MeshError.kind`` and ``.location``; ``"io"`` for a file that cannot be read).
+the same lines as ``contractible batch FILE... --task TASK`` prints (``result`` holds the
+task's statistics under the same keys: ``info``'s topology report, the statistics of
+``reduce``/``quad``/``simplify``; ``error`` the same kind and exit code, plus the
+``MeshError``'s ``problem`` key and ``location`` dict). A bad file never stops the run.
 
 Without ``--scheduler`` a LocalCluster of ``--workers`` single-threaded processes runs on
 this machine; with it, the bag runs on that cluster (every worker needs the package and
@@ -51,10 +52,11 @@ def run_one(path: str, task: str, options: Dict[str, Any]) -> Dict[str, Any]:
         line["result"] = result
     except c.MeshError as e:
         line["ok"] = False
-        line["error"] = {"kind": e.kind, "message": e.message, "location": e.location}
-    except OSError as e:
+        line["error"] = {"kind": "input", "exit_code": 2, "message": e.message,
+                         "problem": e.kind, "location": e.location}
+    except (OSError, ValueError) as e:
         line["ok"] = False
-        line["error"] = {"kind": "io", "message": str(e), "location": {}}
+        line["error"] = {"kind": "input", "exit_code": 2, "message": str(e)}
     return line
 
 
