@@ -320,7 +320,9 @@ pub struct DiagnosisReport {
     faces: usize,
     components: usize,
     euler_characteristic: i64,
-    /// `null` when a non-manifold edge makes orientability meaningless.
+    /// Absent when a non-manifold edge makes orientability meaningless (so the key is a
+    /// bool wherever it appears, as in every other report).
+    #[serde(skip_serializing_if = "Option::is_none")]
     orientable: Option<bool>,
     boundary_loops: usize,
     unused_vertices: usize,
