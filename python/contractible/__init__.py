@@ -183,7 +183,9 @@ def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0) -> Quadrangula
     """A quadrangulation on the same vertices: a perfect pairing of edge-adjacent
     triangles by ``lrs`` (contraction/expansion with flips, default), ``ps``
     (Pulli–Segal), ``sg`` (simple greedy) or ``matching``, each completed by augmenting
-    paths. Closed surfaces only; positions optional."""
+    paths, or by Frink's reduction (``frink-lct``: the link–cut cover-count strategy;
+    ``ds-naive``: the quadratic reference, refused above 100,000 faces per component),
+    perfect without completion. Closed surfaces only; positions optional."""
     V, F = _vf(V, F)
     d = _native.quad(_vertices(V), _faces(F), algo, int(seed))
     return Quadrangulated(d["vertices"], d["quads"], d["triangles"], d["pairs"], d["stats"])

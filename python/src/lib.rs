@@ -674,8 +674,10 @@ fn quad_algorithm(name: &str) -> PyResult<quad::Algorithm> {
         "ps" => Ok(quad::Algorithm::Ps),
         "sg" => Ok(quad::Algorithm::Sg),
         "matching" => Ok(quad::Algorithm::Matching),
+        "frink-lct" => Ok(quad::Algorithm::FrinkLct),
+        "ds-naive" => Ok(quad::Algorithm::DsNaive),
         other => Err(PyValueError::new_err(format!(
-            "unknown algo {other:?}: expected 'lrs', 'ps', 'sg' or 'matching'"
+            "unknown algo {other:?}: expected 'lrs', 'ps', 'sg', 'matching', 'frink-lct' or 'ds-naive'"
         ))),
     }
 }
@@ -697,6 +699,19 @@ fn quad_py<'py>(
     let algorithm = quad_algorithm(algo)?;
     let mesh = tri_mesh(py, vertices.as_ref(), &faces, vertex_count)?;
     let surfaces = closed_surfaces(py, &mesh, "quad")?;
+    if algorithm == quad::Algorithm::DsNaive {
+        if let Some(c) = surfaces
+            .components
+            .iter()
+            .find(|c| c.tri.face_count() > quad::DS_NAIVE_MAX_FACES)
+        {
+            return Err(PyValueError::new_err(format!(
+                "algo 'ds-naive' is quadratic and refuses components above {} faces (this one has {}); use 'frink-lct'",
+                quad::DS_NAIVE_MAX_FACES,
+                c.tri.face_count()
+            )));
+        }
+    }
     let options = quad::Options { seed };
     let dropped = surfaces.dropped_vertices.len();
     let m = mesh.faces.len();

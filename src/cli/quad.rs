@@ -12,8 +12,7 @@ use super::progress::{bar, StageBar};
 use super::reduce::component_prefix;
 use super::{meshio, print_json, CliError, Ui};
 
-/// Largest component `--algo ds-naive` accepts (its naive strategy is O(F²)).
-pub const DS_NAIVE_MAX_FACES: usize = 100_000;
+use contractible::quad::DS_NAIVE_MAX_FACES;
 
 /// Counters of one conversion (one component, or the totals): the paper's Table 4.3
 /// columns (a)–(e) plus the work of each step.

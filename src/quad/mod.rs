@@ -61,6 +61,12 @@ impl Algorithm {
     }
 }
 
+/// The largest component the command line and the Python package run
+/// [`Algorithm::DsNaive`] on: its naive strategy is O(F²) (about a minute at this size on
+/// the reference machine), so larger inputs are refused with a pointer to
+/// [`Algorithm::FrinkLct`]. The library itself runs any size.
+pub const DS_NAIVE_MAX_FACES: usize = 100_000;
+
 /// Options shared by the algorithms.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct Options {
