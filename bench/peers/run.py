@@ -28,6 +28,7 @@ import gzip
 import json
 import os
 import platform
+import shlex
 import statistics
 import subprocess
 import sys
@@ -412,7 +413,7 @@ def bench_task(task, V, F, eps, before, args, skipped, spent, log):
     active = [lib for lib in libs if lib not in skipped[task]]
     for lib in libs:
         if lib in skipped[task]:
-            log(f"    {lib}: skipped ({skipped[task][lib]})")
+            log(f"    {lib}: not run ({skipped[task][lib]})")
     rounds = max(args.reps, args.peer_reps)
     for r in range(rounds):
         k = len(active)
@@ -443,7 +444,7 @@ def bench_task(task, V, F, eps, before, args, skipped, spent, log):
         res.update(check(task, lib, V, F, before, outputs[lib]))
         spent[task][lib] += sum(times[lib])
         if spent[task][lib] > args.peer_budget and not lib.startswith("contractible"):
-            skipped[task][lib] = (f"skipped: its {task} runs took {spent[task][lib]:.0f} s "
+            skipped[task][lib] = (f"its {task} runs took {spent[task][lib]:.0f} s "
                                   f"up to {len(F)} triangles, over --peer-budget "
                                   f"{args.peer_budget:g} s")
         results[lib] = res
@@ -455,6 +456,17 @@ def bench_task(task, V, F, eps, before, args, skipped, spent, log):
 
 # --------------------------------------------------------------------------------------
 # Report
+
+
+DEFECT = {"degenerate": "degenerate face", "duplicate": "duplicate face",
+          "nonmanifold_edges": "non-manifold edge", "nonmanifold_vertices": "non-manifold vertex",
+          "boundary_edges": "boundary edge"}
+
+
+def plural(k, noun):
+    if k == 1:
+        return f"1 {noun}"
+    return f"{k} " + (noun[:-2] + "ices" if noun.endswith("vertex") else noun + "s")
 
 
 def fmt_ms(s):
@@ -545,7 +557,7 @@ def cell(res, ours):
     return s
 
 
-def write_report(meta, data, out_md, plot_dir):
+def write_report(meta, data, out_md):
     L = []
     w = L.append
     w("# contractible beside libigl and pymeshlab")
@@ -557,7 +569,9 @@ def write_report(meta, data, out_md, plot_dir):
     w(f"Run on {meta['date']}, {meta['elapsed_s'] / 60:.1f} min in all. "
       f"Machine: {meta['machine']['cpu']}, `nproc` = {meta['machine']['nproc']}, "
       f"{meta['machine']['memory']}, {meta['machine']['os']}, Python {meta['machine']['python']}. "
-      f"Load average (1 min) at start {meta['load'][0]:.2f}, at end {meta['load'][1]:.2f}.")
+      f"1-min load average sampled at every mesh: {min(meta['load']):.1f} to "
+      f"{max(meta['load']):.1f} (on {meta['machine']['nproc']} cores: a load well above "
+      f"{meta['machine']['nproc']} means other processes competed for them).")
     if meta.get("note"):
         w("")
         w(f"**Note:** {meta['note']}")
@@ -568,7 +582,7 @@ def write_report(meta, data, out_md, plot_dir):
     w("")
     w(f"- Each mesh is read once (gzip OFF, by the script). Per task the libraries run in "
       f"alternation in one process (round r starts with library r mod k), medians of "
-      f"{meta['args']['reps']} runs for contractible and up to {meta['args']['peer_reps']} "
+      f"{meta['args']['reps']} run(s) for contractible and up to {meta['args']['peer_reps']} "
       f"for the peers (`n=` marks fewer: a library stops repeating on a mesh once its time "
       f"there exceeds {meta['args']['case_budget']:g} s; a peer is skipped on the remaining, "
       f"larger meshes of a task once its runs in that task took "
@@ -621,9 +635,9 @@ def reduce_section(data, w):
             w("")
         if rat:
             worst = min(rat, key=lambda x: x[1])
-            verdict = "met" if worst[1] >= 50 and not missing else "**NOT met**"
+            verdict = "met" if worst[1] >= 50 and not missing else "NOT met"
             w(f"**Target: contractible.reduce ≥ 50× faster than igl.decimate(V, F, 0) on every "
-              f"shared mesh of ≥ {LARGE // 1000}k triangles — {verdict}**: the smallest ratio "
+              f"shared mesh of ≥ {LARGE // 1000}k triangles: {verdict}.** The smallest ratio "
               f"over the {len(rat)} meshes is {worst[1]:.0f}× ({worst[0]}); all: "
               + ", ".join(f"{n} {r:.0f}×" for n, r in rat) + ".")
             alg = [(d["name"], d["tasks"]["reduce"]["igl.decimate"]["median_s"]
@@ -664,7 +678,7 @@ def reduce_section(data, w):
                 continue
             s = f"{r['faces_out']}; {yn(r['irreducible'])} / {yn(r['topology_kept'])}"
             if r["contractible_edges_left"]:
-                s += f" ({r['contractible_edges_left']} contractible edges left)"
+                s += f" ({plural(r['contractible_edges_left'], 'contractible edge')} left)"
             if not r["closed"]:
                 s += " (not a closed manifold)"
             cells.append(s)
@@ -724,15 +738,26 @@ def quad_section(data, w):
             if r.get("paired_pct") is None:
                 cells.append(r.get("note", "not run"))
                 continue
-            s = f"{r['paired_pct']:.2f} % / {r['triangles_changed']}"
+            p = r["paired_pct"]
+            s = ("100 %" if p == 100.0 else f"{min(p, 99.99):.2f} %") + f" / {r['triangles_changed']}"
             if not r["pairing_verified"]:
                 s += " (pairing check failed)"
             if not r["triangulation_topology_kept"]:
                 s += " (**output triangulation broken**: " + (", ".join(
-                    f"{v} {k.replace('_', ' ')}" for k, v in r["triangulation_defects"].items())
+                    plural(v, DEFECT[k]) for k, v in r["triangulation_defects"].items())
                     or "topology changed") + ")"
             cells.append(s)
         w(f"| {d['name']} | " + " | ".join(cells) + " |")
+    w("")
+    parts = []
+    for lib in libs:
+        vals = [d["tasks"]["quad"][lib]["paired_pct"] for d in data if "quad" in d["tasks"]
+                and d["tasks"]["quad"][lib].get("paired_pct") is not None]
+        if vals:
+            parts.append(f"{lib} {sum(v == 100.0 for v in vals)}/{len(vals)}")
+    w("- every triangle paired: " + ", ".join(parts) + ".")
+    w(summary_line(data, "quad", "triangulation_topology_kept",
+                   "output triangulation a closed 2-manifold of the input's topology"))
     w("")
     w("![quad](peers/quad.png)")
     w("")
@@ -773,9 +798,7 @@ def simplify_section(data, w):
                 cells.append("not run")
                 continue
             s = f"{r['faces_out']}; {yn(r['manifold'])} / {yn(r['topology_kept'])}"
-            bad = [f"{r[k]} {k.replace('_', ' ')}" for k in
-                   ("degenerate", "duplicate", "nonmanifold_edges", "nonmanifold_vertices",
-                    "boundary_edges") if r.get(k)]
+            bad = [plural(r[k], DEFECT[k]) for k in DEFECT if r.get(k)]
             if bad:
                 s += " (" + ", ".join(bad) + ")"
             cells.append(s)
@@ -826,7 +849,8 @@ def main():
     ap.add_argument("--meshes", help="comma-separated names (default: a selection plus every "
                     f"mesh of >= {LARGE} triangles)")
     ap.add_argument("--tasks", default="reduce,quad,simplify")
-    ap.add_argument("--reps", type=int, default=5, help="runs of contractible (median)")
+    ap.add_argument("--reps", type=int, default=None,
+                    help="runs of contractible (median; default 5, 1 with --quick)")
     ap.add_argument("--peer-reps", type=int, default=None,
                     help="runs of libigl / pymeshlab (default: --reps)")
     ap.add_argument("--case-budget", type=float, default=20.0,
@@ -841,8 +865,9 @@ def main():
                     "with --quick a temporary directory)")
     ap.add_argument("--note", default=None, help="a sentence added to the report")
     args = ap.parse_args()
+    if args.reps is None:
+        args.reps = 1 if args.quick else 5
     if args.quick:
-        args.reps = 1 if args.reps == 5 else args.reps
         if args.meshes is None:
             args.meshes = ",".join(QUICK)
     if args.peer_reps is None:
@@ -874,12 +899,13 @@ def main():
     self_test()
     log = lambda s: print(s, flush=True)  # noqa: E731
     t_start = time.perf_counter()
-    load0 = os.getloadavg()[0]
+    loads = []  # 1-min load average at the start of every mesh, and at the end
     skipped = {t: {} for t in TASKS}
     spent = {t: defaultdict(float) for t in TASKS}
     data = []
     for p in paths:
         name = p.name[:-len(".off.gz")]
+        loads.append(os.getloadavg()[0])
         V, F = read_off_gz(p)
         before = surface_report(F)
         if not before["closed"]:
@@ -902,16 +928,17 @@ def main():
                 log(f"  WARNING: contractible's eps {s['eps']} != script's {eps}")
         data.append(d)
     elapsed = time.perf_counter() - t_start
+    loads.append(os.getloadavg()[0])
 
-    cmd = "python bench/peers/run.py" + "".join(f" {a}" for a in sys.argv[1:])
+    cmd = shlex.join(["python", "bench/peers/run.py"] + sys.argv[1:])
     meta = {"command": cmd, "date": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
             "elapsed_s": elapsed, "machine": machine(), "versions": versions(),
-            "load": (load0, os.getloadavg()[0]), "note": args.note,
+            "load": loads, "note": args.note,
             "args": {k: (str(v) if isinstance(v, Path) else v) for k, v in vars(args).items()}}
     for task in tasks:
         plot(task, data, plot_dir / f"{task}.png")
     (plot_dir / "results.json").write_text(json.dumps({"meta": meta, "meshes": data}, indent=1))
-    write_report(meta, data, args.out, plot_dir)
+    write_report(meta, data, args.out)
     log(f"wrote {args.out} and {plot_dir}/ in {elapsed / 60:.1f} min")
 
 
