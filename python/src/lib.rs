@@ -189,7 +189,18 @@ fn tri_mesh(
         ));
     }
     let mut list = Vec::with_capacity(shape[0]);
-    for (i, row) in faces.as_array().outer_iter().enumerate() {
+    let view = faces.as_array();
+    // The wrapper passes C-contiguous arrays: read them as one flat slice (fast); any
+    // other layout row by row.
+    let flat: Vec<i64>;
+    let values: &[i64] = match view.as_slice() {
+        Some(s) => s,
+        None => {
+            flat = view.iter().copied().collect();
+            &flat
+        }
+    };
+    for (i, row) in values.chunks_exact(3).enumerate() {
         let mut f = [0u32; 3];
         for k in 0..3 {
             let x = row[k];
@@ -526,7 +537,7 @@ fn reduce_algorithm(name: &str) -> PyResult<irreducible::Algorithm> {
 /// in input order), `vertex_map` (input id of each survivor), `stats` (the command
 /// line's `reduce --json` totals and `component_list`), `history`.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, algo="rs", seed=0, vertex_count=None))]
+#[pyo3(signature = (vertices, faces, algo="rs", seed=0, vertex_count=None, count_retests=false))]
 fn reduce<'py>(
     py: Python<'py>,
     vertices: Option<PyReadonlyArray2<'py, f64>>,
@@ -534,13 +545,14 @@ fn reduce<'py>(
     algo: &str,
     seed: u64,
     vertex_count: Option<usize>,
+    count_retests: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let algorithm = reduce_algorithm(algo)?;
     let mesh = tri_mesh(py, vertices.as_ref(), &faces, vertex_count)?;
     let surfaces = closed_surfaces(py, &mesh, "reduce")?;
     let options = irreducible::Options {
         seed,
-        count_retests: true,
+        count_retests,
     };
     let dropped = surfaces.dropped_vertices.len();
     let (parts, inputs) = py.detach(|| {
