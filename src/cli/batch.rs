@@ -16,6 +16,8 @@
 //! - `--jsonl FILE` appends the lines to FILE as they are ready (in order); `--resume`
 //!   first reads FILE and skips every file that already has a complete line there, so an
 //!   interrupted batch continues where it stopped.
+//! - Files start largest first (by size on disk), one per free thread, so that a long
+//!   file does not end the run alone; the lines still come out in input order.
 //! - An overall progress bar (files done / total) on stderr; a summary line at the end.
 //!   Exit code 0 when every file succeeded, 1 when any failed (2 for bad arguments).
 
@@ -342,11 +344,22 @@ pub fn run(a: &BatchArgs, ui: Ui) -> Result<(), CliError> {
     std::thread::scope(|scope| -> Result<(), CliError> {
         let todo = &todo;
         let root = &root;
+        // Largest files first, one file per work item: the long ones start early
+        // instead of ending the run alone on one thread (lines still come out in input
+        // order).
+        let mut order: Vec<(u64, usize)> = todo
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (std::fs::metadata(f).map_or(0, |m| m.len()), i))
+            .collect();
+        order.sort_by(|a, b| b.0.cmp(&a.0).then(a.1.cmp(&b.1)));
         scope.spawn(move || {
             pool.install(|| {
-                todo.par_iter()
-                    .enumerate()
-                    .for_each_with(tx, |tx, (i, file)| {
+                order
+                    .par_iter()
+                    .with_max_len(1)
+                    .for_each_with(tx, |tx, &(_, i)| {
+                        let file = &todo[i];
                         let out = a
                             .output
                             .as_ref()
