@@ -151,6 +151,19 @@ pub fn verify(input: &contractible::Triangulation, q: &Quadrangulation) -> bool 
 /// algorithm inside each component), then checks each by [`verify`] as a step of its
 /// own; returns the per-component counters.
 pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<QuadStats> {
+    let done = convert_all(surfaces, algo, seed, ui);
+    let inputs: Vec<&contractible::Triangulation> =
+        surfaces.components.iter().map(|c| &c.tri).collect();
+    let (verdicts, _) = verify_all(&inputs, &done, ui);
+    done.iter()
+        .zip(&inputs)
+        .zip(verdicts)
+        .map(|((q, t), ok)| QuadStats::of(q, SurfaceType::of(t), ok))
+        .collect()
+}
+
+/// Converts (a copy of) every component, a bar following the algorithm inside each.
+fn convert_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<Quadrangulation> {
     let options = Options { seed };
     let n = surfaces.components.len();
     let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
@@ -165,14 +178,7 @@ pub fn quad_all(surfaces: &Surfaces, algo: Algorithm, seed: u64, ui: Ui) -> Vec<
         ));
     }
     bar.finish();
-    let inputs: Vec<&contractible::Triangulation> =
-        surfaces.components.iter().map(|c| &c.tri).collect();
-    let (verdicts, _) = verify_all(&inputs, &done, ui);
-    done.iter()
-        .zip(&inputs)
-        .zip(verdicts)
-        .map(|((q, t), ok)| QuadStats::of(q, SurfaceType::of(t), ok))
-        .collect()
+    done
 }
 
 /// What the bar of the conversions says.
@@ -256,20 +262,8 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
             )));
         }
     }
-    let options = Options { seed: a.seed };
     let n = surfaces.components.len();
-    let mut bar = StageBar::new(ui, component_prefix(VERB, algo.name(), 0, n));
-    let mut done = Vec::with_capacity(n);
-    for (i, c) in surfaces.components.iter().enumerate() {
-        bar.set_prefix(component_prefix(VERB, algo.name(), i, n));
-        done.push(quad::convert_observed(
-            c.tri.clone(),
-            algo,
-            &options,
-            &mut |p| bar.observe(p),
-        ));
-    }
-    bar.finish();
+    let done = convert_all(&surfaces, algo, a.seed, ui);
     let inputs: Vec<&contractible::Triangulation> =
         surfaces.components.iter().map(|c| &c.tri).collect();
     let (verdicts, seconds_verify) = verify_all(&inputs, &done, ui);
