@@ -13,9 +13,10 @@
 //!   `{"file", "task", "ok": false, "error": {"kind": "input" | "failure" | "panic",
 //!   "exit_code", "message"}}` (the message is the command's own, with its location: file
 //!   line, face, vertex). A failing file — even a panic — never stops the batch.
-//! - `--jsonl FILE` appends the lines to FILE as they are ready (in order); `--resume`
-//!   first reads FILE and skips every file that already has a complete line there, so an
-//!   interrupted batch continues where it stopped.
+//! - `--jsonl FILE` writes the lines to FILE (replacing it) as they are ready, in order;
+//!   with `--resume` it first reads FILE, skips every file that already has a complete
+//!   line there and appends the others, so an interrupted batch continues where it
+//!   stopped.
 //! - Files start largest first (by size on disk), one per free thread, so that a long
 //!   file does not end the run alone; the lines still come out in input order.
 //! - An overall progress bar (files done / total) on stderr; a summary line at the end.
