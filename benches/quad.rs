@@ -23,7 +23,7 @@
 //! `cargo bench --bench quad -- total` or `-- petgraph`.
 
 use contractible::gen::paper_family;
-use contractible::quad::{self, augment, greedy, lrs, matching, pulli_segal};
+use contractible::quad::{self, augment};
 use contractible::quad::{Algorithm, Options, Pairing};
 use contractible::{Surfaces, Triangulation};
 use std::collections::HashMap;
@@ -107,36 +107,8 @@ fn initial(name: &str, alg: Algorithm) -> (Triangulation, Pairing) {
 }
 
 fn initial_step(t: Triangulation, alg: Algorithm) -> (Triangulation, Pairing) {
-    match alg {
-        Algorithm::Lrs => {
-            let e = lrs::initial_pairing(t);
-            (e.tri, e.pairing)
-        }
-        Algorithm::Ps => {
-            let p = pulli_segal::initial_pairing(&t, &OPTIONS);
-            (t, p)
-        }
-        Algorithm::Sg => {
-            let p = greedy::initial_pairing(&t, &OPTIONS);
-            (t, p)
-        }
-        Algorithm::Matching => {
-            let p = matching::initial_pairing(&t);
-            (t, p)
-        }
-        Algorithm::DsNaive => {
-            let p = contractible::quad::frink::perfect_matching(&t);
-            (t, p)
-        }
-        Algorithm::FrinkLct => {
-            let p = contractible::quad::frink::perfect_matching_with(
-                &t,
-                &mut contractible::quad::frink::CoverTree::new(),
-            )
-            .0;
-            (t, p)
-        }
-    }
+    let i = contractible::quad::initial_pairing(t, alg, &OPTIONS);
+    (i.tri, i.pairing)
 }
 
 fn total(b: divan::Bencher, name: &str, alg: Algorithm) {

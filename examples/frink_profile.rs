@@ -7,6 +7,9 @@
 //!
 //! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive]`
 
+#[path = "common/cpu.rs"]
+mod cpu;
+use cpu::cpu;
 use std::time::Instant;
 
 use contractible::gen::paper_family;
@@ -58,16 +61,4 @@ fn main() {
             );
         }
     }
-}
-
-/// CPU seconds of the calling thread (from `/proc/thread-self/stat`, 10 ms ticks; 0
-/// where that file does not exist), as `examples/quad_profile.rs`.
-fn cpu() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/thread-self/stat") else {
-        return 0.0;
-    };
-    let rest = stat.rsplit(')').next().unwrap_or("");
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
-    (ticks(11) + ticks(12)) / 100.0
 }

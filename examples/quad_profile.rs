@@ -13,10 +13,13 @@
 //! `--seed N` sets the seed of SG and PS (default 1, as the benches; the CLI's default
 //! is 0).
 
+#[path = "common/cpu.rs"]
+mod cpu;
+use cpu::cpu;
 use std::time::Instant;
 
 use contractible::gen::{paper_family, random, RandomParams, SurfaceKind};
-use contractible::quad::{augment, greedy, lrs, matching, pulli_segal};
+use contractible::quad::augment;
 use contractible::quad::{Algorithm, Options, Pairing};
 use contractible::{Surfaces, Triangulation};
 
@@ -77,36 +80,8 @@ fn main() {
 }
 
 fn initial_step(t: Triangulation, alg: Algorithm, options: &Options) -> (Triangulation, Pairing) {
-    match alg {
-        Algorithm::Lrs => {
-            let e = lrs::initial_pairing(t);
-            (e.tri, e.pairing)
-        }
-        Algorithm::Ps => {
-            let p = pulli_segal::initial_pairing(&t, options);
-            (t, p)
-        }
-        Algorithm::Sg => {
-            let p = greedy::initial_pairing(&t, options);
-            (t, p)
-        }
-        Algorithm::Matching => {
-            let p = matching::initial_pairing(&t);
-            (t, p)
-        }
-        Algorithm::DsNaive => {
-            let p = contractible::quad::frink::perfect_matching(&t);
-            (t, p)
-        }
-        Algorithm::FrinkLct => {
-            let p = contractible::quad::frink::perfect_matching_with(
-                &t,
-                &mut contractible::quad::frink::CoverTree::new(),
-            )
-            .0;
-            (t, p)
-        }
-    }
+    let i = contractible::quad::initial_pairing(t, alg, options);
+    (i.tri, i.pairing)
 }
 
 fn build(name: &str) -> Triangulation {
@@ -181,16 +156,4 @@ fn fingerprint_output(k: &Triangulation, p: &Pairing) -> u64 {
     h.word(fingerprint_pairing(p) as u32);
     h.word((fingerprint_pairing(p) >> 32) as u32);
     h.0
-}
-
-/// CPU seconds of the calling thread (from `/proc/thread-self/stat`, 10 ms ticks; 0
-/// where that file does not exist).
-fn cpu() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/thread-self/stat") else {
-        return 0.0;
-    };
-    let rest = stat.rsplit(')').next().unwrap_or("");
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
-    (ticks(11) + ticks(12)) / 100.0
 }

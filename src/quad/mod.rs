@@ -170,6 +170,54 @@ pub fn convert_observed(
     let faces = tri.face_count() as u64;
     observer(Progress::new(INITIAL, 0, faces));
     let started = Instant::now();
+    let Initial {
+        tri,
+        pairing,
+        flips,
+    } = initial_pairing(tri, algorithm, options);
+    if matches!(algorithm, Algorithm::DsNaive | Algorithm::FrinkLct) {
+        // Perfect by Frink's construction: (c) = 0 and no completion, (d) = 0.
+        let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
+        stats.total_seconds = stats.initial_seconds;
+        return Quadrangulation {
+            algorithm,
+            tri,
+            pairing,
+            stats,
+        };
+    }
+    let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
+    observer(Progress::new(INITIAL, 2 * pairing.len() as u64, faces));
+    stats.flips = flips;
+    let mut pairing = pairing;
+    let completion_started = Instant::now();
+    let work = augment::complete_observed(&tri, &mut pairing, observer);
+    stats.completion_seconds = completion_started.elapsed().as_secs_f64();
+    stats.total_seconds = stats.initial_seconds + stats.completion_seconds;
+    stats.augmenting_paths = work.augmenting_paths;
+    stats.phases = work.phases;
+    Quadrangulation {
+        algorithm,
+        tri,
+        pairing,
+        stats,
+    }
+}
+
+/// The result of an algorithm's initial pairing step (before any completion).
+#[derive(Clone, Debug)]
+pub struct Initial {
+    /// The paired triangulation (the input, or LRS's flipped `K`).
+    pub tri: Triangulation,
+    /// The pairing of `tri` (perfect for the Frink algorithms, partial for the others).
+    pub pairing: Pairing,
+    /// Edge flips (LRS only).
+    pub flips: usize,
+}
+
+/// The initial pairing step of `algorithm` alone (what [`convert`] times as (a)), for
+/// callers that time or complete it themselves (benchmarks, profiles).
+pub fn initial_pairing(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Initial {
     let (tri, pairing, flips) = match algorithm {
         Algorithm::Lrs => {
             let e = lrs::initial_pairing(tri);
@@ -187,38 +235,19 @@ pub fn convert_observed(
             let p = matching::initial_pairing(&tri);
             (tri, p, 0)
         }
-        Algorithm::DsNaive | Algorithm::FrinkLct => {
-            let p = if algorithm == Algorithm::DsNaive {
-                frink::perfect_matching(&tri)
-            } else {
-                frink::perfect_matching_with(&tri, &mut frink::CoverTree::new()).0
-            };
-            // Perfect by Frink's construction: (c) = 0 and no completion, (d) = 0.
-            let mut stats = initial_stats(&tri, &p, started.elapsed().as_secs_f64());
-            stats.total_seconds = stats.initial_seconds;
-            return Quadrangulation {
-                algorithm,
-                tri,
-                pairing: p,
-                stats,
-            };
+        Algorithm::DsNaive => {
+            let p = frink::perfect_matching(&tri);
+            (tri, p, 0)
+        }
+        Algorithm::FrinkLct => {
+            let p = frink::perfect_matching_with(&tri, &mut frink::CoverTree::new()).0;
+            (tri, p, 0)
         }
     };
-    let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
-    observer(Progress::new(INITIAL, 2 * pairing.len() as u64, faces));
-    stats.flips = flips;
-    let mut pairing = pairing;
-    let completion_started = Instant::now();
-    let work = augment::complete_observed(&tri, &mut pairing, observer);
-    stats.completion_seconds = completion_started.elapsed().as_secs_f64();
-    stats.total_seconds = stats.initial_seconds + stats.completion_seconds;
-    stats.augmenting_paths = work.augmenting_paths;
-    stats.phases = work.phases;
-    Quadrangulation {
-        algorithm,
+    Initial {
         tri,
         pairing,
-        stats,
+        flips,
     }
 }
 

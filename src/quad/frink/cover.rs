@@ -503,15 +503,7 @@ impl Strategy for CoverTree {
         // Naive step (no tree-stable configuration): the tree is rebuilt afterwards.
         self.plan = None;
         self.counters.naive_steps += 1;
-        for recon in [Reconnection::H1, Reconnection::H2] {
-            let r = g.reduce(cand, recon);
-            let ok = self.dfs.connected_bridgeless(g, cand.x[0]);
-            g.undo(&r);
-            if ok {
-                return Some(recon);
-            }
-        }
-        None
+        super::naive_choice(&mut self.dfs, g, cand)
     }
 
     fn applied(&mut self, g: &Cubic, r: &Reduction) {

@@ -149,21 +149,7 @@ impl Cubic {
             return None;
         }
         let i = (0..3).find(|&i| (0..3).all(|j| j == i || w[j] != w[i]))?;
-        let (e, v) = (s[i], w[i]);
-        let a = [s[(i + 1) % 3], s[(i + 2) % 3]];
-        let sv = self.slots[v as usize];
-        let j = sv.iter().position(|&f| f == e)?;
-        let b = [sv[(j + 1) % 3], sv[(j + 2) % 3]];
-        let x = [
-            self.other(a[0], u),
-            self.other(a[1], u),
-            self.other(b[0], v),
-            self.other(b[1], v),
-        ];
-        if x[2] == v || x[3] == v {
-            return None;
-        }
-        Some(Candidate { u, v, e, a, b, x })
+        self.candidate_for(u, s[i])
     }
 
     /// The reduction with edge `e` at live node `u` (`e` must be at `u`), if it is a valid

@@ -192,16 +192,22 @@ impl Naive {
 
 impl Strategy for Naive {
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
-        for recon in [Reconnection::H1, Reconnection::H2] {
-            let r = g.reduce(cand, recon);
-            let ok = self.dfs.connected_bridgeless(g, cand.x[0]);
-            g.undo(&r);
-            if ok {
-                return Some(recon);
-            }
-        }
-        None
+        naive_choice(&mut self.dfs, g, cand)
     }
+}
+
+/// The naive decision: the first of `H1`, `H2` that the DFS lowpoint test finds
+/// connected and bridgeless, each applied tentatively and undone (`g` is left as it
+/// was). O(n). [`Naive`]'s strategy, and [`CoverTree`]'s fallback.
+fn naive_choice(dfs: &mut Dfs, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+    [Reconnection::H1, Reconnection::H2]
+        .into_iter()
+        .find(|&recon| {
+            let r = g.reduce(cand, recon);
+            let ok = dfs.connected_bridgeless(g, cand.x[0]);
+            g.undo(&r);
+            ok
+        })
 }
 
 /// Counters of one run of [`solve`].
