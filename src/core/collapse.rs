@@ -162,31 +162,44 @@ impl Triangulation {
                 || self.link_condition_naive(u, v),
             "collapse: [{u}, {v}] fails the link condition"
         );
-        let d = star_v.len();
         let p = link_v
             .iter()
             .position(|&n| n == u)
             .expect("collapse_walked: [u, v] is not an edge");
+        scratch.clear();
+        let plan = self.plan_collapse_walked(u, star_v, p, scratch);
+        self.apply_collapse(u, v, &plan, scratch);
+        plan.link
+    }
+
+    /// [`Self::plan_collapse`] from `v`'s star already walked (`star_v`, in the order of
+    /// [`Self::star`]`(v)`) with `u` the exit neighbour of step `p`: the same plan and
+    /// the same renamed corners in the same order, without walking the star again.
+    pub(crate) fn plan_collapse_walked(
+        &self,
+        u: VertexId,
+        star_v: &[Corner],
+        p: usize,
+        renamed: &mut Vec<Corner>,
+    ) -> CollapsePlan {
+        let d = star_v.len();
         let q = (p + 1) % d;
         // As in `plan_collapse`: the step whose exit neighbour is u and the next one are
         // the two faces of [u, v].
         let opp1 = self.corner_facing(star_v[p], u);
         let opp2 = self.opposite(opp1);
         debug_assert_eq!(star_v[q].face(), opp2.face());
-        scratch.clear();
-        scratch.extend(
+        renamed.extend(
             star_v
                 .iter()
                 .enumerate()
                 .filter(|&(k, _)| k != p && k != q)
                 .map(|(_, &c)| c),
         );
-        let plan = CollapsePlan {
+        CollapsePlan {
             faces: [opp1.face(), opp2.face()],
             link: [self.vertex(opp1), self.vertex(opp2)],
-        };
-        self.apply_collapse(u, v, &plan, scratch);
-        plan.link
+        }
     }
 
     /// Replaces a closed disc bounded by the 3-cycle `[p, q, x]` with the single face

@@ -1,5 +1,6 @@
 //! Edge contraction (RS paper, Def. 3 and Fig. 7) and its exact inverse.
 
+use super::collapse::CollapsePlan;
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::link::LinkTester;
 use super::tri::{StateStamp, Triangulation};
@@ -175,6 +176,19 @@ impl History {
     pub fn new() -> Self {
         Self::default()
     }
+    /// An empty history with room for `contractions` records and `renamed` renamed
+    /// corners, so that recording them never reallocates (and copies) the records. A
+    /// contraction removes one vertex and every triangulation keeps at least four, so
+    /// `vertex_count - 4` bounds the records of any reduction of a connected surface;
+    /// the renamed corners of a contraction are `d_v - 2`. Reserved memory that is
+    /// never written costs no resident memory on systems that map pages lazily.
+    pub fn with_capacity(contractions: usize, renamed: usize) -> Self {
+        History {
+            records: Vec::with_capacity(contractions),
+            renamed: Vec::with_capacity(renamed),
+            tester: None,
+        }
+    }
     /// Number of recorded contractions.
     pub fn len(&self) -> usize {
         self.records.len()
@@ -334,9 +348,44 @@ impl Triangulation {
                 || self.link_condition_naive(u, v),
             "contract_tested: [{u}, {v}] fails the link condition"
         );
-        let state_before = self.state;
         let start = history.renamed.len();
         let plan = self.plan_collapse(u, v, &mut history.renamed);
+        self.record_collapse(u, v, plan, start, history)
+    }
+
+    /// [`Self::contract_tested`] with `v`'s star already walked: `star_v` is
+    /// [`Self::star`]`(v)`'s corners in order and `u` the exit neighbour of step `p`.
+    /// Makes the same change and the same record, without walking the star again.
+    pub(crate) fn contract_tested_walked(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        star_v: &[Corner],
+        p: usize,
+        history: &mut History,
+    ) -> ContractionRecord {
+        debug_assert_eq!(star_v.len(), self.degree(v));
+        debug_assert!(
+            self.degree(u).saturating_mul(self.degree(v)) > DEBUG_NAIVE_CHECK_WORK
+                || self.link_condition_naive(u, v),
+            "contract_tested: [{u}, {v}] fails the link condition"
+        );
+        let start = history.renamed.len();
+        let plan = self.plan_collapse_walked(u, star_v, p, &mut history.renamed);
+        self.record_collapse(u, v, plan, start, history)
+    }
+
+    /// Applies `plan` (whose renamed corners are `history.renamed[start..]`) and records
+    /// it.
+    fn record_collapse(
+        &mut self,
+        u: VertexId,
+        v: VertexId,
+        plan: CollapsePlan,
+        start: usize,
+        history: &mut History,
+    ) -> ContractionRecord {
+        let state_before = self.state;
         let [f1, f2] = plan.faces;
         let [x, y] = plan.link;
         let (saved_vertex, saved_opposite) = self.save_faces([f1, f2]);

@@ -188,9 +188,73 @@ impl EdgeIds {
         }
         dead
     }
+
+    /// Updates the numbers after the exact undo of `rec` ([`crate::History::undo`]), the
+    /// newest contraction reported to [`Self::contracted`] and not yet undone: the
+    /// corner outside `[v, x]` (resp. `[v, y]`), which had taken the merged number,
+    /// gets the number of `[v, x]` back from the revived face. The revived faces'
+    /// corners kept their numbers while the faces were dead. O(1).
+    #[inline]
+    pub fn uncontracted(&mut self, rec: &ContractionRecord) {
+        for (k, f) in rec.faces.into_iter().enumerate() {
+            for s in 0..3 {
+                if rec.saved_vertex[3 * k + s] == rec.u.0 {
+                    let c = f.corner(s as u32);
+                    let across = rec.saved_opposite[3 * k + s] as usize;
+                    self.of_corner[across] = self.of_corner[c.index()];
+                }
+            }
+        }
+    }
+
+    /// Updates the numbers after the flip `rec` was applied: the new edge takes the
+    /// flipped edge's number; `[a, d]` and `[b, c]` move to the corners that now face
+    /// them. Returns the numbers of the flipped edge, `[a, d]` and `[b, c]`. O(1).
+    #[inline]
+    pub fn flipped_corners(&mut self, moved: [Corner; 2], new_corners: [Corner; 2]) -> [u32; 3] {
+        let [k1, k2] = moved;
+        let [n1, n2] = new_corners;
+        let old = self.of_corner[k1.index()];
+        let bc = self.of_corner[n1.index()];
+        let ad = self.of_corner[n2.index()];
+        self.of_corner[n1.index()] = old;
+        self.of_corner[n2.index()] = old;
+        self.of_corner[k1.index()] = ad;
+        self.of_corner[k2.index()] = bc;
+        [old, ad, bc]
+    }
 }
 
 impl EdgeNumbering {
+    /// The full numbering (with the corner of every live number) from its per-corner
+    /// half `ids`, which must number `tri`'s edges: made by [`EdgeIds::new`] on an
+    /// earlier state and told every change since. One pass over the corners, O(F): for
+    /// a caller that needs [`Self::corner`] only at the end of a long run of changes
+    /// (the tri-quad expansion) and so keeps only `ids` meanwhile. Checked against
+    /// `tri` ([`Self::check`]) in debug builds.
+    pub fn from_ids(ids: EdgeIds, tri: &Triangulation) -> Self {
+        let mut corner_of = vec![NONE; ids.capacity()];
+        let mut live = 0;
+        for f in tri.faces() {
+            for c in f.corners() {
+                let o = tri.opposite(c);
+                if c < o {
+                    if let Some(slot) = corner_of.get_mut(ids.id(c).index()) {
+                        *slot = c.0;
+                        live += 1;
+                    }
+                }
+            }
+        }
+        let numbering = EdgeNumbering {
+            ids,
+            corner_of,
+            live,
+        };
+        debug_assert_eq!(numbering.check(tri), Ok(()));
+        numbering
+    }
+
     /// Numbers the edges of `tri` in [`Triangulation::edges`] order. O(F).
     pub fn new(tri: &Triangulation) -> Self {
         let ids = EdgeIds::new(tri);
@@ -296,17 +360,17 @@ impl EdgeNumbering {
 
     /// Updates the numbers after the flip `rec` was applied. O(1).
     pub fn flipped(&mut self, rec: &FlipRecord) {
+        self.flipped_corners(rec.moved, rec.new_corners);
+    }
+
+    /// [`Self::flipped`] given the flip's `moved` and `new_corners` (as in
+    /// [`FlipRecord`]), for flips made without a record. O(1).
+    pub fn flipped_corners(&mut self, moved: [Corner; 2], new_corners: [Corner; 2]) {
         // Before the flip: `new[0]` faced [b, c] and `new[1]` faced [a, d]; afterwards
         // they face the new edge [c, d], and `moved[0]` / `moved[1]` face [a, d] / [b, c].
-        let [k1, k2] = rec.moved;
-        let [n1, n2] = rec.new_corners;
-        let old = self.ids.of_corner[k1.index()];
-        let bc = self.ids.of_corner[n1.index()];
-        let ad = self.ids.of_corner[n2.index()];
-        self.ids.of_corner[n1.index()] = old;
-        self.ids.of_corner[n2.index()] = old;
-        self.ids.of_corner[k1.index()] = ad;
-        self.ids.of_corner[k2.index()] = bc;
+        let [k1, k2] = moved;
+        let [n1, _] = new_corners;
+        let [old, ad, bc] = self.ids.flipped_corners(moved, new_corners);
         self.corner_of[old as usize] = n1.0;
         self.corner_of[ad as usize] = k1.0;
         self.corner_of[bc as usize] = k2.0;

@@ -153,6 +153,28 @@ impl Triangulation {
         })
     }
 
+    /// Flips the edge opposite live corner `c`, which the caller has *proved* flippable
+    /// (the tri-quad expansion, by Prop. 3.3), without the O(min(d_w, d_z)) link walk
+    /// of [`Self::flip_at`] and without an undo record. Returns the corners that were
+    /// opposite the old edge (`moved`, as in [`FlipRecord`]) and the corners opposite
+    /// the new one. O(1).
+    ///
+    /// The proof is the caller's: when the specification runs (debug assertions or the
+    /// `invariants` feature) the test runs too and a non-flippable edge panics; in other
+    /// release builds such a call would leave a duplicate edge.
+    pub(crate) fn flip_at_proved(&mut self, c: Corner) -> ([Corner; 2], [Corner; 2]) {
+        let k2 = self.opposite(c);
+        if crate::spec::ENABLED {
+            assert!(
+                self.is_face(c.face()) && !self.has_edge(self.vertex(c), self.vertex(k2)),
+                "flip_at_proved: the edge opposite {c} is not flippable (Prop. 3.3 violated)"
+            );
+        }
+        let new_corners = self.flip_corners(c, k2);
+        self.touch();
+        ([c, k2], new_corners)
+    }
+
     /// Undoes the flip `rec` exactly (same slots, opposite table, vertex corners, degrees
     /// and state stamp), provided the triangulation is in the state the flip left
     /// ([`FlipError::Modified`] otherwise, nothing changed). O(1).

@@ -299,6 +299,9 @@ struct Rs {
     /// Contractions made while processing the first processed vertex.
     contractions_first_vertex: u64,
     scratch: Vec<VertexId>,
+    /// The corners of the star whose link is in `scratch` (filled by `link_around`),
+    /// so that a contraction does not walk `v`'s star a second time.
+    scratch_star: Vec<Corner>,
     scratch2: Vec<VertexId>,
 }
 
@@ -352,6 +355,7 @@ fn reduce_variant_observed(
 impl Rs {
     fn new(tri: Triangulation, options: &Options, variant: Variant) -> Self {
         let n = tri.vertex_capacity();
+        let live = tri.vertex_count();
         let counter = RetestCounter::new(&tri, options.count_retests);
         Rs {
             // Alg. 4.1: p = false, n = nil, c = 0, o = t = −1 (removed ids count as
@@ -363,7 +367,10 @@ impl Rs {
             t: vec![Stamp::UNSET; n],
             lists: Lists::new(n),
             tri,
-            history: History::new(),
+            // RS contracts all but a few vertices of large meshes: reserving the bound
+            // avoids copying hundreds of megabytes of records while the history grows.
+            // About four corners are renamed per contraction (mean d_v − 2).
+            history: History::with_capacity(live.saturating_sub(4), 4 * live),
             ts: Time::START,
             link_tests: 0,
             counter,
@@ -372,6 +379,7 @@ impl Rs {
             processed_count: 0,
             contractions_first_vertex: 0,
             scratch: Vec::new(),
+            scratch_star: Vec::new(),
             scratch2: Vec::new(),
         }
     }
@@ -547,10 +555,15 @@ impl Rs {
         }
     }
 
-    /// Fills `scratch` with lk(v) and returns the position of `u` in it. O(d_v).
+    /// Fills `scratch` with lk(v) (and `scratch_star` with the corners of v's star, in
+    /// the same walk) and returns the position of `u` in it. O(d_v).
     fn link_around(&mut self, v: VertexId, u: VertexId) -> usize {
         self.scratch.clear();
-        self.scratch.extend(self.tri.link(v));
+        self.scratch_star.clear();
+        for s in self.tri.star(v) {
+            self.scratch.push(s.neighbour);
+            self.scratch_star.push(s.corner);
+        }
         self.scratch
             .iter()
             .position(|&w| w == u)
@@ -612,7 +625,8 @@ impl Rs {
         self.contract_with_link(u, v, None)
     }
 
-    /// [`Self::contract`], reusing `scratch = lk(v)` with `u` at `link_pos` when given.
+    /// [`Self::contract`], reusing `scratch = lk(v)` (and `scratch_star`, its star) with
+    /// `u` at `link_pos` when given.
     fn contract_with_link(
         &mut self,
         u: VertexId,
@@ -645,7 +659,10 @@ impl Rs {
             self.processed[x.index()] = true;
         }
         let before = spec::prop7_before(self);
-        let rec = self.tri.contract_tested(u, v, &mut self.history);
+        // `scratch_star` is still v's star, walked with `scratch`.
+        let rec = self
+            .tri
+            .contract_tested_walked(u, v, &self.scratch_star, i, &mut self.history);
         self.counter.contracted(&rec);
         spec::after_contraction(self, &rec, &pi);
         let [x, y] = rec.link;

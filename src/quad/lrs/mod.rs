@@ -66,21 +66,37 @@
 //!   the final `T` instead of being interleaved with the splits; the tests compare the
 //!   result with the independent definition (paired faces adjacent in `K`, exactly
 //!   `flips` edges changed).
+//! - **Which corner a flip starts from.** A flip keeps its two face ids and rewrites
+//!   their slots from the corner it is given; where the two faces are not consistently
+//!   oriented (non-orientable surfaces, or inconsistent input), the two corners of the
+//!   edge give the two new triangles to different ids. Each flagged edge is flipped
+//!   from its canonical corner (the smaller of its two opposite corners, [`crate::Edge`])
+//!   in the `K` of that moment.
 //! - **Unflip (Alg. 3.2 l.2–4)** clears the flag: `K` then never contained the flip.
 //! - **Which split edge is `x`.** `x` and `y` are the history record's link in its
 //!   order (`link[0]`, `link[1]`); the paper's choices are symmetric ("the case of
 //!   `[u, y] ∈ M` is symmetric").
 //! - **`M*` into a [`Pairing`].** Each edge of `M` is unflagged (Claim 3.1 (ii)), so it
 //!   is an edge of `K`; its two faces in `K` are paired, in increasing edge-number
-//!   order. Should two edges of `M` claim one face, or a flagged edge not be flippable
-//!   (both impossible by Prop. 3.3 and checked by the specification in checked builds),
-//!   the second claim or the flip is skipped, so the output is always a valid pairing of
-//!   a valid `K`.
+//!   order. Should two edges of `M` claim one face (impossible by Claim 3.1, checked by
+//!   the specification in checked builds), the second claim is skipped, so the output
+//!   is always a valid pairing of `K`.
+//! - **Flips trust Prop. 3.3.** Every flagged edge is flippable when its turn comes
+//!   (Prop. 3.3), so `K` is materialised by flips without the flippability test (a link
+//!   walk per flip, a fifth of the expansion's time on B0). Whenever the specification
+//!   runs (debug builds, the `invariants` feature, so every test run), L7 first
+//!   materialises `K` on its own copy with the test, and the unchecked flip itself
+//!   asserts flippability; the tests also check `K` against the definition
+//!   independently.
+//! - **Numbers without corners.** The expansion reads edge numbers of corners only
+//!   ([`EdgeIds`]); the corner of each number is needed only to materialise `K`, when
+//!   `T` is the input again, so it is made then in one pass instead of being kept in
+//!   step through 2 × 2.1 M contractions and splits on B0.
 //!
 //! The runtime checks of Claim 3.1 / Prop. 3.3 are in the child module `spec`.
 
 use crate::core::{
-    ContractionRecord, EdgeId, EdgeNumbering, FaceId, History, Triangulation, VertexId,
+    ContractionRecord, EdgeId, EdgeIds, EdgeNumbering, FaceId, History, Triangulation, VertexId,
 };
 use crate::irreducible::{rs, Options as ReduceOptions};
 
@@ -199,7 +215,13 @@ struct Expander {
     /// `T_ij`: changes only by exact undo of `history`.
     t: Triangulation,
     history: History,
-    numbers: EdgeNumbering,
+    /// The edge number of every corner, kept in lockstep with `t`; the corner of each
+    /// number (the other half of an [`EdgeNumbering`]) is needed only once `T` is the
+    /// input again, and is then made in one pass ([`EdgeNumbering::from_ids`]).
+    numbers: EdgeIds,
+    /// The full numbering kept through every change, for the specification's edge
+    /// lookups only (empty unless `SPEC_STATE`).
+    spec_numbers: EdgeNumbering,
     /// `e ∈ M`.
     in_m: Vec<bool>,
     /// `flipped(e)`.
@@ -236,10 +258,17 @@ struct Expander {
 impl Expander {
     /// Runs RS on `tri` and prepares the expansion of `T'`.
     fn new(tri: Triangulation, variant: Variant) -> Self {
-        let mut numbers = EdgeNumbering::new(&tri);
+        let mut numbers = EdgeIds::new(&tri);
+        let mut spec_numbers = EdgeNumbering::default();
+        if SPEC_STATE {
+            spec_numbers = EdgeNumbering::new(&tri);
+        }
         let red = rs::reduce(tri, &ReduceOptions::default());
         for rec in red.history.records() {
             numbers.contracted(rec);
+            if SPEC_STATE {
+                spec_numbers.contracted(rec);
+            }
         }
         let t = red.tri;
         // The state only the specification reads is kept only when it runs.
@@ -263,6 +292,7 @@ impl Expander {
             t,
             history: red.history,
             numbers,
+            spec_numbers,
             in_m: vec![false; ne],
             flipped: vec![false; ne],
             flag_time: vec![NONE; ne],
@@ -322,6 +352,7 @@ impl Expander {
         let rec = self.history.undo(&mut self.t)?;
         self.numbers.uncontracted(&rec);
         if SPEC_STATE {
+            self.spec_numbers.uncontracted(&rec);
             self.remaining[rec.u.index()] -= 1;
             self.expanded_from[rec.v.index()] = rec.u.0;
         }
@@ -462,8 +493,8 @@ impl Expander {
     /// `K` from `T` and the flags, as a copy: see [`flip_in_order`].
     fn materialise(&self) -> (Triangulation, EdgeNumbering, usize, Option<String>) {
         let mut k = self.t.clone();
-        let mut kn = self.numbers.clone();
-        let (flips, error) = flip_in_order(&self.flags_in_order(), &mut k, &mut kn);
+        let mut kn = EdgeNumbering::from_ids(self.numbers.clone(), &k);
+        let (flips, error) = flip_in_order(&self.flags_in_order(), &mut k, &mut kn, true);
         (k, kn, flips, error)
     }
 
@@ -479,14 +510,15 @@ impl Expander {
         let order = self.flags_in_order();
         let Expander {
             t: mut k,
-            numbers: mut kn,
+            numbers,
             in_m,
             flipped,
             reduced_faces,
             cases,
             ..
         } = self;
-        let (flips, _) = flip_in_order(&order, &mut k, &mut kn);
+        let mut kn = EdgeNumbering::from_ids(numbers, &k);
+        let (flips, _) = flip_in_order(&order, &mut k, &mut kn, false);
         let (pairing, _) = pair_edges(&in_m, &flipped, &k, &kn);
         Expansion {
             tri: k,
@@ -499,12 +531,17 @@ impl Expander {
 }
 
 /// Turns `k` (numbered by `kn`) into `K` by flipping the edges of `order` in turn. Returns
-/// the flips made and an error naming the first edge that could not be flipped (that
-/// flip is skipped, so `k` stays a triangulation).
+/// the flips made and an error naming the first edge that is dead or (if `checked`)
+/// could not be flipped; that flip is skipped.
+///
+/// `checked` tests each flip's flippability ([`Triangulation::flip_at`]: a link walk);
+/// unchecked flips trust Prop. 3.3 ([`Triangulation::flip_at_proved`]), which the
+/// specification verifies on its own checked copy (L7) whenever it runs.
 fn flip_in_order(
     order: &[EdgeId],
     k: &mut Triangulation,
     kn: &mut EdgeNumbering,
+    checked: bool,
 ) -> (usize, Option<String>) {
     let mut flips = 0;
     let mut error = None;
@@ -513,6 +550,17 @@ fn flip_in_order(
             error.get_or_insert_with(|| format!("flagged edge {e:?} is dead"));
             continue;
         };
+        // A flip rewrites the slots of its two faces from the corner it is given, and on
+        // a surface whose faces are not consistently oriented the two corners of an edge
+        // give the two faces' triangles to different face ids: flip from the edge's
+        // canonical (smaller) corner, a rule a port can reproduce.
+        let c = k.edge_at(c).corner();
+        if !checked {
+            let (moved, new_corners) = k.flip_at_proved(c);
+            kn.flipped_corners(moved, new_corners);
+            flips += 1;
+            continue;
+        }
         match k.flip_at(c) {
             Ok(rec) => {
                 kn.flipped(&rec);

@@ -50,7 +50,7 @@ fn processed_before(ex: &Expander, w: VertexId, u: VertexId) -> bool {
 
 /// The endpoints of live edge `e` in `T`, or `None`.
 fn endpoints(ex: &Expander, e: EdgeId) -> Option<[VertexId; 2]> {
-    ex.numbers.corner(e).map(|c| ex.t.edge_endpoints(c))
+    ex.spec_numbers.corner(e).map(|c| ex.t.edge_endpoints(c))
 }
 
 /// L1–L3 after the split `s` (which set `new_flags` flags).
@@ -491,7 +491,7 @@ mod tests {
             .map(|i| EdgeId(i as u32))
             .filter(|e| ex.in_m[e.index()])
             .find_map(|e| {
-                let c = ex.numbers.corner(e).expect("live");
+                let c = ex.spec_numbers.corner(e).expect("live");
                 [c.next(), c.prev()]
                     .into_iter()
                     .map(|k| ex.numbers.id(k))
