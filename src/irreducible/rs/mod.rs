@@ -27,7 +27,7 @@ use std::fmt;
 use std::time::Instant;
 
 use super::{finish, start_stats, Algorithm, Options, Reduction, RetestCounter};
-use crate::core::{Corner, History, Triangulation, VertexId};
+use crate::core::{Corner, EdgeIds, History, Triangulation, VertexId};
 use crate::progress::{self, Progress, Throttle};
 
 /// The stage RS reports progress in.
@@ -303,6 +303,9 @@ struct Rs {
     /// so that a contraction does not walk `v`'s star a second time.
     scratch_star: Vec<Corner>,
     scratch2: Vec<VertexId>,
+    /// Edge numbers kept through every contraction for the caller
+    /// ([`reduce_numbered`]).
+    follow: Option<EdgeIds>,
 }
 
 /// Runs RS on `tri`. See the module documentation.
@@ -320,14 +323,35 @@ pub fn reduce_observed(
     options: &Options,
     observer: &mut dyn FnMut(Progress),
 ) -> Reduction {
-    reduce_variant_observed(tri, options, Variant::default(), observer).0
+    reduce_variant_observed(tri, options, Variant::default(), observer, None).0
+}
+
+/// [`reduce`], also keeping `numbers` (edge numbers of `tri`, e.g. [`EdgeIds::new`]) in
+/// step with every contraction, as [`EdgeIds::contracted`] would if fed the history
+/// afterwards, but while each record's corners are still in cache. Same reduction as
+/// [`reduce`]; returns the numbers of the reduced triangulation.
+pub fn reduce_numbered(
+    tri: Triangulation,
+    options: &Options,
+    numbers: EdgeIds,
+) -> (Reduction, EdgeIds) {
+    let (red, _, numbers) = reduce_variant_observed(
+        tri,
+        options,
+        Variant::default(),
+        &mut progress::ignore,
+        Some(numbers),
+    );
+    (red, numbers.unwrap_or_default())
 }
 
 /// RS with a deliberate [`Variant`]; also returns how many contractions happened while
 /// the first vertex was processed (Sec. 4.6).
 #[doc(hidden)]
 pub fn reduce_variant(tri: Triangulation, options: &Options, variant: Variant) -> (Reduction, u64) {
-    reduce_variant_observed(tri, options, variant, &mut progress::ignore)
+    let (red, first, _) =
+        reduce_variant_observed(tri, options, variant, &mut progress::ignore, None);
+    (red, first)
 }
 
 fn reduce_variant_observed(
@@ -335,20 +359,24 @@ fn reduce_variant_observed(
     options: &Options,
     variant: Variant,
     observer: &mut dyn FnMut(Progress),
-) -> (Reduction, u64) {
+    follow: Option<EdgeIds>,
+) -> (Reduction, u64, Option<EdgeIds>) {
     let started = Instant::now();
     let mut stats = start_stats(&tri);
     let total = tri.vertex_count() as u64;
     observer(Progress::new(SETTLED, 0, total));
     let mut rs = Rs::new(tri, options, variant);
+    rs.follow = follow;
     rs.run(&mut |done| observer(Progress::new(SETTLED, done, total)));
     observer(Progress::new(SETTLED, total, total));
     stats.link_tests = rs.link_tests;
     stats.edges_tested_more_than_once = rs.counter.more_than_once();
     let first = rs.contractions_first_vertex;
+    let follow = rs.follow.take();
     (
         finish(Algorithm::Rs, rs.tri, rs.history, stats, started),
         first,
+        follow,
     )
 }
 
@@ -381,6 +409,7 @@ impl Rs {
             scratch: Vec::new(),
             scratch_star: Vec::new(),
             scratch2: Vec::new(),
+            follow: None,
         }
     }
 
@@ -664,6 +693,9 @@ impl Rs {
             .tri
             .contract_tested_walked(u, v, &self.scratch_star, i, &mut self.history);
         self.counter.contracted(&rec);
+        if let Some(numbers) = &mut self.follow {
+            numbers.contracted(&rec);
+        }
         spec::after_contraction(self, &rec, &pi);
         let [x, y] = rec.link;
         // l.19–24: keep degree-3 endpoints at the front of lue (Prop. 8(2)).

@@ -258,15 +258,14 @@ struct Expander {
 impl Expander {
     /// Runs RS on `tri` and prepares the expansion of `T'`.
     fn new(tri: Triangulation, variant: Variant) -> Self {
-        let mut numbers = EdgeIds::new(&tri);
         let mut spec_numbers = EdgeNumbering::default();
         if SPEC_STATE {
             spec_numbers = EdgeNumbering::new(&tri);
         }
-        let red = rs::reduce(tri, &ReduceOptions::default());
-        for rec in red.history.records() {
-            numbers.contracted(rec);
-            if SPEC_STATE {
+        let numbers = EdgeIds::new(&tri);
+        let (red, numbers) = rs::reduce_numbered(tri, &ReduceOptions::default(), numbers);
+        if SPEC_STATE {
+            for rec in red.history.records() {
                 spec_numbers.contracted(rec);
             }
         }
