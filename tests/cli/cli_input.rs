@@ -461,3 +461,36 @@ fn standard_input_sniffing_bom_and_skipped_statements() {
         "{err}"
     );
 }
+
+/// `--triangulate` never folds a quad surface it can cut cleanly: the coarse torus's
+/// quads (from `quad`, 288 quads on 288 vertices) cut by the shorter diagonal alone gave
+/// 48 duplicate faces and non-manifold edges; with the diagonal choice that avoids
+/// existing edges, the triangles are a closed torus again (checked by `info`'s own
+/// validation, and V − E + F = 0 from its counts).
+#[test]
+fn triangulating_quads_of_a_coarse_torus_gives_a_torus() {
+    let d = Scratch::new("coarse_torus_quads");
+    let input = format!(
+        "{}/../shared/meshes/closed/torus_288.off.gz",
+        env!("CARGO_MANIFEST_DIR")
+    );
+    let quads = d.path("quads.off");
+    for algo in ["lrs", "ps", "sg", "matching"] {
+        run_ok(&[
+            "quad",
+            "--algo",
+            algo,
+            &input,
+            "-o",
+            quads.to_str().unwrap(),
+        ]);
+        let r = run_json(&["info", "--triangulate", quads.to_str().unwrap()]);
+        assert!(r.get("problems").is_none(), "{algo}: {r}");
+        assert_eq!(r["orientable"], true, "{algo}: {r}");
+        assert_eq!(int(&r["component_list"][0], "genus"), 1, "{algo}: {r}");
+        let (v, e, f) = (int(&r, "vertices"), int(&r, "edges"), int(&r, "faces"));
+        assert_eq!((v, f), (288, 576), "{algo}: {r}");
+        assert_eq!(v - e + f, 0, "{algo}: {r}");
+        assert_eq!(int(&r, "triangulated_polygons"), 288, "{algo}");
+    }
+}
