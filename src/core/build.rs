@@ -144,13 +144,18 @@ pub(super) struct Checked {
 }
 
 fn check_sizes(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
-    if faces.is_empty() {
+    check_counts(vertex_count, faces.len())
+}
+
+/// [`check_sizes`] on the counts alone.
+pub(super) fn check_counts(vertex_count: usize, faces: usize) -> Result<(), BuildError> {
+    if faces == 0 {
         return Err(BuildError::Empty);
     }
-    if faces.len() > MAX_FACES {
+    if faces > MAX_FACES {
         return Err(BuildError::TooLarge {
             what: "faces",
-            count: faces.len(),
+            count: faces,
             max: MAX_FACES,
         });
     }
@@ -276,15 +281,33 @@ fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]
     };
     for lo in 0..start.len() - 1 {
         let b = &mut entries[start[lo] as usize..start[lo + 1] as usize];
-        if b.len() > 1 {
-            b.sort_unstable();
-        }
+        sort_bucket(b);
         let mut i = 0;
         while i < b.len() {
             let hi = b[i] >> 32;
             let mut j = i + 1;
             while j < b.len() && b[j] >> 32 == hi {
                 j += 1;
+            }
+            if j == i + 2 {
+                // The common case, an interior edge, without `classify_run`'s general
+                // bookkeeping (same checks, same order).
+                let (p, q) = (
+                    (b[i] & 0xffff_ffff) as usize,
+                    (b[i + 1] & 0xffff_ffff) as usize,
+                );
+                if out.duplicate.is_none() && corner_vertex[p] == corner_vertex[q] {
+                    let (first, face) = (p / 3, q / 3);
+                    out.duplicate = Some(BuildError::DuplicateFace {
+                        face,
+                        first,
+                        vertices: faces[face],
+                    });
+                }
+                out.opposite[p] = q as u32;
+                out.opposite[q] = p as u32;
+                i = j;
+                continue;
             }
             classify_run(
                 &b[i..j],
@@ -297,6 +320,24 @@ fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]
         }
     }
     out
+}
+
+/// Sorts one edge bucket (a vertex's edges to larger neighbours: about three on a
+/// typical surface, so an insertion sort beats the general sort's set-up).
+fn sort_bucket(b: &mut [u64]) {
+    if b.len() > 16 {
+        b.sort_unstable();
+        return;
+    }
+    for i in 1..b.len() {
+        let x = b[i];
+        let mut j = i;
+        while j > 0 && b[j - 1] > x {
+            b[j] = b[j - 1];
+            j -= 1;
+        }
+        b[j] = x;
+    }
 }
 
 /// Phase 3 for one endpoint pair `[a, b]` held by the corners of `run`.
@@ -409,7 +450,7 @@ fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Vec<u32>, Classi
 
 /// Phase 4 on a fully glued corner table (every edge interior): per-vertex corners and
 /// degrees, then the vertex-link check.
-fn assemble(
+pub(super) fn assemble(
     vertex_count: usize,
     faces: usize,
     corner_vertex: Vec<u32>,
@@ -473,6 +514,7 @@ pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Open
     }
     Ok(OpenCheck::Open {
         corner_vertex,
+        opposite: classified.opposite,
         boundary: classified.boundary,
     })
 }
@@ -481,9 +523,11 @@ pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Open
 pub(super) enum OpenCheck {
     /// No boundary edge: the finished closed surface.
     Closed(Checked),
-    /// Boundary edges: the corner-to-vertex array and the corners opposite them.
+    /// Boundary edges: the corner-to-vertex array, the gluing of the interior edges
+    /// (`NONE` at the corners opposite boundary edges) and those corners.
     Open {
         corner_vertex: Vec<u32>,
+        opposite: Vec<u32>,
         boundary: Vec<u32>,
     },
 }
