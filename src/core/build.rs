@@ -202,30 +202,33 @@ struct EdgeBuckets {
 /// Phase 2: buckets every corner's opposite edge (a counting sort by smaller endpoint).
 /// O(F + V).
 fn bucket_edges(vertex_count: usize, corner_vertex: &[u32]) -> EdgeBuckets {
-    let nc = corner_vertex.len();
-    let edge_of = |c: usize| {
-        let a = corner_vertex[Corner(c as u32).next().index()];
-        let b = corner_vertex[Corner(c as u32).prev().index()];
-        if a < b {
-            (a, b)
-        } else {
-            (b, a)
-        }
+    // The edge opposite slot s of a face joins its slots s + 1 and s + 2 (mod 3): read
+    // per face, so no corner arithmetic is needed.
+    let edges = |f: &[u32]| {
+        let ordered = |a: u32, b: u32| if a < b { (a, b) } else { (b, a) };
+        [
+            ordered(f[1], f[2]),
+            ordered(f[2], f[0]),
+            ordered(f[0], f[1]),
+        ]
     };
     let mut start = vec![0u32; vertex_count + 1];
-    for c in 0..nc {
-        start[edge_of(c).0 as usize + 1] += 1;
+    for f in corner_vertex.chunks_exact(3) {
+        for (lo, _) in edges(f) {
+            start[lo as usize + 1] += 1;
+        }
     }
     for i in 0..vertex_count {
         start[i + 1] += start[i];
     }
     let mut fill = start.clone();
-    let mut entries = vec![0u64; nc];
-    for c in 0..nc {
-        let (lo, hi) = edge_of(c);
-        let slot = &mut fill[lo as usize];
-        entries[*slot as usize] = ((hi as u64) << 32) | c as u64;
-        *slot += 1;
+    let mut entries = vec![0u64; corner_vertex.len()];
+    for (face, f) in corner_vertex.chunks_exact(3).enumerate() {
+        for (s, (lo, hi)) in edges(f).into_iter().enumerate() {
+            let slot = &mut fill[lo as usize];
+            entries[*slot as usize] = ((hi as u64) << 32) | (3 * face + s) as u64;
+            *slot += 1;
+        }
     }
     EdgeBuckets { start, entries }
 }
@@ -439,7 +442,10 @@ fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildErr
 fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Vec<u32>, Classified), BuildError> {
     check_sizes(vertex_count, faces)?;
     check_faces(vertex_count, faces)?;
-    let corner_vertex: Vec<u32> = faces.iter().flat_map(|f| f.iter().copied()).collect();
+    let mut corner_vertex: Vec<u32> = Vec::with_capacity(3 * faces.len());
+    for f in faces {
+        corner_vertex.extend_from_slice(f);
+    }
     let buckets = bucket_edges(vertex_count, &corner_vertex);
     let mut classified = classify_edges(buckets, &corner_vertex, faces);
     if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {

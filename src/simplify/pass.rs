@@ -281,32 +281,23 @@ impl<'o> Simplifier<'o> {
     fn pass(&mut self, observer: &mut dyn FnMut(Progress)) -> usize {
         self.pass += 1;
         let mut contracted = 0;
-        let slots = self.tri.face_capacity() as u64;
+        let nf = self.tri.face_capacity();
+        let slots = nf as u64;
         observer(Progress::new(SCANNED, 0, slots));
         let mut throttle = Throttle::new();
-        for fi in 0..self.tri.face_capacity() as u32 {
-            if throttle.due(u64::from(fi)) {
-                observer(Progress::new(SCANNED, u64::from(fi), slots));
+        let mut from = 0;
+        loop {
+            let (fi, frozen) = self.next_candidate(from);
+            self.run.skipped.frozen += frozen;
+            if fi >= nf {
+                break;
             }
-            let f = FaceId(fi);
-            if !self.tri.is_face(f) {
-                continue;
+            from = fi + 1;
+            if throttle.due(fi as u64) {
+                observer(Progress::new(SCANNED, fi as u64, slots));
             }
+            let f = FaceId(fi as u32);
             let vs = self.tri.face_vertices(f);
-            if vs.iter().any(|v| v.0 >= self.first_virtual) {
-                continue;
-            }
-            let pass = self.pass;
-            let frozen = vs
-                .iter()
-                .filter(|v| self.vert[v.index()].touched == pass)
-                .count();
-            if frozen >= 2 {
-                // Every edge has a frozen endpoint: deferred without reading positions
-                // (most visits of a pass end here, so this test comes first).
-                self.run.skipped.frozen += 1;
-                continue;
-            }
             let ps = [
                 self.vert[vs[0].index()].pos,
                 self.vert[vs[1].index()].pos,
@@ -352,6 +343,32 @@ impl<'o> Simplifier<'o> {
         }
         observer(Progress::new(SCANNED, slots, slots));
         contracted
+    }
+
+    /// The first face slot from `from` on whose visit gets as far as reading positions,
+    /// and the number of visits before it deferred as frozen; `face_capacity()` if
+    /// none. Skipped: removed faces, cone faces (a virtual vertex) and faces with two
+    /// or more vertices frozen in this pass (every edge has a frozen endpoint; most
+    /// visits of a pass end here, so they are skipped in a loop that changes nothing).
+    fn next_candidate(&self, from: usize) -> (usize, usize) {
+        let pass = self.pass;
+        let first_virtual = self.first_virtual;
+        let frozen = |v: u32| u32::from(self.vert[v as usize].touched == pass);
+        let mut deferred = 0;
+        let slots = self.tri.corner_vertex.get(3 * from..).unwrap_or(&[]);
+        for (k, face) in slots.chunks_exact(3).enumerate() {
+            let (a, b, c) = (face[0], face[1], face[2]);
+            // A removed face has NONE (above every vertex id) in its slots.
+            if a >= first_virtual || b >= first_virtual || c >= first_virtual {
+                continue;
+            }
+            if frozen(a) + frozen(b) + frozen(c) >= 2 {
+                deferred += 1;
+                continue;
+            }
+            return (from + k, deferred);
+        }
+        (self.tri.face_capacity(), deferred)
     }
 
     /// The edge opposite `c`: its endpoints and opposite vertices, and its other common
