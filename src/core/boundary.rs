@@ -53,15 +53,15 @@
 //!   link condition of the surface with boundary.
 //!
 //! **Complexity.** O(F) plus the sort of each vertex's edge bucket, as for closed
-//! meshes; a mesh with boundary is classified twice (once to find the loops, once
-//! coned), a closed one once. **Determinism.** Loops are numbered by the first corner
+//! meshes; the edges are classified once, with or without boundary (the cone faces are
+//! glued directly). **Determinism.** Loops are numbered by the first corner
 //! (in input face order) opposite one of their edges; components, local vertex and face
 //! ids follow input order as in [`Surfaces::from_mesh`], real vertices and faces before
 //! virtual vertices and cone faces.
 
 use super::build::{
-    check, check_open, face_components, split, unused_vertices, BuildError, Checked, Component,
-    OpenCheck, Surfaces,
+    assemble, check_counts, check_open, face_components, split, unused_vertices, BuildError,
+    Checked, Component, OpenCheck, Surfaces,
 };
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::tri::Triangulation;
@@ -251,23 +251,23 @@ impl ConedSurfaces {
             OpenCheck::Closed(checked) => checked,
             OpenCheck::Open {
                 corner_vertex,
+                opposite,
                 boundary,
             } => {
                 let cones = cone_loops(vertex_count, &corner_vertex, &boundary)?;
-                let mut all = Vec::with_capacity(faces.len() + cones.faces.len());
-                all.extend_from_slice(faces);
-                all.extend_from_slice(&cones.faces);
-                check(vertex_count + cones.loops, &all).map_err(|e| match e {
-                    // Report the faces of the mesh around the vertex, not the cone's.
-                    BuildError::VertexLinkNotCycle { vertex, cycles, .. } => {
-                        BuildError::VertexLinkNotCycle {
-                            vertex,
-                            cycles,
-                            faces: faces.iter().filter(|f| f.contains(&vertex)).count(),
+                glue_cones(vertex_count, faces.len(), corner_vertex, opposite, &cones).map_err(
+                    |e| match e {
+                        // Report the faces of the mesh around the vertex, not the cone's.
+                        BuildError::VertexLinkNotCycle { vertex, cycles, .. } => {
+                            BuildError::VertexLinkNotCycle {
+                                vertex,
+                                cycles,
+                                faces: faces.iter().filter(|f| f.contains(&vertex)).count(),
+                            }
                         }
-                    }
-                    e => e,
-                })?
+                        e => e,
+                    },
+                )?
             }
         };
         let Checked { tri, used } = checked;
@@ -353,7 +353,54 @@ fn coned_component(c: Component, vertex_count: usize, face_count: usize) -> Cone
 /// The cone faces of every boundary loop and the number of loops.
 struct Cones {
     faces: Vec<[u32; 3]>,
+    /// `corners[k]`: the corner opposite the boundary edge that cone face `k` closes.
+    corners: Vec<u32>,
     loops: usize,
+}
+
+/// The coned surface's corner table, glued directly: the interior edges as the first
+/// classification glued them, each boundary edge to its cone face, and the cone faces
+/// of each loop to each other around their apex; then per-vertex corners, degrees and
+/// the vertex-link check ([`assemble`]). The result is the table that validating the
+/// mesh's faces followed by the cone faces from scratch builds (a gluing is determined
+/// by its edges), without classifying every edge a second time: the cone faces add no
+/// face, edge or duplicate error (each cone face has a new apex, each boundary edge
+/// gets one cone face, and each boundary vertex lies on exactly two boundary edges of
+/// one loop, which `cone_loops` has checked), so only the sizes and the vertex links
+/// are left to check. O(F + V).
+fn glue_cones(
+    vertex_count: usize,
+    face_count: usize,
+    mut corner_vertex: Vec<u32>,
+    mut opposite: Vec<u32>,
+    cones: &Cones,
+) -> Result<Checked, BuildError> {
+    let all_vertices = vertex_count + cones.loops;
+    let all_faces = face_count + cones.faces.len();
+    check_counts(all_vertices, all_faces)?;
+    corner_vertex.reserve_exact(3 * cones.faces.len());
+    opposite.reserve_exact(3 * cones.faces.len());
+    // The corner of a cone face opposite `[v, apex]` whose partner is not seen yet.
+    let mut pending = vec![NONE; vertex_count];
+    for (k, (face, &boundary)) in cones.faces.iter().zip(&cones.corners).enumerate() {
+        let base = 3 * (face_count + k) as u32;
+        corner_vertex.extend_from_slice(face);
+        // The face is [y, x, apex]: the apex's corner faces the boundary edge [y, x].
+        opposite.extend_from_slice(&[NONE, NONE, boundary]);
+        opposite[boundary as usize] = base + 2;
+        // The corner at y faces [x, apex], the corner at x faces [apex, y].
+        for (corner, v) in [(base, face[1]), (base + 1, face[0])] {
+            let other = std::mem::replace(&mut pending[v as usize], NONE);
+            if other == NONE {
+                pending[v as usize] = corner;
+            } else {
+                opposite[corner as usize] = other;
+                opposite[other as usize] = corner;
+            }
+        }
+    }
+    debug_assert!(pending.iter().all(|&c| c == NONE));
+    assemble(all_vertices, all_faces, corner_vertex, opposite)
 }
 
 /// Walks the boundary edges (the edges opposite the `boundary` corners) into loops and
@@ -395,6 +442,7 @@ fn cone_loops(
     let mut seen = vec![false; corner_vertex.len()];
     let mut out = Cones {
         faces: Vec::with_capacity(boundary.len()),
+        corners: Vec::with_capacity(boundary.len()),
         loops: 0,
     };
     for &start in &starts {
@@ -410,6 +458,7 @@ fn cone_loops(
             // The face runs x → y along this edge; the cone face runs y → x, so that a
             // consistently oriented surface stays consistently oriented.
             out.faces.push([y, x, w]);
+            out.corners.push(c);
             let to = if x == from { y } else { x };
             let [c1, c2] = at[to as usize];
             let next = if c1 == c { c2 } else { c1 };

@@ -144,13 +144,18 @@ pub(super) struct Checked {
 }
 
 fn check_sizes(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
-    if faces.is_empty() {
+    check_counts(vertex_count, faces.len())
+}
+
+/// [`check_sizes`] on the counts alone.
+pub(super) fn check_counts(vertex_count: usize, faces: usize) -> Result<(), BuildError> {
+    if faces == 0 {
         return Err(BuildError::Empty);
     }
-    if faces.len() > MAX_FACES {
+    if faces > MAX_FACES {
         return Err(BuildError::TooLarge {
             what: "faces",
-            count: faces.len(),
+            count: faces,
             max: MAX_FACES,
         });
     }
@@ -197,30 +202,33 @@ struct EdgeBuckets {
 /// Phase 2: buckets every corner's opposite edge (a counting sort by smaller endpoint).
 /// O(F + V).
 fn bucket_edges(vertex_count: usize, corner_vertex: &[u32]) -> EdgeBuckets {
-    let nc = corner_vertex.len();
-    let edge_of = |c: usize| {
-        let a = corner_vertex[Corner(c as u32).next().index()];
-        let b = corner_vertex[Corner(c as u32).prev().index()];
-        if a < b {
-            (a, b)
-        } else {
-            (b, a)
-        }
+    // The edge opposite slot s of a face joins its slots s + 1 and s + 2 (mod 3): read
+    // per face, so no corner arithmetic is needed.
+    let edges = |f: &[u32]| {
+        let ordered = |a: u32, b: u32| if a < b { (a, b) } else { (b, a) };
+        [
+            ordered(f[1], f[2]),
+            ordered(f[2], f[0]),
+            ordered(f[0], f[1]),
+        ]
     };
     let mut start = vec![0u32; vertex_count + 1];
-    for c in 0..nc {
-        start[edge_of(c).0 as usize + 1] += 1;
+    for f in corner_vertex.chunks_exact(3) {
+        for (lo, _) in edges(f) {
+            start[lo as usize + 1] += 1;
+        }
     }
     for i in 0..vertex_count {
         start[i + 1] += start[i];
     }
     let mut fill = start.clone();
-    let mut entries = vec![0u64; nc];
-    for c in 0..nc {
-        let (lo, hi) = edge_of(c);
-        let slot = &mut fill[lo as usize];
-        entries[*slot as usize] = ((hi as u64) << 32) | c as u64;
-        *slot += 1;
+    let mut entries = vec![0u64; corner_vertex.len()];
+    for (face, f) in corner_vertex.chunks_exact(3).enumerate() {
+        for (s, (lo, hi)) in edges(f).into_iter().enumerate() {
+            let slot = &mut fill[lo as usize];
+            entries[*slot as usize] = ((hi as u64) << 32) | (3 * face + s) as u64;
+            *slot += 1;
+        }
     }
     EdgeBuckets { start, entries }
 }
@@ -276,15 +284,33 @@ fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]
     };
     for lo in 0..start.len() - 1 {
         let b = &mut entries[start[lo] as usize..start[lo + 1] as usize];
-        if b.len() > 1 {
-            b.sort_unstable();
-        }
+        sort_bucket(b);
         let mut i = 0;
         while i < b.len() {
             let hi = b[i] >> 32;
             let mut j = i + 1;
             while j < b.len() && b[j] >> 32 == hi {
                 j += 1;
+            }
+            if j == i + 2 {
+                // The common case, an interior edge, without `classify_run`'s general
+                // bookkeeping (same checks, same order).
+                let (p, q) = (
+                    (b[i] & 0xffff_ffff) as usize,
+                    (b[i + 1] & 0xffff_ffff) as usize,
+                );
+                if out.duplicate.is_none() && corner_vertex[p] == corner_vertex[q] {
+                    let (first, face) = (p / 3, q / 3);
+                    out.duplicate = Some(BuildError::DuplicateFace {
+                        face,
+                        first,
+                        vertices: faces[face],
+                    });
+                }
+                out.opposite[p] = q as u32;
+                out.opposite[q] = p as u32;
+                i = j;
+                continue;
             }
             classify_run(
                 &b[i..j],
@@ -297,6 +323,24 @@ fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]
         }
     }
     out
+}
+
+/// Sorts one edge bucket (a vertex's edges to larger neighbours: about three on a
+/// typical surface, so an insertion sort beats the general sort's set-up).
+fn sort_bucket(b: &mut [u64]) {
+    if b.len() > 16 {
+        b.sort_unstable();
+        return;
+    }
+    for i in 1..b.len() {
+        let x = b[i];
+        let mut j = i;
+        while j > 0 && b[j - 1] > x {
+            b[j] = b[j - 1];
+            j -= 1;
+        }
+        b[j] = x;
+    }
 }
 
 /// Phase 3 for one endpoint pair `[a, b]` held by the corners of `run`.
@@ -398,7 +442,10 @@ fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildErr
 fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Vec<u32>, Classified), BuildError> {
     check_sizes(vertex_count, faces)?;
     check_faces(vertex_count, faces)?;
-    let corner_vertex: Vec<u32> = faces.iter().flat_map(|f| f.iter().copied()).collect();
+    let mut corner_vertex: Vec<u32> = Vec::with_capacity(3 * faces.len());
+    for f in faces {
+        corner_vertex.extend_from_slice(f);
+    }
     let buckets = bucket_edges(vertex_count, &corner_vertex);
     let mut classified = classify_edges(buckets, &corner_vertex, faces);
     if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {
@@ -409,7 +456,7 @@ fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Vec<u32>, Classi
 
 /// Phase 4 on a fully glued corner table (every edge interior): per-vertex corners and
 /// degrees, then the vertex-link check.
-fn assemble(
+pub(super) fn assemble(
     vertex_count: usize,
     faces: usize,
     corner_vertex: Vec<u32>,
@@ -473,6 +520,7 @@ pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Open
     }
     Ok(OpenCheck::Open {
         corner_vertex,
+        opposite: classified.opposite,
         boundary: classified.boundary,
     })
 }
@@ -481,9 +529,11 @@ pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Open
 pub(super) enum OpenCheck {
     /// No boundary edge: the finished closed surface.
     Closed(Checked),
-    /// Boundary edges: the corner-to-vertex array and the corners opposite them.
+    /// Boundary edges: the corner-to-vertex array, the gluing of the interior edges
+    /// (`NONE` at the corners opposite boundary edges) and those corners.
     Open {
         corner_vertex: Vec<u32>,
+        opposite: Vec<u32>,
         boundary: Vec<u32>,
     },
 }

@@ -271,38 +271,53 @@ impl Triangulation {
     /// one). Corners keep their slot within their face. O(vertex capacity + face
     /// capacity).
     pub fn compact(&mut self) -> Vec<Option<VertexId>> {
-        let mut vertex_map = vec![None; self.vertex_corner.len()];
+        self.compact_ids()
+            .into_iter()
+            .map(|v| (v != NONE).then_some(VertexId(v)))
+            .collect()
+    }
+
+    /// [`Self::compact`], returning the new ids as raw ids with `NONE` for a removed
+    /// vertex (half the memory, no conversion: the simplifier compacts every few passes).
+    pub(crate) fn compact_ids(&mut self) -> Vec<u32> {
+        let mut vertex_map = vec![NONE; self.vertex_corner.len()];
         let mut next = 0u32;
-        for (v, &c) in self.vertex_corner.iter().enumerate() {
+        for (m, &c) in vertex_map.iter_mut().zip(&self.vertex_corner) {
             if c != NONE {
-                vertex_map[v] = Some(VertexId(next));
+                *m = next;
                 next += 1;
             }
         }
-        // New face ids, as the first corner of the face (NONE for a removed face).
+        // The new first corner of every face (NONE for a removed face).
         let faces = self.corner_vertex.len() / 3;
         let mut face_base = vec![NONE; faces];
-        let mut next_face = 0u32;
-        for (f, base) in face_base.iter_mut().enumerate() {
-            if self.corner_vertex[3 * f] != NONE {
-                *base = 3 * next_face;
-                next_face += 1;
+        let mut next_base = 0u32;
+        for (base, face) in face_base.iter_mut().zip(self.corner_vertex.chunks_exact(3)) {
+            if face[0] != NONE {
+                *base = next_base;
+                next_base += 3;
             }
         }
         let remap_corner = |c: u32| face_base[(c / 3) as usize] + c % 3;
-        let mut w = 0usize;
+        // Face f moves to a slot at or before its own, so one forward sweep rewrites in
+        // place.
         for (f, &base) in face_base.iter().enumerate() {
             if base == NONE {
                 continue;
             }
+            let (r, w) = (3 * f, base as usize);
+            let v = [
+                self.corner_vertex[r],
+                self.corner_vertex[r + 1],
+                self.corner_vertex[r + 2],
+            ];
+            let o = [self.opposite[r], self.opposite[r + 1], self.opposite[r + 2]];
             for s in 0..3 {
-                let v = self.corner_vertex[3 * f + s];
-                let o = self.opposite[3 * f + s];
-                self.corner_vertex[w] = vertex_map[v as usize].map_or(NONE, |v| v.0);
-                self.opposite[w] = remap_corner(o);
-                w += 1;
+                self.corner_vertex[w + s] = vertex_map[v[s] as usize];
+                self.opposite[w + s] = remap_corner(o[s]);
             }
         }
+        let w = next_base as usize;
         self.corner_vertex.truncate(w);
         self.opposite.truncate(w);
         let mut k = 0usize;

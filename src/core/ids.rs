@@ -76,7 +76,9 @@ impl Corner {
     /// The next corner of the same face, cyclically (slot order, not geometric orientation).
     #[inline]
     pub fn next(self) -> Corner {
-        if self.0 % 3 == 2 {
+        // `(c + 1) % 3 == 0` rather than `c % 3 == 2`: the same test, which compiles to a
+        // multiply and a compare (divisibility by 3) instead of a full remainder.
+        if (self.0 + 1) % 3 == 0 {
             Corner(self.0 - 2)
         } else {
             Corner(self.0 + 1)

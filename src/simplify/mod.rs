@@ -35,7 +35,7 @@
 //! **Complexity.** Per pass O(F) plus, per processed edge, O(d_p + d_q) for the link
 //! walk and contraction and, in the nested mode, O(size of the regions grown) (two
 //! regions grown in lockstep, so about twice the removed part). Memory: the corner table
-//! (≈ 28 bytes per triangle) plus ≈ 14 bytes per triangle of positions and marks (plus
+//! (≈ 28 bytes per triangle) plus ≈ 22 bytes per triangle of positions and marks (plus
 //! 40 per triangle for [`Position::Quadric`]'s quadrics).
 
 pub mod geometry;
@@ -372,12 +372,7 @@ pub fn simplify_surfaces_observed(
     let mut out_positions = Vec::new();
     let mut out_faces = Vec::new();
     for (k, component) in surfaces.components.into_iter().enumerate() {
-        let local: Vec<[f64; 3]> = component
-            .vertex_origin
-            .iter()
-            .map(|&m| positions[m as usize])
-            .collect();
-        let mut sim = pass::Simplifier::new(component, local, options);
+        let mut sim = pass::Simplifier::new(component, positions, options);
         let run = sim.run(
             &mut |pass, contracted, faces| {
                 on_pass(&PassReport {

@@ -327,12 +327,12 @@ fn euclidean_split(sim: &Simplifier<'_>, e: &EdgeInfo) -> Option<usize> {
     if sim.is_virtual(e.a) || sim.is_virtual(e.b) || sim.xs.iter().any(|&x| sim.is_virtual(x)) {
         return None;
     }
-    let (pa, pb) = (sim.pos[e.a.index()], sim.pos[e.b.index()]);
+    let (pa, pb) = (sim.vert[e.a.index()].pos, sim.vert[e.b.index()].pos);
     Some(
         sim.xs
             .iter()
             .filter(|&&x| {
-                let px = sim.pos[x.index()];
+                let px = sim.vert[x.index()].pos;
                 dist2(px, pa) <= dist2(px, pb)
             })
             .count(),

@@ -67,10 +67,21 @@ pub(super) struct Plan {
     pub(super) position: Point,
 }
 
+/// A vertex's position and the pass in which it was replaced or frozen (see
+/// `Simplifier::vert`).
+#[derive(Copy, Clone, Debug)]
+pub(super) struct Vertex {
+    pub(super) pos: Point,
+    touched: u32,
+}
+
 /// One component being simplified.
 pub(crate) struct Simplifier<'o> {
     pub(super) tri: Triangulation,
-    pub(super) pos: Vec<Point>,
+    /// Per vertex: position and the pass that froze it, side by side, so that the
+    /// freezing test of a visit and the position loads that follow it (and the guard's
+    /// position loads and the freeze after it) share cache lines.
+    pub(super) vert: Vec<Vertex>,
     quadric: Vec<Quadric>,
     /// Vertex ids from here on are virtual (cone apexes); they stay last through
     /// compaction since they are never removed.
@@ -79,8 +90,6 @@ pub(crate) struct Simplifier<'o> {
     pub(super) opts: &'o Options,
     eps2: f64,
     pass: u32,
-    /// Pass number in which the vertex was replaced or frozen.
-    touched: Vec<u32>,
     /// Scratch marks (compared with `stamp`).
     pub(super) vmark: Vec<u32>,
     pub(super) fmark: Vec<u32>,
@@ -108,26 +117,36 @@ pub(crate) struct Simplifier<'o> {
 }
 
 impl<'o> Simplifier<'o> {
-    /// Takes over a component and its positions (indexed by its real vertex ids).
-    pub(crate) fn new(component: ConedComponent, positions: Vec<Point>, opts: &'o Options) -> Self {
+    /// Takes over a component, with the positions of the mesh it came from (indexed by
+    /// mesh vertex; the component's `vertex_origin` picks its own).
+    pub(crate) fn new(component: ConedComponent, positions: &[Point], opts: &'o Options) -> Self {
         let loops = component.virtual_vertices().count();
         let first_virtual = component.real_vertex_count() as u32;
+        let nv = component.tri.vertex_capacity();
+        let mut vert = Vec::with_capacity(nv);
+        vert.extend(component.vertex_origin.iter().map(|&m| Vertex {
+            pos: positions[m as usize],
+            touched: 0,
+        }));
         let tri = component.tri;
-        let nv = tri.vertex_capacity();
         let nf = tri.face_capacity();
-        let mut pos = positions;
-        pos.resize(nv, [0.0; 3]);
+        vert.resize(
+            nv,
+            Vertex {
+                pos: [0.0; 3],
+                touched: 0,
+            },
+        );
         let surface = spec::ENABLED.then(|| SurfaceType::of(&tri));
         let mut s = Simplifier {
             tri,
-            pos,
+            vert,
             quadric: Vec::new(),
             first_virtual,
             loops,
             opts,
             eps2: opts.eps * opts.eps,
             pass: 0,
-            touched: vec![0; nv],
             vmark: vec![0; nv],
             fmark: vec![0; nf],
             stamp: 0,
@@ -181,7 +200,7 @@ impl<'o> Simplifier<'o> {
             if vs.iter().any(|&v| self.is_virtual(v)) {
                 continue;
             }
-            let ps = vs.map(|v| self.pos[v.index()]);
+            let ps = vs.map(|v| self.vert[v.index()].pos);
             let n = area_normal(ps[0], ps[1], ps[2]);
             let twice_area = super::geometry::dot(n, n).sqrt();
             if twice_area == 0.0 {
@@ -198,7 +217,7 @@ impl<'o> Simplifier<'o> {
                     continue;
                 }
                 let [s, t] = self.tri.edge_endpoints(c);
-                let (ps_, pt) = (self.pos[s.index()], self.pos[t.index()]);
+                let (ps_, pt) = (self.vert[s.index()].pos, self.vert[t.index()].pos);
                 let m = super::geometry::cross(super::geometry::sub(pt, ps_), unit);
                 let len = super::geometry::dot(m, m).sqrt();
                 if len == 0.0 {
@@ -262,36 +281,27 @@ impl<'o> Simplifier<'o> {
     fn pass(&mut self, observer: &mut dyn FnMut(Progress)) -> usize {
         self.pass += 1;
         let mut contracted = 0;
-        let slots = self.tri.face_capacity() as u64;
+        let nf = self.tri.face_capacity();
+        let slots = nf as u64;
         observer(Progress::new(SCANNED, 0, slots));
         let mut throttle = Throttle::new();
-        for fi in 0..self.tri.face_capacity() as u32 {
-            if throttle.due(u64::from(fi)) {
-                observer(Progress::new(SCANNED, u64::from(fi), slots));
+        let mut from = 0;
+        loop {
+            let (fi, frozen) = self.next_candidate(from);
+            self.run.skipped.frozen += frozen;
+            if fi >= nf {
+                break;
             }
-            let f = FaceId(fi);
-            if !self.tri.is_face(f) {
-                continue;
+            from = fi + 1;
+            if throttle.due(fi as u64) {
+                observer(Progress::new(SCANNED, fi as u64, slots));
             }
+            let f = FaceId(fi as u32);
             let vs = self.tri.face_vertices(f);
-            if vs.iter().any(|v| v.0 >= self.first_virtual) {
-                continue;
-            }
-            let pass = self.pass;
-            let frozen = vs
-                .iter()
-                .filter(|v| self.touched[v.index()] == pass)
-                .count();
-            if frozen >= 2 {
-                // Every edge has a frozen endpoint: deferred without reading positions
-                // (most visits of a pass end here, so this test comes first).
-                self.run.skipped.frozen += 1;
-                continue;
-            }
             let ps = [
-                self.pos[vs[0].index()],
-                self.pos[vs[1].index()],
-                self.pos[vs[2].index()],
+                self.vert[vs[0].index()].pos,
+                self.vert[vs[1].index()].pos,
+                self.vert[vs[2].index()].pos,
             ];
             // Edge opposite slot s joins slots s+1 and s+2; the short ones, shortest
             // first (ties by slot), by a three-element sorting network.
@@ -315,7 +325,9 @@ impl<'o> Simplifier<'o> {
                 }
                 let c = f.corner(s);
                 let [p, q] = self.tri.edge_endpoints(c);
-                if self.touched[p.index()] == self.pass || self.touched[q.index()] == self.pass {
+                if self.vert[p.index()].touched == self.pass
+                    || self.vert[q.index()].touched == self.pass
+                {
                     self.run.skipped.frozen += 1;
                     continue;
                 }
@@ -331,6 +343,32 @@ impl<'o> Simplifier<'o> {
         }
         observer(Progress::new(SCANNED, slots, slots));
         contracted
+    }
+
+    /// The first face slot from `from` on whose visit gets as far as reading positions,
+    /// and the number of visits before it deferred as frozen; `face_capacity()` if
+    /// none. Skipped: removed faces, cone faces (a virtual vertex) and faces with two
+    /// or more vertices frozen in this pass (every edge has a frozen endpoint; most
+    /// visits of a pass end here, so they are skipped in a loop that changes nothing).
+    fn next_candidate(&self, from: usize) -> (usize, usize) {
+        let pass = self.pass;
+        let first_virtual = self.first_virtual;
+        let frozen = |v: u32| u32::from(self.vert[v as usize].touched == pass);
+        let mut deferred = 0;
+        let slots = self.tri.corner_vertex.get(3 * from..).unwrap_or(&[]);
+        for (k, face) in slots.chunks_exact(3).enumerate() {
+            let (a, b, c) = (face[0], face[1], face[2]);
+            // A removed face has NONE (above every vertex id) in its slots.
+            if a >= first_virtual || b >= first_virtual || c >= first_virtual {
+                continue;
+            }
+            if frozen(a) + frozen(b) + frozen(c) >= 2 {
+                deferred += 1;
+                continue;
+            }
+            return (from + k, deferred);
+        }
+        (self.tri.face_capacity(), deferred)
     }
 
     /// The edge opposite `c`: its endpoints and opposite vertices, and its other common
@@ -479,7 +517,7 @@ impl<'o> Simplifier<'o> {
 
     /// Where the merged vertex goes (see [`Position`]).
     fn position(&self, e: &EdgeInfo) -> Point {
-        let (pp, pq) = (self.pos[e.p.index()], self.pos[e.q.index()]);
+        let (pp, pq) = (self.vert[e.p.index()].pos, self.vert[e.q.index()].pos);
         match self.opts.position {
             Position::Midpoint => match e.boundary {
                 [true, false] => pp,
@@ -498,7 +536,7 @@ impl<'o> Simplifier<'o> {
     /// planned disc, not a face of `[p, q]`) must stay non-degenerate and turn by less
     /// than 90° when `p` and `q` move to `to`.
     fn guard(&self, e: &EdgeInfo, to: Point, removed: Option<u32>) -> bool {
-        let pos = |v: VertexId| self.pos[v.index()];
+        let pos = |v: VertexId| self.vert[v.index()].pos;
         // `star_pq` holds a corner at q or p in every face around them (from `examine`).
         for &c in &self.star_pq {
             let f = c.face();
@@ -525,19 +563,16 @@ impl<'o> Simplifier<'o> {
     /// Carries out a plan: replaces the discs, contracts the edge keeping the smaller
     /// id, moves the kept vertex and freezes its neighbours for the rest of the pass.
     fn apply(&mut self, e: &EdgeInfo, plan: &Plan) {
-        // Freeze first, while `star_pq` still describes the stars of p and q: every
-        // neighbour of the merged vertex was a neighbour of p or q (removing a disc and
-        // contracting add no adjacency), so marking all of those (and p, q) freezes
-        // them without walking the new star.
-        for &c in &self.star_pq {
-            for w in [
-                self.tri.vertex(c),
-                self.tri.vertex(c.next()),
-                self.tri.vertex(c.prev()),
-            ] {
-                self.touched[w.index()] = self.pass;
-            }
+        // Freeze first: every neighbour of the merged vertex was a neighbour of p or q
+        // (removing a disc and contracting add no adjacency), so marking p, q and the
+        // links `examine` listed (every vertex of a face around p or q) freezes them
+        // without walking the new star.
+        let pass = self.pass;
+        for &w in self.nbr_q.iter().chain(&self.nbr_p) {
+            self.vert[w.index()].touched = pass;
         }
+        self.vert[e.p.index()].touched = pass;
+        self.vert[e.q.index()].touched = pass;
         for (side, claim) in plan.discs.iter().enumerate() {
             let Some(cl) = claim else { continue };
             let faces = std::mem::take(&mut self.grow[side].queue);
@@ -575,7 +610,7 @@ impl<'o> Simplifier<'o> {
         } else {
             self.tri.collapse(keep, gone, &mut self.scratch);
         }
-        self.pos[keep.index()] = plan.position;
+        self.vert[keep.index()].pos = plan.position;
         if !self.quadric.is_empty() {
             let g = self.quadric[gone.index()];
             self.quadric[keep.index()].add(&g);
@@ -584,20 +619,20 @@ impl<'o> Simplifier<'o> {
 
     /// Renumbers vertices and faces densely and carries the per-vertex data along.
     fn compact(&mut self) {
-        let map = self.tri.compact();
+        let map = self.tri.compact_ids();
         let mut k = 0;
-        for (old, new) in map.iter().enumerate() {
-            if let Some(v) = new {
-                debug_assert_eq!(v.index(), k);
-                self.pos[k] = self.pos[old];
+        for (old, &new) in map.iter().enumerate() {
+            if new != crate::core::ids::NONE {
+                debug_assert_eq!(new as usize, k);
+                self.vert[k] = self.vert[old];
                 if !self.quadric.is_empty() {
                     self.quadric[k] = self.quadric[old];
                 }
                 k += 1;
             }
         }
-        self.pos.truncate(k);
-        self.pos.shrink_to_fit();
+        self.vert.truncate(k);
+        self.vert.shrink_to_fit();
         if !self.quadric.is_empty() {
             self.quadric.truncate(k);
             self.quadric.shrink_to_fit();
@@ -605,7 +640,6 @@ impl<'o> Simplifier<'o> {
         self.first_virtual = (k - self.loops) as u32;
         // Marks and pass numbers only ever grow, so stale entries never match: the
         // arrays are cut to size, not cleared.
-        self.touched.truncate(k);
         self.vmark.truncate(k);
         self.fmark.truncate(self.tri.face_capacity());
     }
@@ -620,7 +654,7 @@ impl<'o> Simplifier<'o> {
             if self.is_virtual(p) || self.is_virtual(q) {
                 continue;
             }
-            let l2 = dist2(self.pos[p.index()], self.pos[q.index()]);
+            let l2 = dist2(self.vert[p.index()].pos, self.vert[q.index()].pos);
             shortest = shortest.min(l2);
             if l2 >= self.eps2 {
                 continue;
@@ -663,7 +697,7 @@ impl<'o> Simplifier<'o> {
             .filter(|vs| vs.iter().all(|v| v.0 < first))
             .map(|vs| vs.map(|v| v.0))
             .collect();
-        self.pos.truncate(first as usize);
-        (faces, self.pos)
+        let points = self.vert[..first as usize].iter().map(|v| v.pos).collect();
+        (faces, points)
     }
 }

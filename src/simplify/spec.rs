@@ -159,7 +159,7 @@ mod tests {
         let mut s = ConedSurfaces::from_mesh(mesh).expect("a surface");
         let c = s.components.remove(0);
         let n = c.tri.vertex_capacity();
-        Simplifier::new(c, vec![[0.0; 3]; n], opts)
+        Simplifier::new(c, &vec![[0.0; 3]; n], opts)
     }
 
     #[test]
