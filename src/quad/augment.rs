@@ -787,6 +787,81 @@ mod tests {
         );
     }
 
+    /// The sparse pass on its own, with a budget that lets every search finish and with
+    /// one that aborts the first search: either way the completion ends perfect, the
+    /// aborted search leaves the pairing as it was, and the phases finish the job.
+    #[test]
+    fn the_sparse_pass_completes_or_hands_over_after_an_abort() {
+        let t = random(&RandomParams {
+            surface: SurfaceKind::Orientable(2),
+            min_faces: 3000,
+            flip_percent: 30,
+            seed: 5,
+        });
+        // A sparse start: from a perfect pairing, for every 97th face `a` paired with
+        // `b`, re-pair `b` with a neighbour `c` and free `a` and `c`'s former mate `d`
+        // (so the two free faces of each change are not neighbours).
+        let mut p = Pairing::new(t.face_capacity());
+        complete(&t, &mut p);
+        let mut mate: Vec<u32> = (0..t.face_capacity() as u32)
+            .map(|f| p.mate(FaceId(f)).map_or(NONE, |g| g.0))
+            .collect();
+        let adj = |f: u32| t.face_neighbours(FaceId(f)).map(|g| g.0);
+        for a in t.faces().step_by(97).map(|f| f.0) {
+            let b = mate[a as usize];
+            if b == NONE {
+                continue;
+            }
+            let pick = adj(b).into_iter().find(|&c| {
+                let d = mate[c as usize];
+                c != a && d != NONE && d != a && d != b && !adj(a).contains(&d)
+            });
+            if let Some(c) = pick {
+                let d = mate[c as usize];
+                mate[b as usize] = c;
+                mate[c as usize] = b;
+                mate[a as usize] = NONE;
+                mate[d as usize] = NONE;
+            }
+        }
+        let roots: Vec<u32> = t
+            .faces()
+            .filter(|f| mate[f.index()] == NONE)
+            .map(|f| f.0)
+            .collect();
+        assert!(roots.len() > 20);
+        assert!(
+            adj(roots[0]).iter().all(|&g| mate[g as usize] != NONE),
+            "the first root's own scan finds no unpaired neighbour"
+        );
+        for budget in [u64::MAX, 0] {
+            let mut m = mate.clone();
+            let mut search = Search::new(&t, &mut m);
+            let left = search.sparse_pass(roots.clone(), budget);
+            if budget == 0 {
+                assert_eq!(left, roots, "an aborted first search re-pairs nothing");
+                assert_eq!(search.counters.augmenting_paths, 0);
+            } else {
+                assert!(left.is_empty(), "every single-root search augments");
+                assert_eq!(search.counters.augmenting_paths, roots.len() / 2);
+            }
+            let mut left = left;
+            while !left.is_empty() {
+                assert!(search.phase(&left, u64::MAX) > 0);
+                left.retain(|&r| search.mate[r as usize] == NONE);
+            }
+            drop(search);
+            let mut q = Pairing::new(t.face_capacity());
+            for (f, &g) in m.iter().enumerate() {
+                assert!(g != NONE, "face {f} left unpaired");
+                if (f as u32) < g {
+                    q.pair(FaceId(f as u32), FaceId(g));
+                }
+            }
+            assert!(q.is_perfect(&t) && q.check(&t).is_ok());
+        }
+    }
+
     #[test]
     fn random_surfaces_are_completed_from_every_partial_start() {
         for (k, kind) in [
