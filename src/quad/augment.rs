@@ -18,14 +18,34 @@
 //!    the neighbours `x` of `w = mate(v)` in slot order, the first unpaired `x ≠ f`
 //!    re-pairs `(v, w)` as `(f, v)`, `(w, x)`. From the empty pairing this is a greedy
 //!    maximal matching in id order followed by the same local repairs.
-//! 2. **Phases**, until no face is unpaired. The roots of a phase are the unpaired faces
+//! 2. **Sparse pass** (only when the linear pass leaves at least [`SPARSE_MIN_ROOTS`]
+//!    unpaired faces and at most one per [`SPARSE_FACES`] faces, as PS does): one
+//!    *single-root* search per unpaired face `r`, in increasing id, if `r` is still
+//!    unpaired: the search of step 3 with `r` as its only root, ended by the first
+//!    unpaired face it reaches (which it pairs by flipping the path: an augmentation) or
+//!    *aborted* once it has made more than `F /` [`SINGLE_BUDGET`] edge visits (its
+//!    labels are reset, nothing is re-paired). After an abort the pass stops and the
+//!    phases take every face still unpaired (the aborted root included).
+//!    Why: far-apart leftovers make the phases' trees cover most of the surface before
+//!    they meet, and the trees that augmented first wall the others in (on the genus-0
+//!    brick B0, PS's leftovers needed 2–3 phases and 4.6–17.9 M edge visits depending on
+//!    the seed), whereas most single-root searches stop within a small ball around their
+//!    root (4.3–6.9 M visits on the same inputs). The budget bounds what an expensive
+//!    search can cost before the phases take over. It is not a uniform gain: on the
+//!    genus-3,500 brick C0 the last single-root searches are expensive, and PS's
+//!    leftovers take 10.8 M visits at seed 1 against 6.1 M by phases alone (8.1 M
+//!    against 10.2 M at seed 0); `docs/benchmarks.md`, tri-quad, session 6.
+//! 3. **Phases**, until no face is unpaired. The roots of a phase are the unpaired faces
 //!    in increasing id. Every root is an even vertex of its own tree and enters a FIFO
 //!    queue in that order (a multi-source BFS, so trees grow level by level). An even
 //!    vertex `u` taken from the queue examines its neighbours `v` other than its mate in
 //!    slot order (the mate of an even vertex is its odd parent or lies in its blossom,
 //!    so examining it would do nothing):
-//!    - `v` unreached (then `v` is paired: all unpaired faces are roots): `v` becomes odd
-//!      and its mate `w` even in `u`'s tree, `w` is queued;
+//!    - `v` unreached and unpaired (only in a single-root search: in a phase every
+//!      unpaired face is a root): the path root(u) … u v is augmenting; it is flipped and
+//!      the search ends;
+//!    - `v` unreached and paired: `v` becomes odd and its mate `w` even in `u`'s tree,
+//!      `w` is queued;
 //!    - `v` even in a *different* live tree: the alternating path root(u) … u v … root(v)
 //!      is augmenting; it is flipped at once and both trees are *frozen* for the rest of
 //!      the phase (their vertices keep their labels and act as walls: a frozen vertex is
@@ -47,7 +67,8 @@
 //! # Determinism
 //! The output is a function of the triangulation (its face ids and slot order) and the
 //! input pairing alone: no randomness, no hashing; all choices are the id/slot orders
-//! stated above. A port that follows the rules above reproduces the pairs exactly.
+//! stated above, and the sparse pass's switches depend only on counts (unpaired faces,
+//! live faces, edge visits). A port that follows the rules above reproduces the pairs exactly.
 //!
 //! # Complexity
 //! Memory: one 16-byte search record per face slot (`face_capacity`; link, blossom
@@ -61,7 +82,10 @@
 //! most once as an even vertex (2 edge visits: its mate is skipped) plus blossom work
 //! that is linear up to the inverse Ackermann factor, so a phase is O(F·α(F)); every phase augments at least once (if it found no path the
 //! matching would be maximum, contradicting Petersen), so the worst case is
-//! O(K·F·α(F)) for K unpaired input faces (O(F²·α(F)) from empty). In practice the
+//! O(K·F·α(F)) for K unpaired input faces (O(F²·α(F)) from empty). The sparse pass
+//! does not change that bound: each of its searches either augments or is the last
+//! (aborted after at most `F / 4` visits plus one vertex's scan), and costs
+//! O(F·α(F)) at most. In practice the
 //! phases grow all trees at once and close almost all pairs in the first one or two,
 //! so the work is a few edge visits per triangle in total, i.e. near-linear.
 //! [`Completion::edge_visits`] counts it exactly (one per adjacency slot examined,
@@ -88,6 +112,18 @@ use super::Pairing;
 use crate::core::{FaceId, Triangulation};
 use crate::progress::{self, Progress};
 
+/// The sparse pass (module documentation, step 2) runs when the linear pass leaves at
+/// most one unpaired face per `SPARSE_FACES` live faces…
+pub const SPARSE_FACES: usize = 1000;
+/// … and at least `SPARSE_MIN_ROOTS` of them: with few roots the phases' trees meet
+/// halfway and few trees wall each other in (measured: LRS's 66 leftovers on botijo,
+/// about 20 after the linear pass, took 49.7 k edge visits in one phase against 55.7 k
+/// with the sparse pass).
+pub const SPARSE_MIN_ROOTS: usize = 32;
+/// A single-root search of the sparse pass is aborted after more than
+/// `F / SINGLE_BUDGET` edge visits.
+pub const SINGLE_BUDGET: usize = 4;
+
 /// The stage the completion reports progress in.
 pub const PAIRED: &str = "faces paired";
 
@@ -96,7 +132,9 @@ pub const PAIRED: &str = "faces paired";
 pub struct Completion {
     /// Augmenting paths applied (each adds one pair), the linear pass's included.
     pub augmenting_paths: usize,
-    /// Phases of the multi-source search (the linear pass is not counted).
+    /// Searches of the alternating forest: the phases of the multi-source search and
+    /// the single-root searches of the sparse pass, an aborted one included (the linear
+    /// pass is not counted).
     pub phases: usize,
     /// Adjacency slots examined, linear pass included (a phase does not examine an even
     /// vertex's mate).
@@ -151,8 +189,15 @@ pub(crate) fn run(
     let mut search = Search::new(tri, &mut pairing.mate);
     let mut roots = search.linear_pass(roots);
     report(roots.len());
+    if roots.len() >= SPARSE_MIN_ROOTS
+        && roots.len().saturating_mul(SPARSE_FACES) <= tri.face_count()
+    {
+        let budget = (tri.face_count() / SINGLE_BUDGET) as u64;
+        roots = search.sparse_pass(roots, budget);
+        report(roots.len());
+    }
     while !roots.is_empty() {
-        let paths = search.phase(&roots);
+        let paths = search.phase(&roots, u64::MAX);
         roots.retain(|&r| search.mate[r as usize] == NONE);
         report(roots.len());
         if paths == 0 {
@@ -325,6 +370,19 @@ impl<'a> Search<'a> {
         roots
     }
 
+    /// One single-root search per face of `roots` (increasing id) still unpaired, each
+    /// aborted after more than `budget` edge visits; stops at the first abort (module
+    /// documentation, step 2). Returns the faces still unpaired, in increasing id.
+    fn sparse_pass(&mut self, mut roots: Vec<u32>, budget: u64) -> Vec<u32> {
+        for &r in &roots {
+            if self.mate[r as usize] == NONE && self.phase(&[r], budget) == 0 {
+                break;
+            }
+        }
+        roots.retain(|&r| self.mate[r as usize] == NONE);
+        roots
+    }
+
     /// Union–find root (path halving) of `x`'s blossom: its base.
     #[inline]
     fn find(&mut self, mut x: u32) -> u32 {
@@ -350,9 +408,10 @@ impl<'a> Search<'a> {
         self.queue.push(w);
     }
 
-    /// One phase from `roots` (all unpaired faces): module documentation, step 2.
+    /// One search from `roots` (module documentation, step 3: all unpaired faces; or
+    /// step 2: a single root), abandoned once it has made more than `limit` edge visits.
     /// Returns the number of augmenting paths found.
-    fn phase(&mut self, roots: &[u32]) -> usize {
+    fn phase(&mut self, roots: &[u32], limit: u64) -> usize {
         self.counters.phases += 1;
         let mut paths = 0;
         self.queue.clear();
@@ -363,8 +422,9 @@ impl<'a> Search<'a> {
             self.st[r as usize] = [NONE, r, EVEN, k as u32];
             self.queue.push(r);
         }
+        let start = self.counters.edge_visits;
         let mut head = 0;
-        while head < self.queue.len() {
+        while head < self.queue.len() && self.counters.edge_visits - start <= limit {
             let u = self.queue[head];
             head += 1;
 
@@ -385,8 +445,8 @@ impl<'a> Search<'a> {
                     UNREACHED => {
                         let w = self.mate[v as usize];
                         if w == NONE {
-                            // Unreachable (every unpaired face is a root), but a free
-                            // unreached face would just end an augmenting path.
+                            // Only in a single-root search (in a phase every unpaired
+                            // face is a root): the path ends here.
                             self.augment(u, v);
                             paths += 1;
                             break;
@@ -725,6 +785,81 @@ mod tests {
             needing_blossoms > 0,
             "no configuration needing a blossom was generated"
         );
+    }
+
+    /// The sparse pass on its own, with a budget that lets every search finish and with
+    /// one that aborts the first search: either way the completion ends perfect, the
+    /// aborted search leaves the pairing as it was, and the phases finish the job.
+    #[test]
+    fn the_sparse_pass_completes_or_hands_over_after_an_abort() {
+        let t = random(&RandomParams {
+            surface: SurfaceKind::Orientable(2),
+            min_faces: 3000,
+            flip_percent: 30,
+            seed: 5,
+        });
+        // A sparse start: from a perfect pairing, for every 97th face `a` paired with
+        // `b`, re-pair `b` with a neighbour `c` and free `a` and `c`'s former mate `d`
+        // (so the two free faces of each change are not neighbours).
+        let mut p = Pairing::new(t.face_capacity());
+        complete(&t, &mut p);
+        let mut mate: Vec<u32> = (0..t.face_capacity() as u32)
+            .map(|f| p.mate(FaceId(f)).map_or(NONE, |g| g.0))
+            .collect();
+        let adj = |f: u32| t.face_neighbours(FaceId(f)).map(|g| g.0);
+        for a in t.faces().step_by(97).map(|f| f.0) {
+            let b = mate[a as usize];
+            if b == NONE {
+                continue;
+            }
+            let pick = adj(b).into_iter().find(|&c| {
+                let d = mate[c as usize];
+                c != a && d != NONE && d != a && d != b && !adj(a).contains(&d)
+            });
+            if let Some(c) = pick {
+                let d = mate[c as usize];
+                mate[b as usize] = c;
+                mate[c as usize] = b;
+                mate[a as usize] = NONE;
+                mate[d as usize] = NONE;
+            }
+        }
+        let roots: Vec<u32> = t
+            .faces()
+            .filter(|f| mate[f.index()] == NONE)
+            .map(|f| f.0)
+            .collect();
+        assert!(roots.len() > 20);
+        assert!(
+            adj(roots[0]).iter().all(|&g| mate[g as usize] != NONE),
+            "the first root's own scan finds no unpaired neighbour"
+        );
+        for budget in [u64::MAX, 0] {
+            let mut m = mate.clone();
+            let mut search = Search::new(&t, &mut m);
+            let left = search.sparse_pass(roots.clone(), budget);
+            if budget == 0 {
+                assert_eq!(left, roots, "an aborted first search re-pairs nothing");
+                assert_eq!(search.counters.augmenting_paths, 0);
+            } else {
+                assert!(left.is_empty(), "every single-root search augments");
+                assert_eq!(search.counters.augmenting_paths, roots.len() / 2);
+            }
+            let mut left = left;
+            while !left.is_empty() {
+                assert!(search.phase(&left, u64::MAX) > 0);
+                left.retain(|&r| search.mate[r as usize] == NONE);
+            }
+            drop(search);
+            let mut q = Pairing::new(t.face_capacity());
+            for (f, &g) in m.iter().enumerate() {
+                assert!(g != NONE, "face {f} left unpaired");
+                if (f as u32) < g {
+                    q.pair(FaceId(f as u32), FaceId(g));
+                }
+            }
+            assert!(q.is_perfect(&t) && q.check(&t).is_ok());
+        }
     }
 
     #[test]

@@ -97,7 +97,8 @@ pub struct Stats {
     pub flips: usize,
     /// Augmenting paths applied by the completion.
     pub augmenting_paths: usize,
-    /// Phases of the completion (searches from all unpaired triangles at once).
+    /// Searches of the completion: its phases (from all unpaired triangles at once) and
+    /// the single-root searches of its sparse pass ([`augment::Completion::phases`]).
     pub phases: usize,
 }
 

@@ -69,10 +69,12 @@
 //! # Complexity and representation
 //! Θ(F) time: F − 1 draws for the shuffle, then every step pairs two faces or none and
 //! does O(1) work (at most 16 re-evaluations, each O(1)), and every face leaves the sets
-//! once. The four sets are intrusive doubly-linked lists over one 12-byte record per
+//! once. Sets 1–3 are intrusive doubly-linked lists over one 12-byte record per
 //! face id (`next`, `prev`, the set tag and the free-edge count together, so that a
-//! look at a face is one cache miss; four heads and tails), so a relocation is O(1);
-//! 16 bytes per face id of extra space (with the shuffled order) besides the pairing.
+//! look at a face is one cache miss; heads and tails), so a relocation is O(1); set 0,
+//! which faces only leave, is the shuffled order itself with a front cursor that skips
+//! the faces gone from it. 16 bytes per face id of extra space (with the shuffled order)
+//! besides the pairing.
 
 use super::{Options, Pairing};
 use crate::core::{FaceId, Triangulation};
@@ -140,11 +142,20 @@ struct Slot {
     free: u8,
 }
 
-/// Four intrusive doubly-linked lists over face ids.
+/// The four priority sets. Sets 1–3 are intrusive doubly-linked lists over face ids.
+/// Set 0 is only filled before the first step (a face enters it only with three free
+/// edges, and free edges only disappear), so it is the array of its faces in their
+/// initial order with a front cursor: a face leaves it by changing its set tag, and the
+/// front skips faces whose tag is no longer 0. This saves the random-access writes of
+/// linking and unlinking every face once (4M faces do not fit in cache).
 struct Sets {
+    /// Heads and tails of sets 1–3 (index 0 unused).
     head: [u32; 4],
     tail: [u32; 4],
     slot: Vec<Slot>,
+    /// Set 0's faces in order (front first), and the index of its front.
+    zero: Vec<u32>,
+    zero_front: usize,
 }
 
 impl Sets {
@@ -152,6 +163,8 @@ impl Sets {
         Sets {
             head: [NIL; 4],
             tail: [NIL; 4],
+            zero: Vec::new(),
+            zero_front: 0,
             slot: vec![
                 Slot {
                     next: NIL,
@@ -170,9 +183,16 @@ impl Sets {
         self.slot[f as usize].set
     }
 
-    /// Inserts `f` (in no set) at the front (`front`) or back of set `p`. O(1).
+    /// Inserts `f` (in no set) at the front (`front`) or back of set `p`. O(1). Set 0 is
+    /// filled only at the back and before the first [`Sets::top`].
     fn insert(&mut self, f: u32, p: u8, front: bool) {
         debug_assert_eq!(self.set(f), OUT);
+        if p == 0 {
+            debug_assert!(!front && self.zero_front == 0, "set 0 is filled first");
+            self.slot[f as usize].set = 0;
+            self.zero.push(f);
+            return;
+        }
         let s = p as usize;
         if front {
             let h = self.head[s];
@@ -208,6 +228,11 @@ impl Sets {
         if p == OUT {
             return;
         }
+        if p == 0 {
+            // Set 0's front skips it from now on.
+            self.slot[f as usize].set = OUT;
+            return;
+        }
         let s = p as usize;
         if pr == NIL {
             self.head[s] = n;
@@ -223,8 +248,17 @@ impl Sets {
     }
 
     /// The front of the highest non-empty set.
-    fn top(&self) -> Option<u32> {
-        self.head.iter().rev().copied().find(|&h| h != NIL)
+    fn top(&mut self) -> Option<u32> {
+        if let Some(h) = self.head[1..].iter().rev().copied().find(|&h| h != NIL) {
+            return Some(h);
+        }
+        while let Some(&f) = self.zero.get(self.zero_front) {
+            if self.slot[f as usize].set == 0 {
+                return Some(f);
+            }
+            self.zero_front += 1;
+        }
+        None
     }
 }
 
@@ -380,11 +414,13 @@ fn run(tri: &Triangulation, options: &Options, rules: Rules) -> Pairing {
         sets: Sets::new(cap),
         rules,
     };
-    // Set 0 lists the shuffled faces from the front: insert at the back in order.
-    for &f in &order {
-        st.sets.slot[f.index()].free = 3;
-        st.sets.insert(f.0, 0, false);
+    // Set 0 lists the shuffled faces from the front. The records are written in id
+    // order (sequential), the order itself is set 0's array.
+    for f in tri.faces() {
+        let x = &mut st.sets.slot[f.index()];
+        (x.free, x.set) = (3, 0);
     }
+    st.sets.zero = order.into_iter().map(|f| f.0).collect();
     while let Some(t) = st.sets.top() {
         let t = FaceId(t);
         st.check_step(t);
@@ -429,31 +465,40 @@ mod tests {
     }
 
     #[test]
-    fn sets_are_intrusive_lists() {
-        let mut s = Sets::new(6);
-        for f in 0..4 {
+    fn sets_are_lists_and_set_zero_a_queue() {
+        let mut s = Sets::new(8);
+        for f in [3, 0, 1, 2] {
             s.insert(f, 0, false);
         }
-        s.insert(4, 0, true);
-        s.insert(5, 2, true);
-        assert_eq!(s.top(), Some(5));
-        s.remove(5);
-        assert_eq!(s.top(), Some(4));
+        // Sets 1–3: lists with front and back insertion and removal from the middle.
+        s.insert(4, 1, false);
+        s.insert(5, 1, false);
+        s.insert(6, 1, true);
+        s.insert(7, 2, true);
+        assert_eq!(s.top(), Some(7));
+        s.remove(7);
+        assert_eq!(s.top(), Some(6));
         s.remove(4);
-        s.remove(2);
         let mut order = Vec::new();
-        let mut f = s.head[0];
+        let mut f = s.head[1];
         while f != NIL {
             order.push(f);
             f = s.slot[f as usize].next;
         }
-        assert_eq!(order, [0, 1, 3]);
-        assert_eq!(s.tail[0], 3);
-        s.remove(3);
+        assert_eq!(order, [6, 5]);
+        assert_eq!(s.tail[1], 5);
+        s.remove(6);
+        s.remove(5);
+        assert_eq!((s.head, s.tail), ([NIL; 4], [NIL; 4]));
+        // Set 0: its insertion order, faces removed anywhere are skipped.
+        assert_eq!(s.top(), Some(3));
         s.remove(0);
+        s.remove(3);
+        assert_eq!(s.top(), Some(1));
+        assert_eq!(s.set(0), OUT);
         s.remove(1);
+        s.remove(2);
         assert_eq!(s.top(), None);
-        assert_eq!(s.tail, [NIL; 4]);
     }
 
     #[test]

@@ -382,3 +382,33 @@ fn long_augmenting_paths_are_found() {
         assert_eq!(c.augmenting_paths, 1);
     }
 }
+
+/// PS's leftovers on the paper's bricks are sparse (at least 32, at most one per 1,000
+/// faces), so the completion runs its sparse pass of single-root searches (visible in
+/// the counters: one search per augmentation rather than a few phases); its output is
+/// checked independently like every other completion.
+#[test]
+fn sparse_ps_leftovers_are_completed_by_single_root_searches() {
+    if cfg!(debug_assertions) {
+        return; // about 5 s in release; the README's test command is a release build
+    }
+    use contractible::gen::paper_family;
+    use contractible::quad::{pulli_segal, Options};
+    for (group, member, seed) in [('C', 4, 1), ('C', 2, 0), ('B', 2, 1)] {
+        let label = format!("{group}{member} PS seed {seed}");
+        let s = Surfaces::from_mesh(&paper_family(group, member)).expect("closed surface");
+        let t = &s.components[0].tri;
+        let start = pulli_segal::initial_pairing(t, &Options { seed });
+        let unpaired = t.face_count() - 2 * start.len();
+        assert!(
+            unpaired >= 32 && unpaired * 1000 <= t.face_count(),
+            "{label}: {unpaired} leftovers are not sparse"
+        );
+        let c = complete_checked(t, &start, &label);
+        assert!(
+            c.phases > 4,
+            "{label}: {} searches, the sparse pass did not run",
+            c.phases
+        );
+    }
+}
