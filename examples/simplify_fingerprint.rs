@@ -47,6 +47,23 @@ fn diagonal(mesh: &TriMesh) -> f64 {
 }
 
 /// One line describing the output of `simplify(mesh, opts)`.
+fn mode_name(m: Mode) -> &'static str {
+    if m == Mode::Nested {
+        "nested"
+    } else {
+        "naive"
+    }
+}
+
+/// [`line`] for `mode` at `rel` times the diagonal `diag`, labelled `NAME MODE REL`.
+fn mode_line(name: &str, mesh: &TriMesh, mode: Mode, rel: f64, diag: f64) -> String {
+    let opts = Options {
+        mode,
+        ..Options::new(rel * diag)
+    };
+    line(&format!("{name} {} {rel}", mode_name(mode)), mesh, &opts)
+}
+
 fn line(label: &str, mesh: &TriMesh, opts: &Options) -> String {
     let out = match simplify(mesh, opts) {
         Ok(out) => out,
@@ -157,7 +174,6 @@ fn main() {
         }
         lines.push(l);
     };
-    let mode_name = |m: Mode| if m == Mode::Nested { "nested" } else { "naive" };
 
     let large = [
         ("large_torus_bcc", large_torus(Tessellation::BodyCentred)),
@@ -175,15 +191,7 @@ fn main() {
             (Mode::Naive, 0.01),
             (Mode::Nested, 0.03),
         ] {
-            let opts = Options {
-                mode,
-                ..Options::new(rel * diag)
-            };
-            emit(line(
-                &format!("{name} {} {rel}", mode_name(mode)),
-                &mesh,
-                &opts,
-            ));
+            emit(mode_line(name, &mesh, mode, rel, diag));
         }
     }
 
@@ -202,15 +210,7 @@ fn main() {
         let diag = diagonal(&mesh);
         for rel in [0.01, 0.03] {
             for mode in [Mode::Naive, Mode::Nested] {
-                let opts = Options {
-                    mode,
-                    ..Options::new(rel * diag)
-                };
-                emit(line(
-                    &format!("{name} {} {rel}", mode_name(mode)),
-                    &mesh,
-                    &opts,
-                ));
+                emit(mode_line(&name, &mesh, mode, rel, diag));
             }
             let moved = jittered(&mesh, i as u64 + 1);
             let opts = Options::new(rel * diagonal(&moved));
