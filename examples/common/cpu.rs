@@ -1,5 +1,5 @@
 //! CPU time of the calling thread, shared by the profiling examples
-//! (`#[path = "common/cpu.rs"] mod cpu;`).
+//! (`#[path = "common/cpu.rs"] mod cpu;`) and the algorithm tests that report it.
 
 /// CPU seconds of the calling thread (from `/proc/thread-self/stat`, 10 ms ticks; 0
 /// where that file does not exist).

@@ -5,6 +5,10 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+// CPU time of the calling thread, shared with the profiling examples.
+#[path = "../../examples/common/cpu.rs"]
+mod cpu;
+
 // The fuzz harness (`fuzz/src/lib.rs`): the quad tests reuse its checks.
 #[allow(dead_code)]
 #[path = "../../fuzz/src/lib.rs"]

@@ -268,19 +268,6 @@ fn the_matching_route_is_the_completion_from_empty() {
     assert_eq!(c.augmenting_paths, t.face_count() / 2);
 }
 
-/// CPU seconds of the calling thread (user + system, from `/proc/thread-self/stat`;
-/// 0 where that file does not exist): the wall clock means little on a shared machine.
-fn thread_cpu_seconds() -> f64 {
-    let Ok(stat) = std::fs::read_to_string("/proc/thread-self/stat") else {
-        return 0.0;
-    };
-    // Fields after the parenthesised command name; utime and stime are fields 14 and 15.
-    let rest = stat.rsplit(')').next().unwrap_or("");
-    let f: Vec<&str> = rest.split_whitespace().collect();
-    let ticks = |i: usize| f.get(i).and_then(|x| x.parse::<f64>().ok()).unwrap_or(0.0);
-    (ticks(11) + ticks(12)) / 100.0
-}
-
 /// The performance case: SG-like leftovers (~13% unpaired) on the paper's C0
 /// (4.2M triangles, genus 3,500). Asserts perfection and the near-linear work (edge
 /// visits per face, a deterministic count); prints the time for reference (the timing
@@ -294,10 +281,10 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     let start = greedy(&t, 1);
     let unpaired = t.face_count() - 2 * start.len();
     let mut p = start.clone();
-    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let (clock, cpu) = (std::time::Instant::now(), crate::cpu::cpu());
     let c = complete(&t, &mut p);
     let seconds = clock.elapsed().as_secs_f64();
-    let cpu = thread_cpu_seconds() - cpu;
+    let cpu = crate::cpu::cpu() - cpu;
     let per_face = c.edge_visits as f64 / t.face_count() as f64;
     eprintln!(
         "C0: F {} unpaired {} ({:.2}%), {:?}, {per_face:.2} edge visits per face, {seconds:.3} s wall, {cpu:.2} s CPU",
@@ -309,7 +296,7 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     assert_perfect(&t, &p, "C0");
     assert!(per_face < 8.0, "{per_face:.2} edge visits per face");
     // Calibration: one plain BFS sweep of the dual (3 visits per face) on this machine.
-    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let (clock, cpu) = (std::time::Instant::now(), crate::cpu::cpu());
     let mut seen = vec![false; t.face_capacity()];
     let mut queue: Vec<FaceId> = t.faces().take(1).collect();
     seen[queue[0].index()] = true;
@@ -328,17 +315,17 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     eprintln!(
         "C0 plain BFS sweep: {:.3} s wall, {:.2} s CPU",
         clock.elapsed().as_secs_f64(),
-        thread_cpu_seconds() - cpu
+        crate::cpu::cpu() - cpu
     );
     let mut q = matching::initial_pairing(&t);
-    let (clock, cpu) = (std::time::Instant::now(), thread_cpu_seconds());
+    let (clock, cpu) = (std::time::Instant::now(), crate::cpu::cpu());
     let c = complete(&t, &mut q);
     eprintln!(
         "C0 from empty: {:?}, {:.2} edge visits per face, {:.3} s wall, {:.2} s CPU",
         c,
         c.edge_visits as f64 / t.face_count() as f64,
         clock.elapsed().as_secs_f64(),
-        thread_cpu_seconds() - cpu
+        crate::cpu::cpu() - cpu
     );
     assert_perfect(&t, &q, "C0 from empty");
 }
