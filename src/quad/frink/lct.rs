@@ -51,7 +51,6 @@ pub(crate) struct Lct {
 
 impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
-    #[cfg(test)]
     pub(crate) fn new(vals: &[i32]) -> Self {
         Lct {
             t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
@@ -189,6 +188,26 @@ impl Lct {
             y = self.t[y as usize].par;
         }
         self.splay(x);
+    }
+
+    /// The lowest common ancestor of `x` and `y` for the current root of their tree (set
+    /// by [`Lct::make_root`]); they must be connected. O(log n) amortised: after
+    /// `access(x)` the root–`x` path is one preferred path, and the last node at which
+    /// `access(y)` joins it is where the root–`y` path leaves the root–`x` path.
+    pub(crate) fn lca(&mut self, x: u32, y: u32) -> u32 {
+        debug_assert!(self.connected(x, y), "lca of two trees");
+        self.access(x);
+        let mut last = NIL;
+        let mut z = y;
+        while z != NIL {
+            self.splay(z);
+            self.t[z as usize].ch[1] = last;
+            self.pull(z);
+            last = z;
+            z = self.t[z as usize].par;
+        }
+        self.splay(y);
+        last
     }
 
     /// Makes `x` the root of its tree.
@@ -441,5 +460,57 @@ mod tests {
             }
         }
         assert!(replaced > 50, "replace_path exercised {replaced} times");
+    }
+
+    /// `lca` after `make_root` is the last common node of the naive root–`x` and
+    /// root–`y` paths, on random forests changed by links and cuts between queries.
+    #[test]
+    fn lca_agrees_with_naive_paths() {
+        let mut queries = 0;
+        for seed in 1..=80u64 {
+            let mut s = seed.wrapping_mul(0x2545_F491_4F6C_DD1D) | 1;
+            let n = 2 + (next(&mut s) % 20) as usize;
+            let mut lct = Lct::new(&vec![0; n]);
+            let mut naive = Naive {
+                adj: vec![Vec::new(); n],
+                val: vec![0; n],
+            };
+            let mut edges: Vec<(u32, u32)> = Vec::new();
+            for _ in 0..300 {
+                let x = (next(&mut s) % n as u64) as u32;
+                let y = (next(&mut s) % n as u64) as u32;
+                let r = (next(&mut s) % n as u64) as u32;
+                match next(&mut s) % 4 {
+                    0 if naive.path(x, y).is_none() => {
+                        lct.link(x, y);
+                        naive.adj[x as usize].push(y);
+                        naive.adj[y as usize].push(x);
+                        edges.push((x, y));
+                    }
+                    1 if !edges.is_empty() => {
+                        let k = (next(&mut s) % edges.len() as u64) as usize;
+                        let (a, b) = edges.swap_remove(k);
+                        lct.cut(a, b);
+                        naive.adj[a as usize].retain(|&c| c != b);
+                        naive.adj[b as usize].retain(|&c| c != a);
+                    }
+                    _ => {
+                        let (Some(px), Some(py)) = (naive.path(r, x), naive.path(r, y)) else {
+                            continue;
+                        };
+                        // Paths come back target-first: reverse to root-first.
+                        let (px, py): (Vec<u32>, Vec<u32>) = (
+                            px.into_iter().rev().collect(),
+                            py.into_iter().rev().collect(),
+                        );
+                        let common = px.iter().zip(&py).take_while(|(a, b)| a == b).count();
+                        lct.make_root(r);
+                        assert_eq!(lct.lca(x, y), px[common - 1], "seed {seed}");
+                        queries += 1;
+                    }
+                }
+            }
+        }
+        assert!(queries > 1000, "{queries} lca queries");
     }
 }

@@ -89,11 +89,14 @@
 
 mod cover;
 mod cycle;
+mod ds;
 mod graph;
+mod hdt;
 mod lct;
 mod spec;
 
 pub use cover::{CoverCounters, CoverTree};
+pub use ds::{DiksStanczyk, DsCounters};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};
 
 use super::Pairing;
@@ -167,6 +170,13 @@ pub trait Strategy {
     /// Called after the chosen reduction `r` has been applied to `g`.
     fn applied(&mut self, g: &Cubic, r: &Reduction) {
         let _ = (g, r);
+    }
+
+    /// An edge of the base case (two nodes, three parallel edges) that its matched edge
+    /// must avoid, or `None`. Lets a strategy keep one edge out of the final matching
+    /// (Biedl–Bose–Demaine–Lubiw's forbidden edge, which [`DiksStanczyk`] moves along).
+    fn forbidden(&self) -> Option<u32> {
+        None
     }
 }
 
@@ -290,11 +300,16 @@ pub fn solve<S: Strategy>(mut g: Cubic, strategy: &mut S) -> Result<Solution, Fr
     let a = (cursor..n as u32)
         .find(|&x| g.is_alive(x))
         .ok_or(FrinkError::NoReductionEdge(cursor))?;
-    let e = g.incident(a)[0];
-    let b = g.other(e, a);
+    let b = g.other(g.incident(a)[0], a);
     if b == a || g.incident(a).iter().any(|&f| g.other(f, a) != b) {
         return Err(FrinkError::NoReductionEdge(a));
     }
+    let avoid = strategy.forbidden();
+    let e = g
+        .incident(a)
+        .into_iter()
+        .find(|&f| Some(f) != avoid)
+        .ok_or(FrinkError::NoReductionEdge(a))?;
     mate[a as usize] = e;
     mate[b as usize] = e;
     let mut pairs = 1;

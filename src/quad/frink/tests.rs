@@ -487,8 +487,8 @@ fn perfect_matching_pairs_the_standard_surfaces() {
 /// its reconnection must be connected and bridgeless (so where only one of `H1`, `H2`
 /// is, it is that one).
 #[derive(Default)]
-struct Checked {
-    inner: CoverTree,
+struct Checked<S = CoverTree> {
+    inner: S,
     dfs: Dfs,
     steps: u64,
     single: u64,
@@ -497,7 +497,7 @@ struct Checked {
     flip: bool,
 }
 
-impl Strategy for Checked {
+impl<S: Strategy> Strategy for Checked<S> {
     fn start(&mut self, g: &Cubic) {
         self.inner.start(g);
     }
@@ -524,7 +524,7 @@ impl Strategy for Checked {
         let k = usize::from(chosen == Reconnection::H2);
         assert!(
             ok[k],
-            "CoverTree chose a reconnection with a bridge: {cand:?}"
+            "the strategy chose a reconnection with a bridge: {cand:?}"
         );
         self.steps += 1;
         self.single += u64::from(ok[0] != ok[1]);
@@ -534,12 +534,16 @@ impl Strategy for Checked {
     fn applied(&mut self, g: &Cubic, r: &Reduction) {
         self.inner.applied(g, r);
     }
+
+    fn forbidden(&self) -> Option<u32> {
+        self.inner.forbidden()
+    }
 }
 
 /// Runs the checked cover-tree strategy on `g` (connected and bridgeless) and checks the
 /// matching; returns the strategy.
 fn run_cover(g: &Cubic, label: &str) -> Checked {
-    let mut s = Checked::default();
+    let mut s = Checked::<CoverTree>::default();
     let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("{label}: {e}"));
     assert_perfect(g, &sol.mate, label);
     assert_eq!(sol.stats.reductions, g.node_count() / 2 - 1, "{label}");
@@ -593,7 +597,7 @@ fn the_agreement_check_catches_a_flipped_choice() {
             continue;
         }
         let r = std::panic::catch_unwind(|| {
-            let mut s = Checked {
+            let mut s = Checked::<CoverTree> {
                 flip: true,
                 ..Checked::default()
             };
@@ -624,7 +628,7 @@ fn cover_tree_fallback_steps() {
         if !spec::connected_bridgeless_by_definition(&g) {
             continue;
         }
-        let mut s = Checked::default();
+        let mut s = Checked::<CoverTree>::default();
         s.inner.only_fallback = true;
         let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
         assert_perfect(&g, &sol.mate, &format!("round {round}"));
@@ -657,6 +661,211 @@ fn cover_tree_on_random_surfaces() {
             assert!(s.steps > 0);
             let (p, _) = perfect_matching_with(&t, &mut CoverTree::new());
             assert!(p.is_perfect(&t), "{kind:?} seed {seed}");
+            assert_eq!(p.check(&t), Ok(()));
+        }
+    }
+}
+
+/// The reference connectivity structure for [`ds::Ds`]: adjacency lists, and after a
+/// tree edge's deletion the first non-tree edge leaving the BFS component of one end
+/// (in node, then list order) as the replacement. O(n) per deletion.
+#[derive(Default)]
+struct NaiveForest {
+    adj: Vec<Vec<u32>>,
+    ends: Vec<[u32; 2]>,
+    tree: Vec<bool>,
+}
+
+impl NaiveForest {
+    fn component(&self, a: u32) -> Vec<bool> {
+        let mut seen = vec![false; self.adj.len()];
+        let mut stack = vec![a];
+        seen[a as usize] = true;
+        while let Some(x) = stack.pop() {
+            for &e in &self.adj[x as usize] {
+                if self.tree[e as usize] {
+                    let [p, q] = self.ends[e as usize];
+                    let y = if p == x { q } else { p };
+                    if !seen[y as usize] {
+                        seen[y as usize] = true;
+                        stack.push(y);
+                    }
+                }
+            }
+        }
+        seen
+    }
+}
+
+impl ds::SpanningForest for NaiveForest {
+    fn with_nodes(n: usize) -> Self {
+        NaiveForest {
+            adj: vec![Vec::new(); n],
+            ..NaiveForest::default()
+        }
+    }
+
+    fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<hdt::ForestChange>) {
+        let i = e as usize;
+        if self.ends.len() <= i {
+            self.ends.resize(i + 1, [NONE; 2]);
+            self.tree.resize(i + 1, false);
+        }
+        let joins = !self.component(a)[b as usize];
+        self.ends[i] = [a, b];
+        self.tree[i] = joins;
+        self.adj[a as usize].push(e);
+        self.adj[b as usize].push(e);
+        if joins {
+            changes.push(hdt::ForestChange::Link { e, a, b });
+        }
+    }
+
+    fn delete(&mut self, e: u32, changes: &mut Vec<hdt::ForestChange>) {
+        let [a, b] = self.ends[e as usize];
+        self.adj[a as usize].retain(|&f| f != e);
+        self.adj[b as usize].retain(|&f| f != e);
+        if !std::mem::take(&mut self.tree[e as usize]) {
+            return;
+        }
+        changes.push(hdt::ForestChange::Cut { e, a, b });
+        let side = self.component(a);
+        for x in 0..self.adj.len() {
+            for &f in self.adj[x].iter().filter(|_| side[x]) {
+                let [p, q] = self.ends[f as usize];
+                if !self.tree[f as usize] && side[p as usize] != side[q as usize] {
+                    self.tree[f as usize] = true;
+                    changes.push(hdt::ForestChange::Link { e: f, a: p, b: q });
+                    return;
+                }
+            }
+        }
+    }
+}
+
+/// Runs a checked DS strategy (every choice tested against the naive DFS) on `g` and
+/// checks the matching and that the forbidden edge did its job: no lift in case (ii) or
+/// (iv) except after a step that dropped it.
+fn run_ds<S: Strategy + Default>(
+    g: &Cubic,
+    label: &str,
+    counters: impl Fn(&S) -> DsCounters,
+) -> (Checked<S>, Stats, DsCounters) {
+    let mut s = Checked::<S>::default();
+    let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("{label}: {e}"));
+    assert_perfect(g, &sol.mate, label);
+    assert_eq!(sol.stats.reductions, g.node_count() / 2 - 1, "{label}");
+    let c = counters(&s.inner);
+    // The forbidden edge never had to be dropped, so no lift saw both new edges matched,
+    // and `p` alone only after a digon step (where (i) cannot occur instead).
+    assert_eq!((c.restarts, sol.stats.case_iv), (0, 0), "{label}");
+    assert!(sol.stats.cases[1] as u64 <= c.digon_steps, "{label}");
+    assert_eq!(
+        c.disconnected + c.forced + c.free,
+        sol.stats.reductions as u64,
+        "{label}"
+    );
+    (s, sol.stats, c)
+}
+
+/// Diks–Stańczyk (over HDT and over the naive forest) agrees with the naive DFS test at
+/// every step of the small graphs and of random cubic multigraphs: each of its choices is
+/// connected and bridgeless, including every step where only one reconnection is.
+#[test]
+fn diks_stanczyk_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
+    for (name, g) in small_graphs() {
+        run_ds::<DiksStanczyk>(&g, name, DiksStanczyk::counters);
+        run_ds::<ds::Ds<NaiveForest>>(&g, name, ds::Ds::counters);
+    }
+    let mut rng = Rng::new(29);
+    let (mut graphs, mut steps, mut single, mut iv) = (0, 0, 0, 0);
+    let mut total = DsCounters::default();
+    for round in 0..3000 {
+        let n = 2 * (1 + rng.index(20));
+        let g = random_cubic(n, &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let label = format!("round {round}");
+        let (s, stats, c) = run_ds::<DiksStanczyk>(&g, &label, DiksStanczyk::counters);
+        run_ds::<ds::Ds<NaiveForest>>(&g, &label, ds::Ds::counters);
+        graphs += 1;
+        steps += s.steps;
+        single += s.single;
+        iv += stats.case_iv;
+        total.disconnected += c.disconnected;
+        total.forced += c.forced;
+        total.free += c.free;
+        total.digon_steps += c.digon_steps;
+        total.restarts += c.restarts;
+        total.replacements += c.replacements;
+    }
+    eprintln!("diks-stanczyk: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {iv} case (iv), {total:?}");
+    assert!(
+        graphs > 500 && single > 100,
+        "{graphs} graphs, {single} forced steps"
+    );
+    assert!(
+        total.disconnected > 0 && total.forced > 0 && total.free > 0 && total.replacements > 0,
+        "{total:?}"
+    );
+    assert!(total.digon_steps > 0, "{total:?}");
+}
+
+/// The agreement check catches a broken Diks–Stańczyk (the other reconnection where
+/// only one is valid).
+#[test]
+fn the_agreement_check_catches_a_flipped_diks_stanczyk() {
+    let mut rng = Rng::new(31);
+    let mut caught = 0;
+    for _ in 0..200 {
+        let g = random_cubic(2 * (3 + rng.index(10)), &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let r = std::panic::catch_unwind(|| {
+            let mut s = Checked::<DiksStanczyk> {
+                flip: true,
+                ..Checked::default()
+            };
+            let _ = solve(g.clone(), &mut s);
+        });
+        if let Err(e) = r {
+            let m = e
+                .downcast_ref::<String>()
+                .cloned()
+                .or_else(|| e.downcast_ref::<&str>().map(|s| s.to_string()))
+                .unwrap_or_default();
+            assert!(m.contains("chose a reconnection with a bridge"), "{m}");
+            caught += 1;
+        }
+    }
+    assert!(caught > 20, "caught {caught}");
+}
+
+/// Duals of random closed surfaces, orientable genus 0..8 and non-orientable, and the
+/// standard surfaces: every Diks–Stańczyk step checked, the pairing perfect, no case (iv).
+#[test]
+fn diks_stanczyk_on_random_surfaces() {
+    use crate::gen::{random, RandomParams, SurfaceKind};
+    let kinds = (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable));
+    for kind in kinds {
+        for seed in 1..=2u64 {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces: 400,
+                flip_percent: 30,
+                seed,
+            });
+            let (g, _) = dual_graph(&t).expect("dual");
+            let label = format!("{kind:?} seed {seed}");
+            let (_, stats, c) = run_ds::<DiksStanczyk>(&g, &label, DiksStanczyk::counters);
+            assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
+            let mut ds = DiksStanczyk::new();
+            let (p, _) = perfect_matching_with(&t, &mut ds);
+            assert!(p.is_perfect(&t), "{label}");
             assert_eq!(p.check(&t), Ok(()));
         }
     }
