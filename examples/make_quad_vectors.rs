@@ -66,6 +66,10 @@ fn run_json(tri: &Triangulation, alg: Algorithm, seed: u64, name: &str) -> Value
             tri.clone(),
             quad::frink::perfect_matching_with(tri, &mut quad::frink::CoverTree::new()).0,
         ),
+        Algorithm::Ds => (
+            tri.clone(),
+            quad::frink::perfect_matching_with(tri, &mut quad::frink::DiksStanczyk::new()).0,
+        ),
     };
     let mut full = initial.clone();
     let work = quad::augment::complete(&k, &mut full);

@@ -687,9 +687,10 @@ fn quad_algorithm(name: &str) -> PyResult<quad::Algorithm> {
         "sg" => Ok(quad::Algorithm::Sg),
         "matching" => Ok(quad::Algorithm::Matching),
         "frink-lct" => Ok(quad::Algorithm::FrinkLct),
+        "ds" => Ok(quad::Algorithm::Ds),
         "ds-naive" => Ok(quad::Algorithm::DsNaive),
         other => Err(PyValueError::new_err(format!(
-            "unknown algo {other:?}: expected 'lrs', 'ps', 'sg', 'matching', 'frink-lct' or 'ds-naive'"
+            "unknown algo {other:?}: expected 'lrs', 'ps', 'sg', 'matching', 'ds', 'frink-lct' or 'ds-naive'"
         ))),
     }
 }
@@ -718,7 +719,7 @@ fn quad_py<'py>(
             .find(|c| c.tri.face_count() > quad::DS_NAIVE_MAX_FACES)
         {
             return Err(PyValueError::new_err(format!(
-                "algo 'ds-naive' is quadratic and refuses components above {} faces (this one has {}); use 'frink-lct'",
+                "algo 'ds-naive' is quadratic and refuses components above {} faces (this one has {}); use 'ds' or 'frink-lct'",
                 quad::DS_NAIVE_MAX_FACES,
                 c.tri.face_count()
             )));

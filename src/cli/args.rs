@@ -393,6 +393,8 @@ pub enum QuadAlgo {
     DsNaive,
     /// Frink's reduction, link–cut cover-count strategy.
     FrinkLct,
+    /// Frink's reduction, Diks–Stańczyk strategy (dynamic connectivity, O(F log² F)).
+    Ds,
 }
 
 impl From<QuadAlgo> for contractible::quad::Algorithm {
@@ -405,6 +407,7 @@ impl From<QuadAlgo> for contractible::quad::Algorithm {
             QuadAlgo::Matching => Algorithm::Matching,
             QuadAlgo::DsNaive => Algorithm::DsNaive,
             QuadAlgo::FrinkLct => Algorithm::FrinkLct,
+            QuadAlgo::Ds => Algorithm::Ds,
         }
     }
 }

@@ -286,6 +286,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             quad::Algorithm::Ps,
             quad::Algorithm::Sg,
             quad::Algorithm::Matching,
+            quad::Algorithm::Ds,
         ] {
             let s = QuadStats::total(algo, &quad_all(&surfaces, algo, a.seed, ui));
             report.verified &= s.verified;

@@ -256,7 +256,7 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
             .find(|c| c.tri.face_count() > DS_NAIVE_MAX_FACES)
         {
             return Err(CliError::Input(format!(
-                "{}: --algo ds-naive is quadratic and refuses components above {DS_NAIVE_MAX_FACES} faces (this one has {}); use --algo frink-lct",
+                "{}: --algo ds-naive is quadratic and refuses components above {DS_NAIVE_MAX_FACES} faces (this one has {}); use --algo ds or --algo frink-lct",
                 a.input.display(),
                 c.tri.face_count()
             )));

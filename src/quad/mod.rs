@@ -45,6 +45,10 @@ pub enum Algorithm {
     /// Frink's reduction with the link–cut cover-count strategy ([`frink::CoverTree`]).
     /// Perfect directly: no completion.
     FrinkLct,
+    /// Frink's reduction with the Diks–Stańczyk strategy ([`frink::DiksStanczyk`]: a
+    /// travelling forbidden edge, dynamic connectivity and link–cut LCA; O(F log² F)).
+    /// Perfect directly: no completion.
+    Ds,
 }
 
 impl Algorithm {
@@ -57,6 +61,7 @@ impl Algorithm {
             Algorithm::Matching => "matching",
             Algorithm::DsNaive => "ds-naive",
             Algorithm::FrinkLct => "frink-lct",
+            Algorithm::Ds => "ds",
         }
     }
 }
@@ -176,7 +181,10 @@ pub fn convert_observed(
         pairing,
         flips,
     } = initial_pairing(tri, algorithm, options);
-    if matches!(algorithm, Algorithm::DsNaive | Algorithm::FrinkLct) {
+    if matches!(
+        algorithm,
+        Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds
+    ) {
         // Perfect by Frink's construction: (c) = 0 and no completion, (d) = 0.
         let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
         stats.total_seconds = stats.initial_seconds;
@@ -242,6 +250,10 @@ pub fn initial_pairing(tri: Triangulation, algorithm: Algorithm, options: &Optio
         }
         Algorithm::FrinkLct => {
             let p = frink::perfect_matching_with(&tri, &mut frink::CoverTree::new()).0;
+            (tri, p, 0)
+        }
+        Algorithm::Ds => {
+            let p = frink::perfect_matching_with(&tri, &mut frink::DiksStanczyk::new()).0;
             (tri, p, 0)
         }
     };

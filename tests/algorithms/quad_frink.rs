@@ -4,11 +4,12 @@
 //! `maximum_matching` of the dual graph (its size must be F/2, as the pairing's). The
 //! naive strategy is O(F²), so the shared meshes are covered up to [`MAX_FACES`] faces.
 //! Under `invariants` (the README's test command) the specification checks F1/F2 run
-//! on every step.
+//! on every step. The link–cut (`CoverTree`) and Diks–Stańczyk strategies run on every
+//! shared closed mesh, whatever its size.
 
 use crate::{common, harness};
 use contractible::gen::{random, RandomParams, SurfaceKind};
-use contractible::quad::frink::{self, CoverTree, Naive};
+use contractible::quad::frink::{self, CoverTree, DiksStanczyk, Naive};
 use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
 use contractible::{Surfaces, Triangulation};
 
@@ -172,16 +173,22 @@ fn shared_closed_mesh_components() {
     );
 }
 
-/// Runs the link–cut cover-count strategy on `t` and checks the result independently
-/// (the harness check always, petgraph's matching size up to [`MAX_FACES`] faces).
-fn run_cover(t: &Triangulation, label: &str) -> frink::CoverCounters {
-    let mut s = CoverTree::new();
+/// Runs `make()`'s strategy on `t` and checks the result independently (the harness
+/// check always, petgraph's matching size up to [`MAX_FACES`] faces, the same pairing
+/// from a second run); returns the strategy and the counters.
+fn run_strategy<S: frink::Strategy>(
+    t: &Triangulation,
+    label: &str,
+    algorithm: Algorithm,
+    make: impl Fn() -> S,
+) -> (S, frink::Stats) {
+    let mut s = make();
     let (p, stats) = frink::perfect_matching_with(t, &mut s);
     if t.face_count() <= MAX_FACES {
         check(t, &p, label);
     } else {
         let q = Quadrangulation {
-            algorithm: Algorithm::FrinkLct,
+            algorithm,
             tri: t.clone(),
             pairing: p.clone(),
             stats: initial_stats(t, &p, 0.0),
@@ -190,10 +197,77 @@ fn run_cover(t: &Triangulation, label: &str) -> frink::CoverCounters {
     }
     assert_eq!(stats.reductions, t.face_count() / 2 - 1, "{label}");
     if t.face_count() <= MAX_FACES {
-        let (again, _) = frink::perfect_matching_with(t, &mut CoverTree::new());
+        let (again, _) = frink::perfect_matching_with(t, &mut make());
         assert!(again == p, "{label}: differs between runs");
     }
-    s.counters()
+    (s, stats)
+}
+
+/// Runs the link–cut cover-count strategy on `t` (checked by [`run_strategy`]).
+fn run_cover(t: &Triangulation, label: &str) -> frink::CoverCounters {
+    run_strategy(t, label, Algorithm::FrinkLct, CoverTree::new)
+        .0
+        .counters()
+}
+
+/// Runs the Diks–Stańczyk strategy on `t` (checked by [`run_strategy`]); its travelling
+/// forbidden edge must have kept every lift out of case (iv).
+fn run_ds(t: &Triangulation, label: &str) -> frink::DsCounters {
+    let (s, stats) = run_strategy(t, label, Algorithm::Ds, DiksStanczyk::new);
+    let c = s.counters();
+    assert_eq!((stats.case_iv, c.restarts), (0, 0), "{label}: {c:?}");
+    c
+}
+
+/// Diks–Stańczyk on every component of every shared closed mesh (no size limit: up to
+/// 199k faces), random surfaces of every kind (orientable genus 0..8, non-orientable
+/// 1..6) at two sizes.
+#[test]
+fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
+    let rows: Vec<_> = common::manifest()
+        .into_iter()
+        .filter(|r| r.set == "closed")
+        .collect();
+    let (mut components, mut faces) = (0usize, 0usize);
+    let mut total = frink::DsCounters::default();
+    let clock = std::time::Instant::now();
+    for row in &rows {
+        let path = common::shared_dir().join("meshes").join(&row.file);
+        let mesh =
+            contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        for (k, comp) in s.components.iter().enumerate() {
+            let c = run_ds(&comp.tri, &format!("{}#{k}", row.name));
+            total.disconnected += c.disconnected;
+            total.forced += c.forced;
+            total.free += c.free;
+            total.digon_steps += c.digon_steps;
+            total.replacements += c.replacements;
+            components += 1;
+            faces += comp.tri.face_count();
+        }
+    }
+    eprintln!(
+        "ds: {components} components ({faces} faces) of {} closed meshes in {:.1} s, {total:?}",
+        rows.len(),
+        clock.elapsed().as_secs_f64()
+    );
+    assert_eq!(components, 339 + 65, "every component");
+    assert!(total.forced > 0 && total.free > 0, "{total:?}");
+    let kinds = (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable));
+    for kind in kinds {
+        for (seed, min_faces) in [(1u64, 200usize), (2, 3_000)] {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces,
+                flip_percent: 30,
+                seed,
+            });
+            run_ds(&t, &format!("{kind:?} seed {seed}"));
+        }
+    }
 }
 
 /// The link–cut strategy on every component of every shared closed mesh (no size limit:

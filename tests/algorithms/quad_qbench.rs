@@ -299,7 +299,9 @@ fn outputs_are_those_of_the_unoptimised_implementation() {
             Algorithm::Ps => (t.clone(), pulli_segal::initial_pairing(t, &OPTIONS)),
             Algorithm::Sg => (t.clone(), greedy::initial_pairing(t, &OPTIONS)),
             Algorithm::Matching => (t.clone(), matching::initial_pairing(t)),
-            Algorithm::DsNaive | Algorithm::FrinkLct => unreachable!("not in PINS"),
+            Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds => {
+                unreachable!("not in PINS")
+            }
         };
         assert_eq!(
             k0.face_count() - 2 * p0.len(),

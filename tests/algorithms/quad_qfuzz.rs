@@ -186,6 +186,10 @@ fn library_reproduces_every_quad_vector_exactly() {
                 Algorithm::FrinkLct => {
                     quad::frink::perfect_matching_with(&tri, &mut quad::frink::CoverTree::new()).0
                 }
+                Algorithm::Ds => {
+                    quad::frink::perfect_matching_with(&tri, &mut quad::frink::DiksStanczyk::new())
+                        .0
+                }
             };
             assert_eq!(
                 pairs_json(&initial),

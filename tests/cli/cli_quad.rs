@@ -13,7 +13,7 @@ use std::path::Path;
 
 use cli_common::{int, load, meshes, run, run_json, Scratch};
 
-const ALGOS: [&str; 6] = ["lrs", "ps", "sg", "matching", "ds-naive", "frink-lct"];
+const ALGOS: [&str; 7] = ["lrs", "ps", "sg", "matching", "ds-naive", "frink-lct", "ds"];
 
 /// Vertex positions and quads of an ASCII OFF file.
 fn read_quad_off(path: &Path) -> (Vec<[f64; 3]>, Vec<[u32; 4]>) {
@@ -144,7 +144,7 @@ fn check_quad(input: &Path, algo: &str, dir: &Scratch) {
     if algo != "lrs" {
         assert_eq!(int(&j, "flips"), 0, "{label}: only LRS flips");
     }
-    if algo == "ds-naive" || algo == "frink-lct" {
+    if algo == "ds-naive" || algo == "frink-lct" || algo == "ds" {
         // Frink's reduction is perfect by construction: (c) = 0, no completion, (d) = 0.
         assert_eq!(int(&j, "initial_unpaired"), 0, "{label}: (c)");
         assert_eq!(j["completion_seconds"].as_f64(), Some(0.0), "{label}: (d)");

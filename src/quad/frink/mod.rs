@@ -48,9 +48,14 @@
 //! (module `lct`) with a cover count per tree edge, picks reductions for which the tree
 //! changes only locally and decides them exactly in O(log n) amortised; it falls back to
 //! a tree rebuild and a naive step when no such reduction is found (never observed on
-//! the B family or the shared meshes). Biedl–Bose–Demaine–Lubiw (O(log⁴ n) amortised,
-//! dynamic 2-edge-connectivity) and Diks–Stańczyk (O(log² n), dynamic connectivity plus
-//! dynamic trees; only the abstract and slides were readable) are not implemented.
+//! the B family or the shared meshes). [`DiksStanczyk`] (module `ds`) reduces next to a
+//! travelling forbidden edge (Biedl–Bose–Demaine–Lubiw), so case (iv) never occurs, and
+//! decides each step from the shape of a spanning forest of `H − {u, v}` kept by
+//! Holm–de Lichtenberg–Thorup dynamic connectivity (module `hdt`) and mirrored in the
+//! link–cut tree for LCA queries: O(log² n) amortised per step; the decision is derived
+//! and proved in module `ds` (the DS paper's own case analysis could not be read;
+//! errata T13). Biedl–Bose–Demaine–Lubiw's own decision (dynamic 2-edge-connectivity,
+//! O(log⁴ n)) is not implemented.
 //!
 //! # Complexity
 //! With [`Naive`]: O(n²) time in the worst case and in practice (n/2 reductions, each
@@ -59,7 +64,8 @@
 //! by the part of the graph it labels). With [`CoverTree`]: O(log n) amortised per
 //! reduction plus O(n) per fallback step, O(n²) in the worst case, O(n log n) when no
 //! fallback occurs; the case-(iv) searches come on top with either strategy (about a
-//! quarter of the time on the B family, docs/benchmarks.md). Memory: O(n): the graph
+//! quarter of the time on the B family, docs/benchmarks.md). With [`DiksStanczyk`]:
+//! O(n log² n) amortised in all, no case (iv). Memory: O(n): the graph
 //! (8 bytes per edge, `5n/2 − 2` edges ever created), one 72-byte record per reduction,
 //! the DFS and search scratch (about 30 bytes per node); [`CoverTree`] adds about 80
 //! bytes per node.
@@ -85,7 +91,8 @@
 //! is reduced is left open (BBDL choose an edge next to a forbidden edge so that (iv)
 //! never occurs; this reference takes the first simple edge of the smallest live node, so
 //! (iv) does occur and is exercised; [`CoverTree`] picks tree-stable edges, where (iv)
-//! occurs too). Recorded in `spec/ERRATA.md` (T9–T12).
+//! occurs too; [`DiksStanczyk`] follows BBDL, with a rule of its own for digons next to
+//! the forbidden edge). Recorded in `spec/ERRATA.md` (T9–T13).
 
 mod cover;
 mod cycle;
