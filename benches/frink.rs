@@ -1,14 +1,15 @@
 //! Frink's reduction (issue 11): `frink::solve` on the dual graph of the paper's bricks
 //! B9…B0 (16k to 4.2M triangles, genus 0; `gen::paper_family`, see `docs/benchmarks.md`)
-//! with the link–cut cover-count strategy (`lct`), and with the naive DFS strategy
-//! (`naive`, O(F²)) on the small members only. The dual graph is built outside the timed
+//! with the Diks–Stańczyk strategy (`ds`, O(F log² F)), the link–cut cover-count
+//! strategy (`lct`), and with the naive DFS strategy (`naive`, O(F²)) on the small
+//! members only. The dual graph is built outside the timed
 //! region (and cloned outside it: `solve` consumes it).
 //!
 //! Run: `cargo bench --bench frink > frink.txt` (about 10 minutes at load 5-10 on the
-//! shared 2-core machine). `FRINK_BENCH_C=1` adds C9…C0 (genus 3,500) to `lct`.
+//! shared 2-core machine). `FRINK_BENCH_C=1` adds C9…C0 (genus 3,500) to `ds` and `lct`.
 
 use contractible::gen::paper_family;
-use contractible::quad::frink::{self, CoverTree, Cubic, Naive};
+use contractible::quad::frink::{self, CoverTree, Cubic, DiksStanczyk, Naive};
 use contractible::Surfaces;
 use std::collections::HashMap;
 use std::sync::{Mutex, OnceLock};
@@ -48,6 +49,13 @@ fn dual(name: &str) -> Cubic {
             frink::dual_graph(&t).expect("dual graph").0
         })
         .clone()
+}
+
+#[divan::bench(args = lct_inputs(), sample_count = 3, sample_size = 1)]
+fn ds(b: divan::Bencher, name: &str) {
+    let g = dual(name);
+    b.with_inputs(|| g.clone())
+        .bench_local_values(|g| frink::solve(g, &mut DiksStanczyk::new()).expect("bridgeless"));
 }
 
 #[divan::bench(args = lct_inputs(), sample_count = 3, sample_size = 1)]

@@ -1,7 +1,8 @@
 //! Frink's reduction on paper family members (`B0`…`B9`, `C0`…`C7`; the biggest
-//! component): wall time of `frink::solve` on the dual graph with the link–cut
-//! cover-count strategy (and, with `--naive`, the naive one), the run's counters and the
-//! strategy's (how many steps were tree-stable, how many rebuilds / naive steps).
+//! component): wall time of `frink::solve` on the dual graph with the Diks–Stańczyk
+//! strategy and the link–cut cover-count strategy (and, with `--naive`, the naive one),
+//! the run's counters and the strategy's (DS: how steps were decided, digon steps,
+//! replacement edges; lct: how many steps were tree-stable, rebuilds / naive steps).
 //!
 //! Wall and CPU time of the thread (which means more on a shared machine).
 //!
@@ -13,7 +14,7 @@ use cpu::cpu;
 use std::time::Instant;
 
 use contractible::gen::paper_family;
-use contractible::quad::frink::{self, CoverTree, Naive};
+use contractible::quad::frink::{self, CoverTree, DiksStanczyk, Naive};
 use contractible::Surfaces;
 
 fn main() {
@@ -40,6 +41,16 @@ fn main() {
         let f = tri.face_count();
         let (g, _) = frink::dual_graph(&tri).expect("dual");
         let nlogn = f as f64 * (f as f64).log2();
+        let mut ds = DiksStanczyk::new();
+        let (t, c0) = (Instant::now(), cpu());
+        let sol = frink::solve(g.clone(), &mut ds).expect("bridgeless");
+        let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
+        println!(
+            "{name}: F {f} ds {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2² F; {:?}; {:?}",
+            cpu_secs * 1e9 / (nlogn * (f as f64).log2()),
+            sol.stats,
+            ds.counters()
+        );
         let mut lct = CoverTree::new();
         let (t, c0) = (Instant::now(), cpu());
         let sol = frink::solve(g.clone(), &mut lct).expect("bridgeless");

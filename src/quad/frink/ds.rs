@@ -253,10 +253,8 @@ impl<F: SpanningForest> Ds<F> {
 /// end), the third edge `h` of `w`, and `w`.
 fn digon_exit(g: &Cubic, f: u32, x: u32) -> Option<(u32, u32)> {
     let s = g.incident(x);
-    let rest: Vec<u32> = s.into_iter().filter(|&e| e != f).collect();
-    let [r0, r1] = rest[..] else {
-        return None;
-    };
+    let i = s.iter().position(|&e| e == f)?;
+    let (r0, r1) = (s[(i + 1) % 3], s[(i + 2) % 3]);
     let w = g.other(r0, x);
     if w != g.other(r1, x) || w == x || w == g.other(f, x) {
         return None;
