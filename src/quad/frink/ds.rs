@@ -25,7 +25,9 @@
 //!   the split is `{x1, x3} | {x2, x4}`: `H2` (`x1x4`, `x2x3`) joins the components by two
 //!   edges and every bridge inside a component separates two `x_i` that the other
 //!   component now joins, so `H2` passes and `H1` is disconnected. Else `x1 ~ x4` and
-//!   `H1` passes. One connectivity query decides.
+//!   `H1` passes. One connectivity query decides. Whether `H'` is connected needs no
+//!   query: `H` is one tree, every cut the forest could not repair adds a tree, and `u`,
+//!   `v` end as two of them, so `H'` is connected iff exactly two cuts went unrepaired.
 //! - **`H'` connected**: every bridge `b` of `H'` is an edge of `T'` on the subtree
 //!   spanning `x1..x4` (a bridge with all `x_i` on one side would be a bridge of `H`).
 //!   `H_k` (`H'` plus two edges) is bridgeless iff each such bridge is crossed by one of
@@ -35,10 +37,14 @@
 //!   tree are pairwise compatible, and these two are not, so `T'` has edges of at most
 //!   one of the two kinds: if it has a `{x1, x3} | {x2, x4}` edge, `H2` passes whatever
 //!   the bridges are; if a `{x1, x4} | {x2, x3}` edge, `H1`; if neither, both. With `T'`
-//!   rooted at `x1`, a `{x1, x3} | {x2, x4}` edge exists iff `l = lca(x2, x4) ≠ x1` and
-//!   `x3` is not below `l` (`lca(x3, l) ≠ l`): the edge from `l` to its parent. Equal
-//!   `x_i` need no special case (`x1 = x4` makes `x1` a leaf root whose one edge splits
-//!   `{x1, x4} | {x2, x3}`, so `H2`, which would add a loop, is avoided).
+//!   rooted at `x1`, the three pairwise LCAs of `x2, x3, x4` lie on one root path, two of
+//!   them coincide, and a third one that differs is strictly deeper: if it is
+//!   `lca(x2, x4)`, the edge above it splits `{x2, x4} | {x1, x3}` (so `H2`); if
+//!   `lca(x2, x3)`, `{x2, x3} | {x1, x4}` (so `H1`); if `lca(x3, x4)` or none, neither
+//!   split exists (both pass; `H1` is taken). Equal `x_i` need no special case: an `x_i`
+//!   adjacent to both `u` and `v` has degree 1 in `H'`, so it is a leaf of `T'` (or the
+//!   root, when it is `x1`), and the rule then avoids the reconnection that would make
+//!   it a loop (e.g. `x2 = x4` makes `lca(x2, x4) = x2` the deeper one: `H2`).
 //!
 //! No bridge query is needed: the decision reads only the *shape* of `T'`. That is why
 //! dynamic connectivity (to keep `T'` spanning as `u`, `v` and their five edges go: the
@@ -68,7 +74,7 @@
 //! # Complexity
 //! Per reduction: five edge deletions and two insertions in the connectivity structure
 //! (O(log² n) amortised each, HDT Sec. 2), the mirrored links and cuts, one `make_root`
-//! and at most four `lca` in the link–cut tree (O(log n) amortised), O(1) for the edge
+//! and three `lca` in the link–cut tree (O(log n) amortised), O(1) for the edge
 //! choice. O(n log² n) in all, plus O(m log² n) to load the graph; each lift is O(1).
 //! Memory: the connectivity structure, a link–cut tree over the nodes (25 bytes each).
 //!
@@ -93,6 +99,8 @@ pub(crate) trait SpanningForest {
     /// Deletes live edge `e`, pushing the forest's changes (a cut, then the replacement
     /// link if one exists).
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>);
+    /// Whether live edge `e` is an edge of the forest.
+    fn is_tree_edge(&self, e: u32) -> bool;
 }
 
 impl SpanningForest for Hdt {
@@ -104,6 +112,9 @@ impl SpanningForest for Hdt {
     }
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>) {
         Hdt::delete(self, e, changes);
+    }
+    fn is_tree_edge(&self, e: u32) -> bool {
+        Hdt::is_tree_edge(self, e)
     }
 }
 
@@ -189,6 +200,7 @@ impl<F: SpanningForest> Ds<F> {
     fn next_to_forbidden(&self, g: &Cubic) -> Option<(Candidate, bool)> {
         let f = self.f;
         let ends = g.ends(f);
+        let mut best: Option<(usize, Candidate)> = None;
         for u in ends {
             for e in g.incident(u) {
                 if e == f {
@@ -202,8 +214,16 @@ impl<F: SpanningForest> Ds<F> {
                     c.x.swap(0, 1);
                 }
                 debug_assert_eq!(c.a[0], f);
-                return Some((c, true));
+                // Fewest forest edges among the five removed: each costs a cut and
+                // usually a replacement search, a non-tree edge only its unlinking.
+                let cost = self.tree_edges(&c);
+                if best.is_none_or(|(b, _)| cost < b) {
+                    best = Some((cost, c));
+                }
             }
+        }
+        if let Some((_, c)) = best {
+            return Some((c, true));
         }
         ends.into_iter().find_map(|x| {
             let (h, w) = digon_exit(g, f, x)?;
@@ -211,42 +231,56 @@ impl<F: SpanningForest> Ds<F> {
         })
     }
 
+    /// How many of the five edges `cand` removes are forest edges.
+    fn tree_edges(&self, cand: &Candidate) -> usize {
+        let Some(forest) = &self.forest else {
+            return 0;
+        };
+        removed(cand)
+            .into_iter()
+            .filter(|&e| forest.is_tree_edge(e))
+            .count()
+    }
+
     /// The reconnection for `cand`, with the forest already reduced to `H'`: the
-    /// decision of the module documentation.
-    fn decide(&mut self, cand: &Candidate) -> Reconnection {
+    /// decision of the module documentation. `h_connected`: whether `H'` is connected.
+    fn decide(&mut self, cand: &Candidate, h_connected: bool) -> Reconnection {
         let [x1, x2, x3, x4] = cand.x;
         let lct = &mut self.lct;
-        let c13 = lct.connected(x1, x3);
-        let c14 = lct.connected(x1, x4);
-        if !(c13 && c14 && lct.connected(x1, x2)) {
+        if !h_connected {
             self.counters.disconnected += 1;
             // {x1, x3} | {x2, x4} forces H2; otherwise {x1, x4} | {x2, x3} forces H1.
-            return if c13 {
+            return if lct.connected(x1, x3) {
                 Reconnection::H2
             } else {
                 Reconnection::H1
             };
         }
+        // Rooted at x1, the pairwise LCAs of x2, x3, x4: two coincide and the third, if
+        // different, is deeper, below the edge that splits its pair from the other two.
         lct.make_root(x1);
-        let l24 = lct.lca(x2, x4);
-        let split_13_24 = l24 != x1 && lct.lca(x3, l24) != l24;
         let l23 = lct.lca(x2, x3);
-        let split_14_23 = l23 != x1 && lct.lca(x4, l23) != l23;
-        debug_assert!(
-            !(split_13_24 && split_14_23),
-            "a tree with two incompatible splits"
-        );
-        if split_13_24 {
+        let l24 = lct.lca(x2, x4);
+        let l34 = lct.lca(x3, x4);
+        if l23 == l34 && l24 != l23 {
+            // {x2, x4} | {x1, x3}: H2 crosses it.
             self.counters.forced += 1;
             Reconnection::H2
-        } else if split_14_23 {
+        } else if l24 == l34 && l23 != l24 {
+            // {x2, x3} | {x1, x4}: H1 crosses it.
             self.counters.forced += 1;
             Reconnection::H1
         } else {
+            debug_assert!(l23 == l24, "three distinct pairwise LCAs in a tree");
             self.counters.free += 1;
             Reconnection::H1
         }
     }
+}
+
+/// The five edges the reduction `cand` removes.
+fn removed(cand: &Candidate) -> [u32; 5] {
+    [cand.e, cand.a[0], cand.a[1], cand.b[0], cand.b[1]]
 }
 
 /// If `x` (an end of `f`) has its two other edges on a digon `x ⇉ w` (`w` not `f`'s other
@@ -310,17 +344,29 @@ impl<F: SpanningForest> Strategy for Ds<F> {
     fn choose(&mut self, _g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
         let mut changes = std::mem::take(&mut self.changes);
         let forest = self.forest();
-        for e in [cand.e, cand.a[0], cand.a[1], cand.b[0], cand.b[1]] {
+        // Non-tree edges first: deleted later, one of them could have become the
+        // replacement of a tree edge, to be cut again.
+        let five = removed(cand);
+        let tree = five.map(|e| forest.is_tree_edge(e));
+        for (e, _) in five.into_iter().zip(tree).filter(|&(_, t)| !t) {
             forest.delete(e, &mut changes);
         }
-        self.counters.replacements += changes
+        for (e, _) in five.into_iter().zip(tree).filter(|&(_, t)| t) {
+            forest.delete(e, &mut changes);
+        }
+        let links = changes
             .iter()
             .filter(|c| matches!(c, ForestChange::Link { .. }))
-            .count() as u64;
+            .count();
+        // Every cut without a replacement adds a tree; `u` and `v` end as two of them,
+        // so `H'` (one tree before, as `H` is connected) is connected iff exactly two
+        // trees were added.
+        let h_connected = changes.len() - links == links + 2;
+        self.counters.replacements += links as u64;
         self.changes = changes;
         self.mirror();
         self.pending = Some(*cand);
-        Some(self.decide(cand))
+        Some(self.decide(cand, h_connected))
     }
 
     fn applied(&mut self, g: &Cubic, r: &Reduction) {

@@ -721,6 +721,10 @@ impl ds::SpanningForest for NaiveForest {
         }
     }
 
+    fn is_tree_edge(&self, e: u32) -> bool {
+        self.tree.get(e as usize).copied().unwrap_or(false)
+    }
+
     fn delete(&mut self, e: u32, changes: &mut Vec<hdt::ForestChange>) {
         let [a, b] = self.ends[e as usize];
         self.adj[a as usize].retain(|&f| f != e);
