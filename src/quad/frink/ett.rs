@@ -99,9 +99,9 @@ impl Pool {
         self.t.len()
     }
 
-    /// Bytes reserved by the pool.
+    /// Bytes of the nodes ever allocated (live or free).
     pub(crate) fn bytes(&self) -> usize {
-        self.t.capacity() * std::mem::size_of::<Node>()
+        self.t.len() * std::mem::size_of::<Node>()
     }
 
     /// Appends `k` nodes, growing by a quarter rather than doubling: the pool is the
