@@ -84,6 +84,8 @@ pub(crate) struct HdtStats {
     pub(crate) max_level: u32,
 }
 
+/// Edge ids must be below this: half-edge `2e + 1` must not reach `NIL`.
+pub(crate) const MAX_EDGE_ID: u32 = (1 << 31) - 1;
 /// [`Hdt::state`] of an edge id that is not live.
 const DEAD: u8 = 0xFF;
 /// [`Hdt::state`] bit of a tree edge; the low bits are the level.
@@ -161,13 +163,15 @@ impl Hdt {
     /// allowed, loops are not: debug_assert). If it joins two trees it becomes a tree edge
     /// and `Link{e,a,b}` is pushed to `changes`. Amortised O(log n).
     ///
-    /// A call breaking the preconditions (live `e`, a loop, a vertex `≥ n`) fails a
-    /// `debug_assert!` and is ignored in release builds.
+    /// A call breaking the preconditions (live `e`, `e ≥ MAX_EDGE_ID` = 2³¹ − 1 as
+    /// half-edges are `2e + s`, a loop, a vertex `≥ n`) fails a `debug_assert!` and is
+    /// ignored in release builds.
     pub(crate) fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
         debug_assert!(!self.live(e), "insert: edge {e} is live");
+        debug_assert!(e < MAX_EDGE_ID, "insert: edge id {e} too large");
         debug_assert!(a != b, "insert: loop at {a}");
         debug_assert!(a < self.n && b < self.n, "insert: vertex out of range");
-        if self.live(e) || a == b || a >= self.n || b >= self.n || e == NIL {
+        if self.live(e) || a == b || a >= self.n || b >= self.n || e >= MAX_EDGE_ID {
             return;
         }
         let k = e as usize;
