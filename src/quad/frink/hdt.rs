@@ -122,12 +122,14 @@ pub(crate) struct Hdt {
     stats: HdtStats,
     chain: Vec<u32>,
     /// Non-tree edges examined per level before the paper's scan (`SAMPLE`; the tests
-    /// also run with 0, the paper's algorithm, to exercise the levels).
+    /// also run with 0, the paper's scan with departure (2) only, which promotes much
+    /// more and so exercises the levels).
     sample: u32,
 }
 
 impl Hdt {
-    /// `n` vertices `0..n`, no edges. O(n).
+    /// `n` vertices `0..n`, no edges. O(n). Panics if `n` exceeds 2²⁷ − 1 (the subtree
+    /// vertex counts have 27 bits), a limit of the structure, not of the input data.
     pub(crate) fn new(n: usize) -> Self {
         assert!(
             n <= MAX_TREE,
