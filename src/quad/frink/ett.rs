@@ -11,8 +11,10 @@
 //! keep that shape exactly (tested against a naive forest in `hdt`'s tests, which check
 //! every level after every operation on small graphs). Each node carries two *own* flags
 //! set by the caller and the splay subtree's vertex count and OR of the flags, so that
-//! [`Pool::tree_size`] is exact and [`Pool::find_flagged`] finds a flagged node of a tree
-//! whenever one exists.
+//! [`Pool::tree_size`] is exact and [`Pool::first_flagged`] finds the first flagged node of
+//! a tree (in sequence order) whenever one exists. Every result is a function of the
+//! sequences alone, never of the splay trees' shapes (which debug-only checks or a
+//! different access order would change), so the owner's choices are reproducible.
 //!
 //! # Complexity
 //! O(log n) amortised per operation, n the number of nodes of the trees involved (splay
@@ -236,34 +238,8 @@ impl Pool {
         self.t[x as usize].par != NIL
     }
 
-    /// A node of `x`'s tree whose own flag `f` is set, if any (the first such in the
-    /// splay tree's pre-order from the root after splaying `x`; deterministic). The found
-    /// node is splayed, which pays for the descent.
-    pub(crate) fn find_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
-        self.splay(x);
-        let mut y = x;
-        if self.t[y as usize].w & f.agg() == 0 {
-            return None;
-        }
-        loop {
-            let n = self.t[y as usize];
-            if n.w & f.own() != 0 {
-                break;
-            }
-            let l = n.ch[0];
-            y = if l != NIL && self.t[l as usize].w & f.agg() != 0 {
-                l
-            } else {
-                n.ch[1]
-            };
-            debug_assert!(y != NIL, "aggregate flag without a flagged node");
-        }
-        self.splay(y);
-        Some(y)
-    }
-
     /// The first node (in sequence order) of `x`'s tree whose own flag `f` is set, if
-    /// any; splayed.
+    /// any; splayed, which pays for the descent.
     pub(crate) fn first_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
         self.splay(x);
         self.leftmost_flagged(x, f)
@@ -306,7 +282,7 @@ impl Pool {
     /// `A x B` and `y`'s rotated to `y C`, the sequence becomes `A x p y C (p+1) B`, so
     /// that only `y`'s tree is rotated (two splays and one concatenation).
     pub(crate) fn link(&mut self, x: u32, y: u32, p: u32) {
-        debug_assert!(!self.same_tree(x, y));
+        debug_assert_ne!(self.root_of(x), self.root_of(y), "link: same tree");
         debug_assert!(self.is_singleton(p) && self.is_singleton(p + 1));
         let q = p + 1;
         self.splay(y);
