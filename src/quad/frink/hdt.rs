@@ -38,9 +38,9 @@
 //! so that the promoted non-tree edges satisfy (i)). Without these, a long path in the
 //! forest makes every search promote the whole smaller side, level after level, even
 //! when the replacement is next to the cut. On the Frink-like test workload (module
-//! tests; n = 4.2M, 25M operations, one run each) the paper's order did 17.9M
-//! promotions, 8.6 µs per operation and 302 bytes per vertex; with (1)+(2), 3.2M
-//! promotions, 3.1 µs and about 175 bytes per vertex.
+//! tests; n = 4.2M, 25M operations, one run each), with (2) alone (no sample) it did
+//! 17.5M promotions, 7.4 µs per operation and 271 bytes per vertex (counted by
+//! [`Hdt::bytes`]); with (1)+(2), 2.8M promotions, 3.5 µs and 137 bytes per vertex.
 //!
 //! # Complexity
 //! Amortised O(log² n) per update: every promotion costs O(log n) and an edge is
@@ -50,8 +50,9 @@
 //! non-tree edges of one level are in their own list (its head is in the vertex's node of
 //! that level), so the bound needs no degree assumption. Reaching a vertex's node of level
 //! `i` walks up its chain of nodes (O(i) ≤ O(log n)), within the per-level cost above.
-//! Measured (release, shared 2-core machine, noisy): about 1.2 µs per operation on the
-//! Frink-like workload at n = 200k, 3.1 µs at n = 4.2M (cache misses in the splay trees).
+//! Measured (release, shared 2-core machine, noisy): about 1.2–1.4 µs per operation on
+//! the Frink-like workload at n = 200k, 3.1–3.5 µs at n = 4.2M (cache misses in the
+//! splay trees).
 //!
 //! # Memory
 //! Euler-tour nodes are 24 bytes and are allocated lazily: a vertex has nodes for levels
@@ -59,9 +60,9 @@
 //! edge of level `ℓ` has `ℓ + 1` arc pairs; level 0 alone is `3n − 2` nodes. Per edge id
 //! 25 bytes (ends, list links reused as the arc-pair handle of tree edges, state). The
 //! worst case is O(m + n log n) nodes. Measured on the Frink-like workload at n = 4.2M
-//! (6.3M edges): 146 bytes per vertex counted by [`Hdt::bytes`] (4.5 nodes per vertex
-//! at the peak), 172–184 bytes per vertex of peak RSS increase (VmHWM, which includes
-//! allocator slack and some test-harness arrays), i.e. about 0.75 GB.
+//! (6.3M edges): 137 bytes per vertex counted by [`Hdt::bytes`] (4.1 nodes per vertex
+//! at the peak), about 163 bytes per vertex of peak RSS increase (VmHWM, allocator
+//! slack included, the test's own 12 bytes per vertex taken out), i.e. about 0.7 GB.
 //!
 //! # Determinism
 //! No randomness: the forest and the changes are a function of the sequence of updates
