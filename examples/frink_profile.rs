@@ -6,7 +6,7 @@
 //!
 //! Wall and CPU time of the thread (which means more on a shared machine).
 //!
-//! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive]`
+//! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive] [--only ds|lct]`
 
 #[path = "common/cpu.rs"]
 mod cpu;
@@ -20,13 +20,18 @@ use contractible::Surfaces;
 fn main() {
     let mut names = Vec::new();
     let mut naive = false;
-    for a in std::env::args().skip(1) {
+    let mut only: Option<String> = None;
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
         if a == "--naive" {
             naive = true;
+        } else if a == "--only" {
+            only = args.next();
         } else {
             names.push(a);
         }
     }
+    let run = |s: &str| only.as_deref().is_none_or(|o| o == s);
     for name in names {
         let mut c = name.chars();
         let group = c.next().expect("member name");
@@ -41,26 +46,30 @@ fn main() {
         let f = tri.face_count();
         let (g, _) = frink::dual_graph(&tri).expect("dual");
         let nlogn = f as f64 * (f as f64).log2();
-        let mut ds = DiksStanczyk::new();
-        let (t, c0) = (Instant::now(), cpu());
-        let sol = frink::solve(g.clone(), &mut ds).expect("bridgeless");
-        let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
-        println!(
-            "{name}: F {f} ds {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2² F; {:?}; {:?}",
-            cpu_secs * 1e9 / (nlogn * (f as f64).log2()),
-            sol.stats,
-            ds.counters()
-        );
-        let mut lct = CoverTree::new();
-        let (t, c0) = (Instant::now(), cpu());
-        let sol = frink::solve(g.clone(), &mut lct).expect("bridgeless");
-        let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
-        println!(
-            "{name}: F {f} frink-lct {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2 F; {:?}; {:?}",
-            cpu_secs * 1e9 / nlogn,
-            sol.stats,
-            lct.counters()
-        );
+        if run("ds") {
+            let mut ds = DiksStanczyk::new();
+            let (t, c0) = (Instant::now(), cpu());
+            let sol = frink::solve(g.clone(), &mut ds).expect("bridgeless");
+            let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
+            println!(
+                "{name}: F {f} ds {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2² F; {:?}; {:?}",
+                cpu_secs * 1e9 / (nlogn * (f as f64).log2()),
+                sol.stats,
+                ds.counters()
+            );
+        }
+        if run("lct") {
+            let mut lct = CoverTree::new();
+            let (t, c0) = (Instant::now(), cpu());
+            let sol = frink::solve(g.clone(), &mut lct).expect("bridgeless");
+            let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
+            println!(
+                "{name}: F {f} frink-lct {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2 F; {:?}; {:?}",
+                cpu_secs * 1e9 / nlogn,
+                sol.stats,
+                lct.counters()
+            );
+        }
         if naive {
             let (t, c0) = (Instant::now(), cpu());
             let sol = frink::solve(g, &mut Naive::new()).expect("bridgeless");

@@ -101,6 +101,12 @@ pub(crate) trait SpanningForest {
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>);
     /// Whether live edge `e` is an edge of the forest.
     fn is_tree_edge(&self, e: u32) -> bool;
+    /// Whether nodes `a` and `b` are connected.
+    fn connected(&mut self, a: u32, b: u32) -> bool;
+    /// The structure's own invariant check (for the specification's F3).
+    fn check(&self) -> Result<(), String> {
+        Ok(())
+    }
 }
 
 impl SpanningForest for Hdt {
@@ -115,6 +121,12 @@ impl SpanningForest for Hdt {
     }
     fn is_tree_edge(&self, e: u32) -> bool {
         Hdt::is_tree_edge(self, e)
+    }
+    fn connected(&mut self, a: u32, b: u32) -> bool {
+        Hdt::connected(self, a, b)
+    }
+    fn check(&self) -> Result<(), String> {
+        Hdt::check(self)
     }
 }
 
@@ -136,6 +148,12 @@ pub struct DsCounters {
     pub cuts: u64,
     /// Replacement edges linked after a cut.
     pub replacements: u64,
+    /// Edge level increments in the connectivity structure (HDT's amortisation).
+    pub promotions: u64,
+    /// The highest HDT level any edge reached.
+    pub max_level: u32,
+    /// Bytes held by the connectivity structure at the end.
+    pub forest_bytes: u64,
 }
 
 /// The strategy over any [`SpanningForest`]; [`DiksStanczyk`] is it over [`Hdt`].
@@ -246,16 +264,16 @@ impl<F: SpanningForest> Ds<F> {
     /// decision of the module documentation. `h_connected`: whether `H'` is connected.
     fn decide(&mut self, cand: &Candidate, h_connected: bool) -> Reconnection {
         let [x1, x2, x3, x4] = cand.x;
-        let lct = &mut self.lct;
         if !h_connected {
             self.counters.disconnected += 1;
             // {x1, x3} | {x2, x4} forces H2; otherwise {x1, x4} | {x2, x3} forces H1.
-            return if lct.connected(x1, x3) {
+            return if self.forest().connected(x1, x3) {
                 Reconnection::H2
             } else {
                 Reconnection::H1
             };
         }
+        let lct = &mut self.lct;
         // Rooted at x1, the pairwise LCAs of x2, x3, x4: two coincide and the third, if
         // different, is deeper, below the edge that splits its pair from the other two.
         lct.make_root(x1);
@@ -341,7 +359,7 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         None
     }
 
-    fn choose(&mut self, _g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+    fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
         let mut changes = std::mem::take(&mut self.changes);
         let forest = self.forest();
         // Non-tree edges first: deleted later, one of them could have become the
@@ -365,6 +383,9 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         self.counters.replacements += links as u64;
         self.changes = changes;
         self.mirror();
+        if let Some(forest) = &self.forest {
+            super::spec::ds_forest(g, cand, |e| forest.is_tree_edge(e), || forest.check());
+        }
         self.pending = Some(*cand);
         Some(self.decide(cand, h_connected))
     }
@@ -403,7 +424,14 @@ impl DiksStanczyk {
 
     /// What the steps of the last run did.
     pub fn counters(&self) -> DsCounters {
-        self.0.counters()
+        let mut c = self.0.counters();
+        if let Some(f) = &self.0.forest {
+            let s = f.stats();
+            c.promotions = s.promotions;
+            c.max_level = s.max_level;
+            c.forest_bytes = f.bytes() as u64;
+        }
+        c
     }
 }
 

@@ -97,6 +97,7 @@
 mod cover;
 mod cycle;
 mod ds;
+mod ett;
 mod graph;
 mod hdt;
 mod lct;

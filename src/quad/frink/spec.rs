@@ -7,6 +7,7 @@
 //! |---|---|---|
 //! | F1 the chosen reduced graph is cubic, loop-free, connected and bridgeless | App. A (Frink: one of `H1`, `H2` is) | `after_reduction` |
 //! | F2 the lifted matching is perfect on the current graph | App. A, cases (i)–(iv) | `after_lift`, `at_end` |
+//! | F3 (Diks–Stańczyk) the forest the decision reads spans `H' = H − {u, v}`, and the connectivity structure's own invariants hold | DS (errata T13), HDT Sec. 2 | `ds_forest` |
 //!
 //! Cost: F1 checks that the two new edges are no loops (O(1)) always, and while the
 //! reduced graph has at most [`SMALL_NODES`] nodes checks it in full by a method
@@ -17,7 +18,7 @@
 //! previous step, is the same statement by induction); [`at_end`] checks the whole
 //! matching once.
 
-use super::graph::{Cubic, Reduction, NONE};
+use super::graph::{Candidate, Cubic, Reduction, NONE};
 use crate::spec::ENABLED;
 
 /// Node count up to which F1 runs the independent edge-removal test.
@@ -123,6 +124,80 @@ pub(crate) fn after_reduction(g: &Cubic, r: &Reduction) {
             at,
             "the reduced graph ({} nodes) is disconnected or has a bridge",
             g.node_count()
+        );
+    }
+}
+
+/// F3: after the five edges of the reduction `cand` of `g` (not yet applied) are deleted
+/// from the Diks–Stańczyk strategy's connectivity structure, its forest (`is_tree`) is a
+/// spanning forest of `H' = g − {u, v}`: every forest edge is an edge of `H'`, the forest
+/// is acyclic, and it has one edge fewer than the nodes of `H'` per component of `H'`
+/// (components counted by a union–find over the edges of `H'`, independent of the
+/// structure); and `check` (the structure's own invariant check) passed. Up to
+/// [`SMALL_NODES`] live nodes; O(n · α(n)).
+pub(crate) fn ds_forest(
+    g: &Cubic,
+    cand: &Candidate,
+    is_tree: impl Fn(u32) -> bool,
+    check: impl FnOnce() -> Result<(), String>,
+) {
+    if !ENABLED || g.node_count() > SMALL_NODES {
+        return;
+    }
+    let at = format!("reduction at {}{}", cand.u, cand.v);
+    if let Err(m) = check() {
+        spec_fail!("F3 (DS)", at, "the connectivity structure: {m}");
+    }
+    let removed = [cand.e, cand.a[0], cand.a[1], cand.b[0], cand.b[1]];
+    let n = g.node_capacity();
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    fn find(p: &mut [u32], mut x: u32) -> u32 {
+        while p[x as usize] != x {
+            p[x as usize] = p[p[x as usize] as usize];
+            x = p[x as usize];
+        }
+        x
+    }
+    let in_h = |x: u32| g.is_alive(x) && x != cand.u && x != cand.v;
+    let mut edges_h = Vec::new();
+    for x in (0..n as u32).filter(|&x| in_h(x)) {
+        for e in g.incident(x) {
+            let [a, b] = g.ends(e);
+            if a == x && in_h(b) && !removed.contains(&e) {
+                edges_h.push(e);
+            }
+        }
+    }
+    for e in (0..g.ends.len() as u32).filter(|&e| is_tree(e)) {
+        if !edges_h.contains(&e) {
+            spec_fail!("F3 (DS)", at, "forest edge {e} is not an edge of H'");
+        }
+    }
+    let mut tree_edges = 0;
+    for &e in edges_h.iter().filter(|&&e| is_tree(e)) {
+        let [a, b] = g.ends(e);
+        let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+        if ra == rb {
+            spec_fail!("F3 (DS)", at, "forest edge {e} closes a cycle");
+        }
+        parent[ra as usize] = rb;
+        tree_edges += 1;
+    }
+    let mut full: Vec<u32> = (0..n as u32).collect();
+    for &e in &edges_h {
+        let [a, b] = g.ends(e);
+        let (ra, rb) = (find(&mut full, a), find(&mut full, b));
+        full[ra as usize] = rb;
+    }
+    let nodes = (0..n as u32).filter(|&x| in_h(x)).count();
+    let components = (0..n as u32)
+        .filter(|&x| in_h(x) && find(&mut full, x) == x)
+        .count();
+    if tree_edges + components != nodes {
+        spec_fail!(
+            "F3 (DS)",
+            at,
+            "{tree_edges} forest edges for {nodes} nodes in {components} components: not spanning"
         );
     }
 }

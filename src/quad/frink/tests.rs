@@ -725,6 +725,10 @@ impl ds::SpanningForest for NaiveForest {
         self.tree.get(e as usize).copied().unwrap_or(false)
     }
 
+    fn connected(&mut self, a: u32, b: u32) -> bool {
+        self.component(a)[b as usize]
+    }
+
     fn delete(&mut self, e: u32, changes: &mut Vec<hdt::ForestChange>) {
         let [a, b] = self.ends[e as usize];
         self.adj[a as usize].retain(|&f| f != e);
@@ -872,5 +876,48 @@ fn diks_stanczyk_on_random_surfaces() {
             assert!(p.is_perfect(&t), "{label}");
             assert_eq!(p.check(&t), Ok(()));
         }
+    }
+}
+
+/// A broken connectivity structure for the test of F3: [`NaiveForest`] that never links
+/// a replacement edge, so its forest stops spanning `H'`.
+#[derive(Default)]
+struct NoReplacement(NaiveForest);
+
+impl ds::SpanningForest for NoReplacement {
+    fn with_nodes(n: usize) -> Self {
+        NoReplacement(NaiveForest::with_nodes(n))
+    }
+    fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<hdt::ForestChange>) {
+        self.0.insert(e, a, b, changes);
+    }
+    fn delete(&mut self, e: u32, changes: &mut Vec<hdt::ForestChange>) {
+        let before = changes.len();
+        self.0.delete(e, changes);
+        if let Some(&hdt::ForestChange::Link { e: r, .. }) = changes.get(before + 1) {
+            changes.truncate(before + 1);
+            self.0.tree[r as usize] = false;
+        }
+    }
+    fn is_tree_edge(&self, e: u32) -> bool {
+        self.0.is_tree_edge(e)
+    }
+    fn connected(&mut self, a: u32, b: u32) -> bool {
+        self.0.connected(a, b)
+    }
+}
+
+/// F3 fails when the forest the decision reads does not span `H'` (a connectivity
+/// structure that drops replacement edges), and holds for the real one (the runs above).
+#[test]
+fn f3_catches_a_forest_that_stops_spanning() {
+    for (name, g) in small_graphs() {
+        if g.node_count() < 8 {
+            continue;
+        }
+        assert_fails("F3", || {
+            let _ = solve(g.clone(), &mut ds::Ds::<NoReplacement>::default());
+        });
+        let _ = name;
     }
 }
