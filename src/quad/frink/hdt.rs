@@ -29,18 +29,24 @@
 //! next such item of `T` is found by one descent.
 //!
 //! Two departures from the paper's order of work, neither changing the invariants or
-//! the bound: (1) before the scan, the first `SAMPLE` (8) non-tree edges of level `i` at
-//! `T` (in tour order) are examined without promoting anything; a replacement among
+//! the bound: (1) before the scan, the first `SAMPLE` (32) non-tree edges of level `i`
+//! at `T` (in tour order) are examined without promoting anything; a replacement among
 //! them ends the search, and if `T` has fewer and none leaves `T`, level `i` has no
 //! replacement (a deterministic form of the sampling heuristic of Iyer–Karger–Rahul–
-//! Thorup, ACM JEA 6, 2001); (2) `T`'s tree edges are promoted only when the scan first
+//! Thorup, ACM JEA 6, 2001); if `T` has more, the first `SAMPLE` of the *other* tree are
+//! examined the same way (every crossing edge has an end on each side, and both
+//! sequences begin next to the cut, where a local cut's crossing edges are); (2) `T`'s tree edges are promoted only when the scan first
 //! has to promote a non-tree edge (the paper promotes them first; they are needed only
 //! so that the promoted non-tree edges satisfy (i)). Without these, a long path in the
 //! forest makes every search promote the whole smaller side, level after level, even
 //! when the replacement is next to the cut. On the Frink-like test workload (module
 //! tests; n = 4.2M, 25M operations, one run each), with (2) alone (no sample) it did
 //! 17.5M promotions, 7.4 µs per operation and 271 bytes per vertex (counted by
-//! [`Hdt::bytes`]); with (1)+(2), 2.8M promotions, 3.5 µs and 137 bytes per vertex.
+//! [`Hdt::bytes`]); with (1)+(2), 2.8M promotions, 3.5 µs and 137 bytes per vertex
+//! (sample 8, one side). In the Diks–Stańczyk strategy on B4 (293k triangles, idle
+//! machine, one run each): sample 8 one side 4.70 s and 2.11M promotions; 32 one side
+//! 3.65 s, 1.81M; 32 both sides 2.34 s, 0.82M; on B0, 8 one side 86.5 s, 33.0M
+//! promotions; 32 both sides 63.2 s, 21.8M.
 //!
 //! # Complexity
 //! Amortised O(log² n) per update: every promotion costs O(log n) and an edge is
@@ -100,7 +106,7 @@ const DEAD: u8 = 0xFF;
 /// [`Hdt::state`] bit of a tree edge; the low bits are the level.
 const TREE: u8 = 0x80;
 /// Non-tree edges examined at a level before any promotion (see [`Hdt::replace`]).
-const SAMPLE: u32 = 8;
+const SAMPLE: u32 = 32;
 /// Flag of a vertex node with non-tree edges of its level.
 const NT: Flag = Flag::F0;
 /// Flag of the canonical arc (the first of the pair) of a tree edge of its level.
@@ -408,32 +414,23 @@ impl Hdt {
         let y = self.vnode(b, i);
         let sx = self.pool.tree_size(x);
         let sy = self.pool.tree_size(y);
-        let (t, size) = if sx <= sy { (x, sx) } else { (y, sy) };
+        let (t, size, big) = if sx <= sy { (x, sx, y) } else { (y, sy, x) };
         // Departure (1) of the module doc: the first `sample` non-tree edges of level i
         // at T are examined without promoting anything, O(sample · log n) unpaid work.
         // Only if all are internal and there are more does the paper's scan run, which
         // pays for itself by promotions.
-        let mut sampled = 0;
-        let mut w = self.pool.first_flagged(t, NT);
-        'sample: while let Some(v) = w {
-            let mut half = self.pool.b(v);
-            while half != NIL {
-                if sampled == self.sample {
-                    break 'sample;
-                }
-                sampled += 1;
-                let e = half >> 1;
-                if self.leaves(v, half, i) {
-                    self.remove_nontree(e, i);
-                    self.make_tree(e, i);
-                    return Some(e);
-                }
-                half = self.next(half);
-            }
-            w = self.pool.next_flagged(v, NT);
+        let (found, sampled) = self.sample_from(t, i);
+        if let Some(e) = found {
+            return Some(e);
         }
         if sampled < self.sample {
             return None;
+        }
+        // The same from the other side: every crossing edge also has an end there, and
+        // both sequences begin next to the cut (`ett::Pool::cut`), where the crossing
+        // edges of a local cut are; still unpaid O(sample · log n), no promotion.
+        if let (Some(e), _) = self.sample_from(big, i) {
+            return Some(e);
         }
         // Departure (2): T's tree edges are promoted just before the first non-tree edge.
         let mut tree_promoted = false;
@@ -460,6 +457,32 @@ impl Hdt {
             h = w;
         }
         None
+    }
+
+    /// Examines the first `sample` non-tree edges of level `i` of the tree of node `t`, in
+    /// sequence order: the first one leaving the tree becomes a tree edge of level `i`
+    /// and is returned; also returns how many were examined.
+    fn sample_from(&mut self, t: u32, i: u32) -> (Option<u32>, u32) {
+        let mut sampled = 0;
+        let mut w = self.pool.first_flagged(t, NT);
+        while let Some(v) = w {
+            let mut half = self.pool.b(v);
+            while half != NIL {
+                if sampled == self.sample {
+                    return (None, sampled);
+                }
+                sampled += 1;
+                let e = half >> 1;
+                if self.leaves(v, half, i) {
+                    self.remove_nontree(e, i);
+                    self.make_tree(e, i);
+                    return (Some(e), sampled);
+                }
+                half = self.next(half);
+            }
+            w = self.pool.next_flagged(v, NT);
+        }
+        (None, sampled)
     }
 
     /// Whether half-edge `half` at level-`i` vertex node `w` leads out of `w`'s tree.
