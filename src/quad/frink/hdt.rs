@@ -236,6 +236,14 @@ impl Hdt {
         self.links[e as usize] = [NIL; 4];
         changes.push(ForestChange::Cut { e, a, b });
         self.stats.searches += 1;
+        // An end left without any edge (e.g. a vertex whose edges are being deleted one
+        // by one) is a whole side with nothing to reconnect it: no search, which would
+        // otherwise splay the other, big side at every level for nothing.
+        if self.isolated(a) || self.isolated(b) {
+            self.trim(a);
+            self.trim(b);
+            return;
+        }
         for i in (0..=lvl).rev() {
             if let Some(r) = self.replace(a, b, i) {
                 let [x, y] = self.ends[r as usize];
@@ -457,6 +465,22 @@ impl Hdt {
             h = w;
         }
         None
+    }
+
+    /// Whether vertex `x` has no edge left: no tree edge (its level-0 tour is itself
+    /// alone) and no non-tree edge at any level. O(levels of `x`).
+    fn isolated(&self, x: u32) -> bool {
+        if !self.pool.is_singleton(x) {
+            return false;
+        }
+        let mut v = x;
+        while v != NIL {
+            if self.pool.b(v) != NIL {
+                return false;
+            }
+            v = self.pool.a(v);
+        }
+        true
     }
 
     /// Examines the first `sample` non-tree edges of level `i` of the tree of node `t`, in
