@@ -921,3 +921,48 @@ fn f3_catches_a_forest_that_stops_spanning() {
         let _ = name;
     }
 }
+
+/// The Diks–Stańczyk decision against the naive DFS test on *every* reduction of small
+/// graphs (not only those the travelling forbidden edge picks), both reconnections
+/// classified by the naive test: the decision must take a valid one, so wherever only
+/// one is valid it is that one. A fresh strategy per candidate (its forest is reduced by
+/// `choose`).
+#[test]
+fn diks_stanczyk_decides_every_reduction_of_small_and_random_graphs() {
+    let mut graphs: Vec<(String, Cubic)> = small_graphs()
+        .into_iter()
+        .map(|(n, g)| (n.to_string(), g))
+        .collect();
+    let mut rng = Rng::new(37);
+    while graphs.len() < 400 {
+        let g = random_cubic(2 * (2 + rng.index(9)), &mut rng);
+        if spec::connected_bridgeless_by_definition(&g) {
+            graphs.push((format!("random {}", graphs.len()), g));
+        }
+    }
+    let mut dfs = Dfs::default();
+    let (mut decided, mut single) = (0, 0);
+    for (name, g) in &graphs {
+        for cand in all_candidates(g) {
+            let mut h = g.clone();
+            let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
+                let r = h.reduce(&cand, recon);
+                let ok = dfs.connected_bridgeless(&h, cand.x[0]);
+                h.undo(&r);
+                ok
+            });
+            let mut ds = DiksStanczyk::new();
+            ds.start(&h);
+            let chosen = ds.choose(&mut h, &cand).expect("a decision");
+            let k = usize::from(chosen == Reconnection::H2);
+            assert!(ok[k], "{name}: {cand:?}: {chosen:?} has a bridge ({ok:?})");
+            decided += 1;
+            single += usize::from(ok[0] != ok[1]);
+        }
+    }
+    eprintln!("diks-stanczyk decision: {decided} reductions of {} graphs, {single} with one valid reconnection", graphs.len());
+    assert!(
+        decided > 5000 && single > 500,
+        "{decided} decisions, {single} forced"
+    );
+}
