@@ -12,6 +12,7 @@ use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::quad::frink::{self, CoverTree, DiksStanczyk, Naive};
 use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
 use contractible::{Surfaces, Triangulation};
+use proptest::prelude::*;
 
 /// Largest component of a shared mesh run here (the naive strategy is quadratic).
 const MAX_FACES: usize = 6_000;
@@ -312,5 +313,33 @@ fn cover_tree_on_every_shared_closed_mesh_and_random_surfaces() {
             });
             run_cover(&t, &format!("{kind:?} seed {seed}"));
         }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(40))]
+
+    /// Diks–Stańczyk on any random closed surface (orientable genus 0..8 or
+    /// non-orientable genus 1..6, any size up to 3,000 faces, any generator seed): a
+    /// perfect pairing by the harness and petgraph, the same on a second run, and never
+    /// a case (iv) lift.
+    #[test]
+    fn diks_stanczyk_on_any_random_surface(
+        kind in 0usize..15,
+        min_faces in 4usize..3_000,
+        seed in any::<u64>(),
+    ) {
+        let surface = if kind <= 8 {
+            SurfaceKind::Orientable(kind as u32)
+        } else {
+            SurfaceKind::NonOrientable(kind as u32 - 8)
+        };
+        let t = random(&RandomParams {
+            surface,
+            min_faces,
+            flip_percent: 30,
+            seed,
+        });
+        run_ds(&t, &format!("{surface:?} F {} seed {seed}", t.face_count()));
     }
 }
