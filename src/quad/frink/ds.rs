@@ -79,7 +79,9 @@
 //! Memory: the connectivity structure, a link–cut tree over the nodes (25 bytes each).
 //!
 //! # Determinism
-//! No randomness: the first forbidden edge is the first slot of node 0; candidates are
+//! No randomness: the forest starts as the breadth-first tree from the smallest live node
+//! (tree edges inserted first, in BFS order, then every other edge in node order); the
+//! first forbidden edge is the first slot of node 0; candidates are
 //! tried at the ends of `f` in edge-end order, edges in slot order; ties (both
 //! reconnections pass) take `H1`.
 
@@ -323,6 +325,30 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         self.counters = DsCounters::default();
         self.pending = None;
         self.changes.clear();
+        // Breadth-first tree edges first, so that the forest starts as a BFS tree
+        // (shallow: the pieces a reduction cuts off are small), then the other edges.
+        let mut seen = vec![false; n];
+        let mut used = vec![false; g.ends.len()];
+        let mut queue = std::collections::VecDeque::new();
+        for s in 0..n as u32 {
+            if !g.is_alive(s) || seen[s as usize] {
+                continue;
+            }
+            seen[s as usize] = true;
+            queue.push_back(s);
+            while let Some(x) = queue.pop_front() {
+                for e in g.incident(x) {
+                    let y = g.other(e, x);
+                    if !seen[y as usize] {
+                        seen[y as usize] = true;
+                        used[e as usize] = true;
+                        let [a, b] = g.ends(e);
+                        forest.insert(e, a, b, &mut self.changes);
+                        queue.push_back(y);
+                    }
+                }
+            }
+        }
         for x in 0..n as u32 {
             if !g.is_alive(x) {
                 continue;
@@ -331,7 +357,7 @@ impl<F: SpanningForest> Strategy for Ds<F> {
                 let [a, b] = g.ends(e);
                 // Each edge once, from its smaller end (a loop never: the input is
                 // bridgeless, checked by solve).
-                if a == x && a < b || b == x && b < a {
+                if !used[e as usize] && (a == x && a < b || b == x && b < a) {
                     forest.insert(e, a, b, &mut self.changes);
                 }
             }
