@@ -220,41 +220,31 @@ fn run_ds(t: &Triangulation, label: &str) -> frink::DsCounters {
     c
 }
 
-/// Diks–Stańczyk on every component of every shared closed mesh (no size limit: up to
-/// 199k faces), random surfaces of every kind (orientable genus 0..8, non-orientable
-/// 1..6) at two sizes.
-#[test]
-fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
+/// Calls `f` on every component of every shared closed mesh (label `name#k`); returns
+/// the number of meshes, components and faces.
+fn each_shared_closed_component(mut f: impl FnMut(&Triangulation, &str)) -> [usize; 3] {
     let rows: Vec<_> = common::manifest()
         .into_iter()
         .filter(|r| r.set == "closed")
         .collect();
     let (mut components, mut faces) = (0usize, 0usize);
-    let mut total = frink::DsCounters::default();
-    let clock = std::time::Instant::now();
     for row in &rows {
         let path = common::shared_dir().join("meshes").join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         for (k, comp) in s.components.iter().enumerate() {
-            let c = run_ds(&comp.tri, &format!("{}#{k}", row.name));
-            total.disconnected += c.disconnected;
-            total.forced += c.forced;
-            total.free += c.free;
-            total.digon_steps += c.digon_steps;
-            total.replacements += c.replacements;
+            f(&comp.tri, &format!("{}#{k}", row.name));
             components += 1;
             faces += comp.tri.face_count();
         }
     }
-    eprintln!(
-        "ds: {components} components ({faces} faces) of {} closed meshes in {:.1} s, {total:?}",
-        rows.len(),
-        clock.elapsed().as_secs_f64()
-    );
-    assert_eq!(components, 339 + 65, "every component");
-    assert!(total.forced > 0 && total.free > 0, "{total:?}");
+    [rows.len(), components, faces]
+}
+
+/// Calls `f` on random surfaces of every kind (orientable genus 0..8, non-orientable
+/// 1..6) at two sizes (at least 200 and 3,000 faces).
+fn each_random_surface(mut f: impl FnMut(&Triangulation, &str)) {
     let kinds = (0..=8)
         .map(SurfaceKind::Orientable)
         .chain((1..=6).map(SurfaceKind::NonOrientable));
@@ -266,54 +256,49 @@ fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
                 flip_percent: 30,
                 seed,
             });
-            run_ds(&t, &format!("{kind:?} seed {seed}"));
+            f(&t, &format!("{kind:?} seed {seed}"));
         }
     }
+}
+
+/// Diks–Stańczyk on every component of every shared closed mesh (no size limit: up to
+/// 199k faces), random surfaces of every kind (orientable genus 0..8, non-orientable
+/// 1..6) at two sizes.
+#[test]
+fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
+    let mut total = frink::DsCounters::default();
+    let clock = std::time::Instant::now();
+    let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+        total += run_ds(t, label);
+    });
+    eprintln!(
+        "ds: {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s, {total:?}",
+        clock.elapsed().as_secs_f64()
+    );
+    assert_eq!(components, 339 + 65, "every component");
+    assert!(total.forced > 0 && total.free > 0, "{total:?}");
+    each_random_surface(|t, label| {
+        run_ds(t, label);
+    });
 }
 
 /// The link–cut strategy on every component of every shared closed mesh (no size limit:
 /// up to 199k faces), random surfaces of every kind and the standard ones.
 #[test]
 fn cover_tree_on_every_shared_closed_mesh_and_random_surfaces() {
-    let rows: Vec<_> = common::manifest()
-        .into_iter()
-        .filter(|r| r.set == "closed")
-        .collect();
-    let (mut components, mut faces) = (0usize, 0usize);
     let mut fallbacks = 0;
     let clock = std::time::Instant::now();
-    for row in &rows {
-        let path = common::shared_dir().join("meshes").join(&row.file);
-        let mesh =
-            contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
-        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
-        for (k, comp) in s.components.iter().enumerate() {
-            let c = run_cover(&comp.tri, &format!("{}#{k}", row.name));
-            fallbacks += c.naive_steps;
-            components += 1;
-            faces += comp.tri.face_count();
-        }
-    }
+    let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+        fallbacks += run_cover(t, label).naive_steps;
+    });
     eprintln!(
-        "frink-lct: {components} components ({faces} faces) of {} closed meshes in {:.1} s, {fallbacks} naive steps",
-        rows.len(),
+        "frink-lct: {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s, {fallbacks} naive steps",
         clock.elapsed().as_secs_f64()
     );
     assert_eq!(components, 339 + 65, "every component");
-    let kinds = (0..=8)
-        .map(SurfaceKind::Orientable)
-        .chain((1..=6).map(SurfaceKind::NonOrientable));
-    for kind in kinds {
-        for (seed, min_faces) in [(1u64, 200usize), (2, 3_000)] {
-            let t = random(&RandomParams {
-                surface: kind,
-                min_faces,
-                flip_percent: 30,
-                seed,
-            });
-            run_cover(&t, &format!("{kind:?} seed {seed}"));
-        }
-    }
+    each_random_surface(|t, label| {
+        run_cover(t, label);
+    });
 }
 
 proptest! {

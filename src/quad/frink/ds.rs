@@ -158,6 +158,22 @@ pub struct DsCounters {
     pub forest_bytes: u64,
 }
 
+/// Sums of several runs (`max_level`: the maximum), e.g. over the components of a mesh.
+impl std::ops::AddAssign for DsCounters {
+    fn add_assign(&mut self, c: DsCounters) {
+        self.disconnected += c.disconnected;
+        self.forced += c.forced;
+        self.free += c.free;
+        self.digon_steps += c.digon_steps;
+        self.restarts += c.restarts;
+        self.cuts += c.cuts;
+        self.replacements += c.replacements;
+        self.promotions += c.promotions;
+        self.max_level = self.max_level.max(c.max_level);
+        self.forest_bytes += c.forest_bytes;
+    }
+}
+
 /// The strategy over any [`SpanningForest`]; [`DiksStanczyk`] is it over [`Hdt`].
 pub(crate) struct Ds<F> {
     forest: Option<F>,

@@ -814,6 +814,28 @@ mod tests {
 
     /// Checks `forest` (replayed changes) against the structure and the naive graph:
     /// exactly the tree edges, live, acyclic, spanning every component.
+    /// The live edges (`live[e]`, ends `ends[e]`, ids below `ends.len()`) as a map, after
+    /// [`check_forest`] (without the all-pairs queries) has checked `hdt`'s forest on them.
+    fn check_final_forest(
+        n: usize,
+        hdt: &mut Hdt,
+        ends: &[(u32, u32)],
+        live: &[bool],
+        g: &mut Gen,
+    ) -> BTreeMap<u32, (u32, u32)> {
+        let edges: BTreeMap<u32, (u32, u32)> = (0..ends.len() as u32)
+            .filter(|&e| live[e as usize])
+            .map(|e| (e, ends[e as usize]))
+            .collect();
+        let forest: BTreeSet<u32> = edges
+            .keys()
+            .copied()
+            .filter(|&e| hdt.is_tree_edge(e))
+            .collect();
+        check_forest(n, hdt, &edges, &forest, ends.len() as u32, false, g);
+        edges
+    }
+
     fn check_forest(
         n: usize,
         hdt: &mut Hdt,
@@ -1152,24 +1174,7 @@ mod tests {
             }
         }
         let seconds = start.elapsed().as_secs_f64();
-        let edges: BTreeMap<u32, (u32, u32)> = (0..graph.len() as u32)
-            .filter(|&e| live_edge[e as usize])
-            .map(|e| (e, ends[e as usize]))
-            .collect();
-        let forest: BTreeSet<u32> = edges
-            .keys()
-            .copied()
-            .filter(|&e| hdt.is_tree_edge(e))
-            .collect();
-        check_forest(
-            n,
-            &mut hdt,
-            &edges,
-            &forest,
-            graph.len() as u32,
-            false,
-            &mut g,
-        );
+        check_final_forest(n, &mut hdt, &ends, &live_edge, &mut g);
         hdt.check().expect("invariants");
         (ops, seconds, hdt)
     }
@@ -1270,25 +1275,8 @@ mod tests {
             hdt.stats(),
             hdt.bytes() / n
         );
-        let edges: BTreeMap<u32, (u32, u32)> = (0..graph.len() as u32)
-            .filter(|&e| live[e as usize])
-            .map(|e| (e, ends[e as usize]))
-            .collect();
+        let edges = check_final_forest(n, &mut hdt, &ends, &live, &mut g);
         let (comp, count) = components(n, &edges);
-        let forest: BTreeSet<u32> = edges
-            .keys()
-            .copied()
-            .filter(|&e| hdt.is_tree_edge(e))
-            .collect();
-        check_forest(
-            n,
-            &mut hdt,
-            &edges,
-            &forest,
-            graph.len() as u32,
-            false,
-            &mut g,
-        );
         // Every vertex connected to its component's first vertex, and not to the next
         // component's.
         let mut first = vec![u32::MAX; count];

@@ -176,8 +176,9 @@ impl Lct {
     }
 
     /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay
-    /// tree, which holds exactly that path.
-    fn access(&mut self, x: u32) {
+    /// tree, which holds exactly that path. Returns the last node at which the walk
+    /// joined the previously preferred root path (used by [`Lct::lca`]).
+    fn access(&mut self, x: u32) -> u32 {
         let mut last = NIL;
         let mut y = x;
         while y != NIL {
@@ -188,6 +189,7 @@ impl Lct {
             y = self.t[y as usize].par;
         }
         self.splay(x);
+        last
     }
 
     /// The lowest common ancestor of `x` and `y` for the current root of their tree (set
@@ -197,17 +199,7 @@ impl Lct {
     pub(crate) fn lca(&mut self, x: u32, y: u32) -> u32 {
         debug_assert!(self.connected(x, y), "lca of two trees");
         self.access(x);
-        let mut last = NIL;
-        let mut z = y;
-        while z != NIL {
-            self.splay(z);
-            self.t[z as usize].ch[1] = last;
-            self.pull(z);
-            last = z;
-            z = self.t[z as usize].par;
-        }
-        self.splay(y);
-        last
+        self.access(y)
     }
 
     /// Makes `x` the root of its tree.
