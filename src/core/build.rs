@@ -479,6 +479,7 @@ pub(super) fn assemble(
         live_vertices: used.iter().filter(|&&u| u).count(),
         live_faces: faces,
         state: StateStamp::fresh(),
+        stamps: Default::default(),
     };
     check_vertex_links(&tri, &used)?;
     Ok(Checked { tri, used })
@@ -722,6 +723,7 @@ pub(super) fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Com
                 live_vertices: nv,
                 live_faces,
                 state: StateStamp::fresh(),
+                stamps: Default::default(),
             },
             vertex_origin,
             face_origin: origin,

@@ -196,11 +196,12 @@ impl EdgeIds {
     /// corners kept their numbers while the faces were dead. O(1).
     #[inline]
     pub fn uncontracted(&mut self, rec: &ContractionRecord) {
+        let (saved_vertex, saved_opposite) = (rec.saved_vertex(), rec.saved_opposite());
         for (k, f) in rec.faces.into_iter().enumerate() {
             for s in 0..3 {
-                if rec.saved_vertex[3 * k + s] == rec.u.0 {
+                if saved_vertex[3 * k + s] == rec.u.0 {
                     let c = f.corner(s as u32);
-                    let across = rec.saved_opposite[3 * k + s] as usize;
+                    let across = saved_opposite[3 * k + s] as usize;
                     self.of_corner[across] = self.of_corner[c.index()];
                 }
             }
@@ -334,22 +335,23 @@ impl EdgeNumbering {
     /// afterwards (by [`Self::new`] on the contracted surface) never numbered. To number
     /// the edges of a replayed history, number the input and feed it every record.
     pub fn uncontracted(&mut self, rec: &ContractionRecord) {
+        let (saved_vertex, saved_opposite) = (rec.saved_vertex(), rec.saved_opposite());
         for (k, f) in rec.faces.into_iter().enumerate() {
             for s in 0..3 {
                 let c = f.corner(s as u32);
-                let w = rec.saved_vertex[3 * k + s];
+                let w = saved_vertex[3 * k + s];
                 let id = self.ids.of_corner[c.index()];
                 if w == rec.u.0 {
                     // c faces [v, x] (resp. [v, y]), the edge that died; its outer corner
                     // had taken the merged number and gets this one back.
-                    let across = rec.saved_opposite[3 * k + s] as usize;
+                    let across = saved_opposite[3 * k + s] as usize;
                     self.ids.of_corner[across] = id;
                     self.revive(id, c);
                 } else if w == rec.v.0 {
                     // c faces [u, x] (resp. [u, y]), the merged edge: its number may hold
                     // the corner that now faces [v, x] again, so point it at the outer
                     // corner that faced [u, x] before and after.
-                    let across = rec.saved_opposite[3 * k + s];
+                    let across = saved_opposite[3 * k + s];
                     self.corner_of[id as usize] = across;
                 } else if k == 0 {
                     self.revive(id, c); // c faces [u, v]

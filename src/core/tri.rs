@@ -41,6 +41,7 @@ pub struct Triangulation {
     pub(crate) live_vertices: usize,
     pub(crate) live_faces: usize,
     pub(crate) state: StateStamp,
+    pub(crate) stamps: StampSource,
 }
 
 /// Identifies one state of one [`Triangulation`]: see [`Triangulation::state`].
@@ -51,13 +52,58 @@ pub struct Triangulation {
 #[derive(Copy, Clone, PartialEq, Eq, Hash, Debug)]
 pub struct StateStamp(u64);
 
+/// The process-wide source of stamps: every value is handed out at most once, singly by
+/// [`StateStamp::fresh`] or in blocks by [`StampSource`].
+static NEXT_STAMP: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+
 impl StateStamp {
     /// A stamp no other state has had in this process.
     pub(crate) fn fresh() -> Self {
-        use std::sync::atomic::{AtomicU64, Ordering};
         // Relaxed: only uniqueness matters, not ordering with other memory.
-        static NEXT: AtomicU64 = AtomicU64::new(1);
-        StateStamp(NEXT.fetch_add(1, Ordering::Relaxed))
+        StateStamp(NEXT_STAMP.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+    }
+}
+
+/// A triangulation's private block of fresh stamps, so that a mutation takes its new
+/// stamp without an atomic read-modify-write: on x86 that is a locked instruction,
+/// which waits for every pending store, and in the cache-missing loops of RS and the
+/// LRS expansion it cost about a quarter of the expansion's own time (perf, B0).
+/// Guarantees the same uniqueness as [`StateStamp::fresh`]: each block is reserved
+/// from the process-wide counter and a clone starts with an empty block, so no two
+/// triangulations ever take the same value.
+#[derive(Debug, Default)]
+pub(crate) struct StampSource {
+    next: u64,
+    end: u64,
+}
+
+impl Clone for StampSource {
+    /// An empty block: the clone reserves its own on its first mutation.
+    fn clone(&self) -> Self {
+        StampSource::default()
+    }
+}
+
+impl StampSource {
+    /// Stamps reserved at a time: one atomic operation per 65,536 mutations.
+    const BLOCK: u64 = 1 << 16;
+
+    /// A stamp no other state has had in this process.
+    #[inline]
+    pub(crate) fn take(&mut self) -> StateStamp {
+        if self.next == self.end {
+            self.refill();
+        }
+        let s = self.next;
+        self.next += 1;
+        StateStamp(s)
+    }
+
+    #[cold]
+    fn refill(&mut self) {
+        let base = NEXT_STAMP.fetch_add(Self::BLOCK, std::sync::atomic::Ordering::Relaxed);
+        self.next = base;
+        self.end = base + Self::BLOCK;
     }
 }
 
@@ -269,7 +315,7 @@ impl Triangulation {
     /// Marks the triangulation as changed (a fresh [`StateStamp`]).
     #[inline]
     pub(crate) fn touch(&mut self) {
-        self.state = StateStamp::fresh();
+        self.state = self.stamps.take();
     }
 
     /// The corner of `c`'s face that faces edge `[vertex(c), z]`: given a corner at `w`
