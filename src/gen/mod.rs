@@ -7,12 +7,12 @@
 //!
 //! - [`standard`](tetrahedron): the small classics (T4, octahedron, icosahedron, the
 //!   7-vertex torus, the 6-vertex projective plane, a 9-vertex Klein bottle);
-//! - [`brick`]: the RS paper's benchmark surfaces (Tables 3–5);
-//! - [`subdivide`]: 1-to-4 subdivision, to scale any input up;
-//! - [`isosurface`]: marching tetrahedra on implicit surfaces (sphere, torus, genus g,
+//! - [`brick`](fn@brick): the RS paper's benchmark surfaces (Tables 3–5);
+//! - [`subdivide`](fn@subdivide): 1-to-4 subdivision, to scale any input up;
+//! - [`isosurface`](fn@isosurface): marching tetrahedra on implicit surfaces (sphere, torus, genus g,
 //!   and the two-sheeted hyperboloid, which is *open*: the one generator whose output
 //!   has boundary where the sampling box cuts it);
-//! - [`random`]: random triangulations of any surface by vertex splits (a
+//! - [`random`](fn@random): random triangulations of any surface by vertex splits (a
 //!   [`crate::Triangulation`], seeded by the documented [`crate::rng`]).
 
 mod brick;

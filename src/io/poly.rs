@@ -340,7 +340,7 @@ impl PolyMesh {
     /// 1–3 is strictly shorter; 0–2 without positions), any other polygon as a fan from
     /// its first corner; but if that cut's diagonals include a vertex pair that is
     /// already an edge (a polygon side, or a diagonal of an earlier polygon), the first
-    /// other start (of the first [`MAX_FAN_STARTS`]) whose diagonals are all new is
+    /// other start (of the first `MAX_FAN_STARTS`) whose diagonals are all new is
     /// taken instead. So a closed quad surface whose quads can be cut into a
     /// triangulated surface greedily is (the shorter-diagonal rule alone folds coarse
     /// meshes: on a 288-quad torus it made 48 duplicate faces). Triangles keep the

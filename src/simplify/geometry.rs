@@ -88,7 +88,7 @@ pub(crate) fn moved_triangle_ok(old: Point, new_corners: [Point; 3]) -> bool {
     old_l2 == 0.0 || dot(old, n) > 0.0
 }
 
-/// [`moved_triangle_ok`] for the triangle `(x, p1, p2)` whose corner `x` moves to `to`,
+/// `moved_triangle_ok` (the reference form, compiled for tests) for the triangle `(x, p1, p2)` whose corner `x` moves to `to`,
 /// the form the guard calls: both normals share the edge `e = p2 − p1` (the normal of
 /// `(y, p1, p2)` is `(p1 − y) × e`), and the longest edge is only computed when the
 /// cheap bound `L² ≤ 2 (|e|² + |p1 − to|²)` cannot rule out a zero area.
