@@ -98,6 +98,13 @@ pub(crate) trait SpanningForest {
     fn with_nodes(n: usize) -> Self;
     /// Inserts edge `e = ab` (`a ≠ b`), pushing the forest's changes.
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>);
+    /// Inserts `edges` (`[e, a, b]` each) in this order into the edgeless graph; the
+    /// same as one [`SpanningForest::insert`] each, which is the default.
+    fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
+        for &[e, a, b] in edges {
+            self.insert(e, a, b, changes);
+        }
+    }
     /// Deletes live edge `e`, pushing the forest's changes (a cut, then the replacement
     /// link if one exists).
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>);
@@ -117,6 +124,9 @@ impl SpanningForest for Hdt {
     }
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
         Hdt::insert(self, e, a, b, changes);
+    }
+    fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
+        Hdt::load(self, edges, changes);
     }
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>) {
         Hdt::delete(self, e, changes);
@@ -314,6 +324,51 @@ impl<F: SpanningForest> Ds<F> {
     }
 }
 
+/// The parent of every node in the forest made by the `Link` changes `links` (rooted
+/// at each tree's smallest node; `NONE` at a root). O(n).
+fn forest_parents(n: usize, links: &[ForestChange]) -> Vec<u32> {
+    let mut deg = vec![0u32; n + 1];
+    for c in links {
+        if let ForestChange::Link { a, b, .. } = *c {
+            deg[a as usize + 1] += 1;
+            deg[b as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        deg[i + 1] += deg[i];
+    }
+    let mut fill = deg.clone();
+    let mut adj = vec![0u32; deg[n] as usize];
+    for c in links {
+        if let ForestChange::Link { a, b, .. } = *c {
+            adj[fill[a as usize] as usize] = b;
+            fill[a as usize] += 1;
+            adj[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+    }
+    let mut parent = vec![NONE; n];
+    let mut seen = vec![false; n];
+    let mut stack = Vec::new();
+    for s in 0..n {
+        if seen[s] {
+            continue;
+        }
+        seen[s] = true;
+        stack.push(s as u32);
+        while let Some(x) = stack.pop() {
+            for &y in &adj[deg[x as usize] as usize..deg[x as usize + 1] as usize] {
+                if !seen[y as usize] {
+                    seen[y as usize] = true;
+                    parent[y as usize] = x;
+                    stack.push(y);
+                }
+            }
+        }
+    }
+    parent
+}
+
 /// The five edges the reduction `cand` removes.
 fn removed(cand: &Candidate) -> [u32; 5] {
     [cand.e, cand.a[0], cand.a[1], cand.b[0], cand.b[1]]
@@ -337,14 +392,15 @@ impl<F: SpanningForest> Strategy for Ds<F> {
     fn start(&mut self, g: &Cubic) {
         let n = g.node_capacity();
         let mut forest = F::with_nodes(n);
-        self.lct = Lct::new(&vec![0; n]);
         self.counters = DsCounters::default();
         self.pending = None;
         self.changes.clear();
         // Breadth-first tree edges first, so that the forest starts as a BFS tree
-        // (shallow: the pieces a reduction cuts off are small), then the other edges.
+        // (shallow: the pieces a reduction cuts off are small), then the other edges;
+        // loaded in one pass (`SpanningForest::load`).
         let mut seen = vec![false; n];
         let mut used = vec![false; g.ends.len()];
+        let mut edges = Vec::with_capacity(g.ends.len());
         let mut queue = std::collections::VecDeque::new();
         for s in 0..n as u32 {
             if !g.is_alive(s) || seen[s as usize] {
@@ -359,7 +415,7 @@ impl<F: SpanningForest> Strategy for Ds<F> {
                         seen[y as usize] = true;
                         used[e as usize] = true;
                         let [a, b] = g.ends(e);
-                        forest.insert(e, a, b, &mut self.changes);
+                        edges.push([e, a, b]);
                         queue.push_back(y);
                     }
                 }
@@ -374,12 +430,17 @@ impl<F: SpanningForest> Strategy for Ds<F> {
                 // Each edge once, from its smaller end (a loop never: the input is
                 // bridgeless, checked by solve).
                 if !used[e as usize] && (a == x && a < b || b == x && b < a) {
-                    forest.insert(e, a, b, &mut self.changes);
+                    edges.push([e, a, b]);
                 }
             }
         }
+        forest.load(&edges, &mut self.changes);
+        drop(edges);
         self.forest = Some(forest);
-        self.mirror();
+        // The link–cut mirror of the initial forest in O(n) (instead of one link per
+        // edge): parents by a search over the linked edges, every node its own path.
+        self.lct = Lct::with_parents(&vec![0; n], &forest_parents(n, &self.changes));
+        self.changes.clear();
         self.f = (0..n as u32)
             .find(|&x| g.is_alive(x))
             .map_or(NONE, |x| g.incident(x)[0]);

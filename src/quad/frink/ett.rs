@@ -299,6 +299,35 @@ impl Pool {
         self.attach(x, [self.t[x as usize].ch[0], q]);
     }
 
+    /// Makes the detached nodes `seq` (each a single-node tree, own flags already set)
+    /// one tree whose sequence is `seq` in this order, as a balanced splay tree. O(len),
+    /// against O(len log len) for the same tree built by [`Pool::link`]s; the caller
+    /// makes `seq` a valid Euler tour (`hdt`'s bulk load).
+    pub(crate) fn build(&mut self, seq: &[u32]) {
+        debug_assert!(seq.iter().all(|&x| self.is_singleton(x)));
+        // Midpoints top-down by an explicit stack (no recursion), then the counts and
+        // aggregates bottom-up: reverse pre-order has every child before its parent.
+        let mut order = Vec::with_capacity(seq.len());
+        let mut stack = vec![(0usize, seq.len(), NIL, 0usize)];
+        while let Some((lo, hi, par, side)) = stack.pop() {
+            if lo >= hi {
+                continue;
+            }
+            let mid = lo + (hi - lo) / 2;
+            let x = seq[mid];
+            self.t[x as usize].par = par;
+            if par != NIL {
+                self.t[par as usize].ch[side] = x;
+            }
+            order.push(x);
+            stack.push((lo, mid, x, 0));
+            stack.push((mid + 1, hi, x, 1));
+        }
+        for &x in order.iter().rev() {
+            self.update(x);
+        }
+    }
+
     /// Makes the splay roots `ch` (or `NIL`) the children of `x` and updates `x`.
     fn attach(&mut self, x: u32, ch: [u32; 2]) {
         for c in ch {
@@ -462,6 +491,14 @@ impl Pool {
             c = self.t[x as usize].ch[1];
         }
         out
+    }
+
+    /// Every node's caller words and own bits (for tests comparing two pools).
+    #[cfg(test)]
+    pub(crate) fn words(&self) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
+        self.t
+            .iter()
+            .map(|n| (n.a, n.b, n.w & (VERTEX | OWN0 | OWN1)))
     }
 
     /// Whether the stored count and aggregate flags of `x` are those recomputed from its
