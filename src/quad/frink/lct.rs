@@ -51,6 +51,7 @@ pub(crate) struct Lct {
 
 impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
+    #[cfg(test)]
     pub(crate) fn new(vals: &[i32]) -> Self {
         Lct {
             t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
@@ -177,7 +178,7 @@ impl Lct {
 
     /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay
     /// tree, which holds exactly that path. Returns the last node at which the walk
-    /// joined the previously preferred root path (used by [`Lct::lca`]).
+    /// joined the previously preferred root path (the LCA of [`Lct::walk_to`]).
     fn access(&mut self, x: u32) -> u32 {
         let mut last = NIL;
         let mut y = x;
@@ -196,10 +197,21 @@ impl Lct {
     /// by [`Lct::make_root`]); they must be connected. O(log n) amortised: after
     /// `access(x)` the root–`x` path is one preferred path, and the last node at which
     /// `access(y)` joins it is where the root–`y` path leaves the root–`x` path.
+    #[cfg(test)]
     pub(crate) fn lca(&mut self, x: u32, y: u32) -> u32 {
         debug_assert!(self.connected(x, y), "lca of two trees");
         self.access(x);
         self.access(y)
+    }
+
+    /// Makes the root–`x` path preferred and returns the LCA of `x` and the node last
+    /// passed to `walk_to` (same tree, same root since; after a `make_root` or any other
+    /// operation the result means nothing, as the root's preferred path is then not a
+    /// root–node path). O(log n)
+    /// amortised: one access, where an LCA query from scratch takes two, so the pairwise
+    /// LCAs along a walk over several nodes cost one access each.
+    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+        self.access(x)
     }
 
     /// Makes `x` the root of its tree.
@@ -454,7 +466,7 @@ mod tests {
         assert!(replaced > 50, "replace_path exercised {replaced} times");
     }
 
-    /// `lca` after `make_root` is the last common node of the naive root–`x` and
+    /// `lca` (and `walk_to`) after `make_root` is the last common node of the naive root–`x` and
     /// root–`y` paths, on random forests changed by links and cuts between queries.
     #[test]
     fn lca_agrees_with_naive_paths() {
@@ -497,7 +509,17 @@ mod tests {
                         );
                         let common = px.iter().zip(&py).take_while(|(a, b)| a == b).count();
                         lct.make_root(r);
-                        assert_eq!(lct.lca(x, y), px[common - 1], "seed {seed}");
+                        // Half by `lca`, half by a walk x, y, r: each `walk_to` answers
+                        // the LCA with the node before (x, then y).
+                        let got = if queries % 2 == 0 {
+                            lct.lca(x, y)
+                        } else {
+                            lct.walk_to(x);
+                            let got = lct.walk_to(y);
+                            assert_eq!(lct.walk_to(r), r, "seed {seed}");
+                            got
+                        };
+                        assert_eq!(got, px[common - 1], "seed {seed}");
                         queries += 1;
                     }
                 }
