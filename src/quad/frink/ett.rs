@@ -253,23 +253,47 @@ impl Pool {
         if r == NIL {
             return None;
         }
-        self.leftmost_flagged(r, f)
+        self.extreme_flagged(r, f, 0)
+    }
+
+    /// The last node (in sequence order) of `x`'s tree whose own flag `f` is set, if any;
+    /// splayed.
+    pub(crate) fn last_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
+        self.splay(x);
+        self.extreme_flagged(x, f, 1)
+    }
+
+    /// The last node before `x` in its tree's sequence whose own flag `f` is set, if any;
+    /// splayed.
+    pub(crate) fn prev_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
+        self.splay(x);
+        let l = self.t[x as usize].ch[0];
+        if l == NIL {
+            return None;
+        }
+        self.extreme_flagged(l, f, 1)
     }
 
     /// The leftmost flagged node of the splay subtree of `y`, splayed to the root.
-    fn leftmost_flagged(&mut self, mut y: u32, f: Flag) -> Option<u32> {
+    fn leftmost_flagged(&mut self, y: u32, f: Flag) -> Option<u32> {
+        self.extreme_flagged(y, f, 0)
+    }
+
+    /// The leftmost (`side` 0) or rightmost (`side` 1) flagged node of the splay
+    /// subtree of `y`, splayed to the root.
+    fn extreme_flagged(&mut self, mut y: u32, f: Flag, side: usize) -> Option<u32> {
         if self.t[y as usize].w & f.agg() == 0 {
             return None;
         }
         loop {
             let n = self.t[y as usize];
-            let l = n.ch[0];
-            if l != NIL && self.t[l as usize].w & f.agg() != 0 {
-                y = l;
+            let near = n.ch[side];
+            if near != NIL && self.t[near as usize].w & f.agg() != 0 {
+                y = near;
             } else if n.w & f.own() != 0 {
                 break;
             } else {
-                y = n.ch[1];
+                y = n.ch[side ^ 1];
                 debug_assert!(y != NIL, "aggregate flag without a flagged node");
             }
         }

@@ -29,13 +29,14 @@
 //! next such item of `T` is found by one descent.
 //!
 //! Two departures from the paper's order of work, neither changing the invariants or
-//! the bound: (1) before the scan, the first `SAMPLE` (32) non-tree edges of level `i`
-//! at `T` (in tour order) are examined without promoting anything; a replacement among
-//! them ends the search, and if `T` has fewer and none leaves `T`, level `i` has no
-//! replacement (a deterministic form of the sampling heuristic of Iyer–Karger–Rahul–
-//! Thorup, ACM JEA 6, 2001); if `T` has more, the first `SAMPLE` of the *other* tree are
-//! examined the same way (every crossing edge has an end on each side, and both
-//! sequences begin next to the cut, where a local cut's crossing edges are); (2) `T`'s tree edges are promoted only when the scan first
+//! the bound: (1) before the scan, `SAMPLE` (96) non-tree edges of level `i` from each
+//! of the four ends of the two trees' sequences (`T` from its start, then from its
+//! end, then the other tree the same way; all four ends are next to the cut, where a
+//! local cut's crossing edges are, and every crossing edge has an end on each side)
+//! are examined without promoting anything; a replacement among them ends the search,
+//! and if a tree has fewer and none leaves it, level `i` has no replacement (a
+//! deterministic form of the sampling heuristic of Iyer–Karger–Rahul–Thorup, ACM JEA 6,
+//! 2001); (2) `T`'s tree edges are promoted only when the scan first
 //! has to promote a non-tree edge (the paper promotes them first; they are needed only
 //! so that the promoted non-tree edges satisfy (i)). Without these, a long path in the
 //! forest makes every search promote the whole smaller side, level after level, even
@@ -46,7 +47,13 @@
 //! (sample 8, one side). In the Diks–Stańczyk strategy on B4 (293k triangles, idle
 //! machine, one run each): sample 8 one side 4.70 s and 2.11M promotions; 32 one side
 //! 3.65 s, 1.81M; 32 both sides 2.34 s, 0.82M; on B0, 8 one side 86.5 s, 33.0M
-//! promotions; 32 both sides 63.2 s, 21.8M.
+//! promotions; 32 both sides 63.2 s, 21.8M. Later (BFS initial forest, one-pass load;
+//! loaded machine, CPU time, one run each): the starts of both sides, 32 each, B2
+//! 9.8 s / 3.14M promotions, B1 24.6 s / 9.40M; all four ends, 32 each, B2 6.3 s /
+//! 0.92M, B1 17.2 s / 4.57M; 64 each, B1 13.4 s / 2.82M; 128 each, B2 6.6–7.5 s /
+//! 1.24M, B1 12.7 s / 1.92M; 96 each, B2 6.6 s / 0.84M, B1 13.2 s / 2.91M, B0 24.9 s /
+//! 4.11M (against 18.3M with the starts only). Taking 8 from each end in turn instead
+//! of one end after the other promoted more (B2 1.72M).
 //!
 //! # Complexity
 //! Amortised O(log² n) per update: every promotion costs O(log n) and an edge is
@@ -105,8 +112,9 @@ pub(crate) const MAX_EDGE_ID: u32 = (1 << 31) - 1;
 const DEAD: u8 = 0xFF;
 /// [`Hdt::state`] bit of a tree edge; the low bits are the level.
 const TREE: u8 = 0x80;
-/// Non-tree edges examined at a level before any promotion (see [`Hdt::replace`]).
-const SAMPLE: u32 = 32;
+/// Non-tree edges examined from each of the four ends at a level before any promotion
+/// (see [`Hdt::replace`]).
+const SAMPLE: u32 = 96;
 /// Flag of a vertex node with non-tree edges of its level.
 const NT: Flag = Flag::F0;
 /// Flag of the canonical arc (the first of the pair) of a tree edge of its level.
@@ -512,22 +520,22 @@ impl Hdt {
         let sx = self.pool.tree_size(x);
         let sy = self.pool.tree_size(y);
         let (t, size, big) = if sx <= sy { (x, sx, y) } else { (y, sy, x) };
-        // Departure (1) of the module doc: the first `sample` non-tree edges of level i
-        // at T are examined without promoting anything, O(sample · log n) unpaid work.
-        // Only if all are internal and there are more does the paper's scan run, which
-        // pays for itself by promotions.
-        let (found, sampled) = self.sample_from(t, i);
-        if let Some(e) = found {
-            return Some(e);
-        }
-        if sampled < self.sample {
-            return None;
-        }
-        // The same from the other side: every crossing edge also has an end there, and
-        // both sequences begin next to the cut (`ett::Pool::cut`), where the crossing
-        // edges of a local cut are; still unpaid O(sample · log n), no promotion.
-        if let (Some(e), _) = self.sample_from(big, i) {
-            return Some(e);
+        // Departure (1) of the module doc: `sample` non-tree edges of level i from each
+        // end of the sequences of T and of the other tree are examined without promoting
+        // anything (every crossing edge has an end on each side, and all four ends are
+        // next to the cut, `ett::Pool::cut`, where a local cut's crossing edges are):
+        // O(sample · log n) unpaid work. A tree with fewer than `sample` edges of level
+        // i has had them all examined: none crosses, level i has no replacement. Only if
+        // all four samples are full and internal does the paper's scan run, which pays
+        // for itself by promotions.
+        for (root, back) in [(t, false), (t, true), (big, false), (big, true)] {
+            let (found, sampled) = self.sample_from(root, i, back, self.sample);
+            if found.is_some() {
+                return found;
+            }
+            if sampled < self.sample {
+                return None;
+            }
         }
         // Departure (2): T's tree edges are promoted just before the first non-tree edge.
         let mut tree_promoted = false;
@@ -575,13 +583,17 @@ impl Hdt {
     /// Examines the first `sample` non-tree edges of level `i` of the tree of node `t`, in
     /// sequence order: the first one leaving the tree becomes a tree edge of level `i`
     /// and is returned; also returns how many were examined.
-    fn sample_from(&mut self, t: u32, i: u32) -> (Option<u32>, u32) {
+    fn sample_from(&mut self, t: u32, i: u32, back: bool, limit: u32) -> (Option<u32>, u32) {
         let mut sampled = 0;
-        let mut w = self.pool.first_flagged(t, NT);
+        let mut w = if back {
+            self.pool.last_flagged(t, NT)
+        } else {
+            self.pool.first_flagged(t, NT)
+        };
         while let Some(v) = w {
             let mut half = self.pool.b(v);
             while half != NIL {
-                if sampled == self.sample {
+                if sampled == limit {
                     return (None, sampled);
                 }
                 sampled += 1;
@@ -593,7 +605,11 @@ impl Hdt {
                 }
                 half = self.next(half);
             }
-            w = self.pool.next_flagged(v, NT);
+            w = if back {
+                self.pool.prev_flagged(v, NT)
+            } else {
+                self.pool.next_flagged(v, NT)
+            };
         }
         (None, sampled)
     }
