@@ -87,7 +87,7 @@
 
 use super::graph::NONE;
 use super::hdt::{ForestChange, Hdt};
-use super::lct::Lct;
+use super::lct::PlainLct;
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
 /// A spanning forest kept under edge insertions and deletions, reporting every change of
@@ -187,7 +187,7 @@ impl std::ops::AddAssign for DsCounters {
 /// The strategy over any [`SpanningForest`]; [`DiksStanczyk`] is it over [`Hdt`].
 pub(crate) struct Ds<F> {
     forest: Option<F>,
-    lct: Lct,
+    lct: PlainLct,
     /// The forbidden edge, or `NONE`.
     f: u32,
     /// Whether the pending reduction moves `f` on to its `p`.
@@ -202,7 +202,7 @@ impl<F> Default for Ds<F> {
     fn default() -> Self {
         Ds {
             forest: None,
-            lct: Lct::default(),
+            lct: PlainLct::default(),
             f: NONE,
             moves_f: true,
             pending: None,
@@ -442,7 +442,7 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         self.forest = Some(forest);
         // The link–cut mirror of the initial forest in O(n) (instead of one link per
         // edge): parents by a search over the linked edges, every node its own path.
-        self.lct = Lct::with_parents(&vec![0; n], &forest_parents(n, &self.changes));
+        self.lct = PlainLct::with_parents(&forest_parents(n, &self.changes));
         self.changes.clear();
         self.f = (0..n as u32)
             .find(|&x| g.is_alive(x))
