@@ -49,7 +49,7 @@
 //! No bridge query is needed: the decision reads only the *shape* of `T'`. That is why
 //! dynamic connectivity (to keep `T'` spanning as `u`, `v` and their five edges go: the
 //! replacement edges of Holm–de Lichtenberg–Thorup) and a dynamic tree mirroring `T'`
-//! (for `make_root` and `lca`) suffice.
+//! (for `make_root` and LCAs) suffice.
 //!
 //! # The travelling forbidden edge (BBDL)
 //! A bridgeless cubic graph has a perfect matching avoiding any one edge `f`. The
@@ -74,9 +74,11 @@
 //! # Complexity
 //! Per reduction: five edge deletions and two insertions in the connectivity structure
 //! (O(log² n) amortised each, HDT Sec. 2), the mirrored links and cuts, one `make_root`
-//! and three `lca` in the link–cut tree (O(log n) amortised), O(1) for the edge
-//! choice. O(n log² n) in all, plus O(m log² n) to load the graph; each lift is O(1).
-//! Memory: the connectivity structure, a link–cut tree over the nodes (25 bytes each).
+//! and four accesses for the three LCAs in the link–cut tree (O(log n) amortised), O(1)
+//! for the edge choice. O(n log² n) in all, plus a near-linear load of the graph (one
+//! pass, `Hdt::load`; the link–cut tree from parent pointers); each lift is O(1).
+//! Memory: the connectivity structure, a link–cut tree over the nodes (16 bytes each,
+//! `lct::PlainLct`).
 //!
 //! # Determinism
 //! No randomness: the forest starts as the breadth-first tree from the smallest live node
