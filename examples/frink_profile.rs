@@ -17,6 +17,13 @@ use contractible::gen::paper_family;
 use contractible::quad::frink::{self, CoverTree, DiksStanczyk, Naive};
 use contractible::Surfaces;
 
+/// FNV-1a of the matching, to tell at a glance whether a change kept DS's output.
+fn fnv(mate: &[u32]) -> u64 {
+    mate.iter().fold(0xcbf2_9ce4_8422_2325, |h, &m| {
+        (h ^ u64::from(m)).wrapping_mul(0x0100_0000_01b3)
+    })
+}
+
 fn main() {
     let mut names = Vec::new();
     let mut naive = false;
@@ -52,10 +59,11 @@ fn main() {
             let sol = frink::solve(g.clone(), &mut ds).expect("bridgeless");
             let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
             println!(
-                "{name}: F {f} ds {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2² F; {:?}; {:?}",
+                "{name}: F {f} ds {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2² F; {:?}; {:?}; mate hash {:016x}",
                 cpu_secs * 1e9 / (nlogn * (f as f64).log2()),
                 sol.stats,
-                ds.counters()
+                ds.counters(),
+                fnv(&sol.mate)
             );
         }
         if run("lct") {

@@ -49,7 +49,7 @@
 //! No bridge query is needed: the decision reads only the *shape* of `T'`. That is why
 //! dynamic connectivity (to keep `T'` spanning as `u`, `v` and their five edges go: the
 //! replacement edges of Holm–de Lichtenberg–Thorup) and a dynamic tree mirroring `T'`
-//! (for `make_root` and `lca`) suffice.
+//! (for `make_root` and LCAs) suffice.
 //!
 //! # The travelling forbidden edge (BBDL)
 //! A bridgeless cubic graph has a perfect matching avoiding any one edge `f`. The
@@ -74,9 +74,11 @@
 //! # Complexity
 //! Per reduction: five edge deletions and two insertions in the connectivity structure
 //! (O(log² n) amortised each, HDT Sec. 2), the mirrored links and cuts, one `make_root`
-//! and three `lca` in the link–cut tree (O(log n) amortised), O(1) for the edge
-//! choice. O(n log² n) in all, plus O(m log² n) to load the graph; each lift is O(1).
-//! Memory: the connectivity structure, a link–cut tree over the nodes (25 bytes each).
+//! and four accesses for the three LCAs in the link–cut tree (O(log n) amortised), O(1)
+//! for the edge choice. O(n log² n) in all, plus a near-linear load of the graph (one
+//! pass, `Hdt::load`; the link–cut tree from parent pointers); each lift is O(1).
+//! Memory: the connectivity structure, a link–cut tree over the nodes (16 bytes each,
+//! `lct::PlainLct`).
 //!
 //! # Determinism
 //! No randomness: the forest starts as the breadth-first tree from the smallest live node
@@ -87,7 +89,7 @@
 
 use super::graph::NONE;
 use super::hdt::{ForestChange, Hdt};
-use super::lct::Lct;
+use super::lct::PlainLct;
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
 /// A spanning forest kept under edge insertions and deletions, reporting every change of
@@ -98,6 +100,13 @@ pub(crate) trait SpanningForest {
     fn with_nodes(n: usize) -> Self;
     /// Inserts edge `e = ab` (`a ≠ b`), pushing the forest's changes.
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>);
+    /// Inserts `edges` (`[e, a, b]` each) in this order into the edgeless graph; the
+    /// same as one [`SpanningForest::insert`] each, which is the default.
+    fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
+        for &[e, a, b] in edges {
+            self.insert(e, a, b, changes);
+        }
+    }
     /// Deletes live edge `e`, pushing the forest's changes (a cut, then the replacement
     /// link if one exists).
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>);
@@ -117,6 +126,9 @@ impl SpanningForest for Hdt {
     }
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
         Hdt::insert(self, e, a, b, changes);
+    }
+    fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
+        Hdt::load(self, edges, changes);
     }
     fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>) {
         Hdt::delete(self, e, changes);
@@ -177,7 +189,7 @@ impl std::ops::AddAssign for DsCounters {
 /// The strategy over any [`SpanningForest`]; [`DiksStanczyk`] is it over [`Hdt`].
 pub(crate) struct Ds<F> {
     forest: Option<F>,
-    lct: Lct,
+    lct: PlainLct,
     /// The forbidden edge, or `NONE`.
     f: u32,
     /// Whether the pending reduction moves `f` on to its `p`.
@@ -192,7 +204,7 @@ impl<F> Default for Ds<F> {
     fn default() -> Self {
         Ds {
             forest: None,
-            lct: Lct::default(),
+            lct: PlainLct::default(),
             f: NONE,
             moves_f: true,
             pending: None,
@@ -294,10 +306,13 @@ impl<F: SpanningForest> Ds<F> {
         let lct = &mut self.lct;
         // Rooted at x1, the pairwise LCAs of x2, x3, x4: two coincide and the third, if
         // different, is deeper, below the edge that splits its pair from the other two.
+        // Each `walk_to` answers the LCA with the node exposed before: four accesses
+        // after the re-rooting, instead of six for three `lca` calls.
         lct.make_root(x1);
-        let l23 = lct.lca(x2, x3);
-        let l24 = lct.lca(x2, x4);
-        let l34 = lct.lca(x3, x4);
+        lct.walk_to(x2);
+        let l23 = lct.walk_to(x3);
+        let l34 = lct.walk_to(x4);
+        let l24 = lct.walk_to(x2);
         if l23 == l34 && l24 != l23 {
             // {x2, x4} | {x1, x3}: H2 crosses it.
             self.counters.forced += 1;
@@ -312,6 +327,51 @@ impl<F: SpanningForest> Ds<F> {
             Reconnection::H1
         }
     }
+}
+
+/// The parent of every node in the forest made by the `Link` changes `links` (rooted
+/// at each tree's smallest node; `NONE` at a root). O(n).
+fn forest_parents(n: usize, links: &[ForestChange]) -> Vec<u32> {
+    let mut deg = vec![0u32; n + 1];
+    for c in links {
+        if let ForestChange::Link { a, b, .. } = *c {
+            deg[a as usize + 1] += 1;
+            deg[b as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        deg[i + 1] += deg[i];
+    }
+    let mut fill = deg.clone();
+    let mut adj = vec![0u32; deg[n] as usize];
+    for c in links {
+        if let ForestChange::Link { a, b, .. } = *c {
+            adj[fill[a as usize] as usize] = b;
+            fill[a as usize] += 1;
+            adj[fill[b as usize] as usize] = a;
+            fill[b as usize] += 1;
+        }
+    }
+    let mut parent = vec![NONE; n];
+    let mut seen = vec![false; n];
+    let mut stack = Vec::new();
+    for s in 0..n {
+        if seen[s] {
+            continue;
+        }
+        seen[s] = true;
+        stack.push(s as u32);
+        while let Some(x) = stack.pop() {
+            for &y in &adj[deg[x as usize] as usize..deg[x as usize + 1] as usize] {
+                if !seen[y as usize] {
+                    seen[y as usize] = true;
+                    parent[y as usize] = x;
+                    stack.push(y);
+                }
+            }
+        }
+    }
+    parent
 }
 
 /// The five edges the reduction `cand` removes.
@@ -337,14 +397,15 @@ impl<F: SpanningForest> Strategy for Ds<F> {
     fn start(&mut self, g: &Cubic) {
         let n = g.node_capacity();
         let mut forest = F::with_nodes(n);
-        self.lct = Lct::new(&vec![0; n]);
         self.counters = DsCounters::default();
         self.pending = None;
         self.changes.clear();
         // Breadth-first tree edges first, so that the forest starts as a BFS tree
-        // (shallow: the pieces a reduction cuts off are small), then the other edges.
+        // (shallow: the pieces a reduction cuts off are small), then the other edges;
+        // loaded in one pass (`SpanningForest::load`).
         let mut seen = vec![false; n];
         let mut used = vec![false; g.ends.len()];
+        let mut edges = Vec::with_capacity(g.ends.len());
         let mut queue = std::collections::VecDeque::new();
         for s in 0..n as u32 {
             if !g.is_alive(s) || seen[s as usize] {
@@ -359,7 +420,7 @@ impl<F: SpanningForest> Strategy for Ds<F> {
                         seen[y as usize] = true;
                         used[e as usize] = true;
                         let [a, b] = g.ends(e);
-                        forest.insert(e, a, b, &mut self.changes);
+                        edges.push([e, a, b]);
                         queue.push_back(y);
                     }
                 }
@@ -374,12 +435,17 @@ impl<F: SpanningForest> Strategy for Ds<F> {
                 // Each edge once, from its smaller end (a loop never: the input is
                 // bridgeless, checked by solve).
                 if !used[e as usize] && (a == x && a < b || b == x && b < a) {
-                    forest.insert(e, a, b, &mut self.changes);
+                    edges.push([e, a, b]);
                 }
             }
         }
+        forest.load(&edges, &mut self.changes);
+        drop(edges);
         self.forest = Some(forest);
-        self.mirror();
+        // The link–cut mirror of the initial forest in O(n) (instead of one link per
+        // edge): parents by a search over the linked edges, every node its own path.
+        self.lct = PlainLct::with_parents(&forest_parents(n, &self.changes));
+        self.changes.clear();
         self.f = (0..n as u32)
             .find(|&x| g.is_alive(x))
             .map_or(NONE, |x| g.incident(x)[0]);

@@ -253,23 +253,47 @@ impl Pool {
         if r == NIL {
             return None;
         }
-        self.leftmost_flagged(r, f)
+        self.extreme_flagged(r, f, 0)
+    }
+
+    /// The last node (in sequence order) of `x`'s tree whose own flag `f` is set, if any;
+    /// splayed.
+    pub(crate) fn last_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
+        self.splay(x);
+        self.extreme_flagged(x, f, 1)
+    }
+
+    /// The last node before `x` in its tree's sequence whose own flag `f` is set, if any;
+    /// splayed.
+    pub(crate) fn prev_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
+        self.splay(x);
+        let l = self.t[x as usize].ch[0];
+        if l == NIL {
+            return None;
+        }
+        self.extreme_flagged(l, f, 1)
     }
 
     /// The leftmost flagged node of the splay subtree of `y`, splayed to the root.
-    fn leftmost_flagged(&mut self, mut y: u32, f: Flag) -> Option<u32> {
+    fn leftmost_flagged(&mut self, y: u32, f: Flag) -> Option<u32> {
+        self.extreme_flagged(y, f, 0)
+    }
+
+    /// The leftmost (`side` 0) or rightmost (`side` 1) flagged node of the splay
+    /// subtree of `y`, splayed to the root.
+    fn extreme_flagged(&mut self, mut y: u32, f: Flag, side: usize) -> Option<u32> {
         if self.t[y as usize].w & f.agg() == 0 {
             return None;
         }
         loop {
             let n = self.t[y as usize];
-            let l = n.ch[0];
-            if l != NIL && self.t[l as usize].w & f.agg() != 0 {
-                y = l;
+            let near = n.ch[side];
+            if near != NIL && self.t[near as usize].w & f.agg() != 0 {
+                y = near;
             } else if n.w & f.own() != 0 {
                 break;
             } else {
-                y = n.ch[1];
+                y = n.ch[side ^ 1];
                 debug_assert!(y != NIL, "aggregate flag without a flagged node");
             }
         }
@@ -297,6 +321,35 @@ impl Pool {
         }
         self.attach(q, [y, b]);
         self.attach(x, [self.t[x as usize].ch[0], q]);
+    }
+
+    /// Makes the detached nodes `seq` (each a single-node tree, own flags already set)
+    /// one tree whose sequence is `seq` in this order, as a balanced splay tree. O(len),
+    /// against O(len log len) for the same tree built by [`Pool::link`]s; the caller
+    /// makes `seq` a valid Euler tour (`hdt`'s bulk load).
+    pub(crate) fn build(&mut self, seq: &[u32]) {
+        debug_assert!(seq.iter().all(|&x| self.is_singleton(x)));
+        // Midpoints top-down by an explicit stack (no recursion), then the counts and
+        // aggregates bottom-up: reverse pre-order has every child before its parent.
+        let mut order = Vec::with_capacity(seq.len());
+        let mut stack = vec![(0usize, seq.len(), NIL, 0usize)];
+        while let Some((lo, hi, par, side)) = stack.pop() {
+            if lo >= hi {
+                continue;
+            }
+            let mid = lo + (hi - lo) / 2;
+            let x = seq[mid];
+            self.t[x as usize].par = par;
+            if par != NIL {
+                self.t[par as usize].ch[side] = x;
+            }
+            order.push(x);
+            stack.push((lo, mid, x, 0));
+            stack.push((mid + 1, hi, x, 1));
+        }
+        for &x in order.iter().rev() {
+            self.update(x);
+        }
     }
 
     /// Makes the splay roots `ch` (or `NIL`) the children of `x` and updates `x`.
@@ -462,6 +515,14 @@ impl Pool {
             c = self.t[x as usize].ch[1];
         }
         out
+    }
+
+    /// Every node's caller words and own bits (for tests comparing two pools).
+    #[cfg(test)]
+    pub(crate) fn words(&self) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
+        self.t
+            .iter()
+            .map(|n| (n.a, n.b, n.w & (VERTEX | OWN0 | OWN1)))
     }
 
     /// Whether the stored count and aggregate flags of `x` are those recomputed from its

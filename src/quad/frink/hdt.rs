@@ -29,13 +29,14 @@
 //! next such item of `T` is found by one descent.
 //!
 //! Two departures from the paper's order of work, neither changing the invariants or
-//! the bound: (1) before the scan, the first `SAMPLE` (32) non-tree edges of level `i`
-//! at `T` (in tour order) are examined without promoting anything; a replacement among
-//! them ends the search, and if `T` has fewer and none leaves `T`, level `i` has no
-//! replacement (a deterministic form of the sampling heuristic of Iyer–Karger–Rahul–
-//! Thorup, ACM JEA 6, 2001); if `T` has more, the first `SAMPLE` of the *other* tree are
-//! examined the same way (every crossing edge has an end on each side, and both
-//! sequences begin next to the cut, where a local cut's crossing edges are); (2) `T`'s tree edges are promoted only when the scan first
+//! the bound: (1) before the scan, `SAMPLE` (96) non-tree edges of level `i` from each
+//! of the four ends of the two trees' sequences (`T` from its start, then from its
+//! end, then the other tree the same way; all four ends are next to the cut, where a
+//! local cut's crossing edges are, and every crossing edge has an end on each side)
+//! are examined without promoting anything; a replacement among them ends the search,
+//! and if a tree has fewer and none leaves it, level `i` has no replacement (a
+//! deterministic form of the sampling heuristic of Iyer–Karger–Rahul–Thorup, ACM JEA 6,
+//! 2001); (2) `T`'s tree edges are promoted only when the scan first
 //! has to promote a non-tree edge (the paper promotes them first; they are needed only
 //! so that the promoted non-tree edges satisfy (i)). Without these, a long path in the
 //! forest makes every search promote the whole smaller side, level after level, even
@@ -46,7 +47,13 @@
 //! (sample 8, one side). In the Diks–Stańczyk strategy on B4 (293k triangles, idle
 //! machine, one run each): sample 8 one side 4.70 s and 2.11M promotions; 32 one side
 //! 3.65 s, 1.81M; 32 both sides 2.34 s, 0.82M; on B0, 8 one side 86.5 s, 33.0M
-//! promotions; 32 both sides 63.2 s, 21.8M.
+//! promotions; 32 both sides 63.2 s, 21.8M. Later (BFS initial forest, one-pass load;
+//! loaded machine, CPU time, one run each): the starts of both sides, 32 each, B2
+//! 9.8 s / 3.14M promotions, B1 24.6 s / 9.40M; all four ends, 32 each, B2 6.3 s /
+//! 0.92M, B1 17.2 s / 4.57M; 64 each, B1 13.4 s / 2.82M; 128 each, B2 6.6–7.5 s /
+//! 1.24M, B1 12.7 s / 1.92M; 96 each, B2 6.6 s / 0.84M, B1 13.2 s / 2.91M, B0 24.9 s /
+//! 4.11M (against 18.3M with the starts only). Taking 8 from each end in turn instead
+//! of one end after the other promoted more (B2 1.72M).
 //!
 //! # Complexity
 //! Amortised O(log² n) per update: every promotion costs O(log n) and an edge is
@@ -105,8 +112,9 @@ pub(crate) const MAX_EDGE_ID: u32 = (1 << 31) - 1;
 const DEAD: u8 = 0xFF;
 /// [`Hdt::state`] bit of a tree edge; the low bits are the level.
 const TREE: u8 = 0x80;
-/// Non-tree edges examined at a level before any promotion (see [`Hdt::replace`]).
-const SAMPLE: u32 = 32;
+/// Non-tree edges examined from each of the four ends at a level before any promotion
+/// (see [`Hdt::replace`]).
+const SAMPLE: u32 = 96;
 /// Flag of a vertex node with non-tree edges of its level.
 const NT: Flag = Flag::F0;
 /// Flag of the canonical arc (the first of the pair) of a tree edge of its level.
@@ -204,6 +212,95 @@ impl Hdt {
         } else {
             self.make_tree(e, 0);
             changes.push(ForestChange::Link { e, a, b });
+        }
+    }
+
+    /// Inserts `edges` (`[e, a, b]` each, with [`Hdt::insert`]'s preconditions) into a
+    /// structure that has no edge yet, with exactly the result of inserting them one by
+    /// one in this order: the same forest, changes, Euler-tour sequences (in the same
+    /// rotation), non-tree lists and node ids, so that every later choice is the same
+    /// (tested). Near-linear instead of O((n + m) log n): a union–find decides which
+    /// edges link, the tours are spliced as cyclic lists as [`Pool::link`] would splice
+    /// them, and each tree is then built balanced in one pass ([`Pool::build`]).
+    /// Falls back on one-by-one insertion if an edge already exists.
+    pub(crate) fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
+        if self.state.iter().any(|&s| s != DEAD) {
+            for &[e, a, b] in edges {
+                self.insert(e, a, b, changes);
+            }
+            return;
+        }
+        let n = self.n as usize;
+        let mut uf: Vec<u32> = (0..self.n).collect();
+        fn find(uf: &mut [u32], mut x: u32) -> u32 {
+            while uf[x as usize] != x {
+                let g = uf[uf[x as usize] as usize];
+                uf[x as usize] = g;
+                x = g;
+            }
+            x
+        }
+        // Cyclic successor / predecessor of every level-0 node in its tour. A tree's
+        // sequence starts at its union–find root: a link keeps `a`'s tree's first node
+        // and makes `a`'s root the root.
+        let mut next: Vec<u32> = (0..self.n).collect();
+        let mut prev = next.clone();
+        for &[e, a, b] in edges {
+            debug_assert!(!self.live(e), "load: edge {e} twice");
+            debug_assert!(e < MAX_EDGE_ID && a != b && a < self.n && b < self.n);
+            if self.live(e) || a == b || a >= self.n || b >= self.n || e >= MAX_EDGE_ID {
+                continue;
+            }
+            let k = e as usize;
+            if k >= self.state.len() {
+                self.state.resize(k + 1, DEAD);
+                self.ends.resize(k + 1, [NIL; 2]);
+                self.links.resize(k + 1, [NIL; 4]);
+            }
+            self.ends[k] = [a, b];
+            let (ra, rb) = (find(&mut uf, a), find(&mut uf, b));
+            if ra == rb {
+                self.state[k] = 0;
+                self.add_nontree(e, 0);
+                continue;
+            }
+            // `Pool::link(a, b, p)`: `A a B` and `b C` become `A a p b C q B`, so the
+            // tree keeps `a`'s tree's first node and `b`'s cycle is spliced after `a`.
+            let p = self.new_arcs(e, NIL, true);
+            let q = p + 1;
+            next.resize(self.pool.len(), NIL);
+            prev.resize(self.pool.len(), NIL);
+            let (an, bl) = (next[a as usize], prev[b as usize]);
+            next[a as usize] = p;
+            prev[p as usize] = a;
+            next[p as usize] = b;
+            prev[b as usize] = p;
+            next[bl as usize] = q;
+            prev[q as usize] = bl;
+            next[q as usize] = an;
+            prev[an as usize] = q;
+            uf[rb as usize] = ra;
+            self.links[k] = [p, NIL, NIL, NIL];
+            self.state[k] = TREE;
+            changes.push(ForestChange::Link { e, a, b });
+        }
+        drop(prev);
+        let mut seq = Vec::new();
+        for x in 0..n as u32 {
+            if find(&mut uf, x) != x || next[x as usize] == x {
+                continue;
+            }
+            seq.clear();
+            let start = x;
+            let mut v = start;
+            loop {
+                seq.push(v);
+                v = next[v as usize];
+                if v == start {
+                    break;
+                }
+            }
+            self.pool.build(&seq);
         }
     }
 
@@ -423,22 +520,22 @@ impl Hdt {
         let sx = self.pool.tree_size(x);
         let sy = self.pool.tree_size(y);
         let (t, size, big) = if sx <= sy { (x, sx, y) } else { (y, sy, x) };
-        // Departure (1) of the module doc: the first `sample` non-tree edges of level i
-        // at T are examined without promoting anything, O(sample · log n) unpaid work.
-        // Only if all are internal and there are more does the paper's scan run, which
-        // pays for itself by promotions.
-        let (found, sampled) = self.sample_from(t, i);
-        if let Some(e) = found {
-            return Some(e);
-        }
-        if sampled < self.sample {
-            return None;
-        }
-        // The same from the other side: every crossing edge also has an end there, and
-        // both sequences begin next to the cut (`ett::Pool::cut`), where the crossing
-        // edges of a local cut are; still unpaid O(sample · log n), no promotion.
-        if let (Some(e), _) = self.sample_from(big, i) {
-            return Some(e);
+        // Departure (1) of the module doc: `sample` non-tree edges of level i from each
+        // end of the sequences of T and of the other tree are examined without promoting
+        // anything (every crossing edge has an end on each side, and all four ends are
+        // next to the cut, `ett::Pool::cut`, where a local cut's crossing edges are):
+        // O(sample · log n) unpaid work. A tree with fewer than `sample` edges of level
+        // i has had them all examined: none crosses, level i has no replacement. Only if
+        // all four samples are full and internal does the paper's scan run, which pays
+        // for itself by promotions.
+        for (root, back) in [(t, false), (t, true), (big, false), (big, true)] {
+            let (found, sampled) = self.sample_from(root, i, back, self.sample);
+            if found.is_some() {
+                return found;
+            }
+            if sampled < self.sample {
+                return None;
+            }
         }
         // Departure (2): T's tree edges are promoted just before the first non-tree edge.
         let mut tree_promoted = false;
@@ -486,13 +583,17 @@ impl Hdt {
     /// Examines the first `sample` non-tree edges of level `i` of the tree of node `t`, in
     /// sequence order: the first one leaving the tree becomes a tree edge of level `i`
     /// and is returned; also returns how many were examined.
-    fn sample_from(&mut self, t: u32, i: u32) -> (Option<u32>, u32) {
+    fn sample_from(&mut self, t: u32, i: u32, back: bool, limit: u32) -> (Option<u32>, u32) {
         let mut sampled = 0;
-        let mut w = self.pool.first_flagged(t, NT);
+        let mut w = if back {
+            self.pool.last_flagged(t, NT)
+        } else {
+            self.pool.first_flagged(t, NT)
+        };
         while let Some(v) = w {
             let mut half = self.pool.b(v);
             while half != NIL {
-                if sampled == self.sample {
+                if sampled == limit {
                     return (None, sampled);
                 }
                 sampled += 1;
@@ -504,7 +605,11 @@ impl Hdt {
                 }
                 half = self.next(half);
             }
-            w = self.pool.next_flagged(v, NT);
+            w = if back {
+                self.pool.prev_flagged(v, NT)
+            } else {
+                self.pool.next_flagged(v, NT)
+            };
         }
         (None, sampled)
     }
@@ -1007,6 +1112,73 @@ mod tests {
             .expect("one non-tree edge");
         hdt.state[e as usize] = 3;
         assert!(hdt.check().is_err());
+    }
+
+    #[test]
+    fn load_is_one_by_one_insertion() {
+        // Same changes at load and after it (so the same tours in the same rotation,
+        // lists and levels), on random multigraphs with several components, and
+        // invariants exact after the load.
+        for seed in 0..60u64 {
+            let mut g = Gen(seed);
+            let n = 1 + g.below(60);
+            let m = g.below(3 * n);
+            let mut edges = Vec::new();
+            for e in 0..m as u32 {
+                if n < 2 {
+                    break;
+                }
+                let a = g.below(n) as u32;
+                let b = (a + 1 + g.below(n - 1) as u32) % n as u32;
+                // Ids out of order and with gaps, as a shrunk graph has.
+                edges.push([3 * e + (seed % 3) as u32, a, b]);
+            }
+            if seed % 2 == 0 {
+                edges.reverse();
+            }
+            let (mut one, mut bulk) = (Hdt::new(n), Hdt::new(n));
+            one.sample = (seed % 2) as u32 * SAMPLE;
+            bulk.sample = one.sample;
+            let (mut log1, mut log2) = (Vec::new(), Vec::new());
+            for &[e, a, b] in &edges {
+                one.insert(e, a, b, &mut log1);
+            }
+            bulk.load(&edges, &mut log2);
+            assert_eq!(log1, log2, "seed {seed}");
+            bulk.check().unwrap_or_else(|m| panic!("seed {seed}: {m}"));
+            for x in 0..n as u32 {
+                let s1 = one.pool.sequence(one.pool.root_of(x));
+                let s2 = bulk.pool.sequence(bulk.pool.root_of(x));
+                assert_eq!(s1, s2, "seed {seed}: the tour of {x}");
+            }
+            assert_eq!(one.pool.len(), bulk.pool.len());
+            for (h1, h2) in one.pool.words().zip(bulk.pool.words()) {
+                assert_eq!(h1, h2, "seed {seed}: caller words and own flags");
+            }
+            assert_eq!(one.links, bulk.links);
+            let mut live: Vec<u32> = edges.iter().map(|t| t[0]).collect();
+            let mut next_id = 3 * m as u32 + 3;
+            for _ in 0..4 * m {
+                if live.is_empty() {
+                    break;
+                }
+                if g.below(4) == 0 && n >= 2 {
+                    let a = g.below(n) as u32;
+                    let b = (a + 1 + g.below(n - 1) as u32) % n as u32;
+                    one.insert(next_id, a, b, &mut log1);
+                    bulk.insert(next_id, a, b, &mut log2);
+                    live.push(next_id);
+                    next_id += 1;
+                } else {
+                    let e = live.swap_remove(g.below(live.len()));
+                    one.delete(e, &mut log1);
+                    bulk.delete(e, &mut log2);
+                }
+                assert_eq!(log1, log2, "seed {seed}");
+            }
+            assert_eq!(one.stats(), bulk.stats());
+            bulk.check().unwrap_or_else(|m| panic!("seed {seed}: {m}"));
+        }
     }
 
     #[test]

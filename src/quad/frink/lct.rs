@@ -1,6 +1,7 @@
 //! A link–cut tree (Sleator–Tarjan 1983, splay-based) on flat arrays with `u32` indices:
 //! a forest of rooted-at-will trees supporting link, cut, re-rooting, and on the path
-//! between two nodes "add `d` to every value" and "minimum value".
+//! between two nodes "add `d` to every value" and "minimum value"; and [`PlainLct`], the
+//! same without values (link, cut, re-rooting, LCAs), for the Diks–Stańczyk strategy.
 //!
 //! # Guarantees
 //! Every operation keeps the represented forest and the node values exactly as a naive
@@ -51,6 +52,7 @@ pub(crate) struct Lct {
 
 impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
+    #[cfg(test)]
     pub(crate) fn new(vals: &[i32]) -> Self {
         Lct {
             t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
@@ -177,7 +179,7 @@ impl Lct {
 
     /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay
     /// tree, which holds exactly that path. Returns the last node at which the walk
-    /// joined the previously preferred root path (used by [`Lct::lca`]).
+    /// joined the previously preferred root path (the LCA of a walk's step).
     fn access(&mut self, x: u32) -> u32 {
         let mut last = NIL;
         let mut y = x;
@@ -196,10 +198,23 @@ impl Lct {
     /// by [`Lct::make_root`]); they must be connected. O(log n) amortised: after
     /// `access(x)` the root–`x` path is one preferred path, and the last node at which
     /// `access(y)` joins it is where the root–`y` path leaves the root–`x` path.
+    #[cfg(test)]
     pub(crate) fn lca(&mut self, x: u32, y: u32) -> u32 {
         debug_assert!(self.connected(x, y), "lca of two trees");
         self.access(x);
         self.access(y)
+    }
+
+    /// Makes the root–`x` path preferred and returns the LCA of `x` and the node last
+    /// passed to `walk_to` (same tree, same root since; after a `make_root` or any other
+    /// operation the result means nothing, as the root's preferred path is then not a
+    /// root–node path). O(log n)
+    /// amortised: one access, where an LCA query from scratch takes two, so the pairwise
+    /// LCAs along a walk over several nodes cost one access each. (Used in the tests;
+    /// DS walks a [`PlainLct`].)
+    #[cfg(test)]
+    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+        self.access(x)
     }
 
     /// Makes `x` the root of its tree.
@@ -315,6 +330,157 @@ impl Lct {
     pub(crate) fn path_min(&mut self, x: u32, y: u32) -> i32 {
         self.expose(x, y);
         self.t[y as usize].min
+    }
+}
+
+/// One node of [`PlainLct`]: splay children, splay parent or path-parent, and the
+/// pending reversal of its subtree (already applied to this node). 16 bytes.
+#[derive(Clone, Copy, Debug)]
+struct PlainNode {
+    ch: [u32; 2],
+    par: u32,
+    rev: bool,
+}
+
+/// A link–cut forest without node values: link, cut, re-rooting and the LCAs of a walk
+/// ([`PlainLct::walk_to`]), which is all the Diks–Stańczyk strategy asks. Same
+/// guarantees and O(log n) amortised bounds as [`Lct`], in 16-byte nodes with no
+/// aggregate to keep up (tested against the same naive forest); in DS it replaced
+/// [`Lct`], whose values DS never read.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct PlainLct {
+    t: Vec<PlainNode>,
+    stack: Vec<u32>,
+}
+
+impl PlainLct {
+    /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root); `parent`
+    /// must describe a forest. O(n): every node starts as its own preferred path.
+    pub(crate) fn with_parents(parent: &[u32]) -> Self {
+        PlainLct {
+            t: parent
+                .iter()
+                .map(|&p| PlainNode {
+                    ch: [NIL; 2],
+                    par: p,
+                    rev: false,
+                })
+                .collect(),
+            stack: Vec::new(),
+        }
+    }
+
+    fn is_root(&self, x: u32) -> bool {
+        let p = self.t[x as usize].par;
+        p == NIL || (self.t[p as usize].ch[0] != x && self.t[p as usize].ch[1] != x)
+    }
+
+    fn apply_rev(&mut self, x: u32) {
+        if x != NIL {
+            let n = &mut self.t[x as usize];
+            n.ch.swap(0, 1);
+            n.rev ^= true;
+        }
+    }
+
+    fn push(&mut self, x: u32) {
+        let n = &mut self.t[x as usize];
+        if n.rev {
+            n.rev = false;
+            let [a, b] = n.ch;
+            self.apply_rev(a);
+            self.apply_rev(b);
+        }
+    }
+
+    fn rotate(&mut self, x: u32) {
+        let p = self.t[x as usize].par;
+        let g = self.t[p as usize].par;
+        let dir = usize::from(self.t[p as usize].ch[1] == x);
+        let b = self.t[x as usize].ch[dir ^ 1];
+        if !self.is_root(p) {
+            let gi = g as usize;
+            if self.t[gi].ch[0] == p {
+                self.t[gi].ch[0] = x;
+            } else {
+                self.t[gi].ch[1] = x;
+            }
+        }
+        self.t[x as usize].par = g;
+        self.t[x as usize].ch[dir ^ 1] = p;
+        self.t[p as usize].par = x;
+        self.t[p as usize].ch[dir] = b;
+        if b != NIL {
+            self.t[b as usize].par = p;
+        }
+    }
+
+    fn splay(&mut self, x: u32) {
+        self.stack.clear();
+        let mut y = x;
+        self.stack.push(y);
+        while !self.is_root(y) {
+            y = self.t[y as usize].par;
+            self.stack.push(y);
+        }
+        while let Some(z) = self.stack.pop() {
+            self.push(z);
+        }
+        while !self.is_root(x) {
+            let p = self.t[x as usize].par;
+            if !self.is_root(p) {
+                let g = self.t[p as usize].par;
+                let zigzig = (self.t[g as usize].ch[0] == p) == (self.t[p as usize].ch[0] == x);
+                self.rotate(if zigzig { p } else { x });
+            }
+            self.rotate(x);
+        }
+    }
+
+    /// As [`Lct`]'s access: the root–`x` path preferred, `x` its splay root; returns
+    /// the node at which the walk joined the previously preferred root path.
+    fn access(&mut self, x: u32) -> u32 {
+        let mut last = NIL;
+        let mut y = x;
+        while y != NIL {
+            self.splay(y);
+            self.t[y as usize].ch[1] = last;
+            last = y;
+            y = self.t[y as usize].par;
+        }
+        self.splay(x);
+        last
+    }
+
+    /// The LCA of `x` and the node last passed to `walk_to` (same
+    /// tree, same root since; meaningless after any other operation). O(log n)
+    /// amortised.
+    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+        self.access(x)
+    }
+
+    /// Makes `x` the root of its tree.
+    pub(crate) fn make_root(&mut self, x: u32) {
+        self.access(x);
+        self.apply_rev(x);
+    }
+
+    /// Adds the edge `x`–`y`; they must be in different trees.
+    pub(crate) fn link(&mut self, x: u32, y: u32) {
+        self.make_root(x);
+        self.t[x as usize].par = y;
+    }
+
+    /// Removes the edge `x`–`y`, which must exist.
+    pub(crate) fn cut(&mut self, x: u32, y: u32) {
+        self.make_root(x);
+        self.access(y);
+        debug_assert!(
+            self.t[y as usize].ch[0] == x && self.t[x as usize].ch[1] == NIL,
+            "cut of a non-edge"
+        );
+        self.t[y as usize].ch[0] = NIL;
+        self.t[x as usize].par = NIL;
     }
 }
 
@@ -454,7 +620,7 @@ mod tests {
         assert!(replaced > 50, "replace_path exercised {replaced} times");
     }
 
-    /// `lca` after `make_root` is the last common node of the naive root–`x` and
+    /// `lca` (and `walk_to`) after `make_root` is the last common node of the naive root–`x` and
     /// root–`y` paths, on random forests changed by links and cuts between queries.
     #[test]
     fn lca_agrees_with_naive_paths() {
@@ -497,12 +663,79 @@ mod tests {
                         );
                         let common = px.iter().zip(&py).take_while(|(a, b)| a == b).count();
                         lct.make_root(r);
-                        assert_eq!(lct.lca(x, y), px[common - 1], "seed {seed}");
+                        // Half by `lca`, half by a walk x, y, r: each `walk_to` answers
+                        // the LCA with the node before (x, then y).
+                        let got = if queries % 2 == 0 {
+                            lct.lca(x, y)
+                        } else {
+                            lct.walk_to(x);
+                            let got = lct.walk_to(y);
+                            assert_eq!(lct.walk_to(r), r, "seed {seed}");
+                            got
+                        };
+                        assert_eq!(got, px[common - 1], "seed {seed}");
                         queries += 1;
                     }
                 }
             }
         }
         assert!(queries > 1000, "{queries} lca queries");
+    }
+
+    /// `PlainLct`'s walk LCAs against the naive forest, on random forests changed by
+    /// links and cuts between queries (as `lca_agrees_with_naive_paths` for `Lct`).
+    #[test]
+    fn plain_walk_agrees_with_naive_paths() {
+        let mut queries = 0;
+        for seed in 1..=80u64 {
+            let mut s = seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1;
+            let n = 2 + (next(&mut s) % 20) as usize;
+            let mut lct = super::PlainLct::with_parents(&vec![u32::MAX; n]);
+            let mut naive = Naive {
+                adj: vec![Vec::new(); n],
+                val: vec![0; n],
+            };
+            let mut edges: Vec<(u32, u32)> = Vec::new();
+            for _ in 0..300 {
+                let x = (next(&mut s) % n as u64) as u32;
+                let y = (next(&mut s) % n as u64) as u32;
+                let z = (next(&mut s) % n as u64) as u32;
+                let r = (next(&mut s) % n as u64) as u32;
+                match next(&mut s) % 4 {
+                    0 if naive.path(x, y).is_none() => {
+                        lct.link(x, y);
+                        naive.adj[x as usize].push(y);
+                        naive.adj[y as usize].push(x);
+                        edges.push((x, y));
+                    }
+                    1 if !edges.is_empty() => {
+                        let k = (next(&mut s) % edges.len() as u64) as usize;
+                        let (a, b) = edges.swap_remove(k);
+                        lct.cut(a, b);
+                        naive.adj[a as usize].retain(|&c| c != b);
+                        naive.adj[b as usize].retain(|&c| c != a);
+                    }
+                    _ => {
+                        let lca = |a: u32, b: u32| {
+                            let pa: Vec<u32> = naive.path(r, a)?.into_iter().rev().collect();
+                            let pb: Vec<u32> = naive.path(r, b)?.into_iter().rev().collect();
+                            let common = pa.iter().zip(&pb).take_while(|(p, q)| p == q).count();
+                            Some(pa[common - 1])
+                        };
+                        let (Some(xy), Some(yz), Some(zx)) = (lca(x, y), lca(y, z), lca(z, x))
+                        else {
+                            continue;
+                        };
+                        lct.make_root(r);
+                        lct.walk_to(x);
+                        assert_eq!(lct.walk_to(y), xy, "seed {seed}");
+                        assert_eq!(lct.walk_to(z), yz, "seed {seed}");
+                        assert_eq!(lct.walk_to(x), zx, "seed {seed}");
+                        queries += 1;
+                    }
+                }
+            }
+        }
+        assert!(queries > 1000, "{queries} walks");
     }
 }
