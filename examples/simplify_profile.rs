@@ -105,6 +105,7 @@ fn main() {
     {
         use contractible::simplify::pass::*;
         use std::sync::atomic::Ordering::Relaxed;
+        eprintln!("matched {} unmatched {} ", HIT.load(Relaxed) >> 40, MISS.load(Relaxed) >> 40);
         eprintln!("hit {} miss {} decide {} us repair {} us apply {} us", HIT.load(Relaxed), MISS.load(Relaxed), TA.load(Relaxed), TR.load(Relaxed), TP.load(Relaxed));
     }
     let s = &out.stats;

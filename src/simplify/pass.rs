@@ -130,32 +130,15 @@ pub(super) struct Plan {
     pub(super) position: Point,
 }
 
-/// A vertex's position and the pass in which it was replaced or frozen (see
-/// `Simplifier::vert`): stamp 0 for the exact sweep, stamp 1 for the speculative one.
-/// Atomic only so that the two deciding threads can each write their own stamp while
-/// both read positions; relaxed loads and stores are plain moves.
-#[derive(Debug)]
+/// A vertex's position.
+#[derive(Copy, Clone, Debug)]
 pub(super) struct Vertex {
     pub(super) pos: Point,
-    touched: [AtomicU32; 2],
 }
 
 impl Vertex {
     fn new(pos: Point) -> Self {
-        Vertex {
-            pos,
-            touched: [AtomicU32::new(0), AtomicU32::new(0)],
-        }
-    }
-
-    #[inline]
-    fn frozen(&self, slot: usize, pass: u32) -> bool {
-        self.touched[slot].load(Relaxed) == pass
-    }
-
-    #[inline]
-    fn freeze(&self, slot: usize, pass: u32) {
-        self.touched[slot].store(pass, Relaxed);
+        Vertex { pos }
     }
 }
 
@@ -164,6 +147,7 @@ impl Vertex {
 pub(super) struct View<'a> {
     tri: &'a Triangulation,
     vert: &'a [Vertex],
+    touched: [&'a [AtomicU32]; 2],
     quadric: &'a [Quadric],
     first_virtual: u32,
     opts: &'a Options,
@@ -178,6 +162,7 @@ macro_rules! view {
         View {
             tri: &$s.tri,
             vert: &$s.vert,
+            touched: [&$s.touched[0], &$s.touched[1]],
             quadric: &$s.quadric,
             first_virtual: $s.first_virtual,
             opts: $s.opts,
@@ -188,6 +173,17 @@ macro_rules! view {
 }
 
 impl View<'_> {
+    /// Whether `x` was frozen in this pass, on freeze stamp `slot`.
+    #[inline]
+    fn frozen(&self, slot: usize, x: VertexId) -> bool {
+        self.touched[slot][x.index()].load(Relaxed) == self.pass
+    }
+
+    #[inline]
+    fn freeze(&self, slot: usize, x: VertexId) {
+        self.touched[slot][x.index()].store(self.pass, Relaxed);
+    }
+
     #[inline]
     fn is_virtual(&self, v: VertexId) -> bool {
         v.0 >= self.first_virtual
@@ -448,7 +444,7 @@ impl Sweep {
     fn win(&mut self, v: &View<'_>, slot: usize, face: u32, s: u32, info: &EdgeInfo, position: Point) {
         let w = &self.walk;
         for &n in w.nbr_q.iter().chain(&w.nbr_p).chain(&[info.p, info.q]) {
-            v.vert[n.index()].freeze(slot, v.pass);
+            v.freeze(slot, n);
         }
         self.wins.push(Win {
             face,
@@ -476,10 +472,10 @@ impl Sweep {
         let (c0, v0) = (w.at_c as usize, w.at_v as usize);
         let d = (w.dq + w.dp) as usize;
         for &n in &from.verts[v0..v0 + d] {
-            v.vert[n.index()].freeze(slot, v.pass);
+            v.freeze(slot, n);
         }
-        v.vert[w.p.index()].freeze(slot, v.pass);
-        v.vert[w.q.index()].freeze(slot, v.pass);
+        v.freeze(slot, w.p);
+        v.freeze(slot, w.q);
         let mut own = *w;
         own.at_c = self.corners.len() as u32;
         own.at_v = self.verts.len() as u32;
@@ -558,7 +554,7 @@ fn next_candidate(
     let stamp = u64::from(v.pass) << 32;
     let pass = v.pass;
     let first_virtual = v.first_virtual;
-    let frozen = |x: u32| u32::from(v.vert[x as usize].frozen(slot, pass));
+    let frozen = |x: u32| u32::from(v.touched[slot][x as usize].load(Relaxed) == pass);
     let mut next_dead = dead.peek().map_or(usize::MAX, |d| d.0 as usize);
     let mut deferred = 0;
     let slots = v.tri.corner_vertex.get(3 * from..3 * to).unwrap_or(&[]);
@@ -626,7 +622,7 @@ fn visit(v: &View<'_>, slot: usize, sw: &mut Sweep, fi: usize, role: &mut Role<'
         }
         let c = f.corner(s);
         let [p, q] = v.tri.edge_endpoints(c);
-        if v.vert[p.index()].frozen(slot, v.pass) || v.vert[q.index()].frozen(slot, v.pass) {
+        if v.frozen(slot, p) || v.frozen(slot, q) {
             sw.counts.frozen += 1;
             continue;
         }
@@ -753,6 +749,7 @@ fn repair(
             match (fa, fb) {
                 (None, None) => break,
                 (Some(x), Some(y)) if x.face == y.face => {
+                    if x.slot == y.slot { HIT.fetch_add(1 << 40, Relaxed); } else { MISS.fetch_add(1 << 40, Relaxed); }
                     if x.slot != y.slot {
                         reach = reach
                             .max(x.reach(a, last_use, v))
@@ -762,10 +759,12 @@ fn repair(
                     ib += 1;
                 }
                 (Some(x), y) if y.is_none_or(|y| x.face < y.face) => {
+                    MISS.fetch_add(1 << 40, Relaxed);
                     reach = reach.max(x.reach(a, last_use, v));
                     ia += 1;
                 }
                 (_, Some(y)) => {
+                    MISS.fetch_add(1 << 40, Relaxed);
                     reach = reach.max(y.reach(b, last_use, v));
                     ib += 1;
                 }
@@ -796,10 +795,14 @@ fn repair(
 /// One component being simplified.
 pub(crate) struct Simplifier<'o> {
     pub(super) tri: Triangulation,
-    /// Per vertex: position and the pass that froze it, side by side, so that the
-    /// freezing test of a visit and the position loads that follow it (and the guard's
-    /// position loads and the freeze after it) share cache lines.
+    /// Per vertex: position.
     pub(super) vert: Vec<Vertex>,
+    /// Per vertex, the pass that froze it: stamp 0 for the exact sweep (and the
+    /// sequential passes), stamp 1 for the speculative one. Atomic only so that the two
+    /// deciding threads can each write their own while both read the rest; relaxed
+    /// loads and stores are plain moves. Dense (4 bytes a vertex), since most visits of
+    /// a pass read only these.
+    touched: [Vec<AtomicU32>; 2],
     pub(super) quadric: Vec<Quadric>,
     /// Vertex ids from here on are virtual (cone apexes); they stay last through
     /// compaction since they are never removed.
@@ -854,6 +857,10 @@ impl<'o> Simplifier<'o> {
         let mut s = Simplifier {
             tri,
             vert,
+            touched: [
+                (0..nv).map(|_| AtomicU32::new(0)).collect(),
+                (0..nv).map(|_| AtomicU32::new(0)).collect(),
+            ],
             quadric: Vec::new(),
             first_virtual,
             loops,
@@ -958,7 +965,12 @@ impl<'o> Simplifier<'o> {
         observer: &mut dyn FnMut(Progress),
     ) -> Run {
         loop {
-            let contracted = if self.nested_phase {
+            // Two threads decide a naive pass when allowed and the pass is large
+            // enough; otherwise the sequential pass (the same decisions either way).
+            let contracted = if self.nested_phase
+                || self.workers < 2
+                || self.tri.face_capacity() < PARALLEL_MIN
+            {
                 self.pass(observer)
             } else {
                 self.pass_decided(observer)
@@ -1127,8 +1139,8 @@ impl<'o> Simplifier<'o> {
                 }
                 let c = f.corner(s);
                 let [p, q] = self.tri.edge_endpoints(c);
-                if self.vert[p.index()].frozen(0, self.pass)
-                    || self.vert[q.index()].frozen(0, self.pass)
+                if self.touched[0][p.index()].load(Relaxed) == self.pass
+                    || self.touched[0][q.index()].load(Relaxed) == self.pass
                 {
                     self.run.skipped.frozen += 1;
                     continue;
@@ -1222,7 +1234,7 @@ impl<'o> Simplifier<'o> {
         let pass = self.pass;
         let walk = &self.sweep_a.walk;
         for &w in walk.nbr_q.iter().chain(&walk.nbr_p).chain(&[e.p, e.q]) {
-            self.vert[w.index()].freeze(0, pass);
+            self.touched[0][w.index()].store(pass, Relaxed);
         }
         for (side, claim) in plan.discs.iter().enumerate() {
             let Some(cl) = claim else { continue };
@@ -1276,7 +1288,7 @@ impl<'o> Simplifier<'o> {
         for (old, &new) in map.iter().enumerate() {
             if new != crate::core::ids::NONE {
                 debug_assert_eq!(new as usize, k);
-                self.vert.swap(k, old);
+                self.vert[k] = self.vert[old];
                 if !self.quadric.is_empty() {
                     self.quadric[k] = self.quadric[old];
                 }
@@ -1285,6 +1297,10 @@ impl<'o> Simplifier<'o> {
         }
         self.vert.truncate(k);
         self.vert.shrink_to_fit();
+        // Stamps of earlier passes never match a later pass: cut, not carried along.
+        for t in &mut self.touched {
+            t.truncate(k);
+        }
         if !self.quadric.is_empty() {
             self.quadric.truncate(k);
             self.quadric.shrink_to_fit();
