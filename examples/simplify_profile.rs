@@ -50,14 +50,8 @@ fn main() {
     let built = ConedSurfaces::from_mesh(&mesh).expect("a surface");
     let t_build = t.elapsed().as_secs_f64();
     drop(built);
-    // `THREADS=n`: `Options::threads` (default 0: the available parallelism).
-    let threads = std::env::var("THREADS")
-        .ok()
-        .and_then(|x| x.parse().ok())
-        .unwrap_or(0);
     let opts = Options {
         mode,
-        threads,
         ..Options::new(eps)
     };
     let t = Instant::now();
@@ -101,12 +95,6 @@ fn main() {
         };
         t_all = median(&mut walls);
         cpu_all = median(&mut cpus);
-    }
-    {
-        use contractible::simplify::pass::*;
-        use std::sync::atomic::Ordering::Relaxed;
-        eprintln!("matched {} unmatched {} ", HIT.load(Relaxed) >> 40, MISS.load(Relaxed) >> 40);
-        eprintln!("hit {} miss {} decide {} us repair {} us apply {} us", HIT.load(Relaxed), MISS.load(Relaxed), TA.load(Relaxed), TR.load(Relaxed), TP.load(Relaxed));
     }
     let s = &out.stats;
     let f = mesh.faces.len() as f64;

@@ -1,53 +1,6 @@
 //! The pass machinery shared by both modes: the state of one component, the pass loop,
 //! the common-neighbour walk, the position and guard decisions, applying a plan, and the
 //! per-pass compaction.
-//!
-//! **The naive passes decide first, then apply, on up to two threads, with the output
-//! of the sequential sweep.** Within a pass, a contraction of `[p', q']` changes only
-//! the faces containing `p'` or `q'` (renamed corners, the two removed faces, the
-//! re-glued `opposite` entries, which all lie in faces across an edge at `p'` or `q'`),
-//! the degree and stored corner of `p'`, `q'` and of the edge's two opposite vertices,
-//! and the position (and quadric) of the kept vertex; and it freezes every vertex of
-//! every face around `p'` or `q'` (all of the above). So a vertex that is still
-//! unfrozen has its pass-start star (faces, `opposite` entries, degree, stored corner,
-//! hence the same walk in the same order), and so has every neighbour of it its
-//! pass-start position (a moved vertex is a kept one, all of whose neighbours are
-//! frozen). The naive plan of an edge `[p, q]` with both endpoints unfrozen —
-//! [`Walk::examine`] (both stars, the degree of `q`, cone apexes), the tetrahedron test
-//! (degrees of `p` and `q`), the position (positions and quadrics of `p`, `q`) and the
-//! guard (positions of `p`, `q` and their neighbours) — therefore reads exactly the
-//! pass-start state, and so does the sweep's visit of a face with at most one frozen
-//! vertex (its lengths: a face with a kept vertex has three frozen vertices). The faces
-//! a contraction removes are the two faces of its edge, which the sweep then skips
-//! without counting (a list of them, `dead`). Hence the whole pass can be *decided* on
-//! the pass-start state (which edges contract, in which order, every skip count) and
-//! the contractions *applied* afterwards in the same order, each onto a state in which
-//! its stars are still the pass-start ones (the stars walked while deciding are reused).
-//!
-//! Deciding is split at the middle face slot `m`: the calling thread decides `[0, m)`
-//! (exactly, since nothing before `0` exists), a second thread decides `[m, nf)` as if
-//! nothing before `m` had frozen anything (a speculative sweep, on its own freeze stamp
-//! and `dead` list, recording every plan it computed), and then the calling thread
-//! decides `[m, nf)` exactly, taking every plan the speculative sweep computed from its
-//! record (a plan is a function of the pass-start state, whoever computes it) and
-//! computing only the others. It stops early once the two sweeps provably agree on the
-//! rest: every `CHECKPOINT` faces it compares the two sweeps' successes so far; the
-//! frozen sets of the two differ at most on `D` = (the vertices the exact sweep froze
-//! before `m`) ∪ (the vertices frozen by a success only one of the sweeps made), so if
-//! every vertex id in `D` is below the smallest vertex id of the faces from the
-//! checkpoint `g` on (the speculative sweep's `suffix_min`), the two sweeps read equal
-//! freeze states and `dead` lists from `g` on and make the same decisions with the same
-//! counts (virtual vertices are never read: faces with one are skipped first). The
-//! exact sweep then adopts the speculative successes and counts from `g` on. Whatever
-//! the split, the timing or the thread count, the decisions are those of the single
-//! sequential sweep, so outputs are identical for 1 and 2 threads (tested).
-//!
-//! The nested passes (after the naive fixed point) stay sequential: a nested plan grows
-//! regions that can reach far from the edge, into faces changed earlier in the pass.
-
-use std::cmp::Reverse;
-use std::collections::BinaryHeap;
-use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
 
 use super::geometry::{area_normal, dist2, fan_move_ok, midpoint, Point, Quadric};
 use super::nested::{self, Claim, Grow};
@@ -61,13 +14,6 @@ pub const SCANNED: &str = "faces scanned in this pass";
 
 /// Degree up to which `examine` looks neighbours up in a list rather than in the marks.
 const SMALL_LINK: usize = 24;
-
-/// Face slots between two points at which the exact sweep checks whether the
-/// speculative one has become exact (see the module documentation).
-const CHECKPOINT: usize = 512;
-
-/// Face slots below which a pass is decided on one thread (a thread costs more).
-const PARALLEL_MIN: usize = 8 * CHECKPOINT;
 
 /// Why an edge is not processed now (frozen edges are counted before planning).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -83,15 +29,6 @@ impl SkipCounts {
             Skip::LinkCondition => self.link_condition += 1,
             Skip::NonDisc => self.non_disc += 1,
             Skip::Foldover => self.foldover += 1,
-        }
-    }
-
-    fn minus(&self, o: &SkipCounts) -> SkipCounts {
-        SkipCounts {
-            link_condition: self.link_condition - o.link_condition,
-            non_disc: self.non_disc - o.non_disc,
-            foldover: self.foldover - o.foldover,
-            frozen: self.frozen - o.frozen,
         }
     }
 }
@@ -130,700 +67,43 @@ pub(super) struct Plan {
     pub(super) position: Point,
 }
 
-/// A vertex's position.
+/// A vertex's position and the pass in which it was replaced or frozen (see
+/// `Simplifier::vert`).
 #[derive(Copy, Clone, Debug)]
 pub(super) struct Vertex {
     pub(super) pos: Point,
-}
-
-impl Vertex {
-    fn new(pos: Point) -> Self {
-        Vertex { pos }
-    }
-}
-
-/// The read-only state a plan reads (the pass-start state while a pass is decided).
-#[derive(Copy, Clone)]
-pub(super) struct View<'a> {
-    tri: &'a Triangulation,
-    vert: &'a [Vertex],
-    touched: [&'a [AtomicU32]; 2],
-    quadric: &'a [Quadric],
-    first_virtual: u32,
-    opts: &'a Options,
-    eps2: f64,
-    pass: u32,
-}
-
-/// A [`View`] of a simplifier, borrowing only the fields it names (so that scratch
-/// fields can be borrowed mutably beside it).
-macro_rules! view {
-    ($s:expr) => {
-        View {
-            tri: &$s.tri,
-            vert: &$s.vert,
-            touched: [&$s.touched[0], &$s.touched[1]],
-            quadric: &$s.quadric,
-            first_virtual: $s.first_virtual,
-            opts: $s.opts,
-            eps2: $s.eps2,
-            pass: $s.pass,
-        }
-    };
-}
-
-impl View<'_> {
-    /// Whether `x` was frozen in this pass, on freeze stamp `slot`.
-    #[inline]
-    fn frozen(&self, slot: usize, x: VertexId) -> bool {
-        self.touched[slot][x.index()].load(Relaxed) == self.pass
-    }
-
-    #[inline]
-    fn freeze(&self, slot: usize, x: VertexId) {
-        self.touched[slot][x.index()].store(self.pass, Relaxed);
-    }
-
-    #[inline]
-    fn is_virtual(&self, v: VertexId) -> bool {
-        v.0 >= self.first_virtual
-    }
-
-    #[inline]
-    fn pos(&self, v: VertexId) -> Point {
-        self.vert[v.index()].pos
-    }
-
-    /// Where the merged vertex goes (see [`Position`]).
-    fn position(&self, e: &EdgeInfo) -> Point {
-        let (pp, pq) = (self.pos(e.p), self.pos(e.q));
-        match self.opts.position {
-            Position::Midpoint => match e.boundary {
-                [true, false] => pp,
-                [false, true] => pq,
-                _ => midpoint(pp, pq),
-            },
-            Position::Quadric => {
-                let mut q = self.quadric[e.p.index()];
-                q.add(&self.quadric[e.q.index()]);
-                q.best_position(pp, pq)
-            }
-        }
-    }
-}
-
-/// The scratch of the common-neighbour walk, one per deciding thread.
-#[derive(Default)]
-pub(super) struct Walk {
-    /// Marks for a high-degree `q` (sized on first use), compared with `stamp`.
-    vmark: Vec<u32>,
-    stamp: u32,
-    /// A corner at q, then at p, in every face around them.
-    star_pq: Vec<Corner>,
-    /// The neighbours of q and of p, in the order of their corners in `star_pq`.
-    nbr_q: Vec<VertexId>,
-    nbr_p: Vec<VertexId>,
-    link: Vec<VertexId>,
-    /// The common neighbours of the edge other than its opposite vertices, in order
-    /// along the link of `p` from `a` to `b`.
-    xs: Vec<VertexId>,
-}
-
-impl Walk {
-    /// The edge opposite `c`: its endpoints and opposite vertices, and its other common
-    /// neighbours in `self.xs`. Refuses an edge joining two boundary loops. O(d_p + d_q).
-    fn examine(&mut self, v: &View<'_>, c: Corner) -> Result<EdgeInfo, Skip> {
-        let tri = v.tri;
-        let [p, q] = tri.edge_endpoints(c);
-        let a = tri.vertex(c);
-        let b = tri.vertex(tri.opposite(c));
-        // One walk around each endpoint: q's neighbours listed (and marked, for a high
-        // degree), p's checked against them; the corners kept for the guard and the
-        // freeze, which then need no walk of their own. A short list scanned linearly
-        // beats the marks, which miss the cache.
-        let big = tri.degree(q) > SMALL_LINK;
-        let s = if big {
-            if self.vmark.len() < tri.vertex_capacity() {
-                self.vmark.resize(tri.vertex_capacity(), 0);
-            }
-            if self.stamp == u32::MAX {
-                self.vmark.fill(0);
-                self.stamp = 0;
-            }
-            self.stamp += 1;
-            self.stamp
-        } else {
-            0
-        };
-        let mut loop_q = None;
-        self.star_pq.clear();
-        self.nbr_q.clear();
-        for st in tri.star(q) {
-            let n = st.neighbour;
-            if big {
-                self.vmark[n.index()] = s;
-            }
-            if n.0 >= v.first_virtual {
-                loop_q = Some(n);
-            }
-            self.nbr_q.push(n);
-            self.star_pq.push(st.corner);
-        }
-        let mut loop_p = None;
-        let mut extra = false;
-        self.nbr_p.clear();
-        for st in tri.star(p) {
-            let n = st.neighbour;
-            self.nbr_p.push(n);
-            if n.0 >= v.first_virtual {
-                loop_p = Some(n);
-            }
-            if n != a && n != b && n != q && self.in_link_q(n, big, s) {
-                extra = true;
-            }
-            self.star_pq.push(st.corner);
-        }
-        if let (Some(x), Some(y)) = (loop_p, loop_q) {
-            if x != y {
-                return Err(Skip::LinkCondition);
-            }
-        }
-        self.xs.clear();
-        if extra {
-            // Only now the order: the link of p from the neighbour after q round to the
-            // one before it, oriented to run from a to b.
-            self.link.clear();
-            self.link.extend(tri.link(p));
-            let at_q = self.link.iter().position(|&n| n == q).unwrap_or(0);
-            self.link.rotate_left(at_q + 1);
-            self.link.pop();
-            if self.link.first() != Some(&a) {
-                self.link.reverse();
-            }
-            debug_assert_eq!(self.link.first(), Some(&a));
-            debug_assert_eq!(self.link.last(), Some(&b));
-            for k in 1..self.link.len() - 1 {
-                let n = self.link[k];
-                if self.in_link_q(n, big, s) {
-                    self.xs.push(n);
-                }
-            }
-        }
-        Ok(EdgeInfo {
-            corner: c,
-            p,
-            q,
-            a,
-            b,
-            boundary: [loop_p.is_some(), loop_q.is_some()],
-        })
-    }
-
-    /// Whether `n` is a neighbour of q, for `examine` (marks when q's degree is big).
-    #[inline]
-    fn in_link_q(&self, n: VertexId, big: bool, stamp: u32) -> bool {
-        if big {
-            self.vmark[n.index()] == stamp
-        } else {
-            self.nbr_q.contains(&n)
-        }
-    }
-
-    /// The fold-over guard: every real face at `p` or `q` that survives (not marked
-    /// `removed` in `fmark`, not a face of `[p, q]`) must stay non-degenerate and turn by
-    /// less than 90° when `p` and `q` move to `to`. Uses the stars `examine` walked.
-    fn guard(
-        &self,
-        v: &View<'_>,
-        e: &EdgeInfo,
-        to: Point,
-        removed: Option<(&[u32], u32)>,
-    ) -> bool {
-        let tri = v.tri;
-        for &c in &self.star_pq {
-            let f = c.face();
-            if removed.is_some_and(|(fmark, s)| fmark[f.index()] == s) {
-                continue;
-            }
-            let (v0, v1, v2) = (tri.vertex(c), tri.vertex(c.next()), tri.vertex(c.prev()));
-            // v0 is p or q; skip the faces of [p, q] and cone faces.
-            let other = if v0 == e.p { e.q } else { e.p };
-            if v1 == other || v2 == other || v.is_virtual(v1) || v.is_virtual(v2) {
-                continue;
-            }
-            if !fan_move_ok(v.pos(v0), to, v.pos(v1), v.pos(v2)) {
-                return false;
-            }
-        }
-        true
-    }
-
-    /// The naive plan of the edge opposite `c` (the link condition, the tetrahedron
-    /// test, the position, the guard): what `Simplifier::plan` decides for it in a
-    /// naive pass. Reads only the stars of both endpoints and the positions on them.
-    fn plan_naive(&mut self, v: &View<'_>, c: Corner) -> Result<(EdgeInfo, Point), Skip> {
-        let info = self.examine(v, c)?;
-        if !self.xs.is_empty() {
-            return Err(Skip::LinkCondition);
-        }
-        if v.tri.degree(info.p) == 3 && v.tri.degree(info.q) == 3 {
-            return Err(Skip::LinkCondition);
-        }
-        let position = v.position(&info);
-        if v.opts.guard && !self.guard(v, &info, position, None) {
-            return Err(Skip::Foldover);
-        }
-        Ok((info, position))
-    }
-}
-
-/// A decided contraction: the edge, the new position, and where its walked stars are
-/// kept in its sweep's `corners` / `verts`.
-#[derive(Copy, Clone, Debug)]
-struct Win {
-    face: u32,
-    slot: u32,
-    p: VertexId,
-    q: VertexId,
-    position: Point,
-    /// `corners[at_c..]`: `star_pq` (`dq + dp` corners); `verts[at_v..]`: `nbr_q` (`dq`)
-    /// then `nbr_p` (`dp`).
-    at_c: u32,
-    at_v: u32,
-    dq: u32,
-    dp: u32,
-}
-
-/// A plan the speculative sweep computed: face, slot, and the index of its `Win` or
-/// the reason it was refused.
-#[derive(Copy, Clone, Debug)]
-struct Tried {
-    face: u32,
-    slot: u32,
-    outcome: Result<u32, Skip>,
-}
-
-/// The speculative sweep's state at a checkpoint: its counts and successes before it.
-#[derive(Copy, Clone, Debug, Default)]
-struct Mark {
-    counts: SkipCounts,
-    wins: usize,
-}
-
-/// The decisions of one sweep over a face range (reused from pass to pass).
-#[derive(Default)]
-pub(super) struct Sweep {
-    walk: Walk,
-    wins: Vec<Win>,
-    corners: Vec<Corner>,
-    verts: Vec<VertexId>,
-    /// Speculative sweep only: every plan computed, in order.
-    tried: Vec<Tried>,
-    /// Speculative sweep only: the state at each checkpoint of its range.
-    marks: Vec<Mark>,
-    /// Speculative sweep only, per vertex: `pass << 32 | (f + 1)` for the last face
-    /// slot `f` of its range that uses it (any other value: none does).
-    last_use: Vec<u64>,
-    counts: SkipCounts,
-    /// Faces a success removes that the sweep has not reached yet.
-    dead: BinaryHeap<Reverse<u32>>,
-}
-
-impl Sweep {
-    fn reset(&mut self) {
-        self.wins.clear();
-        self.corners.clear();
-        self.verts.clear();
-        self.tried.clear();
-        self.marks.clear();
-        self.counts = SkipCounts::default();
-        self.dead.clear();
-    }
-
-    /// Records the success of the plan `walk` holds, freezing its vertices on `slot`.
-    fn win(&mut self, v: &View<'_>, slot: usize, face: u32, s: u32, info: &EdgeInfo, position: Point) {
-        let w = &self.walk;
-        for &n in w.nbr_q.iter().chain(&w.nbr_p).chain(&[info.p, info.q]) {
-            v.freeze(slot, n);
-        }
-        self.wins.push(Win {
-            face,
-            slot: s,
-            p: info.p,
-            q: info.q,
-            position,
-            at_c: self.corners.len() as u32,
-            at_v: self.verts.len() as u32,
-            dq: w.nbr_q.len() as u32,
-            dp: w.nbr_p.len() as u32,
-        });
-        self.corners.extend_from_slice(&w.star_pq);
-        self.verts.extend_from_slice(&w.nbr_q);
-        self.verts.extend_from_slice(&w.nbr_p);
-        let other = v.tri.opposite(info.corner).face().0;
-        if other > face {
-            self.dead.push(Reverse(other));
-        }
-    }
-
-    /// Takes over the success `w` of sweep `from` (a plan it computed), freezing on
-    /// `slot` as `win` does.
-    fn adopt(&mut self, v: &View<'_>, slot: usize, from: &Sweep, w: &Win) {
-        let (c0, v0) = (w.at_c as usize, w.at_v as usize);
-        let d = (w.dq + w.dp) as usize;
-        for &n in &from.verts[v0..v0 + d] {
-            v.freeze(slot, n);
-        }
-        v.freeze(slot, w.p);
-        v.freeze(slot, w.q);
-        let mut own = *w;
-        own.at_c = self.corners.len() as u32;
-        own.at_v = self.verts.len() as u32;
-        self.corners.extend_from_slice(&from.corners[c0..c0 + d]);
-        self.verts.extend_from_slice(&from.verts[v0..v0 + d]);
-        self.wins.push(own);
-        let other = v.tri.opposite(w.face_corner()).face().0;
-        if other > w.face {
-            self.dead.push(Reverse(other));
-        }
-    }
-}
-
-impl Win {
-    /// The corner opposite the edge in the face the sweep visited.
-    fn face_corner(&self) -> Corner {
-        FaceId(self.face).corner(self.slot)
-    }
-
-    /// One more than the last face slot of the speculative range that uses a real
-    /// vertex this contraction freezes (0 if none does), from `last_use` of `pass`.
-    fn reach(&self, sw: &Sweep, last_use: &[u64], v: &View<'_>) -> u64 {
-        let v0 = self.at_v as usize;
-        let d = (self.dq + self.dp) as usize;
-        let pass = u64::from(v.pass);
-        sw.verts[v0..v0 + d]
-            .iter()
-            .chain(&[self.p, self.q])
-            .filter(|n| !v.is_virtual(**n))
-            .map(|n| {
-                let x = last_use[n.index()];
-                if x >> 32 == pass {
-                    x & 0xffff_ffff
-                } else {
-                    0
-                }
-            })
-            .max()
-            .unwrap_or(0)
-    }
-}
-
-pub static HIT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-pub static MISS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-pub static TA: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-pub static TR: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-pub static TP: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
-
-/// Whose plans a sweep computes and keeps (see the module documentation).
-enum Role<'s> {
-    /// The exact sweep, planning every edge itself.
-    Exact,
-    /// The speculative sweep, recording every plan in `tried`.
-    Speculative,
-    /// The exact sweep over the speculative sweep's range, reusing its plans
-    /// (`cursor`: the first `tried` entry not behind the current face).
-    Repair(&'s Sweep, usize),
-}
-
-/// The first face slot in `[from, to)` whose visit gets as far as reading positions,
-/// and the number of visits before it deferred as frozen (on freeze stamp `slot`); `to`
-/// if none. Skipped: faces removed earlier in the pass (`dead`, popped as they are
-/// passed) or before it, cone faces (a virtual vertex) and faces with two or more
-/// vertices frozen in this pass (every edge has a frozen endpoint; most visits of a
-/// pass end here, so they are skipped in a loop that changes nothing), which alone are
-/// counted.
-fn next_candidate(
-    v: &View<'_>,
-    slot: usize,
-    from: usize,
-    to: usize,
-    dead: &mut BinaryHeap<Reverse<u32>>,
-    last_use: &mut [u64],
-) -> (usize, usize) {
-    let track = !last_use.is_empty();
-    let stamp = u64::from(v.pass) << 32;
-    let pass = v.pass;
-    let first_virtual = v.first_virtual;
-    let frozen = |x: u32| u32::from(v.touched[slot][x as usize].load(Relaxed) == pass);
-    let mut next_dead = dead.peek().map_or(usize::MAX, |d| d.0 as usize);
-    let mut deferred = 0;
-    let slots = v.tri.corner_vertex.get(3 * from..3 * to).unwrap_or(&[]);
-    for (k, face) in slots.chunks_exact(3).enumerate() {
-        let fi = from + k;
-        if fi >= next_dead {
-            let mut hit = false;
-            while let Some(&Reverse(d)) = dead.peek() {
-                if d as usize > fi {
-                    break;
-                }
-                hit |= d as usize == fi;
-                dead.pop();
-            }
-            next_dead = dead.peek().map_or(usize::MAX, |d| d.0 as usize);
-            if hit {
-                continue;
-            }
-        }
-        let (a, b, c) = (face[0], face[1], face[2]);
-        if track && a != crate::core::ids::NONE {
-            let used = stamp | (fi as u64 + 1);
-            last_use[a as usize] = used;
-            last_use[b as usize] = used;
-            last_use[c as usize] = used;
-        }
-        // A removed face has NONE (above every vertex id) in its slots.
-        if a >= first_virtual || b >= first_virtual || c >= first_virtual {
-            continue;
-        }
-        if frozen(a) + frozen(b) + frozen(c) >= 2 {
-            deferred += 1;
-            continue;
-        }
-        return (fi, deferred);
-    }
-    (to, deferred)
-}
-
-/// Visits face `fi` as the sequential pass does: its edges shorter than ε, shortest
-/// first (ties by slot), frozen ones counted, the others planned until one succeeds.
-fn visit(v: &View<'_>, slot: usize, sw: &mut Sweep, fi: usize, role: &mut Role<'_>) {
-    let f = FaceId(fi as u32);
-    let vs = v.tri.face_vertices(f);
-    let ps = [v.pos(vs[0]), v.pos(vs[1]), v.pos(vs[2])];
-    // Edge opposite slot s joins slots s+1 and s+2; the short ones, shortest first
-    // (ties by slot), by a three-element sorting network.
-    let l = [
-        dist2(ps[1], ps[2]),
-        dist2(ps[2], ps[0]),
-        dist2(ps[0], ps[1]),
-    ];
-    let mut order = [0u32, 1, 2];
-    let mut swap = |i: usize, j: usize| {
-        if l[order[j] as usize] < l[order[i] as usize] {
-            order.swap(i, j);
-        }
-    };
-    swap(0, 1);
-    swap(1, 2);
-    swap(0, 1);
-    for s in order {
-        if l[s as usize] >= v.eps2 {
-            break;
-        }
-        let c = f.corner(s);
-        let [p, q] = v.tri.edge_endpoints(c);
-        if v.frozen(slot, p) || v.frozen(slot, q) {
-            sw.counts.frozen += 1;
-            continue;
-        }
-        let cached = match role {
-            Role::Repair(spec, cursor) => {
-                let tried = &spec.tried;
-                while *cursor < tried.len() && (tried[*cursor].face as usize) < fi {
-                    *cursor += 1;
-                }
-                tried[*cursor..]
-                    .iter()
-                    .take_while(|t| t.face as usize == fi)
-                    .find(|t| t.slot == s)
-                    .map(|t| (*spec, t.outcome))
-            }
-            _ => None,
-        };
-        if cached.is_some() {
-            HIT.fetch_add(1, Relaxed);
-        }
-        let outcome = match cached {
-            Some((spec, Ok(i))) => {
-                sw.adopt(v, slot, spec, &spec.wins[i as usize]);
-                Ok(())
-            }
-            Some((_, Err(k))) => Err(k),
-            None => {
-                if matches!(role, Role::Repair(..)) {
-                    MISS.fetch_add(1, Relaxed);
-                }
-                let planned = sw.walk.plan_naive(v, c);
-                let outcome = match planned {
-                    Ok((info, position)) => {
-                        sw.win(v, slot, fi as u32, s, &info, position);
-                        Ok(sw.wins.len() as u32 - 1)
-                    }
-                    Err(k) => Err(k),
-                };
-                if matches!(role, Role::Speculative) {
-                    sw.tried.push(Tried {
-                        face: fi as u32,
-                        slot: s,
-                        outcome,
-                    });
-                }
-                outcome.map(|_| ())
-            }
-        };
-        match outcome {
-            Ok(()) => break,
-            Err(k) => sw.counts.count(k),
-        }
-    }
-}
-
-/// Decides faces `[from, to)` on freeze stamp `slot`, continuing `sw`'s state;
-/// `progress(face)` now and then.
-fn sweep_range(
-    v: &View<'_>,
-    slot: usize,
-    sw: &mut Sweep,
-    from: usize,
-    to: usize,
-    role: &mut Role<'_>,
-    progress: &mut dyn FnMut(usize),
-) {
-    let mut from = from;
-    loop {
-        let (fi, deferred) = next_candidate(v, slot, from, to, &mut sw.dead, &mut sw.last_use);
-        sw.counts.frozen += deferred;
-        if fi >= to {
-            break;
-        }
-        from = fi + 1;
-        progress(fi);
-        visit(v, slot, sw, fi, role);
-    }
-}
-
-/// The speculative sweep over `[m, nf)` (stamp 1, nothing frozen at `m`), with its
-/// checkpoint marks and suffix minima.
-fn speculate(v: &View<'_>, sw: &mut Sweep, m: usize, nf: usize) {
-    // Sized here (it is only ever read for vertices below the capacity), filled by
-    // `next_candidate`; older passes' entries do not match this pass's stamp.
-    sw.last_use.resize(v.tri.vertex_capacity(), 0);
-    let mut g = m;
-    let mut role = Role::Speculative;
-    while g < nf {
-        sw.marks.push(Mark {
-            counts: sw.counts,
-            wins: sw.wins.len(),
-        });
-        let end = (g + CHECKPOINT).min(nf);
-        sweep_range(v, 1, sw, g, end, &mut role, &mut |_| {});
-        g = end;
-    }
-}
-
-/// The exact sweep over `[m, nf)` after the exact one over `[0, m)` (in `a`) and the
-/// speculative one (in `b`): returns the index of `b`'s first success to adopt if the
-/// two sweeps became provably equal at a checkpoint (then `a`'s counts include `b`'s
-/// from there on), `None` if `a` decided the whole range.
-fn repair(
-    v: &View<'_>,
-    a: &mut Sweep,
-    b: &Sweep,
-    m: usize,
-    nf: usize,
-    progress: &mut dyn FnMut(usize),
-) -> Option<usize> {
-    // One more than the last face slot that uses a vertex whose freeze states may
-    // differ between the two sweeps (see the module documentation).
-    let last_use = &b.last_use[..];
-    let mut reach = a.wins.iter().map(|w| w.reach(a, last_use, v)).max().unwrap_or(0);
-    let (mut ia, mut ib) = (a.wins.len(), 0);
-    let mut role = Role::Repair(b, 0);
-    let mut g = m;
-    let mut k = 0;
-    loop {
-        // Compare the successes before g: equal ones freeze the same vertices.
-        loop {
-            let fa = a.wins.get(ia).filter(|w| (w.face as usize) < g);
-            let fb = b.wins.get(ib).filter(|w| (w.face as usize) < g);
-            match (fa, fb) {
-                (None, None) => break,
-                (Some(x), Some(y)) if x.face == y.face => {
-                    if x.slot == y.slot { HIT.fetch_add(1 << 40, Relaxed); } else { MISS.fetch_add(1 << 40, Relaxed); }
-                    if x.slot != y.slot {
-                        reach = reach
-                            .max(x.reach(a, last_use, v))
-                            .max(y.reach(b, last_use, v));
-                    }
-                    ia += 1;
-                    ib += 1;
-                }
-                (Some(x), y) if y.is_none_or(|y| x.face < y.face) => {
-                    MISS.fetch_add(1 << 40, Relaxed);
-                    reach = reach.max(x.reach(a, last_use, v));
-                    ia += 1;
-                }
-                (_, Some(y)) => {
-                    MISS.fetch_add(1 << 40, Relaxed);
-                    reach = reach.max(y.reach(b, last_use, v));
-                    ib += 1;
-                }
-                (Some(_), None) => unreachable!("handled by the arm above"),
-            }
-        }
-        if g >= nf {
-            if std::env::var_os("SIMPAR_DEBUG").is_some() {
-                eprintln!("no convergence (nf {nf}) reach {reach}");
-            }
-            return None;
-        }
-        if reach <= g as u64 {
-            if std::env::var_os("SIMPAR_DEBUG").is_some() {
-                eprintln!("converged at checkpoint {k} of {} (g {g}, m {m}, nf {nf})", b.marks.len());
-            }
-            let mark = &b.marks[k];
-            a.counts.add(&b.counts.minus(&mark.counts));
-            return Some(mark.wins);
-        }
-        let end = (g + CHECKPOINT).min(nf);
-        sweep_range(v, 0, a, g, end, &mut role, progress);
-        g = end;
-        k += 1;
-    }
+    touched: u32,
 }
 
 /// One component being simplified.
 pub(crate) struct Simplifier<'o> {
     pub(super) tri: Triangulation,
-    /// Per vertex: position.
+    /// Per vertex: position and the pass that froze it, side by side, so that the
+    /// freezing test of a visit and the position loads that follow it (and the guard's
+    /// position loads and the freeze after it) share cache lines.
     pub(super) vert: Vec<Vertex>,
-    /// Per vertex, the pass that froze it: stamp 0 for the exact sweep (and the
-    /// sequential passes), stamp 1 for the speculative one. Atomic only so that the two
-    /// deciding threads can each write their own while both read the rest; relaxed
-    /// loads and stores are plain moves. Dense (4 bytes a vertex), since most visits of
-    /// a pass read only these.
-    touched: [Vec<AtomicU32>; 2],
-    pub(super) quadric: Vec<Quadric>,
+    quadric: Vec<Quadric>,
     /// Vertex ids from here on are virtual (cone apexes); they stay last through
     /// compaction since they are never removed.
     pub(super) first_virtual: u32,
     loops: usize,
     pub(super) opts: &'o Options,
-    pub(super) eps2: f64,
-    pub(super) pass: u32,
-    /// Threads a naive pass may decide on (1 or 2).
-    workers: usize,
-    /// Scratch marks of the nested mode (compared with `stamp`).
+    eps2: f64,
+    pass: u32,
+    /// Scratch marks (compared with `stamp`).
     pub(super) vmark: Vec<u32>,
     pub(super) fmark: Vec<u32>,
     stamp: u32,
     scratch: Vec<Corner>,
-    /// The decisions of a pass's exact sweep (its walk also serves the sequential
-    /// passes) and of its speculative sweep.
-    sweep_a: Sweep,
-    sweep_b: Sweep,
+    pub(super) link: Vec<VertexId>,
+    /// A corner at q, then at p, in every face around them (filled by `examine`).
+    star_pq: Vec<Corner>,
+    /// The neighbours of q and of p, in the order of their corners in `star_pq`
+    /// (filled by `examine`).
+    nbr_q: Vec<VertexId>,
+    nbr_p: Vec<VertexId>,
     /// The common neighbours of the edge other than its opposite vertices, in order
-    /// along the link of `p` from `a` to `b` (moved here from the walk by `plan`).
+    /// along the link of `p` from `a` to `b`.
     pub(super) xs: Vec<VertexId>,
     pub(super) grow: [Grow; 2],
     interior: Vec<VertexId>,
@@ -844,36 +124,37 @@ impl<'o> Simplifier<'o> {
         let first_virtual = component.real_vertex_count() as u32;
         let nv = component.tri.vertex_capacity();
         let mut vert = Vec::with_capacity(nv);
-        vert.extend(
-            component
-                .vertex_origin
-                .iter()
-                .map(|&m| Vertex::new(positions[m as usize])),
-        );
+        vert.extend(component.vertex_origin.iter().map(|&m| Vertex {
+            pos: positions[m as usize],
+            touched: 0,
+        }));
         let tri = component.tri;
         let nf = tri.face_capacity();
-        vert.resize_with(nv, || Vertex::new([0.0; 3]));
+        vert.resize(
+            nv,
+            Vertex {
+                pos: [0.0; 3],
+                touched: 0,
+            },
+        );
         let surface = spec::ENABLED.then(|| SurfaceType::of(&tri));
         let mut s = Simplifier {
             tri,
             vert,
-            touched: [
-                (0..nv).map(|_| AtomicU32::new(0)).collect(),
-                (0..nv).map(|_| AtomicU32::new(0)).collect(),
-            ],
             quadric: Vec::new(),
             first_virtual,
             loops,
             opts,
             eps2: opts.eps * opts.eps,
             pass: 0,
-            workers: opts.workers(),
             vmark: vec![0; nv],
             fmark: vec![0; nf],
             stamp: 0,
             scratch: Vec::new(),
-            sweep_a: Sweep::default(),
-            sweep_b: Sweep::default(),
+            link: Vec::new(),
+            star_pq: Vec::new(),
+            nbr_q: Vec::new(),
+            nbr_p: Vec::new(),
             xs: Vec::new(),
             grow: [Grow::default(), Grow::default()],
             interior: Vec::new(),
@@ -965,16 +246,7 @@ impl<'o> Simplifier<'o> {
         observer: &mut dyn FnMut(Progress),
     ) -> Run {
         loop {
-            // Two threads decide a naive pass when allowed and the pass is large
-            // enough; otherwise the sequential pass (the same decisions either way).
-            let contracted = if self.nested_phase
-                || self.workers < 2
-                || self.tri.face_capacity() < PARALLEL_MIN
-            {
-                self.pass(observer)
-            } else {
-                self.pass_decided(observer)
-            };
+            let contracted = self.pass(observer);
             self.run.passes += 1;
             self.run.edges_contracted += contracted;
             // Compact once a third of the slots are dead: the scan of the next passes
@@ -1005,92 +277,7 @@ impl<'o> Simplifier<'o> {
         self.tri.face_count() - cone
     }
 
-    /// One naive pass, decided on the pass-start state (on two threads when allowed
-    /// and the pass is large enough), then applied in the sequential order: the same
-    /// contractions, the same counts and the same state as deciding and applying face
-    /// by face (see the module documentation). Returns the number of contractions.
-    fn pass_decided(&mut self, observer: &mut dyn FnMut(Progress)) -> usize {
-        self.pass += 1;
-        let nf = self.tri.face_capacity();
-        let slots = nf as u64;
-        let two = self.workers >= 2 && nf >= PARALLEL_MIN;
-        let m = if two { nf / 2 } else { nf };
-        observer(Progress::new(SCANNED, 0, slots));
-        let mut throttle = Throttle::new();
-        let mut progress = |fi: usize| {
-            if throttle.due(fi as u64) {
-                observer(Progress::new(SCANNED, fi as u64, slots));
-            }
-        };
-        self.sweep_a.reset();
-        self.sweep_b.reset();
-        let v = view!(self);
-        let (a, b) = (&mut self.sweep_a, &mut self.sweep_b);
-        let t0 = std::time::Instant::now();
-        let adopt = if two {
-            std::thread::scope(|scope| {
-                let spec = scope.spawn(|| speculate(&v, b, m, nf));
-                sweep_range(&v, 0, a, 0, m, &mut Role::Exact, &mut progress);
-                if let Err(panic) = spec.join() {
-                    std::panic::resume_unwind(panic);
-                }
-            });
-            TA.fetch_add(t0.elapsed().as_micros() as usize, Relaxed);
-            let t1 = std::time::Instant::now();
-            let r = repair(&v, a, b, m, nf, &mut progress);
-            TR.fetch_add(t1.elapsed().as_micros() as usize, Relaxed);
-            r
-        } else {
-            sweep_range(&v, 0, a, 0, nf, &mut Role::Exact, &mut progress);
-            TA.fetch_add(t0.elapsed().as_micros() as usize, Relaxed);
-            None
-        };
-        let t2 = std::time::Instant::now();
-        observer(Progress::new(SCANNED, slots, slots));
-        let a = std::mem::take(&mut self.sweep_a);
-        let b = std::mem::take(&mut self.sweep_b);
-        self.run.skipped.add(&a.counts);
-        for w in &a.wins {
-            self.apply_win(w, &a);
-        }
-        let mut contracted = a.wins.len();
-        if let Some(from) = adopt {
-            for w in &b.wins[from..] {
-                self.apply_win(w, &b);
-            }
-            contracted += b.wins.len() - from;
-        }
-        self.sweep_a = a;
-        self.sweep_b = b;
-        TP.fetch_add(t2.elapsed().as_micros() as usize, Relaxed);
-        contracted
-    }
-
-    /// Contracts a decided edge (the vertices were frozen while deciding) with the star
-    /// its sweep walked, keeping the smaller id, and moves the kept vertex.
-    fn apply_win(&mut self, w: &Win, sw: &Sweep) {
-        let (keep, gone) = if w.p < w.q { (w.p, w.q) } else { (w.q, w.p) };
-        let (c0, v0) = (w.at_c as usize, w.at_v as usize);
-        let (dq, dp) = (w.dq as usize, w.dp as usize);
-        let (star, link) = if gone == w.q {
-            (&sw.corners[c0..c0 + dq], &sw.verts[v0..v0 + dq])
-        } else {
-            (
-                &sw.corners[c0 + dq..c0 + dq + dp],
-                &sw.verts[v0 + dq..v0 + dq + dp],
-            )
-        };
-        self.tri
-            .collapse_walked(keep, gone, star, link, &mut self.scratch);
-        self.vert[keep.index()].pos = w.position;
-        if !self.quadric.is_empty() {
-            let g = self.quadric[gone.index()];
-            self.quadric[keep.index()].add(&g);
-        }
-    }
-
-    /// One pass, deciding and applying face by face (the nested passes); returns the
-    /// number of contractions.
+    /// One pass; returns the number of contractions.
     fn pass(&mut self, observer: &mut dyn FnMut(Progress)) -> usize {
         self.pass += 1;
         let mut contracted = 0;
@@ -1099,9 +286,8 @@ impl<'o> Simplifier<'o> {
         observer(Progress::new(SCANNED, 0, slots));
         let mut throttle = Throttle::new();
         let mut from = 0;
-        let mut dead = BinaryHeap::new();
         loop {
-            let (fi, frozen) = next_candidate(&view!(self), 0, from, nf, &mut dead, &mut []);
+            let (fi, frozen) = self.next_candidate(from);
             self.run.skipped.frozen += frozen;
             if fi >= nf {
                 break;
@@ -1139,8 +325,8 @@ impl<'o> Simplifier<'o> {
                 }
                 let c = f.corner(s);
                 let [p, q] = self.tri.edge_endpoints(c);
-                if self.touched[0][p.index()].load(Relaxed) == self.pass
-                    || self.touched[0][q.index()].load(Relaxed) == self.pass
+                if self.vert[p.index()].touched == self.pass
+                    || self.vert[q.index()].touched == self.pass
                 {
                     self.run.skipped.frozen += 1;
                     continue;
@@ -1159,10 +345,122 @@ impl<'o> Simplifier<'o> {
         contracted
     }
 
+    /// The first face slot from `from` on whose visit gets as far as reading positions,
+    /// and the number of visits before it deferred as frozen; `face_capacity()` if
+    /// none. Skipped: removed faces, cone faces (a virtual vertex) and faces with two
+    /// or more vertices frozen in this pass (every edge has a frozen endpoint; most
+    /// visits of a pass end here, so they are skipped in a loop that changes nothing).
+    fn next_candidate(&self, from: usize) -> (usize, usize) {
+        let pass = self.pass;
+        let first_virtual = self.first_virtual;
+        let frozen = |v: u32| u32::from(self.vert[v as usize].touched == pass);
+        let mut deferred = 0;
+        let slots = self.tri.corner_vertex.get(3 * from..).unwrap_or(&[]);
+        for (k, face) in slots.chunks_exact(3).enumerate() {
+            let (a, b, c) = (face[0], face[1], face[2]);
+            // A removed face has NONE (above every vertex id) in its slots.
+            if a >= first_virtual || b >= first_virtual || c >= first_virtual {
+                continue;
+            }
+            if frozen(a) + frozen(b) + frozen(c) >= 2 {
+                deferred += 1;
+                continue;
+            }
+            return (from + k, deferred);
+        }
+        (self.tri.face_capacity(), deferred)
+    }
+
+    /// The edge opposite `c`: its endpoints and opposite vertices, and its other common
+    /// neighbours in `self.xs`. Refuses an edge joining two boundary loops.
+    pub(super) fn examine(&mut self, c: Corner) -> Result<EdgeInfo, Skip> {
+        let [p, q] = self.tri.edge_endpoints(c);
+        let a = self.tri.vertex(c);
+        let b = self.tri.vertex(self.tri.opposite(c));
+        let s = self.fresh_stamp();
+        // One walk around each endpoint: q's neighbours listed (and marked, for a high
+        // degree), p's checked against them; the corners kept for the guard and the
+        // freeze, which then need no walk of their own. A short list scanned linearly
+        // beats the marks, which miss the cache.
+        let big = self.tri.degree(q) > SMALL_LINK;
+        let mut loop_q = None;
+        self.star_pq.clear();
+        self.nbr_q.clear();
+        for st in self.tri.star(q) {
+            let n = st.neighbour;
+            if big {
+                self.vmark[n.index()] = s;
+            }
+            if n.0 >= self.first_virtual {
+                loop_q = Some(n);
+            }
+            self.nbr_q.push(n);
+            self.star_pq.push(st.corner);
+        }
+        let mut loop_p = None;
+        let mut extra = false;
+        self.nbr_p.clear();
+        for st in self.tri.star(p) {
+            let n = st.neighbour;
+            self.nbr_p.push(n);
+            if n.0 >= self.first_virtual {
+                loop_p = Some(n);
+            }
+            if n != a && n != b && n != q && self.in_link_q(n, big, s) {
+                extra = true;
+            }
+            self.star_pq.push(st.corner);
+        }
+        if let (Some(x), Some(y)) = (loop_p, loop_q) {
+            if x != y {
+                return Err(Skip::LinkCondition);
+            }
+        }
+        self.xs.clear();
+        if extra {
+            // Only now the order: the link of p from the neighbour after q round to the
+            // one before it, oriented to run from a to b.
+            self.link.clear();
+            self.link.extend(self.tri.link(p));
+            let at_q = self.link.iter().position(|&n| n == q).unwrap_or(0);
+            self.link.rotate_left(at_q + 1);
+            self.link.pop();
+            if self.link.first() != Some(&a) {
+                self.link.reverse();
+            }
+            debug_assert_eq!(self.link.first(), Some(&a));
+            debug_assert_eq!(self.link.last(), Some(&b));
+            let inner = &self.link[1..self.link.len() - 1];
+            let xs: Vec<VertexId> = inner
+                .iter()
+                .copied()
+                .filter(|&n| self.in_link_q(n, big, s))
+                .collect();
+            self.xs = xs;
+        }
+        Ok(EdgeInfo {
+            corner: c,
+            p,
+            q,
+            a,
+            b,
+            boundary: [loop_p.is_some(), loop_q.is_some()],
+        })
+    }
+
+    /// Whether `n` is a neighbour of q, for `examine` (marks when q's degree is big).
+    #[inline]
+    fn in_link_q(&self, n: VertexId, big: bool, stamp: u32) -> bool {
+        if big {
+            self.vmark[n.index()] == stamp
+        } else {
+            self.nbr_q.contains(&n)
+        }
+    }
+
     /// Decides what to do with the edge opposite `c`, changing nothing but scratch.
     pub(super) fn plan(&mut self, c: Corner) -> Result<(EdgeInfo, Plan), Skip> {
-        let info = self.sweep_a.walk.examine(&view!(self), c)?;
-        std::mem::swap(&mut self.xs, &mut self.sweep_a.walk.xs);
+        let info = self.examine(c)?;
         let (discs, removed) = match (self.opts.mode, self.nested_phase) {
             (Mode::Naive, _) | (Mode::Nested, false) => {
                 naive::plan(self, &info)?;
@@ -1194,15 +492,8 @@ impl<'o> Simplifier<'o> {
         if degree_after(info.p, self) == 3 && degree_after(info.q, self) == 3 {
             return Err(Skip::LinkCondition);
         }
-        let position = view!(self).position(&info);
-        if self.opts.guard
-            && !self.sweep_a.walk.guard(
-                &view!(self),
-                &info,
-                position,
-                removed.map(|s| (&self.fmark[..], s)),
-            )
-        {
+        let position = self.position(&info);
+        if self.opts.guard && !self.guard(&info, position, removed) {
             return Err(Skip::Foldover);
         }
         Ok((info, Plan { discs, position }))
@@ -1224,6 +515,51 @@ impl<'o> Simplifier<'o> {
         Some(s)
     }
 
+    /// Where the merged vertex goes (see [`Position`]).
+    fn position(&self, e: &EdgeInfo) -> Point {
+        let (pp, pq) = (self.vert[e.p.index()].pos, self.vert[e.q.index()].pos);
+        match self.opts.position {
+            Position::Midpoint => match e.boundary {
+                [true, false] => pp,
+                [false, true] => pq,
+                _ => midpoint(pp, pq),
+            },
+            Position::Quadric => {
+                let mut q = self.quadric[e.p.index()];
+                q.add(&self.quadric[e.q.index()]);
+                q.best_position(pp, pq)
+            }
+        }
+    }
+
+    /// The fold-over guard: every real face at `p` or `q` that survives (not in a
+    /// planned disc, not a face of `[p, q]`) must stay non-degenerate and turn by less
+    /// than 90° when `p` and `q` move to `to`.
+    fn guard(&self, e: &EdgeInfo, to: Point, removed: Option<u32>) -> bool {
+        let pos = |v: VertexId| self.vert[v.index()].pos;
+        // `star_pq` holds a corner at q or p in every face around them (from `examine`).
+        for &c in &self.star_pq {
+            let f = c.face();
+            if removed.is_some_and(|s| self.fmark[f.index()] == s) {
+                continue;
+            }
+            let (v0, v1, v2) = (
+                self.tri.vertex(c),
+                self.tri.vertex(c.next()),
+                self.tri.vertex(c.prev()),
+            );
+            // v0 is p or q; skip the faces of [p, q] and cone faces.
+            let other = if v0 == e.p { e.q } else { e.p };
+            if v1 == other || v2 == other || self.is_virtual(v1) || self.is_virtual(v2) {
+                continue;
+            }
+            if !fan_move_ok(pos(v0), to, pos(v1), pos(v2)) {
+                return false;
+            }
+        }
+        true
+    }
+
     /// Carries out a plan: replaces the discs, contracts the edge keeping the smaller
     /// id, moves the kept vertex and freezes its neighbours for the rest of the pass.
     fn apply(&mut self, e: &EdgeInfo, plan: &Plan) {
@@ -1232,10 +568,11 @@ impl<'o> Simplifier<'o> {
         // links `examine` listed (every vertex of a face around p or q) freezes them
         // without walking the new star.
         let pass = self.pass;
-        let walk = &self.sweep_a.walk;
-        for &w in walk.nbr_q.iter().chain(&walk.nbr_p).chain(&[e.p, e.q]) {
-            self.touched[0][w.index()].store(pass, Relaxed);
+        for &w in self.nbr_q.iter().chain(&self.nbr_p) {
+            self.vert[w.index()].touched = pass;
         }
+        self.vert[e.p.index()].touched = pass;
+        self.vert[e.q.index()].touched = pass;
         for (side, claim) in plan.discs.iter().enumerate() {
             let Some(cl) = claim else { continue };
             let faces = std::mem::take(&mut self.grow[side].queue);
@@ -1262,12 +599,11 @@ impl<'o> Simplifier<'o> {
         let (keep, gone) = if e.p < e.q { (e.p, e.q) } else { (e.q, e.p) };
         if plan.discs.iter().all(Option::is_none) {
             // The stars `examine` walked are still current: no walk needed.
-            let walk = &self.sweep_a.walk;
-            let dq = walk.nbr_q.len();
+            let dq = self.nbr_q.len();
             let (star, link) = if gone == e.q {
-                (&walk.star_pq[..dq], &walk.nbr_q[..])
+                (&self.star_pq[..dq], &self.nbr_q[..])
             } else {
-                (&walk.star_pq[dq..], &walk.nbr_p[..])
+                (&self.star_pq[dq..], &self.nbr_p[..])
             };
             self.tri
                 .collapse_walked(keep, gone, star, link, &mut self.scratch);
@@ -1297,10 +633,6 @@ impl<'o> Simplifier<'o> {
         }
         self.vert.truncate(k);
         self.vert.shrink_to_fit();
-        // Stamps of earlier passes never match a later pass: cut, not carried along.
-        for t in &mut self.touched {
-            t.truncate(k);
-        }
         if !self.quadric.is_empty() {
             self.quadric.truncate(k);
             self.quadric.shrink_to_fit();
