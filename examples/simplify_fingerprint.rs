@@ -12,8 +12,7 @@
 //! of each (every vertex moved by up to 0.3 of the mean edge length, from a fixed
 //! splitmix64 stream) in the nested mode, where disc removal happens; and a few meshes
 //! with the other options (quadric positions, path and Euclidean sides, no guard).
-//! `--quick` skips the shared meshes above 50,000 faces; `--threads N` sets
-//! `Options::threads` for every run (the output must not depend on it).
+//! `--quick` skips the shared meshes above 50,000 faces.
 //!
 //! Each line: the run's label, output vertices and faces, edges contracted, discs and
 //! vertices removed inside them, passes, the remaining short edges by reason, the
@@ -23,10 +22,6 @@
 //! any decision.
 
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// `--threads N` (0: the default).
-static THREADS: AtomicUsize = AtomicUsize::new(0);
 
 use contractible::gen::{isosurface, large_hyperboloid, large_torus, Tessellation};
 use contractible::simplify::{bbox_diagonal, simplify, Mode, Options, Position, Side};
@@ -70,10 +65,6 @@ fn mode_line(name: &str, mesh: &TriMesh, mode: Mode, rel: f64, diag: f64) -> Str
 }
 
 fn line(label: &str, mesh: &TriMesh, opts: &Options) -> String {
-    let opts = &Options {
-        threads: THREADS.load(Ordering::Relaxed),
-        ..*opts
-    };
     let out = match simplify(mesh, opts) {
         Ok(out) => out,
         Err(e) => return format!("{label} error {e}"),
@@ -176,13 +167,6 @@ fn main() {
         .position(|a| a == "--check")
         .and_then(|i| args.get(i + 1))
         .cloned();
-    if let Some(n) = args
-        .iter()
-        .position(|a| a == "--threads")
-        .and_then(|i| args.get(i + 1))
-    {
-        THREADS.store(n.parse().expect("--threads N"), Ordering::Relaxed);
-    }
     let mut lines = Vec::new();
     let mut emit = |l: String| {
         if check.is_none() {

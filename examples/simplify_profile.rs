@@ -50,14 +50,8 @@ fn main() {
     let built = ConedSurfaces::from_mesh(&mesh).expect("a surface");
     let t_build = t.elapsed().as_secs_f64();
     drop(built);
-    // `THREADS=n`: `Options::threads` (default 0: the available parallelism).
-    let threads = std::env::var("THREADS")
-        .ok()
-        .and_then(|x| x.parse().ok())
-        .unwrap_or(0);
     let opts = Options {
         mode,
-        threads,
         ..Options::new(eps)
     };
     let t = Instant::now();

@@ -923,7 +923,6 @@ fn simplify_py<'py>(
             side: side_v,
             position: position_v,
             guard,
-            threads: 0,
         };
         (simplify::simplify(&mesh, &options), abs)
     });

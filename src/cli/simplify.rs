@@ -292,7 +292,6 @@ pub fn compute(a: &SimplifyArgs, ui: Ui) -> Result<SimplifyReport, CliError> {
         side: a.side.into(),
         position: a.position.into(),
         guard: !a.allow_foldover,
-        threads: 0,
     };
     // The faces are in `surfaces` now; only the positions are still needed.
     let TriMesh {

@@ -30,9 +30,7 @@
 //! contracts every edge the naive mode contracts, and more, on every input.
 //!
 //! **Determinism.** The output depends only on the input mesh (its face and vertex
-//! order) and the options other than [`Options::threads`]: no randomness, no hashing;
-//! the naive passes may decide on two threads, with the decisions of the sequential
-//! sweep (module `pass`), so the output is the same for any thread count.
+//! order) and the options: no randomness, no hashing, no threads.
 //!
 //! **Complexity.** Per pass O(F) plus, per processed edge, O(d_p + d_q) for the link
 //! walk and contraction and, in the nested mode, O(size of the regions grown) (two
@@ -107,10 +105,6 @@ pub struct Options {
     /// Refuse a contraction that would turn a remaining triangle's normal by 90° or more
     /// or leave it with zero area (on by default; topology is guaranteed either way).
     pub guard: bool,
-    /// Threads a naive pass may use to decide its contractions: 0 (default) for the
-    /// machine's available parallelism; at most 2 are used. The output never depends on
-    /// it (the decisions are those of the sequential sweep; see `pass`).
-    pub threads: usize,
 }
 
 impl Options {
@@ -122,19 +116,7 @@ impl Options {
             side: Side::default(),
             position: Position::default(),
             guard: true,
-            threads: 0,
         }
-    }
-
-    /// The threads a pass decides on: `threads`, or the available parallelism for 0,
-    /// capped at 2.
-    pub(crate) fn workers(&self) -> usize {
-        let n = if self.threads == 0 {
-            std::thread::available_parallelism().map_or(1, |n| n.get())
-        } else {
-            self.threads
-        };
-        n.clamp(1, 2)
     }
 }
 

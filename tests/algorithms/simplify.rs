@@ -389,7 +389,6 @@ fn all_options(eps: f64) -> Vec<Options> {
                         side,
                         position,
                         guard,
-                        threads: 0,
                     });
                 }
             }
@@ -991,61 +990,4 @@ fn the_topology_checker_rejects_non_surfaces_and_tells_surfaces_apart() {
     two_t4.extend(t4.iter().map(|f| f.map(|v| if v == 0 { 0 } else { v + 3 })));
     assert!(surface_topology(&two_t4).is_err());
     assert!(surface_topology(&[[0, 1, 2], [0, 3, 4]]).is_err());
-}
-
-/// The helper thread of the naive passes (`Options::threads`) changes nothing: the same
-/// faces, the same position bits and the same statistics (every skip count included)
-/// with 1 and with 2 threads, on inputs large enough for it to run (the paper's
-/// marching-tetrahedra torus and open hyperboloid, a perturbed torus), in both modes,
-/// with quadric positions (whose sums it defers) and without the guard.
-#[test]
-fn thread_count_changes_nothing() {
-    let torus = isosurface(&gen::paper_torus(Tessellation::BodyCentred)).expect("torus");
-    let inputs = [
-        ("torus", perturbed(&torus, 7)),
-        ("torus", torus),
-        (
-            "hyperboloid",
-            isosurface(&gen::paper_hyperboloid(Tessellation::SixTetrahedra)).expect("hyperboloid"),
-        ),
-    ];
-    for (label, mesh) in &inputs {
-        assert!(mesh.faces.len() > 30_000, "large enough for the helper");
-        let diag = diagonal(mesh);
-        for rel in [0.01, 0.03] {
-            for (mode, position, guard) in [
-                (Mode::Nested, Position::Midpoint, true),
-                (Mode::Naive, Position::Quadric, true),
-                (Mode::Nested, Position::Midpoint, false),
-            ] {
-                let run = |threads| {
-                    let opts = Options {
-                        mode,
-                        position,
-                        guard,
-                        threads,
-                        ..Options::new(rel * diag)
-                    };
-                    let mut out =
-                        contractible::simplify::simplify(mesh, &opts).expect("simplified");
-                    out.stats.seconds = 0.0;
-                    out
-                };
-                let (one, two) = (run(1), run(2));
-                let what = format!("{label} {rel} {mode:?} {position:?} guard {guard}");
-                assert_eq!(one.mesh.faces, two.mesh.faces, "{what}");
-                let bits = |m: &TriMesh| -> Vec<[u64; 3]> {
-                    m.positions
-                        .as_deref()
-                        .unwrap_or(&[])
-                        .iter()
-                        .map(|p| p.map(f64::to_bits))
-                        .collect()
-                };
-                assert_eq!(bits(&one.mesh), bits(&two.mesh), "{what}");
-                assert_eq!(one.stats, two.stats, "{what}");
-                assert!(one.stats.edges_contracted > 0, "{what}");
-            }
-        }
-    }
 }
