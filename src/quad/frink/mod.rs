@@ -102,10 +102,12 @@ mod graph;
 mod hdt;
 mod lct;
 mod spec;
+mod two_edge;
 
 pub use cover::{CoverCounters, CoverTree};
 pub use ds::{DiksStanczyk, DsCounters};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};
+pub use two_edge::{TwoEdge, TwoEdgeCounters};
 
 use super::Pairing;
 use crate::core::{FaceId, Triangulation};
