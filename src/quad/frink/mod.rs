@@ -94,6 +94,7 @@
 //! occurs too; [`DiksStanczyk`] follows BBDL, with a rule of its own for digons next to
 //! the forbidden edge). Recorded in `spec/ERRATA.md` (T9–T13).
 
+mod bbdl;
 mod cover;
 mod cycle;
 mod ds;
@@ -104,6 +105,7 @@ mod lct;
 mod spec;
 mod two_edge;
 
+pub use bbdl::{BbdlCounters, BiedlBoseDemaineLubiw};
 pub use cover::{CoverCounters, CoverTree};
 pub use ds::{DiksStanczyk, DsCounters};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};

@@ -90,6 +90,8 @@ pub struct TwoEdgeCounters {
 #[derive(Clone, Debug)]
 pub struct TwoEdge {
     n: usize,
+    /// Live edges.
+    live: usize,
     kind: Vec<Kind>,
     ends: Vec<[u32; 2]>,
     /// Per edge, its index in the incidence lists of its two ends (non-loops only).
@@ -124,6 +126,7 @@ impl TwoEdge {
         vals.extend(std::iter::repeat_n(0, n.saturating_sub(1)));
         TwoEdge {
             n,
+            live: 0,
             kind: Vec::new(),
             ends: Vec::new(),
             pos: Vec::new(),
@@ -154,6 +157,16 @@ impl TwoEdge {
     /// Whether edge id `e` is live.
     pub fn contains(&self, e: u32) -> bool {
         self.kind.get(e as usize).is_some_and(|&k| k != Kind::Absent)
+    }
+
+    /// The ends of live edge `e`, `None` if `e` is not live.
+    pub fn ends(&self, e: u32) -> Option<[u32; 2]> {
+        self.contains(e).then(|| self.ends[e as usize])
+    }
+
+    /// Number of live edges.
+    pub fn edge_count(&self) -> usize {
+        self.live
     }
 
     /// Whether live edge `e` is an edge of the spanning forest.
@@ -188,6 +201,7 @@ impl TwoEdge {
         }
         assert_eq!(self.kind[i], Kind::Absent, "TwoEdge::insert: edge {e} is live");
         self.counters.inserts += 1;
+        self.live += 1;
         self.ends[i] = [a, b];
         if a == b {
             self.kind[i] = Kind::Loop;
@@ -216,6 +230,7 @@ impl TwoEdge {
         let kind = self.kind.get(i).copied().unwrap_or(Kind::Absent);
         assert_ne!(kind, Kind::Absent, "TwoEdge::delete: edge {e} is not live");
         self.counters.deletes += 1;
+        self.live -= 1;
         let [a, b] = self.ends[i];
         match kind {
             Kind::Absent => {}
@@ -394,6 +409,10 @@ impl TwoEdge {
     pub fn check(&mut self) -> Result<(), String> {
         let n = self.n;
         let mut listed = 0usize;
+        let live = self.kind.iter().filter(|&&k| k != Kind::Absent).count();
+        if live != self.live {
+            return Err(format!("{live} live edges, {} counted", self.live));
+        }
         for (i, &kind) in self.kind.iter().enumerate() {
             let [a, b] = self.ends[i];
             match kind {
