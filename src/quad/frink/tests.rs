@@ -958,7 +958,11 @@ fn run_bbdl(g: &Cubic, label: &str) -> (Checked<BiedlBoseDemaineLubiw>, Stats, B
     let c = s.inner.counters();
     assert_eq!((c.restarts, sol.stats.case_iv), (0, 0), "{label}");
     assert!(sol.stats.cases[1] as u64 <= c.digon_steps, "{label}");
-    assert_eq!(c.took_h1 + c.took_h2, sol.stats.reductions as u64, "{label}");
+    assert_eq!(
+        c.took_h1 + c.took_h2,
+        sol.stats.reductions as u64,
+        "{label}"
+    );
     (s, sol.stats, c)
 }
 
@@ -1031,15 +1035,24 @@ fn bbdl_decides_every_reduction_of_small_and_random_graphs() {
             s.start(&h);
             let chosen = s.choose(&mut h, &cand).expect("a decision");
             let k = usize::from(chosen == Reconnection::H2);
-            assert!(ok[k], "graph {i}: {cand:?}: {chosen:?} has a bridge ({ok:?})");
+            assert!(
+                ok[k],
+                "graph {i}: {cand:?}: {chosen:?} has a bridge ({ok:?})"
+            );
             // Ties take H1; a forced step the valid one.
             assert_eq!(chosen == Reconnection::H1, ok[0], "graph {i}: {cand:?}");
             decided += 1;
             single += usize::from(ok[0] != ok[1]);
         }
     }
-    eprintln!("bbdl decision: {decided} reductions of {} graphs, {single} with one valid reconnection", graphs.len());
-    assert!(decided > 3000 && single > 300, "{decided} decisions, {single} forced");
+    eprintln!(
+        "bbdl decision: {decided} reductions of {} graphs, {single} with one valid reconnection",
+        graphs.len()
+    );
+    assert!(
+        decided > 3000 && single > 300,
+        "{decided} decisions, {single} forced"
+    );
 }
 
 /// F4 fails when the 2-edge structure does not hold the current graph (an edge missing,

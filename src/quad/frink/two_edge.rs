@@ -156,7 +156,9 @@ impl TwoEdge {
 
     /// Whether edge id `e` is live.
     pub fn contains(&self, e: u32) -> bool {
-        self.kind.get(e as usize).is_some_and(|&k| k != Kind::Absent)
+        self.kind
+            .get(e as usize)
+            .is_some_and(|&k| k != Kind::Absent)
     }
 
     /// The ends of live edge `e`, `None` if `e` is not live.
@@ -199,7 +201,11 @@ impl TwoEdge {
             self.pos.resize(i + 1, [NONE; 2]);
             self.lnode.resize(i + 1, NONE);
         }
-        assert_eq!(self.kind[i], Kind::Absent, "TwoEdge::insert: edge {e} is live");
+        assert_eq!(
+            self.kind[i],
+            Kind::Absent,
+            "TwoEdge::insert: edge {e} is live"
+        );
         self.counters.inserts += 1;
         self.live += 1;
         self.ends[i] = [a, b];
@@ -299,6 +305,14 @@ impl TwoEdge {
         let [a, b] = self.ends[i];
         let k = self.lnode[i];
         self.counters.cuts += 1;
+        if self.lct.path_min(k, k) == 0 {
+            // A bridge: nothing crosses the cut, no search needed.
+            self.lct.cut(a, k);
+            self.lct.cut(k, b);
+            self.free.push(k);
+            self.lnode[i] = NONE;
+            return;
+        }
         let side = self.smaller_side(a, b);
         // The non-tree edges leaving the smaller side: exactly those covering e.
         let mut crossing = std::mem::take(&mut self.crossing);
@@ -466,10 +480,14 @@ impl TwoEdge {
             let (rt, ra) = (find(&mut uf_tree, x), find(&mut uf_all, x));
             let rt_all = find(&mut uf_all, rt);
             if rt_all != ra {
-                return Err(format!("node {x}: forest component differs from the graph's"));
+                return Err(format!(
+                    "node {x}: forest component differs from the graph's"
+                ));
             }
         }
-        let comps_tree = (0..n as u32).filter(|&x| find(&mut uf_tree, x) == x).count();
+        let comps_tree = (0..n as u32)
+            .filter(|&x| find(&mut uf_tree, x) == x)
+            .count();
         let comps_all = (0..n as u32).filter(|&x| find(&mut uf_all, x) == x).count();
         if comps_tree != comps_all {
             return Err(format!(
@@ -497,7 +515,9 @@ impl TwoEdge {
             if r == x {
                 roots.push(x);
             } else if !self.lct.connected(x, r) {
-                return Err(format!("node {x} not linked to its tree in the link-cut tree"));
+                return Err(format!(
+                    "node {x} not linked to its tree in the link-cut tree"
+                ));
             }
             if self.lct.path_min(x, x) < VERTEX {
                 return Err(format!("node {x}'s value fell below the vertex constant"));
@@ -505,7 +525,10 @@ impl TwoEdge {
         }
         for w in roots.windows(2) {
             if self.lct.connected(w[0], w[1]) {
-                return Err(format!("trees of {} and {} joined in the link-cut tree", w[0], w[1]));
+                return Err(format!(
+                    "trees of {} and {} joined in the link-cut tree",
+                    w[0], w[1]
+                ));
             }
         }
         for &k in &self.free {
@@ -555,13 +578,12 @@ impl TwoEdge {
                 p = parent[p as usize];
             }
         }
-        for i in 0..self.kind.len() {
+        for (i, &want) in count.iter().enumerate() {
             if self.kind[i] == Kind::Tree {
                 let c = self.cover(i as u32);
-                if c != count[i] {
+                if c != want {
                     return Err(format!(
-                        "tree edge {i}: cover count {c}, but {} non-tree edges cover it",
-                        count[i]
+                        "tree edge {i}: cover count {c}, but {want} non-tree edges cover it"
                     ));
                 }
             }
@@ -645,10 +667,10 @@ mod tests {
                 if e.is_none() {
                     continue;
                 }
-                for a in 0..n {
+                for (a, row) in two.iter_mut().enumerate() {
                     let r = self.reach(a as u32, i);
-                    for b in 0..n {
-                        two[a][b] &= r[b];
+                    for (t, reached) in row.iter_mut().zip(r) {
+                        *t &= reached;
                     }
                 }
             }
@@ -689,7 +711,11 @@ mod tests {
                     };
                     let a = rng.index(n) as u32;
                     // Loops now and then, parallel edges often (few nodes).
-                    let b = if rng.index(10) == 0 { a } else { rng.index(n) as u32 };
+                    let b = if rng.index(10) == 0 {
+                        a
+                    } else {
+                        rng.index(n) as u32
+                    };
                     t.insert(e, a, b);
                     o.edges[e as usize] = Some([a, b]);
                     live.push(e);
@@ -744,7 +770,10 @@ mod tests {
     fn check_catches_a_corrupted_cover_count() {
         // A 4-cycle 0-1-2-3 plus a chord 0-2: tree edges get covers 1 or 2.
         let mut t = TwoEdge::new(4);
-        for (e, [a, b]) in [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]].into_iter().enumerate() {
+        for (e, [a, b]) in [[0, 1], [1, 2], [2, 3], [3, 0], [0, 2]]
+            .into_iter()
+            .enumerate()
+        {
             t.insert(e as u32, a, b);
         }
         assert_eq!(t.check(), Ok(()));
