@@ -19,7 +19,7 @@ const MAX_FACES: usize = 6_000;
 
 /// Largest component of a shared mesh the BBDL test runs (its 2-edge structure's
 /// tree-edge deletions are not polylogarithmic; this keeps the test short).
-const BBDL_MAX_FACES: usize = 10_000;
+const BBDL_MAX_FACES: usize = 15_000;
 
 /// Checks `p` independently: the harness's check of a conversion whose pairing is `p`
 /// (the `algorithm` field is not read by it; the statistics are those of a perfect

@@ -44,8 +44,9 @@
 //! - deletion of a tree edge: O(s + k log n) amortised, where `s` is the sum of the
 //!   degrees on the smaller side of the cut (at most about `m`) and `k` the number of
 //!   non-tree edges covering the deleted edge. So O(m + n log n) in the worst case per
-//!   deletion (not polylogarithmic; HDT Sec. 3 would give O(log⁴ n) amortised). On the
-//!   dual graphs of the B family the smaller sides stay small (see docs/benchmarks.md).
+//!   deletion (not polylogarithmic; HDT Sec. 3 would give O(log⁴ n) amortised). Measured
+//!   under Frink's reduction on the B family in docs/benchmarks.md (superlinear: 3–10×
+//!   the time of the O(n log² n) Diks–Stańczyk strategy from 16k to 594k triangles).
 //!
 //! Memory: per vertex a 25-byte link–cut node plus its incidence list; per tree edge one
 //! more link–cut node (at most `n − 1`); per edge id 21 bytes.
