@@ -396,7 +396,7 @@ pub enum QuadAlgo {
     /// Frink's reduction, Diks–Stańczyk strategy (dynamic connectivity, O(F log² F)).
     Ds,
     /// Frink's reduction, Biedl–Bose–Demaine–Lubiw strategy (dynamic 2-edge-connectivity;
-    /// this crate's structure is O(F²) in the worst case).
+    /// this crate's structure is O(F² log F) in the worst case).
     Bbdl,
 }
 

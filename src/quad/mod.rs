@@ -52,7 +52,7 @@ pub enum Algorithm {
     /// Frink's reduction with the Biedl–Bose–Demaine–Lubiw strategy
     /// ([`frink::BiedlBoseDemaineLubiw`]: the travelling forbidden edge, the choice by
     /// fully dynamic 2-edge-connectivity queries; this crate's structure is not
-    /// polylogarithmic, O(F²) in the worst case, see [`frink::TwoEdge`]). Perfect
+    /// polylogarithmic, O(F² log F) in the worst case, see [`frink::TwoEdge`]). Perfect
     /// directly: no completion.
     Bbdl,
 }

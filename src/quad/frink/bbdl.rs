@@ -50,15 +50,15 @@
 //! O(log⁴ n) amortised per step as BBDL state. The structure here (module `two_edge`) is
 //! weaker: O(log n) amortised per query and per non-tree update, but O(s + k log n) per
 //! tree-edge deletion (`s`: degree sum of the smaller side of the cut, `k`: edges
-//! covering it), so O(n²) in the worst case in all; measured on the B family in
+//! covering it), so O(n² log n) in the worst case in all; measured on the B family in
 //! docs/benchmarks.md. Memory: the structure, O(n).
 //!
 //! # Determinism
 //! No randomness: the forest starts as the breadth-first tree rooted at the node that a
 //! breadth-first search from the smallest live node reaches last (tree edges inserted
 //! first, in BFS order, then the other edges in node order; rooted far from where the
-//! reductions start, the tree loses leaves first rather than its root, which cut the
-//! searched sides on B5 from 150M to 43M vertices); the
+//! reductions start, the tree loses leaves first rather than its root: the vertices
+//! searched on B6 fell from 124M to 53M); the
 //! first forbidden edge is the first slot of node 0; candidates are tried at the ends of
 //! `f` in edge-end order, edges in slot order; ties (both reconnections pass) take `H1`.
 

@@ -74,7 +74,7 @@
 //! O(n log² n) amortised in all, no case (iv). With [`BiedlBoseDemaineLubiw`]: per step
 //! O(log n) amortised per query and non-tree update of [`TwoEdge`], plus O(s + k log n)
 //! per forest-edge deletion (`s` the degree sum of the smaller side of the cut, `k` the
-//! edges covering it): O(n²) in the worst case, no case (iv); measured superlinear on
+//! edges covering it): O(n² log n) in the worst case, no case (iv); measured superlinear on
 //! the B family (docs/benchmarks.md). Memory: O(n): the graph
 //! (8 bytes per edge, `5n/2 − 2` edges ever created), one 72-byte record per reduction,
 //! the DFS and search scratch (about 30 bytes per node); [`CoverTree`] adds about 80
