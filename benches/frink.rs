@@ -1,6 +1,8 @@
 //! Frink's reduction (issue 11): `frink::solve` on the dual graph of the paper's bricks
 //! B9…B0 (16k to 4.2M triangles, genus 0; `gen::paper_family`, see `docs/benchmarks.md`)
-//! with the Diks–Stańczyk strategy (`ds`, O(F log² F)), the link–cut cover-count
+//! with the Diks–Stańczyk strategy (`ds`, O(F log² F)), the Biedl–Bose–Demaine–Lubiw
+//! strategy (`bbdl`, B9…B5 only: its 2-edge structure is not polylogarithmic), the
+//! link–cut cover-count
 //! strategy (`lct`), and with the naive DFS strategy (`naive`, O(F²)) on the small
 //! members only. The dual graph is built outside the timed
 //! region (and cloned outside it: `solve` consumes it).
@@ -9,7 +11,9 @@
 //! shared 2-core machine). `FRINK_BENCH_C=1` adds C9…C0 (genus 3,500) to `ds` and `lct`.
 
 use contractible::gen::paper_family;
-use contractible::quad::frink::{self, CoverTree, Cubic, DiksStanczyk, Naive};
+use contractible::quad::frink::{
+    self, BiedlBoseDemaineLubiw, CoverTree, Cubic, DiksStanczyk, Naive,
+};
 use contractible::Surfaces;
 use std::collections::HashMap;
 use std::sync::{Mutex, OnceLock};
@@ -27,6 +31,10 @@ fn lct_inputs() -> Vec<&'static str> {
 }
 
 const NAIVE_INPUTS: &[&str] = &["B9", "B8", "B7"];
+
+/// BBDL's 2-edge structure is not polylogarithmic (module `frink::two_edge`): the
+/// smaller members only.
+const BBDL_INPUTS: &[&str] = &["B9", "B8", "B7", "B6", "B5"];
 
 /// The dual graph of the biggest component of a family member, built once per process.
 fn dual(name: &str) -> Cubic {
@@ -56,6 +64,14 @@ fn ds(b: divan::Bencher, name: &str) {
     let g = dual(name);
     b.with_inputs(|| g.clone())
         .bench_local_values(|g| frink::solve(g, &mut DiksStanczyk::new()).expect("bridgeless"));
+}
+
+#[divan::bench(args = BBDL_INPUTS, sample_count = 3, sample_size = 1)]
+fn bbdl(b: divan::Bencher, name: &str) {
+    let g = dual(name);
+    b.with_inputs(|| g.clone()).bench_local_values(|g| {
+        frink::solve(g, &mut BiedlBoseDemaineLubiw::new()).expect("bridgeless")
+    });
 }
 
 #[divan::bench(args = lct_inputs(), sample_count = 3, sample_size = 1)]

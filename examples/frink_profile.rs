@@ -1,12 +1,13 @@
 //! Frink's reduction on paper family members (`B0`…`B9`, `C0`…`C7`; the biggest
 //! component): wall time of `frink::solve` on the dual graph with the Diks–Stańczyk
-//! strategy and the link–cut cover-count strategy (and, with `--naive`, the naive one),
+//! strategy, the Biedl–Bose–Demaine–Lubiw strategy (`bbdl`), the link–cut cover-count
+//! strategy (and, with `--naive`, the naive one),
 //! the run's counters and the strategy's (DS: how steps were decided, digon steps,
 //! replacement edges; lct: how many steps were tree-stable, rebuilds / naive steps).
 //!
 //! Wall and CPU time of the thread (which means more on a shared machine).
 //!
-//! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive] [--only ds|lct]`
+//! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive] [--only ds|bbdl|lct]`
 
 #[path = "common/cpu.rs"]
 mod cpu;
@@ -14,7 +15,7 @@ use cpu::cpu;
 use std::time::Instant;
 
 use contractible::gen::paper_family;
-use contractible::quad::frink::{self, CoverTree, DiksStanczyk, Naive};
+use contractible::quad::frink::{self, BiedlBoseDemaineLubiw, CoverTree, DiksStanczyk, Naive};
 use contractible::Surfaces;
 
 /// FNV-1a of the matching, to tell at a glance whether a change kept DS's output.
@@ -64,6 +65,18 @@ fn main() {
                 sol.stats,
                 ds.counters(),
                 fnv(&sol.mate)
+            );
+        }
+        if run("bbdl") {
+            let mut bbdl = BiedlBoseDemaineLubiw::new();
+            let (t, c0) = (Instant::now(), cpu());
+            let sol = frink::solve(g.clone(), &mut bbdl).expect("bridgeless");
+            let (secs, cpu_secs) = (t.elapsed().as_secs_f64(), cpu() - c0);
+            println!(
+                "{name}: F {f} bbdl {secs:.3} s (cpu {cpu_secs:.2} s), {:.1} ns cpu per F log2² F; {:?}; {:?}",
+                cpu_secs * 1e9 / (nlogn * (f as f64).log2()),
+                sol.stats,
+                bbdl.counters()
             );
         }
         if run("lct") {

@@ -70,6 +70,11 @@ fn run_json(tri: &Triangulation, alg: Algorithm, seed: u64, name: &str) -> Value
             tri.clone(),
             quad::frink::perfect_matching_with(tri, &mut quad::frink::DiksStanczyk::new()).0,
         ),
+        Algorithm::Bbdl => (
+            tri.clone(),
+            quad::frink::perfect_matching_with(tri, &mut quad::frink::BiedlBoseDemaineLubiw::new())
+                .0,
+        ),
     };
     let mut full = initial.clone();
     let work = quad::augment::complete(&k, &mut full);

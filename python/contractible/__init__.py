@@ -189,7 +189,9 @@ def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0) -> Quadrangula
     triangles by ``lrs`` (contraction/expansion with flips, default), ``ps``
     (Pulli–Segal), ``sg`` (simple greedy) or ``matching``, each completed by augmenting
     paths, or by Frink's reduction (``ds``: Diks–Stańczyk, dynamic connectivity and
-    link–cut trees, O(F log² F); ``frink-lct``: the link–cut cover-count strategy;
+    link–cut trees, O(F log² F); ``bbdl``: Biedl–Bose–Demaine–Lubiw, dynamic
+    2-edge-connectivity, O(F² log F) in the worst case with this package's structure;
+    ``frink-lct``: the link–cut cover-count strategy;
     ``ds-naive``: the quadratic reference, refused above 100,000 faces per component),
     perfect without completion. Closed surfaces only; positions optional."""
     V, F = _vf(V, F)

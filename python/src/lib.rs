@@ -688,9 +688,10 @@ fn quad_algorithm(name: &str) -> PyResult<quad::Algorithm> {
         "matching" => Ok(quad::Algorithm::Matching),
         "frink-lct" => Ok(quad::Algorithm::FrinkLct),
         "ds" => Ok(quad::Algorithm::Ds),
+        "bbdl" => Ok(quad::Algorithm::Bbdl),
         "ds-naive" => Ok(quad::Algorithm::DsNaive),
         other => Err(PyValueError::new_err(format!(
-            "unknown algo {other:?}: expected 'lrs', 'ps', 'sg', 'matching', 'ds', 'frink-lct' or 'ds-naive'"
+            "unknown algo {other:?}: expected 'lrs', 'ps', 'sg', 'matching', 'ds', 'bbdl', 'frink-lct' or 'ds-naive'"
         ))),
     }
 }

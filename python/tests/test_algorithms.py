@@ -202,7 +202,7 @@ def test_quad_lrs_is_perfect(m):
     assert q.stats["flips"] >= 0
 
 
-@pytest.mark.parametrize("algo", ["ps", "sg", "matching", "ds", "frink-lct", "ds-naive"])
+@pytest.mark.parametrize("algo", ["ps", "sg", "matching", "ds", "bbdl", "frink-lct", "ds-naive"])
 @pytest.mark.parametrize("name", ["double_torus", "socket", "casting", "footbones"])
 def test_quad_other_algorithms(name, algo):
     V, F = load(name)

@@ -395,6 +395,9 @@ pub enum QuadAlgo {
     FrinkLct,
     /// Frink's reduction, Diks–Stańczyk strategy (dynamic connectivity, O(F log² F)).
     Ds,
+    /// Frink's reduction, Biedl–Bose–Demaine–Lubiw strategy (dynamic 2-edge-connectivity;
+    /// this crate's structure is O(F² log F) in the worst case).
+    Bbdl,
 }
 
 impl From<QuadAlgo> for contractible::quad::Algorithm {
@@ -408,6 +411,7 @@ impl From<QuadAlgo> for contractible::quad::Algorithm {
             QuadAlgo::DsNaive => Algorithm::DsNaive,
             QuadAlgo::FrinkLct => Algorithm::FrinkLct,
             QuadAlgo::Ds => Algorithm::Ds,
+            QuadAlgo::Bbdl => Algorithm::Bbdl,
         }
     }
 }

@@ -287,6 +287,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             quad::Algorithm::Sg,
             quad::Algorithm::Matching,
             quad::Algorithm::Ds,
+            quad::Algorithm::Bbdl,
         ] {
             let s = QuadStats::total(algo, &quad_all(&surfaces, algo, a.seed, ui));
             report.verified &= s.verified;

@@ -49,6 +49,12 @@ pub enum Algorithm {
     /// travelling forbidden edge, dynamic connectivity and link–cut LCA; O(F log² F)).
     /// Perfect directly: no completion.
     Ds,
+    /// Frink's reduction with the Biedl–Bose–Demaine–Lubiw strategy
+    /// ([`frink::BiedlBoseDemaineLubiw`]: the travelling forbidden edge, the choice by
+    /// fully dynamic 2-edge-connectivity queries; this crate's structure is not
+    /// polylogarithmic, O(F² log F) in the worst case, see [`frink::TwoEdge`]). Perfect
+    /// directly: no completion.
+    Bbdl,
 }
 
 impl Algorithm {
@@ -62,6 +68,7 @@ impl Algorithm {
             Algorithm::DsNaive => "ds-naive",
             Algorithm::FrinkLct => "frink-lct",
             Algorithm::Ds => "ds",
+            Algorithm::Bbdl => "bbdl",
         }
     }
 }
@@ -183,7 +190,7 @@ pub fn convert_observed(
     } = initial_pairing(tri, algorithm, options);
     if matches!(
         algorithm,
-        Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds
+        Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds | Algorithm::Bbdl
     ) {
         // Perfect by Frink's construction: (c) = 0 and no completion, (d) = 0.
         let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
@@ -254,6 +261,10 @@ pub fn initial_pairing(tri: Triangulation, algorithm: Algorithm, options: &Optio
         }
         Algorithm::Ds => {
             let p = frink::perfect_matching_with(&tri, &mut frink::DiksStanczyk::new()).0;
+            (tri, p, 0)
+        }
+        Algorithm::Bbdl => {
+            let p = frink::perfect_matching_with(&tri, &mut frink::BiedlBoseDemaineLubiw::new()).0;
             (tri, p, 0)
         }
     };

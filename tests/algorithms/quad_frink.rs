@@ -9,13 +9,17 @@
 
 use crate::{common, harness};
 use contractible::gen::{random, RandomParams, SurfaceKind};
-use contractible::quad::frink::{self, CoverTree, DiksStanczyk, Naive};
+use contractible::quad::frink::{self, BiedlBoseDemaineLubiw, CoverTree, DiksStanczyk, Naive};
 use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
 use contractible::{Surfaces, Triangulation};
 use proptest::prelude::*;
 
 /// Largest component of a shared mesh run here (the naive strategy is quadratic).
 const MAX_FACES: usize = 6_000;
+
+/// Largest component of a shared mesh the BBDL test runs (its 2-edge structure's
+/// tree-edge deletions are not polylogarithmic; this keeps the test short).
+const BBDL_MAX_FACES: usize = 15_000;
 
 /// Checks `p` independently: the harness's check of a conversion whose pairing is `p`
 /// (the `algorithm` field is not read by it; the statistics are those of a perfect
@@ -220,6 +224,17 @@ fn run_ds(t: &Triangulation, label: &str) -> frink::DsCounters {
     c
 }
 
+/// Runs the Biedl–Bose–Demaine–Lubiw strategy on `t` (checked by [`run_strategy`]);
+/// its travelling forbidden edge must have kept every lift out of case (iv), and every
+/// step was decided by the 2-edge structure.
+fn run_bbdl(t: &Triangulation, label: &str) -> frink::BbdlCounters {
+    let (s, stats) = run_strategy(t, label, Algorithm::Bbdl, BiedlBoseDemaineLubiw::new);
+    let c = s.counters();
+    assert_eq!((stats.case_iv, c.restarts), (0, 0), "{label}: {c:?}");
+    assert_eq!(c.took_h1 + c.took_h2, stats.reductions as u64, "{label}");
+    c
+}
+
 /// Calls `f` on every component of every shared closed mesh (label `name#k`); returns
 /// the number of meshes, components and faces.
 fn each_shared_closed_component(mut f: impl FnMut(&Triangulation, &str)) -> [usize; 3] {
@@ -279,6 +294,35 @@ fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
     assert!(total.forced > 0 && total.free > 0, "{total:?}");
     each_random_surface(|t, label| {
         run_ds(t, label);
+    });
+}
+
+/// Biedl–Bose–Demaine–Lubiw on every component of every shared closed mesh up to
+/// [`BBDL_MAX_FACES`] faces (its 2-edge structure is not polylogarithmic: module
+/// `frink::two_edge`) and random surfaces of every kind at two sizes.
+#[test]
+fn bbdl_on_shared_closed_meshes_and_random_surfaces() {
+    let (mut runs, mut skipped, mut h2, mut digons, mut swaps) = (0, 0, 0, 0, 0);
+    let clock = std::time::Instant::now();
+    let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+        if t.face_count() > BBDL_MAX_FACES {
+            skipped += 1;
+            return;
+        }
+        let c = run_bbdl(t, label);
+        runs += 1;
+        h2 += c.took_h2;
+        digons += c.digon_steps;
+        swaps += c.structure.swaps;
+    });
+    eprintln!(
+        "bbdl: {runs} of {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s ({skipped} above {BBDL_MAX_FACES} faces); {h2} steps took H2, {digons} digon steps, {swaps} swaps",
+        clock.elapsed().as_secs_f64()
+    );
+    assert_eq!(components, 339 + 65, "every component");
+    assert!(runs > 300 && h2 > 0, "{runs} runs, {h2} H2 steps");
+    each_random_surface(|t, label| {
+        run_bbdl(t, label);
     });
 }
 

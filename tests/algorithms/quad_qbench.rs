@@ -299,7 +299,7 @@ fn outputs_are_those_of_the_unoptimised_implementation() {
             Algorithm::Ps => (t.clone(), pulli_segal::initial_pairing(t, &OPTIONS)),
             Algorithm::Sg => (t.clone(), greedy::initial_pairing(t, &OPTIONS)),
             Algorithm::Matching => (t.clone(), matching::initial_pairing(t)),
-            Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds => {
+            Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds | Algorithm::Bbdl => {
                 unreachable!("not in PINS")
             }
         };

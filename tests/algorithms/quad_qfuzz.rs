@@ -190,6 +190,13 @@ fn library_reproduces_every_quad_vector_exactly() {
                     quad::frink::perfect_matching_with(&tri, &mut quad::frink::DiksStanczyk::new())
                         .0
                 }
+                Algorithm::Bbdl => {
+                    quad::frink::perfect_matching_with(
+                        &tri,
+                        &mut quad::frink::BiedlBoseDemaineLubiw::new(),
+                    )
+                    .0
+                }
             };
             assert_eq!(
                 pairs_json(&initial),

@@ -13,7 +13,16 @@ use std::path::Path;
 
 use cli_common::{int, load, meshes, run, run_json, Scratch};
 
-const ALGOS: [&str; 7] = ["lrs", "ps", "sg", "matching", "ds-naive", "frink-lct", "ds"];
+const ALGOS: [&str; 8] = [
+    "lrs",
+    "ps",
+    "sg",
+    "matching",
+    "ds-naive",
+    "frink-lct",
+    "ds",
+    "bbdl",
+];
 
 /// Vertex positions and quads of an ASCII OFF file.
 fn read_quad_off(path: &Path) -> (Vec<[f64; 3]>, Vec<[u32; 4]>) {
@@ -144,7 +153,7 @@ fn check_quad(input: &Path, algo: &str, dir: &Scratch) {
     if algo != "lrs" {
         assert_eq!(int(&j, "flips"), 0, "{label}: only LRS flips");
     }
-    if algo == "ds-naive" || algo == "frink-lct" || algo == "ds" {
+    if algo == "ds-naive" || algo == "frink-lct" || algo == "ds" || algo == "bbdl" {
         // Frink's reduction is perfect by construction: (c) = 0, no completion, (d) = 0.
         assert_eq!(int(&j, "initial_unpaired"), 0, "{label}: (c)");
         assert_eq!(j["completion_seconds"].as_f64(), Some(0.0), "{label}: (d)");
@@ -340,7 +349,7 @@ fn demo_converts_its_surfaces_with_every_algorithm() {
     for input in j["inputs"].as_array().expect("inputs") {
         let quads = input["quad_runs"].as_array().expect("quad_runs");
         let names: Vec<&str> = quads.iter().map(|q| q["algo"].as_str().unwrap()).collect();
-        assert_eq!(names, ["lrs", "ps", "sg", "matching", "ds"]);
+        assert_eq!(names, ["lrs", "ps", "sg", "matching", "ds", "bbdl"]);
         for q in quads {
             assert_eq!(q["verified"], true);
             assert_eq!(int(q, "quads") * 2, int(q, "faces"));

@@ -381,7 +381,7 @@ fn removed(cand: &Candidate) -> [u32; 5] {
 
 /// If `x` (an end of `f`) has its two other edges on a digon `x ⇉ w` (`w` not `f`'s other
 /// end), the third edge `h` of `w`, and `w`.
-fn digon_exit(g: &Cubic, f: u32, x: u32) -> Option<(u32, u32)> {
+pub(super) fn digon_exit(g: &Cubic, f: u32, x: u32) -> Option<(u32, u32)> {
     let s = g.incident(x);
     let i = s.iter().position(|&e| e == f)?;
     let (r0, r1) = (s[(i + 1) % 3], s[(i + 2) % 3]);

@@ -54,8 +54,14 @@
 //! Holm–de Lichtenberg–Thorup dynamic connectivity (module `hdt`) and mirrored in the
 //! link–cut tree for LCA queries: O(log² n) amortised per step; the decision is derived
 //! and proved in module `ds` (the DS paper's own case analysis could not be read;
-//! errata T13). Biedl–Bose–Demaine–Lubiw's own decision (dynamic 2-edge-connectivity,
-//! O(log⁴ n)) is not implemented.
+//! errata T13). [`BiedlBoseDemaineLubiw`] (module `bbdl`) reduces next to the same
+//! travelling forbidden edge and decides each step as BBDL do, by querying a fully
+//! dynamic 2-edge-connectivity structure ([`TwoEdge`], module `two_edge`): `H1` is
+//! applied and kept iff `x1` is 2-edge-connected to `x2`, `x3`, `x4` in it (sound and
+//! complete, proved in module `bbdl`), else `H2`. BBDL's O(log⁴ n) per step assumes
+//! HDT Sec. 3; [`TwoEdge`] keeps HDT's cover idea with exact cover counts but without
+//! HDT's levels, so its tree-edge deletions search the smaller side of the cut (errata
+//! T14).
 //!
 //! # Complexity
 //! With [`Naive`]: O(n²) time in the worst case and in practice (n/2 reductions, each
@@ -65,7 +71,11 @@
 //! reduction plus O(n) per fallback step, O(n²) in the worst case, O(n log n) when no
 //! fallback occurs; the case-(iv) searches come on top with either strategy (about a
 //! quarter of the time on the B family, docs/benchmarks.md). With [`DiksStanczyk`]:
-//! O(n log² n) amortised in all, no case (iv). Memory: O(n): the graph
+//! O(n log² n) amortised in all, no case (iv). With [`BiedlBoseDemaineLubiw`]: per step
+//! O(log n) amortised per query and non-tree update of [`TwoEdge`], plus O(s + k log n)
+//! per forest-edge deletion (`s` the degree sum of the smaller side of the cut, `k` the
+//! edges covering it): O(n² log n) in the worst case, no case (iv); measured superlinear on
+//! the B family (docs/benchmarks.md). Memory: O(n): the graph
 //! (8 bytes per edge, `5n/2 − 2` edges ever created), one 72-byte record per reduction,
 //! the DFS and search scratch (about 30 bytes per node); [`CoverTree`] adds about 80
 //! bytes per node.
@@ -91,9 +101,11 @@
 //! is reduced is left open (BBDL choose an edge next to a forbidden edge so that (iv)
 //! never occurs; this reference takes the first simple edge of the smallest live node, so
 //! (iv) does occur and is exercised; [`CoverTree`] picks tree-stable edges, where (iv)
-//! occurs too; [`DiksStanczyk`] follows BBDL, with a rule of its own for digons next to
-//! the forbidden edge). Recorded in `spec/ERRATA.md` (T9–T13).
+//! occurs too; [`DiksStanczyk`] and [`BiedlBoseDemaineLubiw`] follow BBDL, with a rule
+//! of their own for digons next to the forbidden edge). Recorded in `spec/ERRATA.md`
+//! (T9–T14).
 
+mod bbdl;
 mod cover;
 mod cycle;
 mod ds;
@@ -102,10 +114,13 @@ mod graph;
 mod hdt;
 mod lct;
 mod spec;
+mod two_edge;
 
+pub use bbdl::{BbdlCounters, BiedlBoseDemaineLubiw};
 pub use cover::{CoverCounters, CoverTree};
 pub use ds::{DiksStanczyk, DsCounters};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};
+pub use two_edge::{TwoEdge, TwoEdgeCounters};
 
 use super::Pairing;
 use crate::core::{FaceId, Triangulation};

@@ -8,6 +8,7 @@
 //! | F1 the chosen reduced graph is cubic, loop-free, connected and bridgeless | App. A (Frink: one of `H1`, `H2` is) | `after_reduction` |
 //! | F2 the lifted matching is perfect on the current graph | App. A, cases (i)–(iv) | `after_lift`, `at_end` |
 //! | F3 (Diks–Stańczyk) the forest the decision reads spans `H' = H − {u, v}`, and the connectivity structure's own invariants hold | DS (errata T13), HDT Sec. 2 | `ds_forest` |
+//! | F4 (Biedl–Bose–Demaine–Lubiw) the 2-edge-connectivity structure holds exactly the current graph's edges, and its own invariants hold | BBDL, HDT Sec. 3 | `bbdl_structure` |
 //!
 //! Cost: F1 checks that the two new edges are no loops (O(1)) always, and while the
 //! reduced graph has at most [`SMALL_NODES`] nodes checks it in full by a method
@@ -19,6 +20,7 @@
 //! matching once.
 
 use super::graph::{Candidate, Cubic, Reduction, NONE};
+use super::two_edge::TwoEdge;
 use crate::spec::ENABLED;
 
 /// Node count up to which F1 runs the independent edge-removal test.
@@ -260,5 +262,43 @@ pub(crate) fn at_end(g: &Cubic, mate: &[u32], pairs: usize) {
     }
     if let Err(m) = matched_at(g, mate, 0..g.node_capacity() as u32) {
         spec_fail!("F2 (App. A)", "end", "{m}");
+    }
+}
+
+/// F4: after a reduction is applied, the Biedl–Bose–Demaine–Lubiw strategy's
+/// 2-edge-connectivity structure `te` holds exactly the live edges of `g` with their
+/// ends, and its own invariant check ([`TwoEdge::check`], O(n·m)) passes. Up to
+/// [`SMALL_NODES`] live nodes.
+pub(crate) fn bbdl_structure(g: &Cubic, te: &mut TwoEdge) {
+    if !ENABLED || g.node_count() > SMALL_NODES {
+        return;
+    }
+    let at = format!("{} live nodes", g.node_count());
+    if let Err(m) = te.check() {
+        spec_fail!("F4 (BBDL)", at, "the 2-edge structure: {m}");
+    }
+    let mut live = Vec::new();
+    for x in (0..g.node_capacity() as u32).filter(|&x| g.is_alive(x)) {
+        for e in g.incident(x) {
+            if !live.contains(&e) {
+                live.push(e);
+            }
+        }
+    }
+    for &e in &live {
+        let mine = g.ends(e);
+        let theirs = te.ends(e);
+        if theirs != Some(mine) && theirs != Some([mine[1], mine[0]]) {
+            spec_fail!("F4 (BBDL)", at, "edge {e} = {mine:?} held as {theirs:?}");
+        }
+    }
+    let count = te.edge_count();
+    if live.len() != count {
+        spec_fail!(
+            "F4 (BBDL)",
+            at,
+            "the graph has {} edges, the structure {count}",
+            live.len()
+        );
     }
 }

@@ -946,3 +946,167 @@ fn diks_stanczyk_decides_every_reduction_of_small_and_random_graphs() {
         "{decided} decisions, {single} forced"
     );
 }
+
+/// Runs the checked Biedl–Bose–Demaine–Lubiw strategy (every choice tested against the
+/// naive DFS) on `g` and checks the matching, that the forbidden edge did its job (no
+/// case (iv); case (ii) only after digon steps) and that every step was decided.
+fn run_bbdl(g: &Cubic, label: &str) -> (Checked<BiedlBoseDemaineLubiw>, Stats, BbdlCounters) {
+    let mut s = Checked::<BiedlBoseDemaineLubiw>::default();
+    let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("{label}: {e}"));
+    assert_perfect(g, &sol.mate, label);
+    assert_eq!(sol.stats.reductions, g.node_count() / 2 - 1, "{label}");
+    let c = s.inner.counters();
+    assert_eq!((c.restarts, sol.stats.case_iv), (0, 0), "{label}");
+    assert!(sol.stats.cases[1] as u64 <= c.digon_steps, "{label}");
+    assert_eq!(
+        c.took_h1 + c.took_h2,
+        sol.stats.reductions as u64,
+        "{label}"
+    );
+    (s, sol.stats, c)
+}
+
+/// Biedl–Bose–Demaine–Lubiw agrees with the naive DFS test at every step of the small
+/// graphs and of random cubic multigraphs: each choice is connected and bridgeless,
+/// including every step where only one reconnection is (F4 checks the 2-edge structure
+/// against the graph after every step under the specification).
+#[test]
+fn bbdl_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
+    for (name, g) in small_graphs() {
+        run_bbdl(&g, name);
+    }
+    let mut rng = Rng::new(43);
+    let (mut graphs, mut steps, mut single) = (0, 0, 0);
+    let (mut h2, mut digons, mut swaps) = (0, 0, 0);
+    for round in 0..3000 {
+        let n = 2 * (1 + rng.index(20));
+        let g = random_cubic(n, &mut rng);
+        if !spec::connected_bridgeless_by_definition(&g) {
+            continue;
+        }
+        let (s, _, c) = run_bbdl(&g, &format!("round {round}"));
+        graphs += 1;
+        steps += s.steps;
+        single += s.single;
+        h2 += c.took_h2;
+        digons += c.digon_steps;
+        swaps += c.structure.swaps;
+    }
+    eprintln!("bbdl: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {h2} took H2, {digons} digon steps, {swaps} swaps");
+    assert!(
+        graphs > 500 && single > 100 && h2 > 100 && digons > 0 && swaps > 0,
+        "{graphs} graphs, {single} forced, {h2} H2, {digons} digons, {swaps} swaps"
+    );
+}
+
+/// The agreement check catches a broken Biedl–Bose–Demaine–Lubiw (the other
+/// reconnection where only one is valid).
+#[test]
+fn the_agreement_check_catches_a_flipped_bbdl() {
+    let caught = flipped_runs_caught::<BiedlBoseDemaineLubiw>(47);
+    assert!(caught > 20, "caught {caught}");
+}
+
+/// The BBDL decision on *every* reduction of small graphs (not only those next to the
+/// forbidden edge), against both reconnections classified by the naive DFS test; a
+/// fresh strategy per candidate.
+#[test]
+fn bbdl_decides_every_reduction_of_small_and_random_graphs() {
+    let mut graphs: Vec<Cubic> = small_graphs().into_iter().map(|(_, g)| g).collect();
+    let mut rng = Rng::new(53);
+    while graphs.len() < 300 {
+        let g = random_cubic(2 * (2 + rng.index(9)), &mut rng);
+        if spec::connected_bridgeless_by_definition(&g) {
+            graphs.push(g);
+        }
+    }
+    let mut dfs = Dfs::default();
+    let (mut decided, mut single) = (0, 0);
+    for (i, g) in graphs.iter().enumerate() {
+        for cand in all_candidates(g) {
+            let mut h = g.clone();
+            let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
+                let r = h.reduce(&cand, recon);
+                let ok = dfs.connected_bridgeless(&h, cand.x[0]);
+                h.undo(&r);
+                ok
+            });
+            let mut s = BiedlBoseDemaineLubiw::new();
+            s.start(&h);
+            let chosen = s.choose(&mut h, &cand).expect("a decision");
+            let k = usize::from(chosen == Reconnection::H2);
+            assert!(
+                ok[k],
+                "graph {i}: {cand:?}: {chosen:?} has a bridge ({ok:?})"
+            );
+            // Ties take H1; a forced step the valid one.
+            assert_eq!(chosen == Reconnection::H1, ok[0], "graph {i}: {cand:?}");
+            decided += 1;
+            single += usize::from(ok[0] != ok[1]);
+        }
+    }
+    eprintln!(
+        "bbdl decision: {decided} reductions of {} graphs, {single} with one valid reconnection",
+        graphs.len()
+    );
+    assert!(
+        decided > 3000 && single > 300,
+        "{decided} decisions, {single} forced"
+    );
+}
+
+/// F4 fails when the 2-edge structure does not hold the current graph (an edge missing,
+/// an extra edge) or its invariants are broken; holds for the real runs above.
+#[test]
+fn f4_catches_a_structure_out_of_step_with_the_graph() {
+    let g = petersen();
+    let load = || {
+        let mut te = TwoEdge::new(g.node_capacity());
+        for e in 0..g.ends.len() as u32 {
+            let [a, b] = g.ends(e);
+            te.insert(e, a, b);
+        }
+        te
+    };
+    spec::bbdl_structure(&g, &mut load());
+    let mut missing = load();
+    missing.delete(3);
+    assert_fails("F4", || spec::bbdl_structure(&g, &mut missing));
+    let mut extra = load();
+    extra.insert(99, 0, 5);
+    assert_fails("F4", || spec::bbdl_structure(&g, &mut extra));
+    let mut moved = load();
+    moved.delete(3);
+    let [a, _] = g.ends(3);
+    moved.insert(3, a, a);
+    assert_fails("F4", || spec::bbdl_structure(&g, &mut moved));
+}
+
+/// Duals of random closed surfaces, orientable genus 0..8 and non-orientable: every BBDL
+/// step checked, the pairing perfect, no case (iv), and the same pairing twice.
+#[test]
+fn bbdl_on_random_surfaces() {
+    use crate::gen::{random, RandomParams, SurfaceKind};
+    let kinds = (0..=8)
+        .map(SurfaceKind::Orientable)
+        .chain((1..=6).map(SurfaceKind::NonOrientable));
+    for kind in kinds {
+        for seed in 1..=2u64 {
+            let t = random(&RandomParams {
+                surface: kind,
+                min_faces: 400,
+                flip_percent: 30,
+                seed,
+            });
+            let (g, _) = dual_graph(&t).expect("dual");
+            let label = format!("{kind:?} seed {seed}");
+            let (_, stats, c) = run_bbdl(&g, &label);
+            assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
+            let (p, _) = perfect_matching_with(&t, &mut BiedlBoseDemaineLubiw::new());
+            assert!(p.is_perfect(&t), "{label}");
+            assert_eq!(p.check(&t), Ok(()));
+            let (again, _) = perfect_matching_with(&t, &mut BiedlBoseDemaineLubiw::new());
+            assert_eq!(p, again, "{label}: not deterministic");
+        }
+    }
+}
