@@ -52,7 +52,6 @@ pub(crate) struct Lct {
 
 impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
-    #[cfg(test)]
     pub(crate) fn new(vals: &[i32]) -> Self {
         Lct {
             t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
