@@ -419,7 +419,7 @@ impl TwoEdge {
     /// the link–cut tree joined to its ends, and the link–cut tree connects exactly the
     /// vertices of one forest tree; every tree edge's cover count equals the number of
     /// non-tree edges whose forest path contains it (by naive parent walks); every vertex
-    /// value is at least [`VERTEX`]. Takes `&mut self` only for the link–cut queries
+    /// value is at least `VERTEX`. Takes `&mut self` only for the link–cut queries
     /// (splaying), which change no represented value.
     pub fn check(&mut self) -> Result<(), String> {
         let n = self.n;
