@@ -2,7 +2,8 @@
 //! checked by code that shares nothing with it: the fuzz harness's
 //! `check_quadrangulation` (face lists, pairs and quads only) and petgraph's
 //! `maximum_matching` of the dual graph (its size must be F/2, as the pairing's). The
-//! naive strategy is O(F²), so the shared meshes are covered up to [`MAX_FACES`] faces.
+//! naive strategy is O(F²), so the shared meshes are covered up to [`MAX_FACES`] faces
+//! (every face of every mesh with `FRINK_FULL=1`, see [`full`]).
 //! Under `invariants` (the README's test command) the specification checks F1/F2 run
 //! on every step. The link–cut (`CoverTree`) and Diks–Stańczyk strategies run on every
 //! shared closed mesh, whatever its size.
@@ -14,12 +15,32 @@ use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
 use contractible::{Surfaces, Triangulation};
 use proptest::prelude::*;
 
-/// Largest component of a shared mesh run here (the naive strategy is quadratic).
+/// Largest component of a shared mesh run here (the naive strategy is quadratic), and
+/// the largest checked against petgraph; `FRINK_FULL=1` lifts the first (see [`full`]).
 const MAX_FACES: usize = 6_000;
 
 /// Largest component of a shared mesh the BBDL test runs (its 2-edge structure's
-/// tree-edge deletions are not polylogarithmic; this keeps the test short).
+/// tree-edge deletions are not polylogarithmic; this keeps the test short);
+/// `FRINK_FULL=1` lifts it.
 const BBDL_MAX_FACES: usize = 15_000;
+
+/// With `FRINK_FULL` set, the naive and BBDL tests run every component of every shared
+/// closed mesh (up to 199,034 faces) instead of stopping at [`MAX_FACES`] and
+/// [`BBDL_MAX_FACES`]: the one-off run that shows each strategy on every mesh
+/// (`FRINK_FULL=1 cargo test --release --features invariants --test algorithms
+/// quad_frink::`; tens of minutes, the naive strategy being O(F²)).
+fn full() -> bool {
+    std::env::var_os("FRINK_FULL").is_some()
+}
+
+/// The size cap `cap`, or none under [`full`].
+fn cap(cap: usize) -> usize {
+    if full() {
+        usize::MAX
+    } else {
+        cap
+    }
+}
 
 /// Checks `p` independently: the harness's check of a conversion whose pairing is `p`
 /// (the `algorithm` field is not read by it; the statistics are those of a perfect
@@ -38,12 +59,28 @@ fn check(t: &Triangulation, p: &Pairing, label: &str) {
     assert_eq!(m.len(), p.len(), "{label}: size against petgraph");
 }
 
+/// [`check`] up to [`MAX_FACES`] faces; above, the harness's check alone (petgraph's
+/// recursive matching takes seconds there and a deep stack).
+fn check_sized(t: &Triangulation, p: &Pairing, label: &str, algorithm: Algorithm) {
+    if t.face_count() <= MAX_FACES {
+        check(t, p, label);
+    } else {
+        let q = Quadrangulation {
+            algorithm,
+            tri: t.clone(),
+            pairing: p.clone(),
+            stats: initial_stats(t, p, 0.0),
+        };
+        harness::check_quadrangulation(t, &q, label);
+    }
+}
+
 /// Runs the naive strategy on `t`, checks the result, returns the counters; with
 /// `twice`, runs it again and requires the same pairing.
 fn run(t: &Triangulation, label: &str, twice: bool) -> frink::Stats {
     let mut naive = Naive::new();
     let (p, stats) = frink::perfect_matching_with(t, &mut naive);
-    check(t, &p, label);
+    check_sized(t, &p, label, Algorithm::DsNaive);
     assert_eq!(
         stats.reductions,
         t.face_count() / 2 - 1,
@@ -145,8 +182,9 @@ fn shared_closed_mesh_components() {
     assert!(rows.len() >= 90, "{} closed meshes", rows.len());
     let (mut components, mut faces, mut skipped) = (0usize, 0usize, 0usize);
     let clock = std::time::Instant::now();
+    let max = cap(MAX_FACES);
     for row in &rows {
-        if row.f > MAX_FACES * row.components {
+        if row.f > max.saturating_mul(row.components) {
             skipped += row.components;
             continue;
         }
@@ -157,7 +195,7 @@ fn shared_closed_mesh_components() {
         assert_eq!(s.components.len(), row.components, "{}", row.name);
         for (k, comp) in s.components.iter().enumerate() {
             let t = &comp.tri;
-            if t.face_count() > MAX_FACES {
+            if t.face_count() > max {
                 skipped += 1;
                 continue;
             }
@@ -171,11 +209,8 @@ fn shared_closed_mesh_components() {
         rows.len(),
         clock.elapsed().as_secs_f64()
     );
-    assert_eq!(
-        (components, skipped),
-        (339, 65),
-        "components covered, skipped"
-    );
+    let want = if full() { (339 + 65, 0) } else { (339, 65) };
+    assert_eq!((components, skipped), want, "components covered, skipped");
 }
 
 /// Runs `make()`'s strategy on `t` and checks the result independently (the harness
@@ -189,17 +224,7 @@ fn run_strategy<S: frink::Strategy>(
 ) -> (S, frink::Stats) {
     let mut s = make();
     let (p, stats) = frink::perfect_matching_with(t, &mut s);
-    if t.face_count() <= MAX_FACES {
-        check(t, &p, label);
-    } else {
-        let q = Quadrangulation {
-            algorithm,
-            tri: t.clone(),
-            pairing: p.clone(),
-            stats: initial_stats(t, &p, 0.0),
-        };
-        harness::check_quadrangulation(t, &q, label);
-    }
+    check_sized(t, &p, label, algorithm);
     assert_eq!(stats.reductions, t.face_count() / 2 - 1, "{label}");
     if t.face_count() <= MAX_FACES {
         let (again, _) = frink::perfect_matching_with(t, &mut make());
@@ -304,8 +329,9 @@ fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
 fn bbdl_on_shared_closed_meshes_and_random_surfaces() {
     let (mut runs, mut skipped, mut h2, mut digons, mut swaps) = (0, 0, 0, 0, 0);
     let clock = std::time::Instant::now();
+    let max = cap(BBDL_MAX_FACES);
     let [meshes, components, faces] = each_shared_closed_component(|t, label| {
-        if t.face_count() > BBDL_MAX_FACES {
+        if t.face_count() > max {
             skipped += 1;
             return;
         }
