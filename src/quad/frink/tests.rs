@@ -1110,3 +1110,93 @@ fn bbdl_on_random_surfaces() {
         }
     }
 }
+
+/// FNV-1a over 64-bit words (each word's 8 little-endian bytes).
+fn fnv1a(hash: &mut u64, word: u64) {
+    for byte in word.to_le_bytes() {
+        *hash ^= u64::from(byte);
+        *hash = hash.wrapping_mul(0x0100_0000_01b3);
+    }
+}
+
+/// Folds one run's matching, [`Stats`] and the strategy's own counters (as their `Debug`
+/// text) into `hash`.
+fn fold_run(hash: &mut u64, sol: &Solution, counters: &str) {
+    fnv1a(hash, sol.mate.len() as u64);
+    for &m in &sol.mate {
+        fnv1a(hash, u64::from(m));
+    }
+    let s = &sol.stats;
+    for x in [
+        s.reductions,
+        s.took_h1,
+        s.cases[0],
+        s.cases[1],
+        s.cases[2],
+        s.case_iv,
+        s.cycle_nodes,
+    ] {
+        fnv1a(hash, x as u64);
+    }
+    fnv1a(hash, s.blossoms);
+    for b in counters.bytes() {
+        fnv1a(hash, u64::from(b));
+    }
+}
+
+/// The graphs of the regression pin: the small graphs, random bridgeless cubic
+/// multigraphs, and the duals of random surfaces (one of about 6000 nodes).
+fn pin_graphs() -> Vec<Cubic> {
+    use crate::gen::{random, RandomParams, SurfaceKind};
+    let mut graphs: Vec<Cubic> = small_graphs().into_iter().map(|(_, g)| g).collect();
+    let mut rng = Rng::new(61);
+    while graphs.len() < 60 {
+        let g = random_cubic(2 * (2 + rng.index(30)), &mut rng);
+        if spec::connected_bridgeless_by_definition(&g) {
+            graphs.push(g);
+        }
+    }
+    for (kind, min_faces) in [
+        (SurfaceKind::Orientable(0), 400),
+        (SurfaceKind::Orientable(3), 400),
+        (SurfaceKind::NonOrientable(2), 400),
+        (SurfaceKind::Orientable(2), 6000),
+    ] {
+        let t = random(&RandomParams {
+            surface: kind,
+            min_faces,
+            flip_percent: 30,
+            seed: 7,
+        });
+        graphs.push(dual_graph(&t).expect("dual").0);
+    }
+    graphs
+}
+
+/// Regression pin, not a correctness test: the matchings, [`Stats`] and counters of
+/// [`Naive`], [`BiedlBoseDemaineLubiw`] and [`DiksStanczyk`] on [`pin_graphs`] hash to
+/// the values taken from commit b9142d9, before the clean-up of the strategies' shared
+/// code, which must change no output (only costs).
+#[test]
+fn outputs_are_pinned() {
+    let graphs = pin_graphs();
+    let mut hashes = [0xcbf2_9ce4_8422_2325u64; 3];
+    for g in &graphs {
+        let mut naive = Naive::new();
+        let sol = solve(g.clone(), &mut naive).expect("naive");
+        fold_run(&mut hashes[0], &sol, &format!("{}", naive.dfs_runs()));
+        let mut bbdl = BiedlBoseDemaineLubiw::new();
+        let sol = solve(g.clone(), &mut bbdl).expect("bbdl");
+        fold_run(&mut hashes[1], &sol, &format!("{:?}", bbdl.counters()));
+        let mut ds = DiksStanczyk::new();
+        let sol = solve(g.clone(), &mut ds).expect("ds");
+        fold_run(&mut hashes[2], &sol, &format!("{:?}", ds.counters()));
+    }
+    assert_eq!(graphs.last().map(Cubic::node_count), Some(6000));
+    // Taken from commit b9142d9, before the refactor.
+    assert_eq!(
+        hashes,
+        [0xe823a17045df8c0f, 0xde2ecb900e32850d, 0x35048816ac055fe3],
+        "{hashes:#x?}"
+    );
+}
