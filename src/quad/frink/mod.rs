@@ -113,6 +113,7 @@ mod ett;
 mod graph;
 mod hdt;
 mod lct;
+mod shared;
 mod spec;
 mod two_edge;
 
