@@ -210,6 +210,12 @@ impl Strategy for BiedlBoseDemaineLubiw {
             self.counters.took_h1 += 1;
             (Reconnection::H1, new1)
         } else {
+            // With `H` connected and bridgeless both new edges are non-tree edges here,
+            // so the order of their deletion is immaterial (no non-tree-first reordering
+            // to do): a tree edge among them would join two components of `H'`, which
+            // then has exactly two, each with two of the `x_i` (module `ds`, "`H'`
+            // disconnected"), and `x1x3` or `x2x4` crossing them makes the split
+            // `{x1, x4} | {x2, x3}`, where `H1` passes.
             for e in new1 {
                 self.te().delete(e);
             }
