@@ -62,8 +62,9 @@
 //! first forbidden edge is the first slot of node 0; candidates are tried at the ends of
 //! `f` in edge-end order, edges in slot order; ties (both reconnections pass) take `H1`.
 
+use super::graph::max_nodes_for_edge_ids;
 use super::shared::{bfs_edge_order, non_tree_first, tree_edges_removed, ForbiddenEdge};
-use super::two_edge::{TwoEdge, TwoEdgeCounters};
+use super::two_edge::{TwoEdge, TwoEdgeCounters, MAX_ID};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
 /// What the steps of one run did.
@@ -171,6 +172,12 @@ fn farthest(g: &Cubic, s: u32) -> u32 {
 }
 
 impl Strategy for BiedlBoseDemaineLubiw {
+    /// [`TwoEdge`] takes node and edge ids below 2^29: about 214.7M nodes (the edge ids,
+    /// `5n/2 − 2` of them, are the binding limit).
+    fn max_nodes(&self) -> usize {
+        (MAX_ID - 1).min(max_nodes_for_edge_ids(MAX_ID))
+    }
+
     fn start(&mut self, g: &Cubic) {
         let n = g.node_capacity();
         let mut te = TwoEdge::new(n);

@@ -87,8 +87,8 @@
 //! tried at the ends of `f` in edge-end order, edges in slot order; ties (both
 //! reconnections pass) take `H1`.
 
-use super::graph::NONE;
-use super::hdt::{ForestChange, Hdt};
+use super::graph::{max_nodes_for_edge_ids, NONE};
+use super::hdt::{ForestChange, Hdt, MAX_EDGE_ID};
 use super::lct::PlainLct;
 use super::shared::{bfs_edge_order, non_tree_first, removed, tree_edges_removed, ForbiddenEdge};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
@@ -99,6 +99,21 @@ use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 pub(crate) trait SpanningForest {
     /// The edgeless graph on nodes `0..n`.
     fn with_nodes(n: usize) -> Self;
+    /// The most nodes the structure takes without an id or count overflowing (and so
+    /// without failing an assertion on one).
+    fn max_nodes() -> usize
+    where
+        Self: Sized,
+    {
+        usize::MAX
+    }
+    /// Edge ids must be below this.
+    fn max_edge_ids() -> usize
+    where
+        Self: Sized,
+    {
+        usize::MAX
+    }
     /// Inserts edge `e = ab` (`a ≠ b`), pushing the forest's changes.
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>);
     /// Inserts `edges` (`[e, a, b]` each) in this order into the edgeless graph; the
@@ -124,6 +139,12 @@ pub(crate) trait SpanningForest {
 impl SpanningForest for Hdt {
     fn with_nodes(n: usize) -> Self {
         Hdt::new(n)
+    }
+    fn max_nodes() -> usize {
+        Hdt::max_vertices()
+    }
+    fn max_edge_ids() -> usize {
+        MAX_EDGE_ID as usize
     }
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
         Hdt::insert(self, e, a, b, changes);
@@ -327,6 +348,12 @@ fn forest_parents(n: usize, links: &[ForestChange]) -> Vec<u32> {
 }
 
 impl<F: SpanningForest> Strategy for Ds<F> {
+    /// The forest's limits, its node count and the edge ids of a run (for [`Hdt`] the
+    /// Euler-tour pool's ids bind: about 55.06M nodes).
+    fn max_nodes(&self) -> usize {
+        F::max_nodes().min(max_nodes_for_edge_ids(F::max_edge_ids()))
+    }
+
     fn start(&mut self, g: &Cubic) {
         let n = g.node_capacity();
         let mut forest = F::with_nodes(n);
@@ -422,6 +449,9 @@ impl DiksStanczyk {
 }
 
 impl Strategy for DiksStanczyk {
+    fn max_nodes(&self) -> usize {
+        self.0.max_nodes()
+    }
     fn start(&mut self, g: &Cubic) {
         self.0.start(g);
     }

@@ -147,8 +147,30 @@ pub(crate) struct Hdt {
 }
 
 impl Hdt {
+    /// The most vertices for which no id can overflow: at most [`MAX_TREE`] (the
+    /// counts), and few enough that the Euler-tour pool's node ids stay below `NIL`
+    /// (a vertex has nodes for levels `0..=L`, `L = ⌊log₂ n⌋`, at most, and each of the
+    /// at most `n − 1` tree edges `L + 1` arc pairs: fewer than `3n(L + 1)` nodes, free
+    /// ones reused first). About 55.06M vertices.
+    pub(crate) fn max_vertices() -> usize {
+        let fits =
+            |n: usize| n <= MAX_TREE && 3 * n * (n.max(1).ilog2() as usize + 1) < NIL as usize;
+        // `fits` holds for 0 and, growing with `n`, up to some bound: bisect for it.
+        let (mut lo, mut hi) = (0usize, MAX_TREE + 1);
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if fits(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
     /// `n` vertices `0..n`, no edges. O(n). Panics if `n` exceeds 2²⁷ − 1 (the subtree
-    /// vertex counts have 27 bits), a limit of the structure, not of the input data.
+    /// vertex counts have 27 bits), a limit of the structure, not of the input data;
+    /// below [`Hdt::max_vertices`] no later operation can overflow an id either.
     pub(crate) fn new(n: usize) -> Self {
         assert!(
             n <= MAX_TREE,

@@ -498,6 +498,10 @@ struct Checked<S = CoverTree> {
 }
 
 impl<S: Strategy> Strategy for Checked<S> {
+    fn max_nodes(&self) -> usize {
+        self.inner.max_nodes()
+    }
+
     fn start(&mut self, g: &Cubic) {
         self.inner.start(g);
     }
@@ -1212,4 +1216,96 @@ fn outputs_are_pinned() {
         ],
         "{hashes:#x?}"
     );
+}
+
+/// [`graph::edge_ids`] bounds the ids a run creates (checked on real runs: the ids of the
+/// reductions' new edges), and [`graph::max_nodes_for_edge_ids`] inverts it exactly.
+#[test]
+fn edge_id_bound_and_its_inverse() {
+    use super::graph::{edge_ids, max_nodes_for_edge_ids};
+    for (name, g) in small_graphs() {
+        let n = g.node_capacity();
+        /// Records the largest new edge id of every tentative and applied reduction.
+        struct MaxId(Naive, u32);
+        impl Strategy for MaxId {
+            fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+                let r = g.reduce(cand, Reconnection::H2);
+                self.1 = self.1.max(r.new[1]);
+                g.undo(&r);
+                self.0.choose(g, cand)
+            }
+        }
+        let mut s = MaxId(Naive::new(), 0);
+        solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!((s.1 as usize) < edge_ids(n), "{name}: id {}", s.1);
+        if n >= 4 {
+            // Tight: the last reduction's second id is the last one below the bound.
+            assert_eq!(s.1 as usize + 1, edge_ids(n), "{name}");
+        }
+    }
+    for limit in 0..3000usize {
+        let m = max_nodes_for_edge_ids(limit);
+        assert!(edge_ids(m) <= limit, "limit {limit}: {m}");
+        let next_even = (m + 1).next_multiple_of(2);
+        assert!(edge_ids(next_even) > limit, "limit {limit}: {m}");
+    }
+    for limit in [1usize << 29, (1 << 31) - 1] {
+        let m = max_nodes_for_edge_ids(limit);
+        assert!(
+            edge_ids(m) <= limit && edge_ids(m + 2) > limit,
+            "{limit}: {m}"
+        );
+    }
+}
+
+/// [`solve`] refuses an input above [`Strategy::max_nodes`] with
+/// [`FrinkError::TooLarge`], before [`Strategy::start`]; the limits declared by the
+/// BBDL and DS strategies keep every id within their structures' asserts.
+#[test]
+fn inputs_above_the_strategy_limit_are_refused() {
+    use super::graph::edge_ids;
+    /// [`Naive`] declaring room for `limit` nodes; `started` records `start`.
+    struct Small {
+        limit: usize,
+        started: bool,
+        inner: Naive,
+    }
+    impl Strategy for Small {
+        fn max_nodes(&self) -> usize {
+            self.limit
+        }
+        fn start(&mut self, _: &Cubic) {
+            self.started = true;
+        }
+        fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+            self.inner.choose(g, cand)
+        }
+    }
+    let g = petersen();
+    let mut small = Small {
+        limit: 9,
+        started: false,
+        inner: Naive::new(),
+    };
+    assert_eq!(solve(g.clone(), &mut small), Err(FrinkError::TooLarge(10)));
+    assert!(!small.started);
+    small.limit = 10;
+    let sol = solve(g.clone(), &mut small).expect("at the limit");
+    assert_perfect(&g, &sol.mate, "petersen at the limit");
+    assert!(small.started);
+
+    let bbdl = BiedlBoseDemaineLubiw::new().max_nodes();
+    assert!(bbdl < two_edge::MAX_ID && edge_ids(bbdl) <= two_edge::MAX_ID);
+    assert!(
+        edge_ids(bbdl + 2) > two_edge::MAX_ID,
+        "{bbdl}: not the largest"
+    );
+    assert_eq!(bbdl, 214_748_365);
+
+    let ds = DiksStanczyk::new().max_nodes();
+    assert!(ds <= ett::MAX_TREE && edge_ids(ds) <= hdt::MAX_EDGE_ID as usize);
+    let pool = |n: usize| 3 * n * (n.ilog2() as usize + 1);
+    assert!(pool(ds) < u32::MAX as usize && pool(ds + 1) >= u32::MAX as usize);
+    assert_eq!(ds, 55_063_683);
+    assert_eq!(Naive::new().max_nodes(), usize::MAX);
 }

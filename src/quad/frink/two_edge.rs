@@ -60,6 +60,10 @@ use super::lct::Lct;
 /// is the minimum cover of the path's edges.
 const VERTEX: i32 = 1 << 30;
 
+/// Node ids and edge ids must be below this (the link–cut values: a cover count is at
+/// most the number of edges, which stays below `VERTEX`).
+pub(crate) const MAX_ID: usize = 1 << 29;
+
 /// What an edge id currently is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
@@ -122,7 +126,7 @@ impl TwoEdge {
     /// # Panics
     /// If `n ≥ 2^29` (the link–cut tree's values and ids would overflow).
     pub fn new(n: usize) -> TwoEdge {
-        assert!(n < 1 << 29, "TwoEdge: {n} nodes, too many");
+        assert!(n < MAX_ID, "TwoEdge: {n} nodes, too many");
         let mut vals = vec![VERTEX; n];
         vals.extend(std::iter::repeat_n(0, n.saturating_sub(1)));
         TwoEdge {
@@ -194,7 +198,10 @@ impl TwoEdge {
             "TwoEdge::insert: edge {e} = {a}{b} outside 0..{}",
             self.n
         );
-        assert!(e < 1 << 29, "TwoEdge::insert: edge id {e} too large");
+        assert!(
+            (e as usize) < MAX_ID,
+            "TwoEdge::insert: edge id {e} too large"
+        );
         let i = e as usize;
         if i >= self.kind.len() {
             self.kind.resize(i + 1, Kind::Absent);
