@@ -45,8 +45,10 @@
 //! module `ds`, "The travelling forbidden edge".
 //!
 //! # Complexity
-//! Per reduction: five deletions and two to four insertions/deletions in the 2-edge
-//! structure, three to six queries, O(1) for the choice. With HDT Sec. 3 that would be
+//! Per reduction, in the 2-edge structure: five deletions, then two insertions and
+//! three queries when `H1` passes, or six updates (`H1`'s two edges inserted and deleted
+//! again, both non-tree edges then, and `H2`'s two inserted) and four to six queries
+//! (one to three for `H1`, three for `H2`) when it fails; O(1) for the choice. With HDT Sec. 3 that would be
 //! O(log⁴ n) amortised per step as BBDL state. The structure here (module `two_edge`) is
 //! weaker: O(log n) amortised per query and per non-tree update, but O(s + k log n) per
 //! tree-edge deletion (`s`: degree sum of the smaller side of the cut, `k`: edges

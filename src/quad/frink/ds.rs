@@ -75,8 +75,9 @@
 //! Per reduction: five edge deletions and two insertions in the connectivity structure
 //! (O(log² n) amortised each, HDT Sec. 2), the mirrored links and cuts, one `make_root`
 //! and four accesses for the three LCAs in the link–cut tree (O(log n) amortised), O(1)
-//! for the edge choice. O(n log² n) in all, plus a near-linear load of the graph (one
-//! pass, `Hdt::load`; the link–cut tree from parent pointers); each lift is O(1).
+//! for the edge choice. O(n log² n) in all, plus the load of the graph (one pass,
+//! `Hdt::load`: O(m log n) in the worst case for its union–find, O(n) besides; the
+//! link–cut tree from parent pointers, O(n)); each lift is O(1).
 //! Memory: the connectivity structure, a link–cut tree over the nodes (16 bytes each,
 //! `lct::PlainLct`).
 //!

@@ -10,8 +10,9 @@
 //! nodes in different trees; an existing edge) and check them with `debug_assert!`.
 //!
 //! # Complexity
-//! O(log n) amortised per operation (splay trees with the access lemma); memory 25 bytes
-//! per node. No recursion: push-downs along a splay path use an explicit stack.
+//! O(log n) amortised per operation (splay trees with the access lemma); memory 28 bytes
+//! per node (25 bytes of fields, padded to 4-byte alignment; 16 for [`PlainLct`]). No
+//! recursion: push-downs along a splay path use an explicit stack.
 
 /// No node.
 const NIL: u32 = u32::MAX;
@@ -486,6 +487,13 @@ impl PlainLct {
 #[cfg(test)]
 mod tests {
     use super::Lct;
+
+    /// The node sizes the documentation states.
+    #[test]
+    fn node_sizes() {
+        assert_eq!(std::mem::size_of::<super::Node>(), 28);
+        assert_eq!(std::mem::size_of::<super::PlainNode>(), 16);
+    }
 
     /// The naive forest: adjacency sets and values; path by BFS.
     struct Naive {

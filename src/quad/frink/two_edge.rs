@@ -7,7 +7,8 @@
 //! answer exactly as a static search of the current graph would (tested after every
 //! operation of thousands of random insert/delete sequences on small multigraphs with
 //! parallel edges and loops against a BFS / bridge-removal oracle; [`TwoEdge::check`]
-//! verifies every invariant below from scratch).
+//! verifies the invariants below from scratch, the separation of the link–cut trees
+//! only partly: its documentation says which).
 //!
 //! # Design (the cover idea of Holm–de Lichtenberg–Thorup Sec. 3, at a single level)
 //! Holm, de Lichtenberg and Thorup (JACM 48(4), 2001, Sec. 3; recapped by
@@ -48,8 +49,8 @@
 //!   under Frink's reduction on the B family in docs/benchmarks.md (superlinear: 3–10×
 //!   the time of the O(n log² n) Diks–Stańczyk strategy from 16k to 594k triangles).
 //!
-//! Memory: per vertex a 25-byte link–cut node plus its incidence list; per tree edge one
-//! more link–cut node (at most `n − 1`); per edge id 21 bytes.
+//! Memory: per vertex a 28-byte link–cut node (`lct::Lct`) plus its incidence list; per
+//! tree edge one more link–cut node (at most `n − 1`); per edge id 21 bytes.
 //! [`TwoEdge::check`] takes O(n·m).
 
 use super::graph::NONE;
@@ -181,10 +182,13 @@ impl TwoEdge {
         self.kind.get(e as usize) == Some(&Kind::Tree)
     }
 
-    /// Bytes held (approximate: the vectors' lengths).
+    /// Bytes held (approximate: the vectors' lengths, a link–cut node counted at the 25
+    /// bytes of its fields rather than its 28-byte size).
     pub fn bytes(&self) -> usize {
         let edges = self.kind.len() * (1 + 8 + 8 + 4);
         let adj: usize = self.adj.iter().map(|a| 24 + 4 * a.capacity()).sum();
+        // 25, not 28: kept so that the byte counts reported (`BbdlCounters`) stay
+        // comparable with the recorded runs.
         edges + adj + (2 * self.n) * 25 + self.n * 4
     }
 
@@ -421,13 +425,17 @@ impl TwoEdge {
         self.lct.path_min(k, k)
     }
 
-    /// Checks every invariant from scratch, O(n·m): incidence lists and positions; the
-    /// tree edges form a spanning forest of the live graph; each tree edge is a node of
-    /// the link–cut tree joined to its ends, and the link–cut tree connects exactly the
-    /// vertices of one forest tree; every tree edge's cover count equals the number of
-    /// non-tree edges whose forest path contains it (by naive parent walks); every vertex
-    /// value is at least `VERTEX`. Takes `&mut self` only for the link–cut queries
-    /// (splaying), which change no represented value.
+    /// Checks the invariants from scratch, O(n·m): incidence lists and positions; the
+    /// tree edges form a spanning forest of the live graph; each tree edge's link–cut
+    /// node is connected to both its ends, and every vertex to its forest tree's root
+    /// (its smallest vertex); of the forest roots, only each two consecutive ones (in id
+    /// order) are checked not to be connected in the link–cut tree, and each unused
+    /// tree-edge node only not to be connected to the first root (so a link–cut tree
+    /// joining two non-consecutive trees, or an unused node to a later tree, can pass);
+    /// unused tree-edge nodes hold cover 0; every tree edge's cover count equals the
+    /// number of non-tree edges whose forest path contains it (by naive parent walks);
+    /// every vertex value is at least `VERTEX`. Takes `&mut self` only for the link–cut
+    /// queries (splaying), which change no represented value.
     pub fn check(&mut self) -> Result<(), String> {
         let n = self.n;
         let mut listed = 0usize;
@@ -506,7 +514,7 @@ impl TwoEdge {
             return Err("tree-edge nodes lost or duplicated".into());
         }
         // The link–cut tree: each tree edge's node joined to both ends, every vertex
-        // connected to its forest root, distinct roots not connected.
+        // connected to its forest root, consecutive roots not connected.
         for i in 0..self.kind.len() {
             if self.kind[i] != Kind::Tree {
                 continue;
