@@ -967,6 +967,21 @@ fn run_bbdl(g: &Cubic, label: &str) -> (Checked<BiedlBoseDemaineLubiw>, Stats, B
         sol.stats.reductions as u64,
         "{label}"
     );
+    // The counts of the module documentation's complexity: per step five deletions,
+    // then two insertions and three queries (H1 passes), or H1's two inserted and
+    // deleted, H2's two inserted, and four to six queries.
+    let (h1, h2) = (c.took_h1, c.took_h2);
+    let work = &c.structure;
+    assert_eq!(
+        work.inserts,
+        g.ends.len() as u64 + 2 * h1 + 4 * h2,
+        "{label}"
+    );
+    assert_eq!(work.deletes, 5 * (h1 + h2) + 2 * h2, "{label}");
+    assert!(
+        (3 * h1 + 4 * h2..=3 * h1 + 6 * h2).contains(&c.queries),
+        "{label}: {c:?}"
+    );
     (s, sol.stats, c)
 }
 
