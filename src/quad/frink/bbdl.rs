@@ -45,8 +45,10 @@
 //! module `ds`, "The travelling forbidden edge".
 //!
 //! # Complexity
-//! Per reduction: five deletions and two to four insertions/deletions in the 2-edge
-//! structure, three to six queries, O(1) for the choice. With HDT Sec. 3 that would be
+//! Per reduction, in the 2-edge structure: five deletions, then two insertions and
+//! three queries when `H1` passes, or six updates (`H1`'s two edges inserted and deleted
+//! again, both non-tree edges then, and `H2`'s two inserted) and four to six queries
+//! (one to three for `H1`, three for `H2`) when it fails; O(1) for the choice. With HDT Sec. 3 that would be
 //! O(log⁴ n) amortised per step as BBDL state. The structure here (module `two_edge`) is
 //! weaker: O(log n) amortised per query and per non-tree update, but O(s + k log n) per
 //! tree-edge deletion (`s`: degree sum of the smaller side of the cut, `k`: edges
@@ -62,9 +64,9 @@
 //! first forbidden edge is the first slot of node 0; candidates are tried at the ends of
 //! `f` in edge-end order, edges in slot order; ties (both reconnections pass) take `H1`.
 
-use super::ds::digon_exit;
-use super::graph::NONE;
-use super::two_edge::{TwoEdge, TwoEdgeCounters};
+use super::graph::max_nodes_for_edge_ids;
+use super::shared::{bfs_edge_order, non_tree_first, tree_edges_removed, ForbiddenEdge};
+use super::two_edge::{TwoEdge, TwoEdgeCounters, MAX_ID};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
 /// What the steps of one run did.
@@ -92,10 +94,7 @@ pub struct BbdlCounters {
 #[derive(Default)]
 pub struct BiedlBoseDemaineLubiw {
     te: Option<TwoEdge>,
-    /// The forbidden edge, or `NONE`.
-    f: u32,
-    /// Whether the pending reduction moves `f` on to its `p`.
-    moves_f: bool,
+    fe: ForbiddenEdge,
     /// The reduction, reconnection and new edge ids the structure now holds.
     pending: Option<(Candidate, Reconnection, [u32; 2])>,
     counters: BbdlCounters,
@@ -104,15 +103,16 @@ pub struct BiedlBoseDemaineLubiw {
 impl BiedlBoseDemaineLubiw {
     /// A fresh strategy.
     pub fn new() -> Self {
-        Self {
-            f: NONE,
-            ..Self::default()
-        }
+        Self::default()
     }
 
     /// What the steps of the last run did.
     pub fn counters(&self) -> BbdlCounters {
-        let mut c = self.counters;
+        let mut c = BbdlCounters {
+            digon_steps: self.fe.digon_steps,
+            restarts: self.fe.restarts,
+            ..self.counters
+        };
         if let Some(te) = &self.te {
             c.structure = te.counters();
             c.structure_bytes = te.bytes() as u64;
@@ -152,50 +152,11 @@ impl BiedlBoseDemaineLubiw {
         }
         r.new
     }
-
-    /// The next reduction keeping the forbidden edge out of the matching (module
-    /// documentation; the rule of module `ds`), with whether `f` moves on to its `p`.
-    fn next_to_forbidden(&self, g: &Cubic) -> Option<(Candidate, bool)> {
-        let f = self.f;
-        let ends = g.ends(f);
-        let mut best: Option<(usize, Candidate)> = None;
-        for u in ends {
-            for e in g.incident(u) {
-                if e == f {
-                    continue;
-                }
-                let Some(mut c) = g.candidate_for(u, e) else {
-                    continue;
-                };
-                if c.a[1] == f {
-                    c.a.swap(0, 1);
-                    c.x.swap(0, 1);
-                }
-                debug_assert_eq!(c.a[0], f);
-                let cost = self.te.as_ref().map_or(0, |te| {
-                    removed(&c)
-                        .into_iter()
-                        .filter(|&e| te.is_tree_edge(e))
-                        .count()
-                });
-                if best.is_none_or(|(b, _)| cost < b) {
-                    best = Some((cost, c));
-                }
-            }
-        }
-        if let Some((_, c)) = best {
-            return Some((c, true));
-        }
-        ends.into_iter().find_map(|x| {
-            let (h, w) = digon_exit(g, f, x)?;
-            g.candidate_for(w, h).map(|c| (c, false))
-        })
-    }
 }
 
-/// The node a breadth-first search of `g` from `s` reaches last (`seen`: all false, left
-/// marked). O(n).
-fn farthest(g: &Cubic, s: u32, seen: &mut [bool]) -> u32 {
+/// The node a breadth-first search of `g` from live node `s` reaches last. O(n).
+fn farthest(g: &Cubic, s: u32) -> u32 {
+    let mut seen = vec![false; g.node_capacity()];
     let mut queue = std::collections::VecDeque::from([s]);
     seen[s as usize] = true;
     let mut last = s;
@@ -212,82 +173,37 @@ fn farthest(g: &Cubic, s: u32, seen: &mut [bool]) -> u32 {
     last
 }
 
-/// The five edges the reduction `cand` removes.
-fn removed(cand: &Candidate) -> [u32; 5] {
-    [cand.e, cand.a[0], cand.a[1], cand.b[0], cand.b[1]]
-}
-
 impl Strategy for BiedlBoseDemaineLubiw {
+    /// [`TwoEdge`] takes node and edge ids below 2^29: about 214.7M nodes (the edge ids,
+    /// `5n/2 − 2` of them, are the binding limit).
+    fn max_nodes(&self) -> usize {
+        (MAX_ID - 1).min(max_nodes_for_edge_ids(MAX_ID))
+    }
+
     fn start(&mut self, g: &Cubic) {
         let n = g.node_capacity();
         let mut te = TwoEdge::new(n);
         self.counters = BbdlCounters::default();
         self.pending = None;
         // Breadth-first tree edges first (the forest starts as a shallow BFS tree, as in
-        // module `ds`), then the other edges, each once.
-        let mut seen = vec![false; n];
-        let mut used = vec![false; g.ends.len()];
-        let mut queue = std::collections::VecDeque::new();
-        // Rooted at the node last reached from the first forbidden edge's node: the
-        // reductions start far from the root, where cutting a node splits off small
-        // subtrees, instead of at the root, which would split the tree into its largest
-        // branches.
+        // module `ds`), then the other edges, each once. Rooted at the node last reached
+        // from the first forbidden edge's node: the reductions start far from the root,
+        // where cutting a node splits off small subtrees, instead of at the root, which
+        // would split the tree into its largest branches.
         let start = (0..n as u32).find(|&x| g.is_alive(x));
-        let root = start.map(|s| farthest(g, s, &mut seen));
-        seen.iter_mut().for_each(|x| *x = false);
-        for s in root.into_iter().chain(0..n as u32) {
-            if !g.is_alive(s) || seen[s as usize] {
-                continue;
-            }
-            seen[s as usize] = true;
-            queue.push_back(s);
-            while let Some(x) = queue.pop_front() {
-                for e in g.incident(x) {
-                    let y = g.other(e, x);
-                    if !seen[y as usize] {
-                        seen[y as usize] = true;
-                        used[e as usize] = true;
-                        let [a, b] = g.ends(e);
-                        te.insert(e, a, b);
-                        queue.push_back(y);
-                    }
-                }
-            }
-        }
-        for x in 0..n as u32 {
-            if !g.is_alive(x) {
-                continue;
-            }
-            for e in g.incident(x) {
-                // Each edge once, at its first slot in node order (a loop, never in a
-                // bridgeless input, would be listed twice at one node).
-                if !used[e as usize] {
-                    used[e as usize] = true;
-                    let [a, b] = g.ends(e);
-                    te.insert(e, a, b);
-                }
-            }
+        let root = start.map(|s| farthest(g, s));
+        for [e, a, b] in bfs_edge_order(g, root) {
+            te.insert(e, a, b);
         }
         self.te = Some(te);
-        self.f = (0..n as u32)
-            .find(|&x| g.is_alive(x))
-            .map_or(NONE, |x| g.incident(x)[0]);
+        self.fe = ForbiddenEdge::start(g);
     }
 
     fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
-        self.moves_f = true;
-        if self.f != NONE {
-            if let Some((c, moves)) = self.next_to_forbidden(g) {
-                self.moves_f = moves;
-                self.counters.digon_steps += u64::from(!moves);
-                return Some(c);
-            }
-        }
-        // Never on a connected bridgeless graph (module `ds`); kept so that a broken
-        // invariant costs a case (iv) search, not a wrong matching.
-        self.counters.restarts += 1;
-        self.f = NONE;
-        None
+        let te = self.te.as_ref();
+        self.fe.pick(g, |c| {
+            te.map_or(0, |t| tree_edges_removed(c, |e| t.is_tree_edge(e)))
+        })
     }
 
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
@@ -295,13 +211,7 @@ impl Strategy for BiedlBoseDemaineLubiw {
         // and `v`'s, two large sides to search; cut last it is a bridge (no search).
         let five = [cand.a[0], cand.a[1], cand.b[0], cand.b[1], cand.e];
         let te = self.te();
-        // Non-tree edges first: deleted after a tree edge, one of them could have become
-        // its replacement, to be swapped out again.
-        let tree = five.map(|e| te.is_tree_edge(e));
-        for (e, _) in five.into_iter().zip(tree).filter(|&(_, t)| !t) {
-            te.delete(e);
-        }
-        for (e, _) in five.into_iter().zip(tree).filter(|&(_, t)| t) {
+        for e in non_tree_first(five, |e| te.is_tree_edge(e)) {
             te.delete(e);
         }
         let new1 = self.insert_new(g, cand, Reconnection::H1);
@@ -309,6 +219,12 @@ impl Strategy for BiedlBoseDemaineLubiw {
             self.counters.took_h1 += 1;
             (Reconnection::H1, new1)
         } else {
+            // With `H` connected and bridgeless both new edges are non-tree edges here,
+            // so the order of their deletion is immaterial (no non-tree-first reordering
+            // to do): a tree edge among them would join two components of `H'`, which
+            // then has exactly two, each with two of the `x_i` (module `ds`, "`H'`
+            // disconnected"), and `x1x3` or `x2x4` crossing them makes the split
+            // `{x1, x4} | {x2, x3}`, where `H1` passes.
             for e in new1 {
                 self.te().delete(e);
             }
@@ -340,15 +256,13 @@ impl Strategy for BiedlBoseDemaineLubiw {
                 te.insert(e, a, b);
             }
         }
-        if self.moves_f {
-            self.f = r.new[0];
-        }
+        self.fe.applied(r);
         if let Some(te) = &mut self.te {
             super::spec::bbdl_structure(g, te);
         }
     }
 
     fn forbidden(&self) -> Option<u32> {
-        (self.f != NONE).then_some(self.f)
+        self.fe.get()
     }
 }

@@ -28,7 +28,7 @@
 //! O(log n) amortised per tree-stable step (a bounded number of link–cut operations);
 //! O(n) per rebuild or naive step, so O(n²) in the worst case. The counters
 //! ([`CoverTree::counters`]) show how often that happens: on the B family it is rare
-//! (docs/benchmarks.md). Memory: a link–cut tree over `2n` nodes (25 bytes each), plus
+//! (docs/benchmarks.md). Memory: a link–cut tree over `2n` nodes (28 bytes each), plus
 //! about 20 bytes per node and 5 bytes per edge id.
 //!
 //! # Determinism

@@ -75,8 +75,9 @@
 //! Per reduction: five edge deletions and two insertions in the connectivity structure
 //! (O(log² n) amortised each, HDT Sec. 2), the mirrored links and cuts, one `make_root`
 //! and four accesses for the three LCAs in the link–cut tree (O(log n) amortised), O(1)
-//! for the edge choice. O(n log² n) in all, plus a near-linear load of the graph (one
-//! pass, `Hdt::load`; the link–cut tree from parent pointers); each lift is O(1).
+//! for the edge choice. O(n log² n) in all, plus the load of the graph (one pass,
+//! `Hdt::load`: O(m log n) in the worst case for its union–find, O(n) besides; the
+//! link–cut tree from parent pointers, O(n)); each lift is O(1).
 //! Memory: the connectivity structure, a link–cut tree over the nodes (16 bytes each,
 //! `lct::PlainLct`).
 //!
@@ -87,9 +88,10 @@
 //! tried at the ends of `f` in edge-end order, edges in slot order; ties (both
 //! reconnections pass) take `H1`.
 
-use super::graph::NONE;
-use super::hdt::{ForestChange, Hdt};
+use super::graph::{max_nodes_for_edge_ids, NONE};
+use super::hdt::{ForestChange, Hdt, MAX_EDGE_ID};
 use super::lct::PlainLct;
+use super::shared::{bfs_edge_order, non_tree_first, removed, tree_edges_removed, ForbiddenEdge};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
 /// A spanning forest kept under edge insertions and deletions, reporting every change of
@@ -98,6 +100,21 @@ use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 pub(crate) trait SpanningForest {
     /// The edgeless graph on nodes `0..n`.
     fn with_nodes(n: usize) -> Self;
+    /// The most nodes the structure takes without an id or count overflowing (and so
+    /// without failing an assertion on one).
+    fn max_nodes() -> usize
+    where
+        Self: Sized,
+    {
+        usize::MAX
+    }
+    /// Edge ids must be below this.
+    fn max_edge_ids() -> usize
+    where
+        Self: Sized,
+    {
+        usize::MAX
+    }
     /// Inserts edge `e = ab` (`a ≠ b`), pushing the forest's changes.
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>);
     /// Inserts `edges` (`[e, a, b]` each) in this order into the edgeless graph; the
@@ -123,6 +140,12 @@ pub(crate) trait SpanningForest {
 impl SpanningForest for Hdt {
     fn with_nodes(n: usize) -> Self {
         Hdt::new(n)
+    }
+    fn max_nodes() -> usize {
+        Hdt::max_vertices()
+    }
+    fn max_edge_ids() -> usize {
+        MAX_EDGE_ID as usize
     }
     fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
         Hdt::insert(self, e, a, b, changes);
@@ -190,10 +213,7 @@ impl std::ops::AddAssign for DsCounters {
 pub(crate) struct Ds<F> {
     forest: Option<F>,
     lct: PlainLct,
-    /// The forbidden edge, or `NONE`.
-    f: u32,
-    /// Whether the pending reduction moves `f` on to its `p`.
-    moves_f: bool,
+    fe: ForbiddenEdge,
     /// The reduction [`Strategy::choose`] has prepared the forest for.
     pending: Option<Candidate>,
     changes: Vec<ForestChange>,
@@ -205,8 +225,7 @@ impl<F> Default for Ds<F> {
         Ds {
             forest: None,
             lct: PlainLct::default(),
-            f: NONE,
-            moves_f: true,
+            fe: ForbiddenEdge::default(),
             pending: None,
             changes: Vec::new(),
             counters: DsCounters::default(),
@@ -216,7 +235,11 @@ impl<F> Default for Ds<F> {
 
 impl<F: SpanningForest> Ds<F> {
     pub(crate) fn counters(&self) -> DsCounters {
-        self.counters
+        DsCounters {
+            digon_steps: self.fe.digon_steps,
+            restarts: self.fe.restarts,
+            ..self.counters
+        }
     }
 
     /// Mirrors the forest's pending changes into the link–cut tree.
@@ -239,55 +262,6 @@ impl<F: SpanningForest> Ds<F> {
             Some(f) => f,
             None => unreachable!("Strategy::start loads the forest first"),
         }
-    }
-
-    /// The next reduction keeping the forbidden edge `f` out of the matching: at an edge
-    /// next to `f` with `f` as the candidate's `ux1` (the reduction's `p` continues it),
-    /// or, when neither end of `f` has such an edge, at the third edge of a digon at an
-    /// end of `f` (module documentation); the flag says whether `f` moves on to `p`.
-    fn next_to_forbidden(&self, g: &Cubic) -> Option<(Candidate, bool)> {
-        let f = self.f;
-        let ends = g.ends(f);
-        let mut best: Option<(usize, Candidate)> = None;
-        for u in ends {
-            for e in g.incident(u) {
-                if e == f {
-                    continue;
-                }
-                let Some(mut c) = g.candidate_for(u, e) else {
-                    continue;
-                };
-                if c.a[1] == f {
-                    c.a.swap(0, 1);
-                    c.x.swap(0, 1);
-                }
-                debug_assert_eq!(c.a[0], f);
-                // Fewest forest edges among the five removed: each costs a cut and
-                // usually a replacement search, a non-tree edge only its unlinking.
-                let cost = self.tree_edges(&c);
-                if best.is_none_or(|(b, _)| cost < b) {
-                    best = Some((cost, c));
-                }
-            }
-        }
-        if let Some((_, c)) = best {
-            return Some((c, true));
-        }
-        ends.into_iter().find_map(|x| {
-            let (h, w) = digon_exit(g, f, x)?;
-            g.candidate_for(w, h).map(|c| (c, false))
-        })
-    }
-
-    /// How many of the five edges `cand` removes are forest edges.
-    fn tree_edges(&self, cand: &Candidate) -> usize {
-        let Some(forest) = &self.forest else {
-            return 0;
-        };
-        removed(cand)
-            .into_iter()
-            .filter(|&e| forest.is_tree_edge(e))
-            .count()
     }
 
     /// The reconnection for `cand`, with the forest already reduced to `H'`: the
@@ -374,26 +348,13 @@ fn forest_parents(n: usize, links: &[ForestChange]) -> Vec<u32> {
     parent
 }
 
-/// The five edges the reduction `cand` removes.
-fn removed(cand: &Candidate) -> [u32; 5] {
-    [cand.e, cand.a[0], cand.a[1], cand.b[0], cand.b[1]]
-}
-
-/// If `x` (an end of `f`) has its two other edges on a digon `x ⇉ w` (`w` not `f`'s other
-/// end), the third edge `h` of `w`, and `w`.
-pub(super) fn digon_exit(g: &Cubic, f: u32, x: u32) -> Option<(u32, u32)> {
-    let s = g.incident(x);
-    let i = s.iter().position(|&e| e == f)?;
-    let (r0, r1) = (s[(i + 1) % 3], s[(i + 2) % 3]);
-    let w = g.other(r0, x);
-    if w != g.other(r1, x) || w == x || w == g.other(f, x) {
-        return None;
-    }
-    let h = g.incident(w).into_iter().find(|&e| e != r0 && e != r1)?;
-    Some((h, w))
-}
-
 impl<F: SpanningForest> Strategy for Ds<F> {
+    /// The forest's limits, its node count and the edge ids of a run (for [`Hdt`] the
+    /// Euler-tour pool's ids bind: about 55.06M nodes).
+    fn max_nodes(&self) -> usize {
+        F::max_nodes().min(max_nodes_for_edge_ids(F::max_edge_ids()))
+    }
+
     fn start(&mut self, g: &Cubic) {
         let n = g.node_capacity();
         let mut forest = F::with_nodes(n);
@@ -403,42 +364,7 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         // Breadth-first tree edges first, so that the forest starts as a BFS tree
         // (shallow: the pieces a reduction cuts off are small), then the other edges;
         // loaded in one pass (`SpanningForest::load`).
-        let mut seen = vec![false; n];
-        let mut used = vec![false; g.ends.len()];
-        let mut edges = Vec::with_capacity(g.ends.len());
-        let mut queue = std::collections::VecDeque::new();
-        for s in 0..n as u32 {
-            if !g.is_alive(s) || seen[s as usize] {
-                continue;
-            }
-            seen[s as usize] = true;
-            queue.push_back(s);
-            while let Some(x) = queue.pop_front() {
-                for e in g.incident(x) {
-                    let y = g.other(e, x);
-                    if !seen[y as usize] {
-                        seen[y as usize] = true;
-                        used[e as usize] = true;
-                        let [a, b] = g.ends(e);
-                        edges.push([e, a, b]);
-                        queue.push_back(y);
-                    }
-                }
-            }
-        }
-        for x in 0..n as u32 {
-            if !g.is_alive(x) {
-                continue;
-            }
-            for e in g.incident(x) {
-                let [a, b] = g.ends(e);
-                // Each edge once, from its smaller end (a loop never: the input is
-                // bridgeless, checked by solve).
-                if !used[e as usize] && (a == x && a < b || b == x && b < a) {
-                    edges.push([e, a, b]);
-                }
-            }
-        }
+        let edges = bfs_edge_order(g, None);
         forest.load(&edges, &mut self.changes);
         drop(edges);
         self.forest = Some(forest);
@@ -446,38 +372,20 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         // edge): parents by a search over the linked edges, every node its own path.
         self.lct = PlainLct::with_parents(&forest_parents(n, &self.changes));
         self.changes.clear();
-        self.f = (0..n as u32)
-            .find(|&x| g.is_alive(x))
-            .map_or(NONE, |x| g.incident(x)[0]);
+        self.fe = ForbiddenEdge::start(g);
     }
 
     fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
-        self.moves_f = true;
-        if self.f != NONE {
-            if let Some((c, moves)) = self.next_to_forbidden(g) {
-                self.moves_f = moves;
-                self.counters.digon_steps += u64::from(!moves);
-                return Some(c);
-            }
-        }
-        // Never on a connected bridgeless graph (module documentation); kept so that a
-        // broken invariant costs a case (iv) search, not a wrong matching.
-        self.counters.restarts += 1;
-        self.f = NONE;
-        None
+        let forest = self.forest.as_ref();
+        self.fe.pick(g, |c| {
+            forest.map_or(0, |f| tree_edges_removed(c, |e| f.is_tree_edge(e)))
+        })
     }
 
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
         let mut changes = std::mem::take(&mut self.changes);
         let forest = self.forest();
-        // Non-tree edges first: deleted later, one of them could have become the
-        // replacement of a tree edge, to be cut again.
-        let five = removed(cand);
-        let tree = five.map(|e| forest.is_tree_edge(e));
-        for (e, _) in five.into_iter().zip(tree).filter(|&(_, t)| !t) {
-            forest.delete(e, &mut changes);
-        }
-        for (e, _) in five.into_iter().zip(tree).filter(|&(_, t)| t) {
+        for e in non_tree_first(removed(cand), |e| forest.is_tree_edge(e)) {
             forest.delete(e, &mut changes);
         }
         let links = changes
@@ -508,13 +416,11 @@ impl<F: SpanningForest> Strategy for Ds<F> {
         }
         self.changes = changes;
         self.mirror();
-        if self.moves_f {
-            self.f = r.new[0];
-        }
+        self.fe.applied(r);
     }
 
     fn forbidden(&self) -> Option<u32> {
-        (self.f != NONE).then_some(self.f)
+        self.fe.get()
     }
 }
 
@@ -544,6 +450,9 @@ impl DiksStanczyk {
 }
 
 impl Strategy for DiksStanczyk {
+    fn max_nodes(&self) -> usize {
+        self.0.max_nodes()
+    }
     fn start(&mut self, g: &Cubic) {
         self.0.start(g);
     }

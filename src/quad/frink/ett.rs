@@ -544,3 +544,12 @@ impl Pool {
         w == n.w
     }
 }
+
+#[cfg(test)]
+mod tests {
+    /// The node size the documentation states.
+    #[test]
+    fn node_size() {
+        assert_eq!(std::mem::size_of::<super::Node>(), 24);
+    }
+}

@@ -7,6 +7,27 @@ use super::FrinkError;
 /// No edge / no node.
 pub(crate) const NONE: u32 = u32::MAX;
 
+/// Every edge id that [`super::solve`] on a cubic graph of `n` nodes creates is below
+/// this: the `3n/2` input edges, then two new ids per reduction, of which there are at
+/// most `n/2 − 1` (a strategy's tentative [`Cubic::reduce`] takes the same two next ids
+/// and gives them back by [`Cubic::undo`]): `5n/2 − 2` for `n ≥ 2`, as
+/// [`Cubic::reduce`] allocates ids as a stack.
+pub(crate) fn edge_ids(n: usize) -> usize {
+    // ⌊3n/2⌋ without overflow, saturating.
+    let input = (n / 2).saturating_mul(3).saturating_add(n % 2);
+    input.saturating_add(n.saturating_sub(2))
+}
+
+/// The largest `n` for which every edge id of a run on `n` nodes is below `limit`:
+/// [`edge_ids`]`(m) ≤ limit` for every `m ≤` the result ([`edge_ids`] grows with `n`).
+pub(crate) fn max_nodes_for_edge_ids(limit: usize) -> usize {
+    // 5n/2 − 2 ≤ limit ⇔ n ≤ 2(limit + 2)/5.
+    let k = limit.saturating_add(2);
+    let n = k / 5 * 2 + k % 5 * 2 / 5;
+    debug_assert!(edge_ids(n) <= limit);
+    n
+}
+
 /// A cubic multigraph with stable ids on flat arrays: `ends[e]` are the two end nodes of
 /// edge `e` (equal for a loop), `slots[x]` the three edge ids at node `x` (a loop twice).
 /// Reductions remove two nodes and five edges and append two new edges; an edge is live

@@ -29,12 +29,14 @@
 //! next such item of `T` is found by one descent.
 //!
 //! Two departures from the paper's order of work, neither changing the invariants or
-//! the bound: (1) before the scan, `SAMPLE` (96) non-tree edges of level `i` from each
-//! of the four ends of the two trees' sequences (`T` from its start, then from its
-//! end, then the other tree the same way; all four ends are next to the cut, where a
-//! local cut's crossing edges are, and every crossing edge has an end on each side)
-//! are examined without promoting anything; a replacement among them ends the search,
-//! and if a tree has fewer and none leaves it, level `i` has no replacement (a
+//! the bound: (1) before the scan, `SAMPLE` (96) non-tree half-edges of level `i` (the
+//! entries of the vertices' lists: an edge with both ends in the tree may be met
+//! twice, a crossing edge once) from each of the four ends of the two trees' sequences
+//! (`T` from its start, then from its end, then the other tree the same way; all four
+//! ends are next to the cut, where a local cut's crossing edges are, and every crossing
+//! edge has an end on each side) are examined without promoting anything; a
+//! replacement among them ends the search, and if a tree has fewer and none leaves it,
+//! level `i` has no replacement (a
 //! deterministic form of the sampling heuristic of Iyer–Karger–Rahul–Thorup, ACM JEA 6,
 //! 2001); (2) `T`'s tree edges are promoted only when the scan first
 //! has to promote a non-tree edge (the paper promotes them first; they are needed only
@@ -112,8 +114,9 @@ pub(crate) const MAX_EDGE_ID: u32 = (1 << 31) - 1;
 const DEAD: u8 = 0xFF;
 /// [`Hdt::state`] bit of a tree edge; the low bits are the level.
 const TREE: u8 = 0x80;
-/// Non-tree edges examined from each of the four ends at a level before any promotion
-/// (see [`Hdt::replace`]).
+/// Non-tree half-edges (list entries, so an edge inside the tree may count twice)
+/// examined from each of the four ends at a level before any promotion (see
+/// [`Hdt::replace`]).
 const SAMPLE: u32 = 96;
 /// Flag of a vertex node with non-tree edges of its level.
 const NT: Flag = Flag::F0;
@@ -140,15 +143,38 @@ pub(crate) struct Hdt {
     links: Vec<[u32; 4]>,
     stats: HdtStats,
     chain: Vec<u32>,
-    /// Non-tree edges examined per level before the paper's scan (`SAMPLE`; the tests
+    /// Non-tree half-edges examined from each end per level before the paper's scan
+    /// (`SAMPLE`; the tests
     /// also run with 0, the paper's scan with departure (2) only, which promotes much
     /// more and so exercises the levels).
     sample: u32,
 }
 
 impl Hdt {
+    /// The most vertices for which no id can overflow: at most [`MAX_TREE`] (the
+    /// counts), and few enough that the Euler-tour pool's node ids stay below `NIL`
+    /// (a vertex has nodes for levels `0..=L`, `L = ⌊log₂ n⌋`, at most, and each of the
+    /// at most `n − 1` tree edges `L + 1` arc pairs: fewer than `3n(L + 1)` nodes, free
+    /// ones reused first). About 55.06M vertices.
+    pub(crate) fn max_vertices() -> usize {
+        let fits =
+            |n: usize| n <= MAX_TREE && 3 * n * (n.max(1).ilog2() as usize + 1) < NIL as usize;
+        // `fits` holds for 0 and, growing with `n`, up to some bound: bisect for it.
+        let (mut lo, mut hi) = (0usize, MAX_TREE + 1);
+        while hi - lo > 1 {
+            let mid = lo + (hi - lo) / 2;
+            if fits(mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+
     /// `n` vertices `0..n`, no edges. O(n). Panics if `n` exceeds 2²⁷ − 1 (the subtree
-    /// vertex counts have 27 bits), a limit of the structure, not of the input data.
+    /// vertex counts have 27 bits), a limit of the structure, not of the input data;
+    /// below [`Hdt::max_vertices`] no later operation can overflow an id either.
     pub(crate) fn new(n: usize) -> Self {
         assert!(
             n <= MAX_TREE,
@@ -219,9 +245,12 @@ impl Hdt {
     /// structure that has no edge yet, with exactly the result of inserting them one by
     /// one in this order: the same forest, changes, Euler-tour sequences (in the same
     /// rotation), non-tree lists and node ids, so that every later choice is the same
-    /// (tested). Near-linear instead of O((n + m) log n): a union–find decides which
-    /// edges link, the tours are spliced as cyclic lists as [`Pool::link`] would splice
-    /// them, and each tree is then built balanced in one pass ([`Pool::build`]).
+    /// (tested). A union–find decides which edges link, the tours are spliced as cyclic
+    /// lists as [`Pool::link`] would splice them, and each tree is then built balanced in
+    /// one pass ([`Pool::build`]): O(n + m) besides the union–find, whose path halving
+    /// with linking by edge order (not by rank: the root decides the tour's rotation) is
+    /// O(m log n) in the worst case (Tarjan–van Leeuwen), near-linear on BFS-ordered
+    /// edges in practice; one-by-one insertion would be O(m log n) amortised splay work.
     /// Falls back on one-by-one insertion if an edge already exists.
     pub(crate) fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
         if self.state.iter().any(|&s| s != DEAD) {
@@ -520,12 +549,12 @@ impl Hdt {
         let sx = self.pool.tree_size(x);
         let sy = self.pool.tree_size(y);
         let (t, size, big) = if sx <= sy { (x, sx, y) } else { (y, sy, x) };
-        // Departure (1) of the module doc: `sample` non-tree edges of level i from each
-        // end of the sequences of T and of the other tree are examined without promoting
-        // anything (every crossing edge has an end on each side, and all four ends are
-        // next to the cut, `ett::Pool::cut`, where a local cut's crossing edges are):
-        // O(sample · log n) unpaid work. A tree with fewer than `sample` edges of level
-        // i has had them all examined: none crosses, level i has no replacement. Only if
+        // Departure (1) of the module doc: `sample` non-tree half-edges of level i from
+        // each end of the sequences of T and of the other tree are examined without
+        // promoting anything (every crossing edge has an end on each side, and all four
+        // ends are next to the cut, `ett::Pool::cut`, where a local cut's crossing edges
+        // are): O(sample · log n) unpaid work. A tree with fewer than `sample` half-edges
+        // of level i has had them all examined: none crosses, level i has no replacement. Only if
         // all four samples are full and internal does the paper's scan run, which pays
         // for itself by promotions.
         for (root, back) in [(t, false), (t, true), (big, false), (big, true)] {
@@ -580,9 +609,10 @@ impl Hdt {
         true
     }
 
-    /// Examines the first `sample` non-tree edges of level `i` of the tree of node `t`, in
-    /// sequence order: the first one leaving the tree becomes a tree edge of level `i`
-    /// and is returned; also returns how many were examined.
+    /// Examines the first `sample` non-tree half-edges of level `i` of the tree of node
+    /// `t` (its vertices' list entries, in sequence order; from the end if `back`): the
+    /// first one leaving the tree becomes a tree edge of level `i` and is returned; also
+    /// returns how many half-edges were examined.
     fn sample_from(&mut self, t: u32, i: u32, back: bool, limit: u32) -> (Option<u32>, u32) {
         let mut sampled = 0;
         let mut w = if back {

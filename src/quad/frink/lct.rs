@@ -10,8 +10,9 @@
 //! nodes in different trees; an existing edge) and check them with `debug_assert!`.
 //!
 //! # Complexity
-//! O(log n) amortised per operation (splay trees with the access lemma); memory 25 bytes
-//! per node. No recursion: push-downs along a splay path use an explicit stack.
+//! O(log n) amortised per operation (splay trees with the access lemma); memory 28 bytes
+//! per node (25 bytes of fields, padded to 4-byte alignment; 16 for [`PlainLct`]). No
+//! recursion: push-downs along a splay path use an explicit stack.
 
 /// No node.
 const NIL: u32 = u32::MAX;
@@ -487,6 +488,13 @@ impl PlainLct {
 mod tests {
     use super::Lct;
 
+    /// The node sizes the documentation states.
+    #[test]
+    fn node_sizes() {
+        assert_eq!(std::mem::size_of::<super::Node>(), 28);
+        assert_eq!(std::mem::size_of::<super::PlainNode>(), 16);
+    }
+
     /// The naive forest: adjacency sets and values; path by BFS.
     struct Naive {
         adj: Vec<Vec<u32>>,
@@ -681,6 +689,59 @@ mod tests {
         assert!(queries > 1000, "{queries} lca queries");
     }
 
+    /// Random links, cuts and walk-LCA queries (rooted at random nodes) on `lct`, checked
+    /// against `naive`, which holds the same forest with the edges `edges`; returns the
+    /// number of walks checked.
+    fn random_plain_walks(
+        lct: &mut super::PlainLct,
+        naive: &mut Naive,
+        edges: &mut Vec<(u32, u32)>,
+        s: &mut u64,
+        seed: u64,
+    ) -> usize {
+        let n = naive.adj.len() as u64;
+        let mut queries = 0;
+        for _ in 0..300 {
+            let x = (next(s) % n) as u32;
+            let y = (next(s) % n) as u32;
+            let z = (next(s) % n) as u32;
+            let r = (next(s) % n) as u32;
+            match next(s) % 4 {
+                0 if naive.path(x, y).is_none() => {
+                    lct.link(x, y);
+                    naive.adj[x as usize].push(y);
+                    naive.adj[y as usize].push(x);
+                    edges.push((x, y));
+                }
+                1 if !edges.is_empty() => {
+                    let k = (next(s) % edges.len() as u64) as usize;
+                    let (a, b) = edges.swap_remove(k);
+                    lct.cut(a, b);
+                    naive.adj[a as usize].retain(|&c| c != b);
+                    naive.adj[b as usize].retain(|&c| c != a);
+                }
+                _ => {
+                    let lca = |a: u32, b: u32| {
+                        let pa: Vec<u32> = naive.path(r, a)?.into_iter().rev().collect();
+                        let pb: Vec<u32> = naive.path(r, b)?.into_iter().rev().collect();
+                        let common = pa.iter().zip(&pb).take_while(|(p, q)| p == q).count();
+                        Some(pa[common - 1])
+                    };
+                    let (Some(xy), Some(yz), Some(zx)) = (lca(x, y), lca(y, z), lca(z, x)) else {
+                        continue;
+                    };
+                    lct.make_root(r);
+                    lct.walk_to(x);
+                    assert_eq!(lct.walk_to(y), xy, "seed {seed}");
+                    assert_eq!(lct.walk_to(z), yz, "seed {seed}");
+                    assert_eq!(lct.walk_to(x), zx, "seed {seed}");
+                    queries += 1;
+                }
+            }
+        }
+        queries
+    }
+
     /// `PlainLct`'s walk LCAs against the naive forest, on random forests changed by
     /// links and cuts between queries (as `lca_agrees_with_naive_paths` for `Lct`).
     #[test]
@@ -694,47 +755,72 @@ mod tests {
                 adj: vec![Vec::new(); n],
                 val: vec![0; n],
             };
-            let mut edges: Vec<(u32, u32)> = Vec::new();
-            for _ in 0..300 {
-                let x = (next(&mut s) % n as u64) as u32;
-                let y = (next(&mut s) % n as u64) as u32;
-                let z = (next(&mut s) % n as u64) as u32;
-                let r = (next(&mut s) % n as u64) as u32;
-                match next(&mut s) % 4 {
-                    0 if naive.path(x, y).is_none() => {
-                        lct.link(x, y);
-                        naive.adj[x as usize].push(y);
-                        naive.adj[y as usize].push(x);
-                        edges.push((x, y));
-                    }
-                    1 if !edges.is_empty() => {
-                        let k = (next(&mut s) % edges.len() as u64) as usize;
-                        let (a, b) = edges.swap_remove(k);
-                        lct.cut(a, b);
-                        naive.adj[a as usize].retain(|&c| c != b);
-                        naive.adj[b as usize].retain(|&c| c != a);
-                    }
-                    _ => {
-                        let lca = |a: u32, b: u32| {
-                            let pa: Vec<u32> = naive.path(r, a)?.into_iter().rev().collect();
-                            let pb: Vec<u32> = naive.path(r, b)?.into_iter().rev().collect();
-                            let common = pa.iter().zip(&pb).take_while(|(p, q)| p == q).count();
-                            Some(pa[common - 1])
-                        };
-                        let (Some(xy), Some(yz), Some(zx)) = (lca(x, y), lca(y, z), lca(z, x))
-                        else {
-                            continue;
-                        };
-                        lct.make_root(r);
-                        lct.walk_to(x);
-                        assert_eq!(lct.walk_to(y), xy, "seed {seed}");
-                        assert_eq!(lct.walk_to(z), yz, "seed {seed}");
-                        assert_eq!(lct.walk_to(x), zx, "seed {seed}");
-                        queries += 1;
-                    }
-                }
-            }
+            queries += random_plain_walks(&mut lct, &mut naive, &mut Vec::new(), &mut s, seed);
         }
         assert!(queries > 1000, "{queries} walks");
+    }
+
+    /// `PlainLct::with_parents` represents the forest of its parent array, rooted as the
+    /// array roots it: on random forests (random parents in a random node order, about a
+    /// fifth of the nodes roots), the walk LCAs before any re-rooting are those of the
+    /// parent array's ancestor chains (and two nodes of different trees are never asked);
+    /// the same forest then takes random links, cuts and re-rooted walks as the naive one.
+    #[test]
+    fn plain_with_parents_is_the_parent_array_forest() {
+        const NONE: u32 = u32::MAX;
+        let (mut rooted, mut walks) = (0, 0);
+        for seed in 1..=80u64 {
+            let mut s = seed.wrapping_mul(0x2545_F491_4F6C_DD1D) | 1;
+            let n = 1 + (next(&mut s) % 40) as usize;
+            let mut order: Vec<u32> = (0..n as u32).collect();
+            for i in (1..n).rev() {
+                order.swap(i, (next(&mut s) % (i as u64 + 1)) as usize);
+            }
+            let mut parent = vec![NONE; n];
+            for k in 1..n {
+                if next(&mut s) % 5 != 0 {
+                    parent[order[k] as usize] = order[(next(&mut s) % k as u64) as usize];
+                }
+            }
+            let ancestors = |mut x: u32| {
+                let mut chain = vec![x];
+                while parent[x as usize] != NONE {
+                    x = parent[x as usize];
+                    chain.push(x);
+                }
+                chain.reverse();
+                chain
+            };
+            let mut lct = super::PlainLct::with_parents(&parent);
+            for _ in 0..60 {
+                let x = (next(&mut s) % n as u64) as u32;
+                let y = (next(&mut s) % n as u64) as u32;
+                let (ax, ay) = (ancestors(x), ancestors(y));
+                if ax[0] != ay[0] {
+                    continue;
+                }
+                let common = ax.iter().zip(&ay).take_while(|(p, q)| p == q).count();
+                lct.walk_to(x);
+                assert_eq!(lct.walk_to(y), ax[common - 1], "seed {seed}: {x} {y}");
+                rooted += 1;
+            }
+            let mut naive = Naive {
+                adj: vec![Vec::new(); n],
+                val: vec![0; n],
+            };
+            let mut edges = Vec::new();
+            for (x, &p) in parent.iter().enumerate() {
+                if p != NONE {
+                    naive.adj[x].push(p);
+                    naive.adj[p as usize].push(x as u32);
+                    edges.push((x as u32, p));
+                }
+            }
+            walks += random_plain_walks(&mut lct, &mut naive, &mut edges, &mut s, seed);
+        }
+        assert!(
+            rooted > 2000 && walks > 1000,
+            "{rooted} rooted, {walks} walks"
+        );
     }
 }

@@ -113,6 +113,7 @@ mod ett;
 mod graph;
 mod hdt;
 mod lct;
+mod shared;
 mod spec;
 mod two_edge;
 
@@ -144,8 +145,9 @@ pub enum FrinkError {
         /// The node.
         node: u32,
     },
-    /// The node or edge count does not fit the 32-bit ids.
-    #[error("{0} nodes: too many for 32-bit ids")]
+    /// The node or edge count does not fit the 32-bit ids, or the node count exceeds
+    /// what the strategy's structures hold ([`Strategy::max_nodes`]).
+    #[error("{0} nodes: too many for 32-bit ids or for the strategy (Strategy::max_nodes)")]
     TooLarge(usize),
     /// The graph is disconnected, has a bridge or a loop.
     #[error("the graph is not connected and bridgeless")]
@@ -170,6 +172,16 @@ pub enum FrinkError {
 
 /// Chooses between the two reconnections of a reduction (Appendix A's `H1`, `H2`).
 pub trait Strategy {
+    /// The most nodes an input may have for this strategy: with at most that many,
+    /// none of its structures can overflow an id or a count, or fail an assertion on
+    /// one, during [`solve`] (which allocates at most `5n/2 − 2` edge ids on `n`
+    /// nodes); with more, [`solve`] refuses the input ([`FrinkError::TooLarge`]) before
+    /// [`Strategy::start`]. The default, no limit, is for strategies whose structures
+    /// are sized by `n` only within the 32-bit ids [`Cubic::from_edges`] checks.
+    fn max_nodes(&self) -> usize {
+        usize::MAX
+    }
+
     /// Called once before the first reduction, with the input graph.
     fn start(&mut self, g: &Cubic) {
         let _ = g;
@@ -271,7 +283,8 @@ pub struct Solution {
 }
 
 /// A perfect matching of `g` (per node its matched edge) if `g` is connected and
-/// bridgeless, else an error (checked first by one DFS, O(n)); a step finding its
+/// bridgeless, else an error (its size against [`Strategy::max_nodes`] first, then
+/// connected and bridgeless by one DFS, O(n)); a step finding its
 /// theorem violated (only a wrong strategy can cause it) is also an error. Time: n/2
 /// reductions, each one `strategy` decision plus O(1), and n/2 lifts, each O(1) plus the
 /// Edmonds search of case (iv), O(n·α(n)); with [`Naive`], O(n²) in all. Algorithm:
@@ -284,6 +297,9 @@ pub fn solve<S: Strategy>(mut g: Cubic, strategy: &mut S) -> Result<Solution, Fr
             mate: Vec::new(),
             stats,
         });
+    }
+    if n > strategy.max_nodes() {
+        return Err(FrinkError::TooLarge(n));
     }
     if !Dfs::default().connected_bridgeless(&g, 0) {
         return Err(FrinkError::NotBridgeless);

@@ -498,6 +498,10 @@ struct Checked<S = CoverTree> {
 }
 
 impl<S: Strategy> Strategy for Checked<S> {
+    fn max_nodes(&self) -> usize {
+        self.inner.max_nodes()
+    }
+
     fn start(&mut self, g: &Cubic) {
         self.inner.start(g);
     }
@@ -550,35 +554,63 @@ fn run_cover(g: &Cubic, label: &str) -> Checked {
     s
 }
 
-#[test]
-fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
+/// What [`agreement_on_small_and_random`] saw on its random graphs.
+#[derive(Debug, Default)]
+struct Agreement {
+    /// Connected bridgeless random graphs run.
+    graphs: u64,
+    /// Steps checked.
+    steps: u64,
+    /// Steps where only one reconnection was valid.
+    single: u64,
+}
+
+/// The agreement of a strategy with the naive DFS test at every step (by [`Checked`],
+/// inside `run(g, label, random)`, which runs the checked strategy on `g`, checks its
+/// result and returns it; `random`: whether `g` is one of the random graphs, on which
+/// the callers' counters are summed): on the small graphs, then on the connected
+/// bridgeless ones among 3000 random cubic multigraphs of 2 to 40 nodes from `seed`.
+/// Asserts that the random runs exercised the check (more than 500 graphs, more than
+/// 100 forced steps).
+fn agreement_on_small_and_random<S: Strategy>(
+    seed: u64,
+    mut run: impl FnMut(&Cubic, &str, bool) -> Checked<S>,
+) -> Agreement {
     for (name, g) in small_graphs() {
-        run_cover(&g, name);
+        run(&g, name, false);
     }
-    let mut rng = Rng::new(23);
-    let (mut graphs, mut steps, mut single) = (0, 0, 0);
-    let mut counters = CoverCounters::default();
+    let mut rng = Rng::new(seed);
+    let mut seen = Agreement::default();
     for round in 0..3000 {
         let n = 2 * (1 + rng.index(20));
         let g = random_cubic(n, &mut rng);
         if !spec::connected_bridgeless_by_definition(&g) {
             continue;
         }
-        let s = run_cover(&g, &format!("round {round}"));
-        graphs += 1;
-        steps += s.steps;
-        single += s.single;
-        let c = s.inner.counters();
-        counters.s1 += c.s1;
-        counters.s2 += c.s2;
-        counters.s4 += c.s4;
-        counters.naive_steps += c.naive_steps;
+        let s = run(&g, &format!("round {round}"), true);
+        seen.graphs += 1;
+        seen.steps += s.steps;
+        seen.single += s.single;
     }
-    eprintln!("cover tree: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {counters:?}");
-    assert!(
-        graphs > 500 && single > 100,
-        "{graphs} graphs, {single} forced steps"
-    );
+    assert!(seen.graphs > 500 && seen.single > 100, "{seen:?}");
+    seen
+}
+
+#[test]
+fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
+    let mut counters = CoverCounters::default();
+    let seen = agreement_on_small_and_random(23, |g, label, random| {
+        let s = run_cover(g, label);
+        if random {
+            let c = s.inner.counters();
+            counters.s1 += c.s1;
+            counters.s2 += c.s2;
+            counters.s4 += c.s4;
+            counters.naive_steps += c.naive_steps;
+        }
+        s
+    });
+    eprintln!("cover tree: {seen:?}, {counters:?}");
     assert!(
         counters.s1 > 0 && counters.s2 > 0 && counters.s4 > 0,
         "{counters:?}"
@@ -617,11 +649,16 @@ fn flipped_runs_caught<S: Strategy + Default>(seed: u64) -> usize {
 }
 
 /// The agreement check can fail: with the choice flipped it catches the first step where
-/// only the strategy's reconnection was valid.
+/// only the strategy's reconnection was valid, for each strategy.
 #[test]
 fn the_agreement_check_catches_a_flipped_choice() {
-    let caught = flipped_runs_caught::<CoverTree>(23);
-    assert!(caught > 20, "caught {caught}");
+    for (name, caught) in [
+        ("cover tree", flipped_runs_caught::<CoverTree>(23)),
+        ("diks-stanczyk", flipped_runs_caught::<DiksStanczyk>(31)),
+        ("bbdl", flipped_runs_caught::<BiedlBoseDemaineLubiw>(47)),
+    ] {
+        assert!(caught > 20, "{name}: caught {caught}");
+    }
 }
 
 /// The fallback (no tree-stable configuration: rebuild, then a naive step, then a
@@ -648,10 +685,10 @@ fn cover_tree_fallback_steps() {
     assert!(graphs > 50);
 }
 
-/// Duals of random closed surfaces, orientable genus 0..8 and non-orientable: every
-/// step checked, the pairing perfect.
-#[test]
-fn cover_tree_on_random_surfaces() {
+/// Calls `each(t, g, label)` on the duals `g` of random closed surfaces `t` of at least
+/// 400 faces, orientable of genus 0 to 8 and non-orientable of genus 1 to 6, two seeds
+/// each.
+fn on_random_surfaces(mut each: impl FnMut(&Triangulation, &Cubic, &str)) {
     use crate::gen::{random, RandomParams, SurfaceKind};
     let kinds = (0..=8)
         .map(SurfaceKind::Orientable)
@@ -665,13 +702,21 @@ fn cover_tree_on_random_surfaces() {
                 seed,
             });
             let (g, _) = dual_graph(&t).expect("dual");
-            let s = run_cover(&g, &format!("{kind:?} seed {seed}"));
-            assert!(s.steps > 0);
-            let (p, _) = perfect_matching_with(&t, &mut CoverTree::new());
-            assert!(p.is_perfect(&t), "{kind:?} seed {seed}");
-            assert_eq!(p.check(&t), Ok(()));
+            each(&t, &g, &format!("{kind:?} seed {seed}"));
         }
     }
+}
+
+/// Duals of random closed surfaces: every step checked, the pairing perfect.
+#[test]
+fn cover_tree_on_random_surfaces() {
+    on_random_surfaces(|t, g, label| {
+        let s = run_cover(g, label);
+        assert!(s.steps > 0);
+        let (p, _) = perfect_matching_with(t, &mut CoverTree::new());
+        assert!(p.is_perfect(t), "{label}");
+        assert_eq!(p.check(t), Ok(()));
+    });
 }
 
 /// The reference connectivity structure for [`ds::Ds`]: adjacency lists, and after a
@@ -789,33 +834,17 @@ fn run_ds<S: Strategy + Default>(
 /// connected and bridgeless, including every step where only one reconnection is.
 #[test]
 fn diks_stanczyk_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
-    for (name, g) in small_graphs() {
-        run_ds::<DiksStanczyk>(&g, name, DiksStanczyk::counters);
-        run_ds::<ds::Ds<NaiveForest>>(&g, name, ds::Ds::counters);
-    }
-    let mut rng = Rng::new(29);
-    let (mut graphs, mut steps, mut single, mut iv) = (0, 0, 0, 0);
-    let mut total = DsCounters::default();
-    for round in 0..3000 {
-        let n = 2 * (1 + rng.index(20));
-        let g = random_cubic(n, &mut rng);
-        if !spec::connected_bridgeless_by_definition(&g) {
-            continue;
+    let (mut total, mut iv) = (DsCounters::default(), 0);
+    let seen = agreement_on_small_and_random(29, |g, label, random| {
+        let (s, stats, c) = run_ds::<DiksStanczyk>(g, label, DiksStanczyk::counters);
+        run_ds::<ds::Ds<NaiveForest>>(g, label, ds::Ds::counters);
+        if random {
+            iv += stats.case_iv;
+            total += c;
         }
-        let label = format!("round {round}");
-        let (s, stats, c) = run_ds::<DiksStanczyk>(&g, &label, DiksStanczyk::counters);
-        run_ds::<ds::Ds<NaiveForest>>(&g, &label, ds::Ds::counters);
-        graphs += 1;
-        steps += s.steps;
-        single += s.single;
-        iv += stats.case_iv;
-        total += c;
-    }
-    eprintln!("diks-stanczyk: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {iv} case (iv), {total:?}");
-    assert!(
-        graphs > 500 && single > 100,
-        "{graphs} graphs, {single} forced steps"
-    );
+        s
+    });
+    eprintln!("diks-stanczyk: {seen:?}, {iv} case (iv), {total:?}");
     assert!(
         total.disconnected > 0 && total.forced > 0 && total.free > 0 && total.replacements > 0,
         "{total:?}"
@@ -823,40 +852,17 @@ fn diks_stanczyk_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
     assert!(total.digon_steps > 0, "{total:?}");
 }
 
-/// The agreement check catches a broken Diks–Stańczyk (the other reconnection where
-/// only one is valid).
-#[test]
-fn the_agreement_check_catches_a_flipped_diks_stanczyk() {
-    let caught = flipped_runs_caught::<DiksStanczyk>(31);
-    assert!(caught > 20, "caught {caught}");
-}
-
-/// Duals of random closed surfaces, orientable genus 0..8 and non-orientable, and the
-/// standard surfaces: every Diks–Stańczyk step checked, the pairing perfect, no case (iv).
+/// Duals of random closed surfaces: every Diks–Stańczyk step checked, the pairing
+/// perfect, no case (iv).
 #[test]
 fn diks_stanczyk_on_random_surfaces() {
-    use crate::gen::{random, RandomParams, SurfaceKind};
-    let kinds = (0..=8)
-        .map(SurfaceKind::Orientable)
-        .chain((1..=6).map(SurfaceKind::NonOrientable));
-    for kind in kinds {
-        for seed in 1..=2u64 {
-            let t = random(&RandomParams {
-                surface: kind,
-                min_faces: 400,
-                flip_percent: 30,
-                seed,
-            });
-            let (g, _) = dual_graph(&t).expect("dual");
-            let label = format!("{kind:?} seed {seed}");
-            let (_, stats, c) = run_ds::<DiksStanczyk>(&g, &label, DiksStanczyk::counters);
-            assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
-            let mut ds = DiksStanczyk::new();
-            let (p, _) = perfect_matching_with(&t, &mut ds);
-            assert!(p.is_perfect(&t), "{label}");
-            assert_eq!(p.check(&t), Ok(()));
-        }
-    }
+    on_random_surfaces(|t, g, label| {
+        let (_, stats, c) = run_ds::<DiksStanczyk>(g, label, DiksStanczyk::counters);
+        assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
+        let (p, _) = perfect_matching_with(t, &mut DiksStanczyk::new());
+        assert!(p.is_perfect(t), "{label}");
+        assert_eq!(p.check(t), Ok(()));
+    });
 }
 
 /// A broken connectivity structure for the test of F3: [`NaiveForest`] that never links
@@ -902,27 +908,34 @@ fn f3_catches_a_forest_that_stops_spanning() {
     }
 }
 
-/// The Diks–Stańczyk decision against the naive DFS test on *every* reduction of small
-/// graphs (not only those the travelling forbidden edge picks), both reconnections
-/// classified by the naive test: the decision must take a valid one, so wherever only
-/// one is valid it is that one. A fresh strategy per candidate (its forest is reduced by
-/// `choose`).
-#[test]
-fn diks_stanczyk_decides_every_reduction_of_small_and_random_graphs() {
-    let mut graphs: Vec<(String, Cubic)> = small_graphs()
+/// A strategy's decision against the naive DFS test on *every* reduction of small graphs
+/// (not only those it would pick itself): the small graphs and random connected
+/// bridgeless cubic multigraphs of 4 to 20 nodes from `seed`, `graphs` in all; for every
+/// candidate a fresh strategy from `fresh` (its structure is reduced by `choose`) is
+/// started on the graph and asked, and both reconnections are classified by the naive
+/// test. The decision must take a valid one, so wherever only one is valid it is that
+/// one; with `ties_take_h1`, exactly the first valid one. Returns the decisions and the
+/// forced ones among them.
+fn decide_every_reduction<S: Strategy>(
+    seed: u64,
+    graphs: usize,
+    fresh: impl Fn() -> S,
+    ties_take_h1: bool,
+) -> (usize, usize) {
+    let mut all: Vec<(String, Cubic)> = small_graphs()
         .into_iter()
         .map(|(n, g)| (n.to_string(), g))
         .collect();
-    let mut rng = Rng::new(37);
-    while graphs.len() < 400 {
+    let mut rng = Rng::new(seed);
+    while all.len() < graphs {
         let g = random_cubic(2 * (2 + rng.index(9)), &mut rng);
         if spec::connected_bridgeless_by_definition(&g) {
-            graphs.push((format!("random {}", graphs.len()), g));
+            all.push((format!("random {}", all.len()), g));
         }
     }
     let mut dfs = Dfs::default();
     let (mut decided, mut single) = (0, 0);
-    for (name, g) in &graphs {
+    for (name, g) in &all {
         for cand in all_candidates(g) {
             let mut h = g.clone();
             let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
@@ -931,16 +944,27 @@ fn diks_stanczyk_decides_every_reduction_of_small_and_random_graphs() {
                 h.undo(&r);
                 ok
             });
-            let mut ds = DiksStanczyk::new();
-            ds.start(&h);
-            let chosen = ds.choose(&mut h, &cand).expect("a decision");
+            let mut s = fresh();
+            s.start(&h);
+            let chosen = s.choose(&mut h, &cand).expect("a decision");
             let k = usize::from(chosen == Reconnection::H2);
             assert!(ok[k], "{name}: {cand:?}: {chosen:?} has a bridge ({ok:?})");
+            if ties_take_h1 {
+                assert_eq!(chosen == Reconnection::H1, ok[0], "{name}: {cand:?}");
+            }
             decided += 1;
             single += usize::from(ok[0] != ok[1]);
         }
     }
-    eprintln!("diks-stanczyk decision: {decided} reductions of {} graphs, {single} with one valid reconnection", graphs.len());
+    (decided, single)
+}
+
+/// [`decide_every_reduction`] for Diks–Stańczyk (whose tie rule reads the forest's
+/// shape, so it may take `H2` where both pass).
+#[test]
+fn diks_stanczyk_decides_every_reduction_of_small_and_random_graphs() {
+    let (decided, single) = decide_every_reduction(37, 400, DiksStanczyk::new, false);
+    eprintln!("diks-stanczyk decision: {decided} reductions, {single} with one valid reconnection");
     assert!(
         decided > 5000 && single > 500,
         "{decided} decisions, {single} forced"
@@ -963,6 +987,21 @@ fn run_bbdl(g: &Cubic, label: &str) -> (Checked<BiedlBoseDemaineLubiw>, Stats, B
         sol.stats.reductions as u64,
         "{label}"
     );
+    // The counts of the module documentation's complexity: per step five deletions,
+    // then two insertions and three queries (H1 passes), or H1's two inserted and
+    // deleted, H2's two inserted, and four to six queries.
+    let (h1, h2) = (c.took_h1, c.took_h2);
+    let work = &c.structure;
+    assert_eq!(
+        work.inserts,
+        g.ends.len() as u64 + 2 * h1 + 4 * h2,
+        "{label}"
+    );
+    assert_eq!(work.deletes, 5 * (h1 + h2) + 2 * h2, "{label}");
+    assert!(
+        (3 * h1 + 4 * h2..=3 * h1 + 6 * h2).contains(&c.queries),
+        "{label}: {c:?}"
+    );
     (s, sol.stats, c)
 }
 
@@ -972,83 +1011,28 @@ fn run_bbdl(g: &Cubic, label: &str) -> (Checked<BiedlBoseDemaineLubiw>, Stats, B
 /// against the graph after every step under the specification).
 #[test]
 fn bbdl_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
-    for (name, g) in small_graphs() {
-        run_bbdl(&g, name);
-    }
-    let mut rng = Rng::new(43);
-    let (mut graphs, mut steps, mut single) = (0, 0, 0);
     let (mut h2, mut digons, mut swaps) = (0, 0, 0);
-    for round in 0..3000 {
-        let n = 2 * (1 + rng.index(20));
-        let g = random_cubic(n, &mut rng);
-        if !spec::connected_bridgeless_by_definition(&g) {
-            continue;
+    let seen = agreement_on_small_and_random(43, |g, label, random| {
+        let (s, _, c) = run_bbdl(g, label);
+        if random {
+            h2 += c.took_h2;
+            digons += c.digon_steps;
+            swaps += c.structure.swaps;
         }
-        let (s, _, c) = run_bbdl(&g, &format!("round {round}"));
-        graphs += 1;
-        steps += s.steps;
-        single += s.single;
-        h2 += c.took_h2;
-        digons += c.digon_steps;
-        swaps += c.structure.swaps;
-    }
-    eprintln!("bbdl: {graphs} graphs, {steps} steps, {single} with one valid reconnection, {h2} took H2, {digons} digon steps, {swaps} swaps");
+        s
+    });
+    eprintln!("bbdl: {seen:?}, {h2} took H2, {digons} digon steps, {swaps} swaps");
     assert!(
-        graphs > 500 && single > 100 && h2 > 100 && digons > 0 && swaps > 0,
-        "{graphs} graphs, {single} forced, {h2} H2, {digons} digons, {swaps} swaps"
+        h2 > 100 && digons > 0 && swaps > 0,
+        "{h2} H2, {digons} digons, {swaps} swaps"
     );
 }
 
-/// The agreement check catches a broken Biedl–Bose–Demaine–Lubiw (the other
-/// reconnection where only one is valid).
-#[test]
-fn the_agreement_check_catches_a_flipped_bbdl() {
-    let caught = flipped_runs_caught::<BiedlBoseDemaineLubiw>(47);
-    assert!(caught > 20, "caught {caught}");
-}
-
-/// The BBDL decision on *every* reduction of small graphs (not only those next to the
-/// forbidden edge), against both reconnections classified by the naive DFS test; a
-/// fresh strategy per candidate.
+/// [`decide_every_reduction`] for Biedl–Bose–Demaine–Lubiw: ties take `H1`.
 #[test]
 fn bbdl_decides_every_reduction_of_small_and_random_graphs() {
-    let mut graphs: Vec<Cubic> = small_graphs().into_iter().map(|(_, g)| g).collect();
-    let mut rng = Rng::new(53);
-    while graphs.len() < 300 {
-        let g = random_cubic(2 * (2 + rng.index(9)), &mut rng);
-        if spec::connected_bridgeless_by_definition(&g) {
-            graphs.push(g);
-        }
-    }
-    let mut dfs = Dfs::default();
-    let (mut decided, mut single) = (0, 0);
-    for (i, g) in graphs.iter().enumerate() {
-        for cand in all_candidates(g) {
-            let mut h = g.clone();
-            let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
-                let r = h.reduce(&cand, recon);
-                let ok = dfs.connected_bridgeless(&h, cand.x[0]);
-                h.undo(&r);
-                ok
-            });
-            let mut s = BiedlBoseDemaineLubiw::new();
-            s.start(&h);
-            let chosen = s.choose(&mut h, &cand).expect("a decision");
-            let k = usize::from(chosen == Reconnection::H2);
-            assert!(
-                ok[k],
-                "graph {i}: {cand:?}: {chosen:?} has a bridge ({ok:?})"
-            );
-            // Ties take H1; a forced step the valid one.
-            assert_eq!(chosen == Reconnection::H1, ok[0], "graph {i}: {cand:?}");
-            decided += 1;
-            single += usize::from(ok[0] != ok[1]);
-        }
-    }
-    eprintln!(
-        "bbdl decision: {decided} reductions of {} graphs, {single} with one valid reconnection",
-        graphs.len()
-    );
+    let (decided, single) = decide_every_reduction(53, 300, BiedlBoseDemaineLubiw::new, true);
+    eprintln!("bbdl decision: {decided} reductions, {single} with one valid reconnection");
     assert!(
         decided > 3000 && single > 300,
         "{decided} decisions, {single} forced"
@@ -1082,31 +1066,212 @@ fn f4_catches_a_structure_out_of_step_with_the_graph() {
     assert_fails("F4", || spec::bbdl_structure(&g, &mut moved));
 }
 
-/// Duals of random closed surfaces, orientable genus 0..8 and non-orientable: every BBDL
-/// step checked, the pairing perfect, no case (iv), and the same pairing twice.
+/// Duals of random closed surfaces: every BBDL step checked, the pairing perfect, no
+/// case (iv), and the same pairing twice.
 #[test]
 fn bbdl_on_random_surfaces() {
+    on_random_surfaces(|t, g, label| {
+        let (_, stats, c) = run_bbdl(g, label);
+        assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
+        let (p, _) = perfect_matching_with(t, &mut BiedlBoseDemaineLubiw::new());
+        assert!(p.is_perfect(t), "{label}");
+        assert_eq!(p.check(t), Ok(()));
+        let (again, _) = perfect_matching_with(t, &mut BiedlBoseDemaineLubiw::new());
+        assert_eq!(p, again, "{label}: not deterministic");
+    });
+}
+
+/// FNV-1a over 64-bit words (each word's 8 little-endian bytes).
+fn fnv1a(hash: &mut u64, word: u64) {
+    for byte in word.to_le_bytes() {
+        *hash ^= u64::from(byte);
+        *hash = hash.wrapping_mul(0x0100_0000_01b3);
+    }
+}
+
+/// Folds one run's matching, [`Stats`] and the strategy's own counters (as their `Debug`
+/// text) into `hash`.
+fn fold_run(hash: &mut u64, sol: &Solution, counters: &str) {
+    fnv1a(hash, sol.mate.len() as u64);
+    for &m in &sol.mate {
+        fnv1a(hash, u64::from(m));
+    }
+    let s = &sol.stats;
+    for x in [
+        s.reductions,
+        s.took_h1,
+        s.cases[0],
+        s.cases[1],
+        s.cases[2],
+        s.case_iv,
+        s.cycle_nodes,
+    ] {
+        fnv1a(hash, x as u64);
+    }
+    fnv1a(hash, s.blossoms);
+    for b in counters.bytes() {
+        fnv1a(hash, u64::from(b));
+    }
+}
+
+/// The graphs of the regression pin: the small graphs, random bridgeless cubic
+/// multigraphs, and the duals of random surfaces (one of about 6000 nodes).
+fn pin_graphs() -> Vec<Cubic> {
     use crate::gen::{random, RandomParams, SurfaceKind};
-    let kinds = (0..=8)
-        .map(SurfaceKind::Orientable)
-        .chain((1..=6).map(SurfaceKind::NonOrientable));
-    for kind in kinds {
-        for seed in 1..=2u64 {
-            let t = random(&RandomParams {
-                surface: kind,
-                min_faces: 400,
-                flip_percent: 30,
-                seed,
-            });
-            let (g, _) = dual_graph(&t).expect("dual");
-            let label = format!("{kind:?} seed {seed}");
-            let (_, stats, c) = run_bbdl(&g, &label);
-            assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
-            let (p, _) = perfect_matching_with(&t, &mut BiedlBoseDemaineLubiw::new());
-            assert!(p.is_perfect(&t), "{label}");
-            assert_eq!(p.check(&t), Ok(()));
-            let (again, _) = perfect_matching_with(&t, &mut BiedlBoseDemaineLubiw::new());
-            assert_eq!(p, again, "{label}: not deterministic");
+    let mut graphs: Vec<Cubic> = small_graphs().into_iter().map(|(_, g)| g).collect();
+    let mut rng = Rng::new(61);
+    while graphs.len() < 60 {
+        let g = random_cubic(2 * (2 + rng.index(30)), &mut rng);
+        if spec::connected_bridgeless_by_definition(&g) {
+            graphs.push(g);
         }
     }
+    for (kind, min_faces) in [
+        (SurfaceKind::Orientable(0), 400),
+        (SurfaceKind::Orientable(3), 400),
+        (SurfaceKind::NonOrientable(2), 400),
+        (SurfaceKind::Orientable(2), 6000),
+    ] {
+        let t = random(&RandomParams {
+            surface: kind,
+            min_faces,
+            flip_percent: 30,
+            seed: 7,
+        });
+        graphs.push(dual_graph(&t).expect("dual").0);
+    }
+    graphs
+}
+
+/// Regression pin, not a correctness test: the matchings, [`Stats`] and counters of
+/// [`Naive`], [`BiedlBoseDemaineLubiw`] and [`DiksStanczyk`] on [`pin_graphs`] hash to
+/// the values taken from commit b9142d9, before the clean-up of the strategies' shared
+/// code, which must change no output (only costs). `hashes[3]` is the BBDL 2-edge
+/// structure's work counters alone (cuts, swaps, scanned vertices...).
+#[test]
+fn outputs_are_pinned() {
+    let graphs = pin_graphs();
+    let mut hashes = [0xcbf2_9ce4_8422_2325u64; 4];
+    for g in &graphs {
+        let mut naive = Naive::new();
+        let sol = solve(g.clone(), &mut naive).expect("naive");
+        fold_run(&mut hashes[0], &sol, &format!("{}", naive.dfs_runs()));
+        let mut bbdl = BiedlBoseDemaineLubiw::new();
+        let sol = solve(g.clone(), &mut bbdl).expect("bbdl");
+        let c = bbdl.counters();
+        let decisions = (c.took_h1, c.took_h2, c.queries, c.digon_steps, c.restarts);
+        fold_run(&mut hashes[1], &sol, &format!("{decisions:?}"));
+        // The 2-edge structure's work apart: a change of its update order may change
+        // it (and nothing else).
+        let work = format!("{:?} {}", c.structure, c.structure_bytes);
+        work.bytes()
+            .for_each(|b| fnv1a(&mut hashes[3], u64::from(b)));
+        let mut ds = DiksStanczyk::new();
+        let sol = solve(g.clone(), &mut ds).expect("ds");
+        fold_run(&mut hashes[2], &sol, &format!("{:?}", ds.counters()));
+    }
+    assert_eq!(graphs.last().map(Cubic::node_count), Some(6000));
+    // Taken from commit b9142d9, before the refactor.
+    assert_eq!(
+        hashes,
+        [
+            0xe823a17045df8c0f,
+            0x1224c1d5d578bb7d,
+            0x35048816ac055fe3,
+            0x541f5fc46e51ac95,
+        ],
+        "{hashes:#x?}"
+    );
+}
+
+/// [`graph::edge_ids`] bounds the ids a run creates (checked on real runs: the ids of the
+/// reductions' new edges), and [`graph::max_nodes_for_edge_ids`] inverts it exactly.
+#[test]
+fn edge_id_bound_and_its_inverse() {
+    use super::graph::{edge_ids, max_nodes_for_edge_ids};
+    for (name, g) in small_graphs() {
+        let n = g.node_capacity();
+        /// Records the largest new edge id of every tentative and applied reduction.
+        struct MaxId(Naive, u32);
+        impl Strategy for MaxId {
+            fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+                let r = g.reduce(cand, Reconnection::H2);
+                self.1 = self.1.max(r.new[1]);
+                g.undo(&r);
+                self.0.choose(g, cand)
+            }
+        }
+        let mut s = MaxId(Naive::new(), 0);
+        solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("{name}: {e}"));
+        assert!((s.1 as usize) < edge_ids(n), "{name}: id {}", s.1);
+        if n >= 4 {
+            // Tight: the last reduction's second id is the last one below the bound.
+            assert_eq!(s.1 as usize + 1, edge_ids(n), "{name}");
+        }
+    }
+    for limit in 0..3000usize {
+        let m = max_nodes_for_edge_ids(limit);
+        assert!(edge_ids(m) <= limit, "limit {limit}: {m}");
+        let next_even = (m + 1).next_multiple_of(2);
+        assert!(edge_ids(next_even) > limit, "limit {limit}: {m}");
+    }
+    for limit in [1usize << 29, (1 << 31) - 1] {
+        let m = max_nodes_for_edge_ids(limit);
+        assert!(
+            edge_ids(m) <= limit && edge_ids(m + 2) > limit,
+            "{limit}: {m}"
+        );
+    }
+}
+
+/// [`solve`] refuses an input above [`Strategy::max_nodes`] with
+/// [`FrinkError::TooLarge`], before [`Strategy::start`]; the limits declared by the
+/// BBDL and DS strategies keep every id within their structures' asserts.
+#[test]
+fn inputs_above_the_strategy_limit_are_refused() {
+    use super::graph::edge_ids;
+    /// [`Naive`] declaring room for `limit` nodes; `started` records `start`.
+    struct Small {
+        limit: usize,
+        started: bool,
+        inner: Naive,
+    }
+    impl Strategy for Small {
+        fn max_nodes(&self) -> usize {
+            self.limit
+        }
+        fn start(&mut self, _: &Cubic) {
+            self.started = true;
+        }
+        fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+            self.inner.choose(g, cand)
+        }
+    }
+    let g = petersen();
+    let mut small = Small {
+        limit: 9,
+        started: false,
+        inner: Naive::new(),
+    };
+    assert_eq!(solve(g.clone(), &mut small), Err(FrinkError::TooLarge(10)));
+    assert!(!small.started);
+    small.limit = 10;
+    let sol = solve(g.clone(), &mut small).expect("at the limit");
+    assert_perfect(&g, &sol.mate, "petersen at the limit");
+    assert!(small.started);
+
+    let bbdl = BiedlBoseDemaineLubiw::new().max_nodes();
+    assert!(bbdl < two_edge::MAX_ID && edge_ids(bbdl) <= two_edge::MAX_ID);
+    assert!(
+        edge_ids(bbdl + 2) > two_edge::MAX_ID,
+        "{bbdl}: not the largest"
+    );
+    assert_eq!(bbdl, 214_748_365);
+
+    let ds = DiksStanczyk::new().max_nodes();
+    assert!(ds <= ett::MAX_TREE && edge_ids(ds) <= hdt::MAX_EDGE_ID as usize);
+    let pool = |n: usize| 3 * n * (n.ilog2() as usize + 1);
+    assert!(pool(ds) < u32::MAX as usize && pool(ds + 1) >= u32::MAX as usize);
+    assert_eq!(ds, 55_063_683);
+    assert_eq!(Naive::new().max_nodes(), usize::MAX);
 }

@@ -7,7 +7,8 @@
 //! answer exactly as a static search of the current graph would (tested after every
 //! operation of thousands of random insert/delete sequences on small multigraphs with
 //! parallel edges and loops against a BFS / bridge-removal oracle; [`TwoEdge::check`]
-//! verifies every invariant below from scratch).
+//! verifies the invariants below from scratch, the separation of the link–cut trees
+//! only partly: its documentation says which).
 //!
 //! # Design (the cover idea of Holm–de Lichtenberg–Thorup Sec. 3, at a single level)
 //! Holm, de Lichtenberg and Thorup (JACM 48(4), 2001, Sec. 3; recapped by
@@ -48,8 +49,8 @@
 //!   under Frink's reduction on the B family in docs/benchmarks.md (superlinear: 3–10×
 //!   the time of the O(n log² n) Diks–Stańczyk strategy from 16k to 594k triangles).
 //!
-//! Memory: per vertex a 25-byte link–cut node plus its incidence list; per tree edge one
-//! more link–cut node (at most `n − 1`); per edge id 21 bytes.
+//! Memory: per vertex a 28-byte link–cut node (`lct::Lct`) plus its incidence list; per
+//! tree edge one more link–cut node (at most `n − 1`); per edge id 21 bytes.
 //! [`TwoEdge::check`] takes O(n·m).
 
 use super::graph::NONE;
@@ -59,6 +60,10 @@ use super::lct::Lct;
 /// 2^29 because edge ids are below 2^29, checked on insertion), so that a path minimum
 /// is the minimum cover of the path's edges.
 const VERTEX: i32 = 1 << 30;
+
+/// Node ids and edge ids must be below this (the link–cut values: a cover count is at
+/// most the number of edges, which stays below `VERTEX`).
+pub(crate) const MAX_ID: usize = 1 << 29;
 
 /// What an edge id currently is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -122,7 +127,7 @@ impl TwoEdge {
     /// # Panics
     /// If `n ≥ 2^29` (the link–cut tree's values and ids would overflow).
     pub fn new(n: usize) -> TwoEdge {
-        assert!(n < 1 << 29, "TwoEdge: {n} nodes, too many");
+        assert!(n < MAX_ID, "TwoEdge: {n} nodes, too many");
         let mut vals = vec![VERTEX; n];
         vals.extend(std::iter::repeat_n(0, n.saturating_sub(1)));
         TwoEdge {
@@ -177,10 +182,13 @@ impl TwoEdge {
         self.kind.get(e as usize) == Some(&Kind::Tree)
     }
 
-    /// Bytes held (approximate: the vectors' lengths).
+    /// Bytes held (approximate: the vectors' lengths, a link–cut node counted at the 25
+    /// bytes of its fields rather than its 28-byte size).
     pub fn bytes(&self) -> usize {
         let edges = self.kind.len() * (1 + 8 + 8 + 4);
         let adj: usize = self.adj.iter().map(|a| 24 + 4 * a.capacity()).sum();
+        // 25, not 28: kept so that the byte counts reported (`BbdlCounters`) stay
+        // comparable with the recorded runs.
         edges + adj + (2 * self.n) * 25 + self.n * 4
     }
 
@@ -194,7 +202,10 @@ impl TwoEdge {
             "TwoEdge::insert: edge {e} = {a}{b} outside 0..{}",
             self.n
         );
-        assert!(e < 1 << 29, "TwoEdge::insert: edge id {e} too large");
+        assert!(
+            (e as usize) < MAX_ID,
+            "TwoEdge::insert: edge id {e} too large"
+        );
         let i = e as usize;
         if i >= self.kind.len() {
             self.kind.resize(i + 1, Kind::Absent);
@@ -414,13 +425,17 @@ impl TwoEdge {
         self.lct.path_min(k, k)
     }
 
-    /// Checks every invariant from scratch, O(n·m): incidence lists and positions; the
-    /// tree edges form a spanning forest of the live graph; each tree edge is a node of
-    /// the link–cut tree joined to its ends, and the link–cut tree connects exactly the
-    /// vertices of one forest tree; every tree edge's cover count equals the number of
-    /// non-tree edges whose forest path contains it (by naive parent walks); every vertex
-    /// value is at least `VERTEX`. Takes `&mut self` only for the link–cut queries
-    /// (splaying), which change no represented value.
+    /// Checks the invariants from scratch, O(n·m): incidence lists and positions; the
+    /// tree edges form a spanning forest of the live graph; each tree edge's link–cut
+    /// node is connected to both its ends, and every vertex to its forest tree's root
+    /// (its smallest vertex); of the forest roots, only each two consecutive ones (in id
+    /// order) are checked not to be connected in the link–cut tree, and each unused
+    /// tree-edge node only not to be connected to the first root (so a link–cut tree
+    /// joining two non-consecutive trees, or an unused node to a later tree, can pass);
+    /// unused tree-edge nodes hold cover 0; every tree edge's cover count equals the
+    /// number of non-tree edges whose forest path contains it (by naive parent walks);
+    /// every vertex value is at least `VERTEX`. Takes `&mut self` only for the link–cut
+    /// queries (splaying), which change no represented value.
     pub fn check(&mut self) -> Result<(), String> {
         let n = self.n;
         let mut listed = 0usize;
@@ -499,7 +514,7 @@ impl TwoEdge {
             return Err("tree-edge nodes lost or duplicated".into());
         }
         // The link–cut tree: each tree edge's node joined to both ends, every vertex
-        // connected to its forest root, distinct roots not connected.
+        // connected to its forest root, consecutive roots not connected.
         for i in 0..self.kind.len() {
             if self.kind[i] != Kind::Tree {
                 continue;
