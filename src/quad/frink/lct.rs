@@ -31,6 +31,9 @@ struct Node {
     rev: bool,
 }
 
+/// Bytes of one [`Lct`] node as allocated (its fields take 25; alignment pads it to 28).
+pub(crate) const NODE_BYTES: usize = std::mem::size_of::<Node>();
+
 impl Node {
     fn single(v: i32, par: u32) -> Node {
         Node {

@@ -54,7 +54,7 @@
 //! [`TwoEdge::check`] takes O(n·m).
 
 use super::graph::NONE;
-use super::lct::Lct;
+use super::lct::{Lct, NODE_BYTES};
 
 /// The value of a vertex's link–cut node: above any cover count (counts stay below
 /// 2^29 because edge ids are below 2^29, checked on insertion), so that a path minimum
@@ -182,14 +182,12 @@ impl TwoEdge {
         self.kind.get(e as usize) == Some(&Kind::Tree)
     }
 
-    /// Bytes held (approximate: the vectors' lengths, a link–cut node counted at the 25
-    /// bytes of its fields rather than its 28-byte size).
+    /// Bytes held (approximate: the vectors' lengths, not their capacities, except for
+    /// the incidence lists).
     pub fn bytes(&self) -> usize {
         let edges = self.kind.len() * (1 + 8 + 8 + 4);
         let adj: usize = self.adj.iter().map(|a| 24 + 4 * a.capacity()).sum();
-        // 25, not 28: kept so that the byte counts reported (`BbdlCounters`) stay
-        // comparable with the recorded runs.
-        edges + adj + (2 * self.n) * 25 + self.n * 4
+        edges + adj + (2 * self.n) * NODE_BYTES + self.n * 4
     }
 
     /// Inserts edge `e = ab` (a loop if `a = b`). O(log n) amortised.
