@@ -18,7 +18,7 @@
 const NIL: u32 = u32::MAX;
 
 /// One node: splay children, splay parent or path-parent (told apart by
-/// [`Lct::is_root`]), its value, the minimum over its splay subtree (its part of the
+/// [`is_root`]), its value, the minimum over its splay subtree (its part of the
 /// preferred path), and the pending addition / reversal of that subtree (already applied
 /// to this node). Packed in one record so that a node costs one cache line.
 #[derive(Clone, Copy, Debug)]
@@ -29,6 +29,201 @@ struct Node {
     min: i32,
     add: i32,
     rev: bool,
+}
+
+/// A node of a link–cut forest as the splay core below sees it: splay children, splay
+/// parent or path-parent, a pending reversal, and the node type's own tags and aggregate
+/// ([`SplayNode::push`], [`SplayNode::pull`]). The core (rotation, splay, access) is
+/// shared by [`Lct`] and [`PlainLct`] and monomorphised for each.
+trait SplayNode: Copy {
+    fn ch(&self) -> [u32; 2];
+    fn ch_mut(&mut self) -> &mut [u32; 2];
+    fn par(&self) -> u32;
+    fn par_mut(&mut self) -> &mut u32;
+    /// Swaps the children and toggles the pending reversal of the subtree.
+    fn reverse(&mut self);
+    /// Applies `t[x]`'s pending tags to its children (already applied to `x` itself).
+    fn push(t: &mut [Self], x: u32);
+    /// Recomputes `t[x]`'s aggregate from its own value and its children.
+    fn pull(t: &mut [Self], x: u32);
+}
+
+/// Whether `x` is the root of its splay tree (its parent pointer, if any, is a
+/// path-parent).
+#[inline]
+fn is_root<N: SplayNode>(t: &[N], x: u32) -> bool {
+    let p = t[x as usize].par();
+    p == NIL || !t[p as usize].ch().contains(&x)
+}
+
+/// Reverses the subtree of `x` (none for `NIL`).
+#[inline]
+fn apply_rev<N: SplayNode>(t: &mut [N], x: u32) {
+    if x != NIL {
+        t[x as usize].reverse();
+    }
+}
+
+/// One rotation of `x` over its splay parent, aggregates recomputed.
+#[inline]
+fn rotate<N: SplayNode>(t: &mut [N], x: u32) {
+    let p = t[x as usize].par();
+    let g = t[p as usize].par();
+    let dir = usize::from(t[p as usize].ch()[1] == x);
+    let b = t[x as usize].ch()[dir ^ 1];
+    if !is_root(t, p) {
+        let gc = t[g as usize].ch_mut();
+        if gc[0] == p {
+            gc[0] = x;
+        } else {
+            gc[1] = x;
+        }
+    }
+    *t[x as usize].par_mut() = g;
+    t[x as usize].ch_mut()[dir ^ 1] = p;
+    *t[p as usize].par_mut() = x;
+    t[p as usize].ch_mut()[dir] = b;
+    if b != NIL {
+        *t[b as usize].par_mut() = p;
+    }
+    N::pull(t, p);
+    N::pull(t, x);
+}
+
+/// Splays `x` to the root of its splay tree, pushing pending tags down from that root
+/// first (iteratively, on `stack`).
+fn splay<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32) {
+    stack.clear();
+    let mut y = x;
+    stack.push(y);
+    while !is_root(t, y) {
+        y = t[y as usize].par();
+        stack.push(y);
+    }
+    while let Some(z) = stack.pop() {
+        N::push(t, z);
+    }
+    while !is_root(t, x) {
+        let p = t[x as usize].par();
+        if !is_root(t, p) {
+            let g = t[p as usize].par();
+            let zigzig = (t[g as usize].ch()[0] == p) == (t[p as usize].ch()[0] == x);
+            rotate(t, if zigzig { p } else { x });
+        }
+        rotate(t, x);
+    }
+}
+
+/// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay tree,
+/// which holds exactly that path. Returns the last node at which the walk joined the
+/// previously preferred root path (the LCA of a walk's step).
+fn access<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32) -> u32 {
+    let mut last = NIL;
+    let mut y = x;
+    while y != NIL {
+        splay(t, stack, y);
+        t[y as usize].ch_mut()[1] = last;
+        N::pull(t, y);
+        last = y;
+        y = t[y as usize].par();
+    }
+    splay(t, stack, x);
+    last
+}
+
+/// Makes `x` the root of its tree.
+fn make_root<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32) {
+    access(t, stack, x);
+    apply_rev(t, x);
+}
+
+/// Adds the edge `x`–`y` (`x` made its tree's root, then hung below `y`); they must be
+/// in different trees.
+fn link<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32, y: u32) {
+    make_root(t, stack, x);
+    *t[x as usize].par_mut() = y;
+}
+
+/// Removes the edge `x`–`y`, which must exist; `y`'s aggregate is left for the caller
+/// to recompute ([`SplayNode::pull`]).
+fn cut<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32, y: u32) {
+    make_root(t, stack, x);
+    access(t, stack, y);
+    debug_assert!(
+        t[y as usize].ch()[0] == x && t[x as usize].ch()[1] == NIL,
+        "cut of a non-edge"
+    );
+    t[y as usize].ch_mut()[0] = NIL;
+    *t[x as usize].par_mut() = NIL;
+}
+
+/// The [`SplayNode`] methods over a node type's `ch`, `par` and `rev` fields (both node
+/// types name them alike).
+macro_rules! splay_fields {
+    () => {
+        fn ch(&self) -> [u32; 2] {
+            self.ch
+        }
+        fn ch_mut(&mut self) -> &mut [u32; 2] {
+            &mut self.ch
+        }
+        fn par(&self) -> u32 {
+            self.par
+        }
+        fn par_mut(&mut self) -> &mut u32 {
+            &mut self.par
+        }
+        fn reverse(&mut self) {
+            self.ch.swap(0, 1);
+            self.rev ^= true;
+        }
+    };
+}
+
+impl SplayNode for Node {
+    splay_fields!();
+
+    /// Pushes `x`'s pending addition and reversal down to its children.
+    fn push(t: &mut [Node], x: u32) {
+        let n = &mut t[x as usize];
+        let [a, b] = n.ch;
+        let (d, r) = (n.add, n.rev);
+        n.add = 0;
+        n.rev = false;
+        if d != 0 {
+            apply_add(t, a, d);
+            apply_add(t, b, d);
+        }
+        if r {
+            apply_rev(t, a);
+            apply_rev(t, b);
+        }
+    }
+
+    /// `x`'s minimum from its value and its children's minima.
+    fn pull(t: &mut [Node], x: u32) {
+        let [a, b] = t[x as usize].ch;
+        let mut m = t[x as usize].val;
+        if a != NIL {
+            m = m.min(t[a as usize].min);
+        }
+        if b != NIL {
+            m = m.min(t[b as usize].min);
+        }
+        t[x as usize].min = m;
+    }
+}
+
+/// Adds `d` to the values of the subtree of `x` (none for `NIL`): to `x`'s value and
+/// minimum now, to its descendants' when pushed.
+#[inline]
+fn apply_add(t: &mut [Node], x: u32, d: i32) {
+    if x != NIL {
+        let n = &mut t[x as usize];
+        n.val += d;
+        n.min += d;
+        n.add += d;
+    }
 }
 
 /// Bytes of one [`Lct`] node as allocated (its fields take 25; alignment pads it to 28).
@@ -83,118 +278,27 @@ impl Lct {
         self.t[x as usize].val
     }
 
-    fn is_root(&self, x: u32) -> bool {
-        let p = self.t[x as usize].par;
-        p == NIL || (self.t[p as usize].ch[0] != x && self.t[p as usize].ch[1] != x)
-    }
-
     fn apply_add(&mut self, x: u32, d: i32) {
-        if x != NIL {
-            let n = &mut self.t[x as usize];
-            n.val += d;
-            n.min += d;
-            n.add += d;
-        }
-    }
-
-    fn apply_rev(&mut self, x: u32) {
-        if x != NIL {
-            let n = &mut self.t[x as usize];
-            n.ch.swap(0, 1);
-            n.rev ^= true;
-        }
+        apply_add(&mut self.t, x, d);
     }
 
     fn push(&mut self, x: u32) {
-        let n = &mut self.t[x as usize];
-        let [a, b] = n.ch;
-        let (d, r) = (n.add, n.rev);
-        n.add = 0;
-        n.rev = false;
-        if d != 0 {
-            self.apply_add(a, d);
-            self.apply_add(b, d);
-        }
-        if r {
-            self.apply_rev(a);
-            self.apply_rev(b);
-        }
+        Node::push(&mut self.t, x);
     }
 
     fn pull(&mut self, x: u32) {
-        let [a, b] = self.t[x as usize].ch;
-        let mut m = self.t[x as usize].val;
-        if a != NIL {
-            m = m.min(self.t[a as usize].min);
-        }
-        if b != NIL {
-            m = m.min(self.t[b as usize].min);
-        }
-        self.t[x as usize].min = m;
-    }
-
-    fn rotate(&mut self, x: u32) {
-        let p = self.t[x as usize].par;
-        let g = self.t[p as usize].par;
-        let dir = usize::from(self.t[p as usize].ch[1] == x);
-        let b = self.t[x as usize].ch[dir ^ 1];
-        if !self.is_root(p) {
-            let gi = g as usize;
-            if self.t[gi].ch[0] == p {
-                self.t[gi].ch[0] = x;
-            } else {
-                self.t[gi].ch[1] = x;
-            }
-        }
-        self.t[x as usize].par = g;
-        self.t[x as usize].ch[dir ^ 1] = p;
-        self.t[p as usize].par = x;
-        self.t[p as usize].ch[dir] = b;
-        if b != NIL {
-            self.t[b as usize].par = p;
-        }
-        self.pull(p);
-        self.pull(x);
+        Node::pull(&mut self.t, x);
     }
 
     fn splay(&mut self, x: u32) {
-        // Push pending tags from the splay root down to x first (iteratively).
-        self.stack.clear();
-        let mut y = x;
-        self.stack.push(y);
-        while !self.is_root(y) {
-            y = self.t[y as usize].par;
-            self.stack.push(y);
-        }
-        while let Some(z) = self.stack.pop() {
-            self.push(z);
-        }
-        while !self.is_root(x) {
-            let p = self.t[x as usize].par;
-            if !self.is_root(p) {
-                let g = self.t[p as usize].par;
-                let zigzig = (self.t[g as usize].ch[0] == p) == (self.t[p as usize].ch[0] == x);
-                self.rotate(if zigzig { p } else { x });
-            }
-            self.rotate(x);
-        }
+        splay(&mut self.t, &mut self.stack, x);
     }
 
     /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay
     /// tree, which holds exactly that path. Returns the last node at which the walk
     /// joined the previously preferred root path (the LCA of a walk's step).
     fn access(&mut self, x: u32) -> u32 {
-        let mut last = NIL;
-        let mut y = x;
-        while y != NIL {
-            self.splay(y);
-            self.t[y as usize].ch[1] = last;
-            self.pull(y);
-            last = y;
-            y = self.t[y as usize].par;
-        }
-        self.splay(x);
-        last
+        access(&mut self.t, &mut self.stack, x)
     }
 
     /// The lowest common ancestor of `x` and `y` for the current root of their tree (set
@@ -222,8 +326,7 @@ impl Lct {
 
     /// Makes `x` the root of its tree.
     pub(crate) fn make_root(&mut self, x: u32) {
-        self.access(x);
-        self.apply_rev(x);
+        make_root(&mut self.t, &mut self.stack, x);
     }
 
     fn find_root(&mut self, x: u32) -> u32 {
@@ -249,20 +352,12 @@ impl Lct {
     /// Adds the edge `x`–`y`; they must be in different trees.
     pub(crate) fn link(&mut self, x: u32, y: u32) {
         debug_assert!(!self.connected(x, y), "link inside one tree");
-        self.make_root(x);
-        self.t[x as usize].par = y;
+        link(&mut self.t, &mut self.stack, x, y);
     }
 
     /// Removes the edge `x`–`y`, which must exist.
     pub(crate) fn cut(&mut self, x: u32, y: u32) {
-        self.make_root(x);
-        self.access(y);
-        debug_assert!(
-            self.t[y as usize].ch[0] == x && self.t[x as usize].ch[1] == NIL,
-            "cut of a non-edge"
-        );
-        self.t[y as usize].ch[0] = NIL;
-        self.t[x as usize].par = NIL;
+        cut(&mut self.t, &mut self.stack, x, y);
         self.pull(y);
         // Leave x's own value exact (its subtree tags are pushed on the next splay).
         self.push(x);
@@ -345,6 +440,24 @@ struct PlainNode {
     rev: bool,
 }
 
+impl SplayNode for PlainNode {
+    splay_fields!();
+
+    /// Pushes `x`'s pending reversal down to its children.
+    fn push(t: &mut [PlainNode], x: u32) {
+        let n = &mut t[x as usize];
+        if n.rev {
+            n.rev = false;
+            let [a, b] = n.ch;
+            apply_rev(t, a);
+            apply_rev(t, b);
+        }
+    }
+
+    /// No aggregate to keep.
+    fn pull(_: &mut [PlainNode], _: u32) {}
+}
+
 /// A link–cut forest without node values: link, cut, re-rooting and the LCAs of a walk
 /// ([`PlainLct::walk_to`]), which is all the Diks–Stańczyk strategy asks. Same
 /// guarantees and O(log n) amortised bounds as [`Lct`], in 16-byte nodes with no
@@ -373,86 +486,10 @@ impl PlainLct {
         }
     }
 
-    fn is_root(&self, x: u32) -> bool {
-        let p = self.t[x as usize].par;
-        p == NIL || (self.t[p as usize].ch[0] != x && self.t[p as usize].ch[1] != x)
-    }
-
-    fn apply_rev(&mut self, x: u32) {
-        if x != NIL {
-            let n = &mut self.t[x as usize];
-            n.ch.swap(0, 1);
-            n.rev ^= true;
-        }
-    }
-
-    fn push(&mut self, x: u32) {
-        let n = &mut self.t[x as usize];
-        if n.rev {
-            n.rev = false;
-            let [a, b] = n.ch;
-            self.apply_rev(a);
-            self.apply_rev(b);
-        }
-    }
-
-    fn rotate(&mut self, x: u32) {
-        let p = self.t[x as usize].par;
-        let g = self.t[p as usize].par;
-        let dir = usize::from(self.t[p as usize].ch[1] == x);
-        let b = self.t[x as usize].ch[dir ^ 1];
-        if !self.is_root(p) {
-            let gi = g as usize;
-            if self.t[gi].ch[0] == p {
-                self.t[gi].ch[0] = x;
-            } else {
-                self.t[gi].ch[1] = x;
-            }
-        }
-        self.t[x as usize].par = g;
-        self.t[x as usize].ch[dir ^ 1] = p;
-        self.t[p as usize].par = x;
-        self.t[p as usize].ch[dir] = b;
-        if b != NIL {
-            self.t[b as usize].par = p;
-        }
-    }
-
-    fn splay(&mut self, x: u32) {
-        self.stack.clear();
-        let mut y = x;
-        self.stack.push(y);
-        while !self.is_root(y) {
-            y = self.t[y as usize].par;
-            self.stack.push(y);
-        }
-        while let Some(z) = self.stack.pop() {
-            self.push(z);
-        }
-        while !self.is_root(x) {
-            let p = self.t[x as usize].par;
-            if !self.is_root(p) {
-                let g = self.t[p as usize].par;
-                let zigzig = (self.t[g as usize].ch[0] == p) == (self.t[p as usize].ch[0] == x);
-                self.rotate(if zigzig { p } else { x });
-            }
-            self.rotate(x);
-        }
-    }
-
     /// As [`Lct`]'s access: the root–`x` path preferred, `x` its splay root; returns
     /// the node at which the walk joined the previously preferred root path.
     fn access(&mut self, x: u32) -> u32 {
-        let mut last = NIL;
-        let mut y = x;
-        while y != NIL {
-            self.splay(y);
-            self.t[y as usize].ch[1] = last;
-            last = y;
-            y = self.t[y as usize].par;
-        }
-        self.splay(x);
-        last
+        access(&mut self.t, &mut self.stack, x)
     }
 
     /// The LCA of `x` and the node last passed to `walk_to` (same
@@ -464,26 +501,17 @@ impl PlainLct {
 
     /// Makes `x` the root of its tree.
     pub(crate) fn make_root(&mut self, x: u32) {
-        self.access(x);
-        self.apply_rev(x);
+        make_root(&mut self.t, &mut self.stack, x);
     }
 
     /// Adds the edge `x`–`y`; they must be in different trees.
     pub(crate) fn link(&mut self, x: u32, y: u32) {
-        self.make_root(x);
-        self.t[x as usize].par = y;
+        link(&mut self.t, &mut self.stack, x, y);
     }
 
     /// Removes the edge `x`–`y`, which must exist.
     pub(crate) fn cut(&mut self, x: u32, y: u32) {
-        self.make_root(x);
-        self.access(y);
-        debug_assert!(
-            self.t[y as usize].ch[0] == x && self.t[x as usize].ch[1] == NIL,
-            "cut of a non-edge"
-        );
-        self.t[y as usize].ch[0] = NIL;
-        self.t[x as usize].par = NIL;
+        cut(&mut self.t, &mut self.stack, x, y);
     }
 }
 
