@@ -218,12 +218,29 @@ impl Hdt {
     /// half-edges are `2e + s`, a loop, a vertex `≥ n`) fails a `debug_assert!` and is
     /// ignored in release builds.
     pub(crate) fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
+        if !self.admit(e, a, b) {
+            return;
+        }
+        let k = e as usize;
+        if self.pool.same_tree(a, b) {
+            self.state[k] = 0;
+            self.add_nontree(e, 0);
+        } else {
+            self.make_tree(e, 0);
+            changes.push(ForestChange::Link { e, a, b });
+        }
+    }
+
+    /// Checks [`Hdt::insert`]'s preconditions for edge `e = ab` (a `debug_assert!` each;
+    /// `false`, the edge to be ignored, in release builds) and, when they hold, makes
+    /// room for `e` in the per-edge arrays and records its ends.
+    fn admit(&mut self, e: u32, a: u32, b: u32) -> bool {
         debug_assert!(!self.live(e), "insert: edge {e} is live");
         debug_assert!(e < MAX_EDGE_ID, "insert: edge id {e} too large");
         debug_assert!(a != b, "insert: loop at {a}");
         debug_assert!(a < self.n && b < self.n, "insert: vertex out of range");
         if self.live(e) || a == b || a >= self.n || b >= self.n || e >= MAX_EDGE_ID {
-            return;
+            return false;
         }
         let k = e as usize;
         if k >= self.state.len() {
@@ -232,13 +249,7 @@ impl Hdt {
             self.links.resize(k + 1, [NIL; 4]);
         }
         self.ends[k] = [a, b];
-        if self.pool.same_tree(a, b) {
-            self.state[k] = 0;
-            self.add_nontree(e, 0);
-        } else {
-            self.make_tree(e, 0);
-            changes.push(ForestChange::Link { e, a, b });
-        }
+        true
     }
 
     /// Inserts `edges` (`[e, a, b]` each, with [`Hdt::insert`]'s preconditions) into a
@@ -275,18 +286,10 @@ impl Hdt {
         let mut next: Vec<u32> = (0..self.n).collect();
         let mut prev = next.clone();
         for &[e, a, b] in edges {
-            debug_assert!(!self.live(e), "load: edge {e} twice");
-            debug_assert!(e < MAX_EDGE_ID && a != b && a < self.n && b < self.n);
-            if self.live(e) || a == b || a >= self.n || b >= self.n || e >= MAX_EDGE_ID {
+            if !self.admit(e, a, b) {
                 continue;
             }
             let k = e as usize;
-            if k >= self.state.len() {
-                self.state.resize(k + 1, DEAD);
-                self.ends.resize(k + 1, [NIL; 2]);
-                self.links.resize(k + 1, [NIL; 4]);
-            }
-            self.ends[k] = [a, b];
             let (ra, rb) = (find(&mut uf, a), find(&mut uf, b));
             if ra == rb {
                 self.state[k] = 0;
