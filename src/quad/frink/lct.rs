@@ -533,6 +533,16 @@ mod tests {
     }
 
     impl Naive {
+        fn link(&mut self, x: u32, y: u32) {
+            self.adj[x as usize].push(y);
+            self.adj[y as usize].push(x);
+        }
+
+        fn cut(&mut self, a: u32, b: u32) {
+            self.adj[a as usize].retain(|&c| c != b);
+            self.adj[b as usize].retain(|&c| c != a);
+        }
+
         fn path(&self, x: u32, y: u32) -> Option<Vec<u32>> {
             let n = self.adj.len();
             let mut prev = vec![u32::MAX; n];
@@ -590,8 +600,7 @@ mod tests {
                 match next(&mut s) % 6 {
                     0 if path.is_none() => {
                         lct.link(x, y);
-                        naive.adj[x as usize].push(y);
-                        naive.adj[y as usize].push(x);
+                        naive.link(x, y);
                         edges.push((x, y));
                     }
                     1 if !edges.is_empty() => {
@@ -602,8 +611,7 @@ mod tests {
                         } else {
                             lct.cut(b, a);
                         }
-                        naive.adj[a as usize].retain(|&c| c != b);
-                        naive.adj[b as usize].retain(|&c| c != a);
+                        naive.cut(a, b);
                     }
                     3 if path.as_ref().is_some_and(|p| {
                         p.len() >= 3
@@ -624,8 +632,7 @@ mod tests {
                         let v = naive.val[from as usize];
                         for w in p.windows(2) {
                             let (a, b) = (w[0], w[1]);
-                            naive.adj[a as usize].retain(|&c| c != b);
-                            naive.adj[b as usize].retain(|&c| c != a);
+                            naive.cut(a, b);
                             edges.retain(|&e| e != (a, b) && e != (b, a));
                         }
                         naive.val[k as usize] = v;
@@ -679,16 +686,14 @@ mod tests {
                 match next(&mut s) % 4 {
                     0 if naive.path(x, y).is_none() => {
                         lct.link(x, y);
-                        naive.adj[x as usize].push(y);
-                        naive.adj[y as usize].push(x);
+                        naive.link(x, y);
                         edges.push((x, y));
                     }
                     1 if !edges.is_empty() => {
                         let k = (next(&mut s) % edges.len() as u64) as usize;
                         let (a, b) = edges.swap_remove(k);
                         lct.cut(a, b);
-                        naive.adj[a as usize].retain(|&c| c != b);
-                        naive.adj[b as usize].retain(|&c| c != a);
+                        naive.cut(a, b);
                     }
                     _ => {
                         let (Some(px), Some(py)) = (naive.path(r, x), naive.path(r, y)) else {
@@ -740,16 +745,14 @@ mod tests {
             match next(s) % 4 {
                 0 if naive.path(x, y).is_none() => {
                     lct.link(x, y);
-                    naive.adj[x as usize].push(y);
-                    naive.adj[y as usize].push(x);
+                    naive.link(x, y);
                     edges.push((x, y));
                 }
                 1 if !edges.is_empty() => {
                     let k = (next(s) % edges.len() as u64) as usize;
                     let (a, b) = edges.swap_remove(k);
                     lct.cut(a, b);
-                    naive.adj[a as usize].retain(|&c| c != b);
-                    naive.adj[b as usize].retain(|&c| c != a);
+                    naive.cut(a, b);
                 }
                 _ => {
                     let lca = |a: u32, b: u32| {
