@@ -65,7 +65,7 @@
 //! `f` in edge-end order, edges in slot order; ties (both reconnections pass) take `H1`.
 
 use super::graph::max_nodes_for_edge_ids;
-use super::shared::{bfs_edge_order, non_tree_first, tree_edges_removed, ForbiddenEdge};
+use super::shared::{bfs_edge_order, non_tree_first, ForbiddenEdge};
 use super::two_edge::{TwoEdge, TwoEdgeCounters, MAX_ID};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
@@ -201,9 +201,7 @@ impl Strategy for BiedlBoseDemaineLubiw {
 
     fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
         let te = self.te.as_ref();
-        self.fe.pick(g, |c| {
-            te.map_or(0, |t| tree_edges_removed(c, |e| t.is_tree_edge(e)))
-        })
+        self.fe.pick(g, |e| te.is_some_and(|t| t.is_tree_edge(e)))
     }
 
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {

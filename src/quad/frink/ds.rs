@@ -91,7 +91,7 @@
 use super::graph::{max_nodes_for_edge_ids, NONE};
 use super::hdt::{ForestChange, Hdt, MAX_EDGE_ID};
 use super::lct::PlainLct;
-use super::shared::{bfs_edge_order, non_tree_first, removed, tree_edges_removed, ForbiddenEdge};
+use super::shared::{bfs_edge_order, non_tree_first, removed, ForbiddenEdge};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
 
 /// A spanning forest kept under edge insertions and deletions, reporting every change of
@@ -377,9 +377,8 @@ impl<F: SpanningForest> Strategy for Ds<F> {
 
     fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
         let forest = self.forest.as_ref();
-        self.fe.pick(g, |c| {
-            forest.map_or(0, |f| tree_edges_removed(c, |e| f.is_tree_edge(e)))
-        })
+        self.fe
+            .pick(g, |e| forest.is_some_and(|f| f.is_tree_edge(e)))
     }
 
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {

@@ -20,7 +20,7 @@ pub(super) fn removed(cand: &Candidate) -> [u32; 5] {
 /// which both strategies choose among the reductions next to the forbidden edge (a
 /// forest edge's deletion may cost a replacement search or swap, a non-tree edge's is
 /// one cheap update).
-pub(super) fn tree_edges_removed(cand: &Candidate, tree: impl Fn(u32) -> bool) -> usize {
+fn tree_edges_removed(cand: &Candidate, tree: impl Fn(u32) -> bool) -> usize {
     removed(cand).into_iter().filter(|&e| tree(e)).count()
 }
 
@@ -143,19 +143,16 @@ impl ForbiddenEdge {
 
     /// The next reduction keeping the forbidden edge `f` out of the matching: among the
     /// edges next to `f` (at the ends of `f` in edge-end order, slot order at each; `f`
-    /// made the candidate's `ux1`, so the reduction's `p` continues it) the first of
-    /// least `cost`; when neither end of `f` has one, at the third edge of a digon at an
+    /// made the candidate's `ux1`, so the reduction's `p` continues it) the first whose
+    /// five removed edges hold the fewest forest edges (`tree`, the caller's structure);
+    /// when neither end of `f` has one, at the third edge of a digon at an
     /// end of `f` (which then stays). If there is neither (never on a connected
     /// bridgeless graph), drops `f` and returns `None` (the caller's default reduction).
     /// Counts digon steps and restarts; [`ForbiddenEdge::applied`] then moves `f`.
-    pub(super) fn pick(
-        &mut self,
-        g: &Cubic,
-        cost: impl Fn(&Candidate) -> usize,
-    ) -> Option<Candidate> {
+    pub(super) fn pick(&mut self, g: &Cubic, tree: impl Fn(u32) -> bool) -> Option<Candidate> {
         self.moves = true;
         if self.f != NONE {
-            if let Some((c, moves)) = self.next_to_forbidden(g, cost) {
+            if let Some((c, moves)) = self.next_to_forbidden(g, tree) {
                 self.moves = moves;
                 self.digon_steps += u64::from(!moves);
                 return Some(c);
@@ -179,7 +176,7 @@ impl ForbiddenEdge {
     fn next_to_forbidden(
         &self,
         g: &Cubic,
-        cost: impl Fn(&Candidate) -> usize,
+        tree: impl Fn(u32) -> bool,
     ) -> Option<(Candidate, bool)> {
         let f = self.f;
         let ends = g.ends(f);
@@ -197,7 +194,7 @@ impl ForbiddenEdge {
                     c.x.swap(0, 1);
                 }
                 debug_assert_eq!(c.a[0], f);
-                let cost = cost(&c);
+                let cost = tree_edges_removed(&c, &tree);
                 if best.is_none_or(|(b, _)| cost < b) {
                     best = Some((cost, c));
                 }
