@@ -329,7 +329,9 @@ impl Lct {
         make_root(&mut self.t, &mut self.stack, x);
     }
 
-    fn find_root(&mut self, x: u32) -> u32 {
+    /// The root of `x`'s tree (its current root: re-rooting moves it). O(log n)
+    /// amortised.
+    pub(crate) fn find_root(&mut self, x: u32) -> u32 {
         self.access(x);
         let mut y = x;
         loop {

@@ -7,8 +7,7 @@
 //! answer exactly as a static search of the current graph would (tested after every
 //! operation of thousands of random insert/delete sequences on small multigraphs with
 //! parallel edges and loops against a BFS / bridge-removal oracle; [`TwoEdge::check`]
-//! verifies the invariants below from scratch, the separation of the link–cut trees
-//! only partly: its documentation says which).
+//! verifies every invariant below from scratch).
 //!
 //! # Design (the cover idea of Holm–de Lichtenberg–Thorup Sec. 3, at a single level)
 //! Holm, de Lichtenberg and Thorup (JACM 48(4), 2001, Sec. 3; recapped by
@@ -426,10 +425,8 @@ impl TwoEdge {
     /// Checks the invariants from scratch, O(n·m): incidence lists and positions; the
     /// tree edges form a spanning forest of the live graph; each tree edge's link–cut
     /// node is connected to both its ends, and every vertex to its forest tree's root
-    /// (its smallest vertex); of the forest roots, only each two consecutive ones (in id
-    /// order) are checked not to be connected in the link–cut tree, and each unused
-    /// tree-edge node only not to be connected to the first root (so a link–cut tree
-    /// joining two non-consecutive trees, or an unused node to a later tree, can pass);
+    /// (its smallest vertex); no two forest trees, and no unused tree-edge node and a
+    /// forest tree, are connected in the link–cut tree (by their link–cut roots);
     /// unused tree-edge nodes hold cover 0; every tree edge's cover count equals the
     /// number of non-tree edges whose forest path contains it (by naive parent walks);
     /// every vertex value is at least `VERTEX`. Takes `&mut self` only for the link–cut
@@ -512,7 +509,7 @@ impl TwoEdge {
             return Err("tree-edge nodes lost or duplicated".into());
         }
         // The link–cut tree: each tree edge's node joined to both ends, every vertex
-        // connected to its forest root, consecutive roots not connected.
+        // connected to its forest root, distinct forest trees not connected.
         for i in 0..self.kind.len() {
             if self.kind[i] != Kind::Tree {
                 continue;
@@ -537,16 +534,21 @@ impl TwoEdge {
                 return Err(format!("node {x}'s value fell below the vertex constant"));
             }
         }
-        for w in roots.windows(2) {
-            if self.lct.connected(w[0], w[1]) {
-                return Err(format!(
-                    "trees of {} and {} joined in the link-cut tree",
-                    w[0], w[1]
-                ));
-            }
+        // Distinct forest trees have distinct link–cut roots, and no unused tree-edge
+        // node is in the link–cut tree of any of them (their roots found in one pass:
+        // find_root changes no root).
+        let mut lct_roots: Vec<(u32, u32)> =
+            roots.iter().map(|&r| (self.lct.find_root(r), r)).collect();
+        lct_roots.sort_unstable();
+        if let Some(w) = lct_roots.windows(2).find(|w| w[0].0 == w[1].0) {
+            return Err(format!(
+                "trees of {} and {} joined in the link-cut tree",
+                w[0].1, w[1].1
+            ));
         }
         for &k in &self.free {
-            if roots.first().is_some_and(|&r| self.lct.connected(k, r)) {
+            let root = self.lct.find_root(k);
+            if lct_roots.binary_search_by_key(&root, |&(l, _)| l).is_ok() {
                 return Err(format!("unused tree-edge node {k} still linked"));
             }
             if self.lct.path_min(k, k) != 0 {
@@ -805,5 +807,27 @@ mod tests {
         t.delete(3);
         assert_eq!(t.check(), Ok(()));
         assert!(t.connected(0, 3) && !t.two_edge_connected(0, 3));
+    }
+
+    /// `check` fails when two forest trees, or an unused tree-edge node and a forest
+    /// tree, are joined in the link–cut tree, whichever trees they are (not only
+    /// consecutive ones).
+    #[test]
+    fn check_catches_joined_link_cut_trees() {
+        // Three forest trees {0, 1}, {2, 3}, {4, 5}; tree-edge nodes 6.. (7 and 8 used).
+        let mut t = TwoEdge::new(6);
+        for (e, [a, b]) in [[0, 1], [2, 3], [4, 5]].into_iter().enumerate() {
+            t.insert(e as u32, a, b);
+        }
+        assert_eq!(t.check(), Ok(()));
+        let mut bad = t.clone();
+        bad.lct.link(0, 4); // the first and the last tree
+        let m = bad.check().expect_err("joined trees accepted");
+        assert!(m.contains("joined"), "{m}");
+        let free = *t.free.last().expect("an unused tree-edge node");
+        let mut bad = t.clone();
+        bad.lct.link(free, 5); // an unused node into the last tree
+        let m = bad.check().expect_err("linked unused node accepted");
+        assert!(m.contains("still linked"), "{m}");
     }
 }
