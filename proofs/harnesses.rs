@@ -1,4 +1,4 @@
-//! Bounded proofs: the harness bodies.
+//! Kani harnesses: the harness bodies.
 //!
 //! Each `pub fn` here is the body of one Kani harness, written as a plain function of its
 //! bounded input (a small triangulation and a few indices), so that the same statement
@@ -7,7 +7,7 @@
 //! - under Kani (`#[cfg(kani)]` entry points at the bottom of this file), where the
 //!   surface is chosen by `kani::any()` among the 57 embedded surfaces of
 //!   [`crate::surfaces::SURFACES`] and the indices are symbolic;
-//! - under `cargo test --test core proofs::`, whose exhaustive twins call the same
+//! - under `cargo test --test core proofs::`, whose bounded exhaustive tests call the same
 //!   function for every value of the bounded input (see `tests/core/proofs.rs`).
 //!
 //! Every statement is checked against references that share no logic with the code under
@@ -15,8 +15,9 @@
 //! O(d_u·d_v)), the critical cycles of `spec::oracle`, and the face set itself (critical
 //! cycles recounted here from the face list alone, [`critical_cycles_from_faces`]).
 //!
-//! Each body returns whether its hypothesis held, so the twins can count the cases in
-//! which the statement had content (a twin that only ever meets vacuous cases fails).
+//! Each body returns whether its hypothesis held, so the exhaustive tests can count the
+//! cases in which the statement had content (a test that only ever meets vacuous cases
+//! fails).
 #![allow(dead_code)]
 
 use std::collections::BTreeSet;

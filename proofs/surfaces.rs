@@ -1,17 +1,17 @@
 //! GENERATED FILE: do not edit. The closed triangulated surfaces with at most 8
-//! vertices of `../shared/irreducible/surfaces-upto-8-vertices.txt`, one entry per line
+//! vertices of `tests/data/irreducible/surfaces-upto-8-vertices.txt`, one entry per line
 //! of that file in order, embedded for the Kani harnesses of `proofs/harnesses.rs`.
 //!
 //! Regenerate with
-//! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_shared_file`;
-//! without the variable that test fails if this file and the shared list differ.
+//! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_the_published_list`;
+//! without the variable that test fails if this file and the list differ.
 #![allow(dead_code)]
 
 use contractible::Triangulation;
 
-/// One embedded surface: its name in the shared list and its faces.
+/// One embedded surface: its name in the list and its faces.
 pub struct SmallSurface {
-    /// `SURFACE_nV_irr_K` or `SURFACE_nV_red_K` (see the shared README).
+    /// `SURFACE_nV_irr_K` or `SURFACE_nV_red_K` (see `tests/data/irreducible/README.md`).
     pub name: &'static str,
     /// Vertices `0..vertex_count`.
     pub vertex_count: usize,

@@ -1,5 +1,5 @@
 //! The surface-list format of published enumerations of small triangulations
-//! (`../shared/irreducible/*.txt`): one surface per non-blank line,
+//! (the published lists of `tests/data/irreducible/*.txt`): one surface per non-blank line,
 //! `NAME: [[a,b,c],[d,e,f],...]`, vertices numbered from 0, each triple a triangle.
 //!
 //! Guarantees: any input text gives either every surface of the file, in file order, or a

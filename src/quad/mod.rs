@@ -447,43 +447,121 @@ mod tests {
     use super::*;
     use crate::gen::octahedron;
 
+    /// Every perfect matching of the octahedron's dual (the cube graph), found by
+    /// backtracking over the face list alone: faces are adjacent when they share two
+    /// vertices.
+    fn perfect_matchings(faces: &[[u32; 3]]) -> Vec<Vec<(usize, usize)>> {
+        fn go(
+            faces: &[[u32; 3]],
+            used: &mut Vec<bool>,
+            cur: &mut Vec<(usize, usize)>,
+            out: &mut Vec<Vec<(usize, usize)>>,
+        ) {
+            let Some(f) = used.iter().position(|&u| !u) else {
+                out.push(cur.clone());
+                return;
+            };
+            used[f] = true;
+            for g in f + 1..faces.len() {
+                let shared = faces[f].iter().filter(|v| faces[g].contains(v)).count();
+                if !used[g] && shared == 2 {
+                    used[g] = true;
+                    cur.push((f, g));
+                    go(faces, used, cur, out);
+                    cur.pop();
+                    used[g] = false;
+                }
+            }
+            used[f] = false;
+        }
+        let mut out = Vec::new();
+        go(faces, &mut vec![false; faces.len()], &mut Vec::new(), &mut out);
+        out
+    }
+
+    /// Every perfect pairing of the octahedron (9, the perfect matchings of the cube)
+    /// passes the check and gives 4 quads, each the union of its two triangles' vertices.
     #[test]
-    fn a_perfect_pairing_of_the_octahedron_gives_six_quads_less_two() {
+    fn every_perfect_pairing_of_the_octahedron_gives_four_quads() {
         let m = octahedron();
         let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron");
-        let mut p = Pairing::new(t.face_capacity());
-        // Pair greedily along each face's first free neighbour.
-        for f in t.faces() {
-            if p.is_paired(f) {
-                continue;
+        let all = perfect_matchings(&m.faces);
+        assert_eq!(all.len(), 9, "the cube graph has 9 perfect matchings");
+        for pairs in all {
+            let mut p = Pairing::new(t.face_capacity());
+            for &(f, g) in &pairs {
+                p.pair(FaceId(f as u32), FaceId(g as u32));
             }
-            if let Some(g) = t.face_neighbours(f).into_iter().find(|&g| !p.is_paired(g)) {
-                p.pair(f, g);
-            }
-        }
-        assert_eq!(p.check(&t), Ok(()));
-        let stats = initial_stats(&t, &p, 0.0);
-        assert_eq!(stats.initial_unpaired, 8 - 2 * p.len());
-        if p.is_perfect(&t) {
+            assert_eq!(p.check(&t), Ok(()));
+            assert!(p.is_perfect(&t));
+            assert_eq!(initial_stats(&t, &p, 0.0).initial_unpaired, 0);
             let quads = quad_faces(&t, &p).expect("perfect");
             assert_eq!(quads.len(), 4);
-            for q in quads {
-                let mut s = q;
-                s.sort_unstable();
-                assert!(s.windows(2).all(|w| w[0] != w[1]), "4 distinct vertices");
-            }
+            let mut expected: Vec<[u32; 4]> = pairs
+                .iter()
+                .map(|&(f, g)| {
+                    let mut q: Vec<u32> = m.faces[f].iter().chain(&m.faces[g]).copied().collect();
+                    q.sort_unstable();
+                    q.dedup();
+                    q.try_into().expect("two triangles sharing an edge span 4 vertices")
+                })
+                .collect();
+            let mut got: Vec<[u32; 4]> = quads
+                .into_iter()
+                .map(|mut q| {
+                    q.sort_unstable();
+                    q
+                })
+                .collect();
+            expected.sort_unstable();
+            got.sort_unstable();
+            assert_eq!(got, expected);
         }
-        let f = FaceId(0);
-        if let Some(g) = p.unpair(f) {
-            assert!(!p.is_paired(g) && p.check(&t).is_ok());
-            // Faces that share no edge are reported by the check.
-            let far = t
-                .faces()
-                .find(|&h| h != f && !t.face_neighbours(f).contains(&h) && !p.is_paired(h));
-            if let Some(h) = far {
-                p.pair(f, h);
-                assert!(p.check(&t).is_err());
-            }
-        }
+    }
+
+    /// `Pairing::check` reports each way a pairing can be wrong.
+    #[test]
+    fn the_pairing_check_reports_every_kind_of_error() {
+        let m = octahedron();
+        let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron");
+        let (f, g) = (0..8)
+            .flat_map(|f| (f + 1..8).map(move |g| (f, g)))
+            .find(|&(f, g)| {
+                let shared = m.faces[f].iter().filter(|v| m.faces[g].contains(v)).count();
+                shared == 1
+            })
+            .map(|(f, g)| (FaceId(f as u32), FaceId(g as u32)))
+            .expect("two faces sharing only a vertex");
+        // Two faces that share no edge.
+        let mut p = Pairing::new(t.face_capacity());
+        p.pair(f, g);
+        assert!(p.check(&t).unwrap_err().contains("share no edge"));
+        // Too short for the triangulation.
+        let short = Pairing::new(t.face_capacity() - 1);
+        assert!(short.check(&t).unwrap_err().contains("pairing holds"));
+        // An adjacent pair, then one side pointed elsewhere: not symmetric.
+        let h = t.face_neighbours(f)[0];
+        let mut p = Pairing::new(t.face_capacity());
+        p.pair(f, h);
+        assert_eq!(p.check(&t), Ok(()));
+        p.mate[h.index()] = g.0;
+        assert!(p.check(&t).unwrap_err().contains("not paired with it"));
+        // A pair count that disagrees with the mates.
+        let mut p = Pairing::new(t.face_capacity());
+        p.pair(f, h);
+        p.pairs += 1;
+        assert!(p.check(&t).unwrap_err().contains("pairs recorded"));
+        // A pair holding a face the triangulation no longer has.
+        let mut t2 = t.clone();
+        let (a, b, _) = t2.edges().next().expect("an edge");
+        t2.contract(a, b, &mut crate::History::new())
+            .expect("the octahedron's edges are contractible");
+        let dead = t.faces().find(|&x| !t2.is_face(x)).expect("a removed face");
+        let live = t2.face_neighbours(t2.faces().next().expect("a face"))[0];
+        let mut p = Pairing::new(t2.face_capacity());
+        p.mate[dead.index()] = live.0;
+        p.mate[live.index()] = dead.0;
+        p.pairs = 1;
+        assert!(p.check(&t2).unwrap_err().contains("removed face"));
     }
 }

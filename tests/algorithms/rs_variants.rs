@@ -1,6 +1,11 @@
 //! Deliberately broken and as-printed variants of RS are caught by the specification
 //! checks (the evidence for spec/ERRATA.md and proof that the checks can fail).
+//!
+//! A test that expects a check to fire exists only where the checks are compiled in
+//! (`debug_assertions` or the `invariants` feature). Where a variant's error also shows in
+//! its output, a twin test for builds without the checks asserts the wrong output.
 
+#[cfg(any(debug_assertions, feature = "invariants"))]
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::irreducible::rs::{reduce_variant, Variant};
 use contractible::irreducible::Options;
@@ -8,6 +13,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// Runs `variant` on the random input for (`surface`, `seed`) and returns the panic
 /// message of the specification check that fired, if any.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 fn failure(variant: Variant, surface: SurfaceKind, seed: u64) -> Option<String> {
     let g = match surface {
         SurfaceKind::Orientable(g) | SurfaceKind::NonOrientable(g) => g as usize,
@@ -28,10 +34,10 @@ fn failure(variant: Variant, surface: SurfaceKind, seed: u64) -> Option<String> 
     })
 }
 
+/// Asserts that `variant` fails the check naming `statement` on the random input for
+/// (`surface`, `seed`), and that the correct algorithm passes the same input.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 fn assert_caught(variant: Variant, surface: SurfaceKind, seed: u64, statement: &str) {
-    if !cfg!(any(debug_assertions, feature = "invariants")) {
-        return; // the checks are compiled out
-    }
     let msg =
         failure(variant, surface, seed).unwrap_or_else(|| panic!("{variant:?} was not caught"));
     assert!(
@@ -43,6 +49,7 @@ fn assert_caught(variant: Variant, surface: SurfaceKind, seed: u64, statement: &
 }
 
 /// Mutation: dropping the counter decrements of Alg. 4.3 l.5–23 leaves c(x) too high.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn skipping_the_degree3_decrement_is_caught_by_proposition_11() {
     let v = Variant {
@@ -55,6 +62,7 @@ fn skipping_the_degree3_decrement_is_caught_by_proposition_11() {
 /// Erratum E1: Alg. 4.3 l.13 as printed (`t(x) > o(y)`; l.19 keeps its printed `>=`)
 /// misses the decrement when y became a neighbour of u at the same time stamp at which
 /// [u, x] was tested.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn erratum_e1_strict_time_stamp_breaks_proposition_11() {
     let v = Variant {
@@ -66,6 +74,7 @@ fn erratum_e1_strict_time_stamp_breaks_proposition_11() {
 
 /// Erratum E3: Alg. 4.2 l.8–19 as printed does not reset c(v) of the initial neighbours,
 /// so a counter left over from an earlier processed vertex violates Proposition 8(6).
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn erratum_e3_missing_counter_reset_breaks_proposition_8_6() {
     let v = Variant {
@@ -77,6 +86,7 @@ fn erratum_e3_missing_counter_reset_breaks_proposition_8_6() {
 
 /// Mutation: Alg. 4.4 counting the link vertices `x, y` of `[u, v]` as critical is
 /// caught at the link test by the oracle count (Theorem 3).
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn counting_link_vertices_is_caught_by_theorem_3() {
     let v = Variant {
@@ -88,6 +98,7 @@ fn counting_link_vertices_is_caught_by_theorem_3() {
 
 /// Mutation: the degree-3 shortcut (Alg. 4.3) taken for a degree-4 endpoint is caught by
 /// Proposition 6.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn degree3_path_for_degree_4_is_caught_by_proposition_6() {
     let v = Variant {
@@ -99,6 +110,7 @@ fn degree3_path_for_degree_4_is_caught_by_proposition_6() {
 
 /// Mutation: marking a link vertex processed in Alg. 4.5 makes a loose vertex look
 /// trapped; Lemma 5 (processed vertices stay trapped) catches it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn marking_a_link_vertex_processed_is_caught_by_lemma_5() {
     let v = Variant {
@@ -110,6 +122,7 @@ fn marking_a_link_vertex_processed_is_caught_by_lemma_5() {
 
 /// Mutation: ending the processing of `u` after one pass over `lue` leaves edges whose
 /// counters dropped to 0 uncontracted; Definition 4 (u trapped) catches it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn a_single_pass_is_caught_by_definition_4() {
     let v = Variant {
@@ -121,6 +134,7 @@ fn a_single_pass_is_caught_by_definition_4() {
 
 /// Mutation: an edge whose counter leaves 0 staying in place breaks the order of `lte`;
 /// Proposition 10 catches it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn not_moving_an_incremented_edge_is_caught_by_proposition_10() {
     let v = Variant {
@@ -246,8 +260,9 @@ fn printed_loop_exit() -> Variant {
     }
 }
 
-/// Runs `printed` on `faces`: returns the message of the check that fired when the
-/// checks are compiled in, and whether the output is irreducible otherwise.
+/// Runs `printed` on `faces`: returns the message of the check that fired (when the checks
+/// are compiled in), or whether the output is irreducible (naive link test). Checks first
+/// that the correct algorithm gives an irreducible triangulation of the same surface.
 fn run_printed(printed: Variant, faces: &[[u32; 3]], n: usize) -> Result<bool, String> {
     use contractible::Triangulation;
     let t = Triangulation::from_faces(n, faces).expect("a closed surface");
@@ -266,35 +281,50 @@ fn run_printed(printed: Variant, faces: &[[u32; 3]], n: usize) -> Result<bool, S
     }
 }
 
+/// Erratum E4: on the Klein bottle witness the printed exit leaves vertex 3 loose, and
+/// Definition 4 catches it when the processing of vertex 3 ends.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn erratum_e4_printed_loop_exit_leaves_a_vertex_loose() {
-    let res = run_printed(printed_loop_exit(), &E4_KLEIN_BOTTLE, 16);
-    if cfg!(any(debug_assertions, feature = "invariants")) {
-        let msg = res.expect_err("the printed loop exit is caught");
-        assert!(
-            msg.contains("Definition 4") && msg.contains("u = 3,"),
-            "{msg}"
-        );
-    } else {
-        // Later vertices happen to remove the loose edge here: the output is right.
-        assert_eq!(res, Ok(true));
-    }
+    let msg = run_printed(printed_loop_exit(), &E4_KLEIN_BOTTLE, 16)
+        .expect_err("the printed loop exit is caught");
+    assert!(
+        msg.contains("Definition 4") && msg.contains("u = 3,"),
+        "{msg}"
+    );
 }
 
+/// Erratum E4 on the Klein bottle witness without the checks: later vertices happen to
+/// remove the loose edge, so the output is right (the genus-4 witness below is the one
+/// whose output is wrong).
+#[cfg(not(any(debug_assertions, feature = "invariants")))]
+#[test]
+fn erratum_e4_printed_loop_exit_on_the_klein_bottle_still_ends_irreducible() {
+    assert_eq!(
+        run_printed(printed_loop_exit(), &E4_KLEIN_BOTTLE, 16),
+        Ok(true)
+    );
+}
+
+/// Erratum E4 on the genus-4 witness: Definition 4 catches the loose vertex.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn erratum_e4_printed_loop_exit_on_the_genus_4_witness_is_caught_by_definition_4() {
+    let msg = run_printed(printed_loop_exit(), &E4_GENUS_4, 25)
+        .expect_err("the printed loop exit is caught");
+    assert!(msg.contains("Definition 4"), "{msg}");
+}
+
+/// Erratum E4 on the genus-4 witness without the checks: the returned triangulation
+/// still has a contractible edge (naive link test).
+#[cfg(not(any(debug_assertions, feature = "invariants")))]
 #[test]
 fn erratum_e4_printed_loop_exit_returns_a_reducible_triangulation() {
-    let res = run_printed(printed_loop_exit(), &E4_GENUS_4, 25);
-    if cfg!(any(debug_assertions, feature = "invariants")) {
-        let msg = res.expect_err("the printed loop exit is caught");
-        assert!(msg.contains("Definition 4"), "{msg}");
-        println!("{msg}");
-    } else {
-        assert_eq!(
-            res,
-            Ok(false),
-            "the printed exit's output must be reducible"
-        );
-    }
+    assert_eq!(
+        run_printed(printed_loop_exit(), &E4_GENUS_4, 25),
+        Ok(false),
+        "the printed exit's output must be reducible"
+    );
 }
 
 /// Erratum E1 witness with a wrong *output*: a 16-vertex surface of Euler genus 4 (found
@@ -340,22 +370,30 @@ const E1_EULER_GENUS_4: [[u32; 3]; 36] = [
     [12, 15, 8],
 ];
 
-#[test]
-fn erratum_e1_printed_stamp_returns_a_reducible_triangulation() {
-    let printed = Variant {
+/// The printed strict stamp of Alg. 4.3 l.13 (erratum E1).
+fn printed_strict_stamp() -> Variant {
+    Variant {
         printed_strict_stamp: true,
         ..Variant::default()
-    };
-    let res = run_printed(printed, &E1_EULER_GENUS_4, 16);
-    if cfg!(any(debug_assertions, feature = "invariants")) {
-        let msg = res.expect_err("the printed stamp is caught");
-        println!("{msg}");
-        assert!(msg.contains("Proposition 11"), "{msg}");
-    } else {
-        assert_eq!(
-            res,
-            Ok(false),
-            "the printed stamp's output must be reducible"
-        );
     }
+}
+
+/// Erratum E1 on its witness: Proposition 11 catches the counter left one too high.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn erratum_e1_printed_stamp_on_the_witness_is_caught_by_proposition_11() {
+    let msg = run_printed(printed_strict_stamp(), &E1_EULER_GENUS_4, 16)
+        .expect_err("the printed stamp is caught");
+    assert!(msg.contains("Proposition 11"), "{msg}");
+}
+
+/// Erratum E1 on its witness without the checks: the output keeps a contractible edge.
+#[cfg(not(any(debug_assertions, feature = "invariants")))]
+#[test]
+fn erratum_e1_printed_stamp_returns_a_reducible_triangulation() {
+    assert_eq!(
+        run_printed(printed_strict_stamp(), &E1_EULER_GENUS_4, 16),
+        Ok(false),
+        "the printed stamp's output must be reducible"
+    );
 }

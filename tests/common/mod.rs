@@ -1,4 +1,5 @@
-//! Shared helpers for the integration tests: paths into `../shared` and list parsing.
+//! Shared helpers for the integration tests: the repository's own test data
+//! (`tests/data/`), the opt-in real-mesh corpus, list parsing and independent checkers.
 #![allow(dead_code)]
 
 use std::path::PathBuf;
@@ -6,20 +7,58 @@ use std::path::PathBuf;
 use contractible::irreducible::{Algorithm, Options, Reduction};
 use contractible::Triangulation;
 
-/// `../shared` beside the project checkout.
-pub fn shared_dir() -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared"))
+/// The repository's own test data, `tests/data/` (see its README for what each file tests
+/// and where it comes from).
+pub fn data_dir() -> PathBuf {
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data"))
+}
+
+/// The small real meshes the repository carries, `tests/data/meshes/` (with their
+/// `manifest.csv`, the corpus manifest's columns).
+pub fn data_meshes() -> PathBuf {
+    data_dir().join("meshes")
+}
+
+/// The opt-in real-mesh corpus (`--features corpus`): the folder given by the environment
+/// variable `CONTRACTIBLE_CORPUS`, or else `../shared` beside the checkout; it holds
+/// `meshes/manifest.csv`, `meshes/closed/` and `meshes/invalid/`.
+///
+/// Panics, naming the folder it looked for, when the corpus is not there: a corpus run
+/// asked for never passes by skipping.
+#[cfg(feature = "corpus")]
+pub fn corpus_dir() -> PathBuf {
+    let dir = match std::env::var_os("CONTRACTIBLE_CORPUS") {
+        Some(d) => PathBuf::from(d),
+        None => PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared")),
+    };
+    let manifest = dir.join("meshes/manifest.csv");
+    assert!(
+        manifest.is_file(),
+        "the real-mesh corpus (feature `corpus`) is expected at {} (no {} there): put the \
+         corpus folder `shared` beside the checkout or set CONTRACTIBLE_CORPUS to its path",
+        dir.display(),
+        manifest.display()
+    );
+    dir
+}
+
+/// The corpus meshes, `corpus_dir()/meshes`.
+#[cfg(feature = "corpus")]
+pub fn corpus_meshes() -> PathBuf {
+    corpus_dir().join("meshes")
 }
 
 pub use contractible::io::list::NamedSurface;
 
-/// Every surface of `../shared/irreducible/FILE`, read by the library's list reader.
+/// Every surface of the published list `tests/data/irreducible/FILE`, read by the
+/// library's list reader.
 pub fn read_surface_list(file: &str) -> Vec<NamedSurface> {
-    let path = shared_dir().join("irreducible").join(file);
+    let path = data_dir().join("irreducible").join(file);
     contractible::io::list::read_surface_list(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
-/// One row of `../shared/meshes/manifest.csv` (the columns the tests use).
+/// One row of a mesh manifest (`tests/data/meshes/manifest.csv` or the corpus's; the
+/// columns the tests use).
 #[derive(Debug, Clone)]
 pub struct ManifestRow {
     pub name: String,
@@ -73,8 +112,20 @@ pub fn expand_genus(s: &str, components: usize) -> Vec<String> {
     out
 }
 
-pub fn manifest() -> Vec<ManifestRow> {
-    let path = shared_dir().join("meshes/manifest.csv");
+/// The rows of the repository's own mesh manifest, `tests/data/meshes/manifest.csv`.
+pub fn data_manifest() -> Vec<ManifestRow> {
+    manifest_in(&data_meshes())
+}
+
+/// The rows of the corpus manifest (panics, naming the place, when the corpus is absent).
+#[cfg(feature = "corpus")]
+pub fn corpus_manifest() -> Vec<ManifestRow> {
+    manifest_in(&corpus_meshes())
+}
+
+/// The rows of `dir/manifest.csv`; each row's `file` is relative to `dir`.
+pub fn manifest_in(dir: &std::path::Path) -> Vec<ManifestRow> {
+    let path = dir.join("manifest.csv");
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
     let mut lines = text.lines();
     let header = csv_fields(lines.next().expect("header"));
@@ -417,7 +468,7 @@ pub fn read_vector_groups(groups: &[(&str, usize)]) -> Vec<serde_json::Value> {
         .collect()
 }
 
-/// The published small surfaces of `../shared/irreducible/` (every surface with up to 8
+/// The published small surfaces of `tests/data/irreducible/` (every surface with up to 8
 /// vertices, the torus and projective-plane lists), built, with their names.
 pub fn small_published_surfaces() -> Vec<(String, Triangulation)> {
     let mut out = Vec::new();

@@ -557,25 +557,70 @@ fn pinched_and_non_manifold_meshes_are_located_errors() {
     ));
 }
 
+/// `count` vertices of `mesh` pairwise at least 4 edges apart (greedily, in id order), so
+/// that removing their stars opens `count` holes with disjoint boundary loops.
+fn far_apart_vertices(mesh: &TriMesh, count: usize) -> Vec<u32> {
+    let mut adj: Vec<BTreeSet<u32>> = vec![BTreeSet::new(); mesh.vertex_count];
+    for f in &mesh.faces {
+        for k in 0..3 {
+            adj[f[k] as usize].insert(f[(k + 1) % 3]);
+            adj[f[(k + 1) % 3] as usize].insert(f[k]);
+        }
+    }
+    let mut blocked = vec![false; mesh.vertex_count];
+    let mut out = Vec::new();
+    for v in 0..mesh.vertex_count as u32 {
+        if out.len() == count {
+            break;
+        }
+        if blocked[v as usize] || adj[v as usize].is_empty() {
+            continue;
+        }
+        out.push(v);
+        // Block everything within distance 3.
+        let mut frontier = vec![v];
+        blocked[v as usize] = true;
+        for _ in 0..3 {
+            let mut next = Vec::new();
+            for &x in &frontier {
+                for &y in &adj[x as usize] {
+                    if !blocked[y as usize] {
+                        blocked[y as usize] = true;
+                        next.push(y);
+                    }
+                }
+            }
+            frontier = next;
+        }
+    }
+    assert_eq!(out.len(), count, "{count} far-apart vertices");
+    out
+}
+
+/// Real meshes opened by removing the stars of far-apart vertices report one loop per
+/// hole, checked against the independent loop walk (`check_mesh`).
 #[test]
-fn shared_open_meshes_report_their_loops() {
-    let dir = common::shared_dir().join("meshes/invalid");
-    for (name, loops) in [("open_camelhead", 1), ("open_bunny_stanford", 5)] {
+fn opened_real_meshes_report_their_loops() {
+    let dir = common::data_meshes().join("closed");
+    for (name, holes) in [("bunny_npm", 1), ("bunny_npm", 5), ("high_genus_3", 3)] {
         let m = contractible::io::read_tri_mesh(&dir.join(format!("{name}.off.gz"))).unwrap();
-        assert_eq!(check_mesh(&m, name), (1, loops), "{name}");
+        let open = without_stars(&m, &far_apart_vertices(&m, holes));
+        assert_eq!(check_mesh(&open, name), (1, holes), "{name}");
     }
 }
 
+/// The repository's non-manifold real meshes are errors with or without boundary, and
+/// the same located error.
 #[test]
-fn shared_non_manifold_meshes_stay_errors() {
-    let dir = common::shared_dir().join("meshes/invalid");
-    for name in [
-        "nonmanifold_dino",
-        "joined_tetrahedra",
-        "shared_edge_stl",
-        "dupfaces_crank",
-        "happy_vrip_res4",
-    ] {
+fn non_manifold_real_meshes_stay_errors() {
+    non_manifold_meshes_stay_errors(
+        &common::data_meshes().join("invalid"),
+        &["joined_tetrahedra", "shared_edge_stl"],
+    );
+}
+
+fn non_manifold_meshes_stay_errors(dir: &std::path::Path, names: &[&str]) {
+    for name in names {
         let m = contractible::io::read_tri_mesh(&dir.join(format!("{name}.off.gz"))).unwrap();
         let closed = Surfaces::from_mesh(&m).unwrap_err();
         let open = Surfaces::from_mesh_with_boundary(&m).unwrap_err();
@@ -588,6 +633,36 @@ fn shared_non_manifold_meshes_stay_errors() {
                     | BuildError::MultipleEdges { .. }
             ),
             "{name}: {open:?}"
+        );
+    }
+}
+
+/// The open and non-manifold meshes of the real-mesh corpus.
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    #[test]
+    fn shared_open_meshes_report_their_loops() {
+        let dir = common::corpus_meshes().join("invalid");
+        for (name, loops) in [("open_camelhead", 1), ("open_bunny_stanford", 5)] {
+            let m =
+                contractible::io::read_tri_mesh(&dir.join(format!("{name}.off.gz"))).unwrap();
+            assert_eq!(check_mesh(&m, name), (1, loops), "{name}");
+        }
+    }
+
+    #[test]
+    fn shared_non_manifold_meshes_stay_errors() {
+        non_manifold_meshes_stay_errors(
+            &common::corpus_meshes().join("invalid"),
+            &[
+                "nonmanifold_dino",
+                "joined_tetrahedra",
+                "shared_edge_stl",
+                "dupfaces_crank",
+                "happy_vrip_res4",
+            ],
         );
     }
 }

@@ -1,28 +1,24 @@
-//! The core on every real mesh of `../shared/meshes`: the manifest's counts, genus per
-//! component and orientability; both link-condition implementations agree on every edge;
-//! every invalid mesh is rejected with the error kind its manifest note names.
+//! The core on real meshes: the manifest's counts, genus per component and orientability;
+//! both link-condition implementations agree on every edge; every invalid mesh is
+//! rejected with the error kind its manifest note names. By default on the small meshes
+//! the repository carries (`tests/data/meshes`); with `--features corpus`, on every mesh
+//! of the real-mesh corpus too.
 
-use crate::common;
+use std::path::Path;
+
+use crate::common::{self, ManifestRow};
 
 use contractible::{BuildError, LinkTester, Surfaces};
 
-fn closed_files() -> Vec<common::ManifestRow> {
-    common::manifest()
-        .into_iter()
-        .filter(|r| r.set == "closed")
-        .collect()
+fn rows_of(rows: &[ManifestRow], set: &str) -> Vec<ManifestRow> {
+    rows.iter().filter(|r| r.set == set).cloned().collect()
 }
 
-#[test]
-fn closed_meshes_match_the_manifest() {
-    let rows = closed_files();
-    assert!(
-        rows.len() >= 90,
-        "manifest lists {} closed meshes",
-        rows.len()
-    );
+/// Every closed mesh of `rows` (files under `dir`) has the manifest's V, E, F, components,
+/// χ, orientability and genus per component, and validates.
+fn closed_meshes_match(rows: &[ManifestRow], dir: &Path) {
     for row in rows {
-        let path = common::shared_dir().join("meshes").join(&row.file);
+        let path = dir.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
@@ -60,12 +56,13 @@ fn closed_meshes_match_the_manifest() {
     }
 }
 
-#[test]
-fn both_link_tests_agree_on_every_edge_of_every_mesh() {
+/// The naive link condition and the marked `LinkTester` agree on every directed edge of
+/// every mesh of `rows`; returns (edges, contractible edges).
+fn link_tests_agree(rows: &[ManifestRow], dir: &Path) -> (usize, usize) {
     let mut edges = 0usize;
     let mut contractible = 0usize;
-    for row in closed_files() {
-        let path = common::shared_dir().join("meshes").join(&row.file);
+    for row in rows {
+        let path = dir.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
@@ -81,19 +78,14 @@ fn both_link_tests_agree_on_every_edge_of_every_mesh() {
             }
         }
     }
-    assert!(edges > 1_000_000, "only {edges} edges checked");
-    assert!(contractible > 0 && contractible < edges);
+    (edges, contractible)
 }
 
-#[test]
-fn invalid_meshes_are_rejected_with_the_right_error() {
-    let rows: Vec<_> = common::manifest()
-        .into_iter()
-        .filter(|r| r.set == "invalid")
-        .collect();
-    assert_eq!(rows.len(), 7);
+/// Every invalid mesh of `rows` reads, and validation rejects it with the error kind its
+/// manifest row names.
+fn invalid_meshes_rejected(rows: &[ManifestRow], dir: &Path) {
     for row in rows {
-        let path = common::shared_dir().join("meshes").join(&row.file);
+        let path = dir.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let err = Surfaces::from_mesh(&mesh).expect_err(&row.name);
@@ -116,6 +108,28 @@ fn invalid_meshes_are_rejected_with_the_right_error() {
         };
         assert!(ok, "{}: unexpected error kind: {err}", row.name);
     }
+}
+
+#[test]
+fn closed_meshes_match_the_manifest() {
+    let rows = rows_of(&common::data_manifest(), "closed");
+    assert_eq!(rows.len(), 9, "closed meshes in tests/data/meshes");
+    closed_meshes_match(&rows, &common::data_meshes());
+}
+
+#[test]
+fn both_link_tests_agree_on_every_edge_of_every_mesh() {
+    let rows = rows_of(&common::data_manifest(), "closed");
+    let (edges, contractible) = link_tests_agree(&rows, &common::data_meshes());
+    assert!(edges > 45_000, "only {edges} edges checked");
+    assert!(contractible > 0 && contractible < edges);
+}
+
+#[test]
+fn invalid_meshes_are_rejected_with_the_right_error() {
+    let rows = rows_of(&common::data_manifest(), "invalid");
+    assert_eq!(rows.len(), 2);
+    invalid_meshes_rejected(&rows, &common::data_meshes());
 }
 
 /// Each structural error of `Triangulation::from_faces`, on a minimal input.
@@ -209,4 +223,36 @@ fn every_build_error_kind_is_reported_where_it_happens() {
     assert_eq!(s.components.len(), 2);
     assert_eq!(s.components[1].vertex_origin, vec![4, 5, 6, 7]);
     assert_eq!(s.components[1].face_origin, vec![4, 5, 6, 7]);
+}
+
+/// The same checks over the real-mesh corpus.
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    #[test]
+    fn closed_meshes_match_the_manifest() {
+        let rows = rows_of(&common::corpus_manifest(), "closed");
+        assert!(
+            rows.len() >= 90,
+            "manifest lists {} closed meshes",
+            rows.len()
+        );
+        closed_meshes_match(&rows, &common::corpus_meshes());
+    }
+
+    #[test]
+    fn both_link_tests_agree_on_every_edge_of_every_mesh() {
+        let rows = rows_of(&common::corpus_manifest(), "closed");
+        let (edges, contractible) = link_tests_agree(&rows, &common::corpus_meshes());
+        assert!(edges > 1_000_000, "only {edges} edges checked");
+        assert!(contractible > 0 && contractible < edges);
+    }
+
+    #[test]
+    fn invalid_meshes_are_rejected_with_the_right_error() {
+        let rows = rows_of(&common::corpus_manifest(), "invalid");
+        assert_eq!(rows.len(), 7);
+        invalid_meshes_rejected(&rows, &common::corpus_meshes());
+    }
 }

@@ -1,5 +1,5 @@
 //! The core's local operations against independent checks: the naive link condition,
-//! from-scratch validation, and the published small surfaces of `../shared/irreducible`.
+//! from-scratch validation, and the published small surfaces of `tests/data/irreducible`.
 
 use crate::common;
 
@@ -250,27 +250,49 @@ fn sorted_faces(t: &Triangulation) -> Vec<[u32; 3]> {
     f
 }
 
+/// Whether the face list is consistently oriented, from the faces alone: no directed
+/// edge `a → b` is used by two faces (so each edge is run once each way).
+fn consistently_oriented(t: &Triangulation) -> bool {
+    let mut seen = std::collections::HashSet::new();
+    t.face_list()
+        .iter()
+        .all(|f| (0..3).all(|k| seen.insert((f[k], f[(k + 1) % 3]))))
+}
+
+/// A consistently oriented input stays consistently oriented under random contractions,
+/// vertex splits and edge flips (checked from the face list after every operation).
 #[test]
-fn orientation_is_preserved_by_splits_and_flips() {
-    // A consistently oriented input stays consistently oriented (no face needs flipping).
+fn orientation_is_preserved_by_contractions_splits_and_flips() {
     let mut t = random(&RandomParams {
         surface: SurfaceKind::Orientable(2),
         min_faces: 500,
         flip_percent: 50,
         seed: 3,
     });
-    let o = t.orientation().unwrap();
-    let reversed = o.iter().filter(|&&f| f).count();
-    assert!(
-        reversed == 0 || reversed == t.face_count(),
-        "random() output is consistently oriented"
-    );
+    assert!(consistently_oriented(&t), "random() output");
     let mut h = History::new();
     let mut rng = Rng::new(5);
-    for _ in 0..200 {
+    let mut done = [0usize; 3];
+    for _ in 0..600 {
         let (u, v) = random_edge(&t, &mut rng);
-        let _ = t.contract(u, v, &mut h);
+        let kind = rng.index(3);
+        let ok = match kind {
+            0 => t.contract(u, v, &mut h).is_ok(),
+            1 => {
+                let link: Vec<VertexId> = t.link(u).collect();
+                let x = link[rng.index(link.len())];
+                let y = link[rng.index(link.len())];
+                x != y && t.split_vertex(u, x, y).is_ok()
+            }
+            _ => t.flip(u, v).is_ok(),
+        };
+        if ok {
+            done[kind] += 1;
+            assert!(consistently_oriented(&t), "after operation kind {kind}");
+        }
     }
+    assert!(done.iter().all(|&n| n >= 50), "operations done: {done:?}");
+    t.validate().unwrap();
     let o = t.orientation().unwrap();
     let live: Vec<bool> = t.faces().map(|f| o[f.index()]).collect();
     assert!(live.iter().all(|&x| x == live[0]));

@@ -19,13 +19,18 @@ use contractible::io::Format;
 use contractible::rng::Rng;
 use harness::{ContractInput, JournalInput, JournalStep, Op, Surface, SurfaceInput};
 
+/// The files of `fuzz/<dir>/<target>/`, sorted. The seed corpora (`corpus`) are part of
+/// the repository, so a missing one fails; `regressions/<target>` exists only once a
+/// campaign has found a crash for that target.
 fn files(dir: &str, target: &str) -> Vec<(PathBuf, Vec<u8>)> {
     let d = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("fuzz")
         .join(dir)
         .join(target);
-    let Ok(rd) = std::fs::read_dir(&d) else {
-        return Vec::new();
+    let rd = match std::fs::read_dir(&d) {
+        Ok(rd) => rd,
+        Err(_) if dir == "regressions" => return Vec::new(),
+        Err(e) => panic!("{}: {e}", d.display()),
     };
     let mut out: Vec<_> = rd
         .map(|e| e.expect("dir entry").path())
@@ -51,47 +56,33 @@ fn replay(target: &str, run: impl Fn(&[u8])) -> usize {
     n
 }
 
-#[test]
-fn seed_corpora_and_regressions_of_the_structured_targets() {
-    let n = replay("surface_ops", |b| {
-        if let Some(i) = harness::decode::<SurfaceInput>(b) {
-            harness::check_reductions(&i);
-        }
-    });
-    assert!(n >= 5, "surface_ops corpus missing");
-    let n = replay("rs_vertex_orders", |b| {
-        if let Some(i) = harness::decode::<SurfaceInput>(b) {
-            harness::check_vertex_orders(&i);
-        }
-    });
-    assert!(n >= 5, "rs_vertex_orders corpus missing");
-    let n = replay("contract_split", |b| {
-        if let Some(i) = harness::decode::<ContractInput>(b) {
-            harness::check_contract_undo(&i);
-        }
-    });
-    assert!(n >= 5, "contract_split corpus missing");
-    let n = replay("journal_ops", |b| {
-        if let Some(i) = harness::decode::<JournalInput>(b) {
-            harness::check_journal(&i);
-        }
-    });
-    assert!(n >= 5, "journal_ops corpus missing");
-    let n = replay("quad_ops", |b| {
-        if let Some(i) = harness::decode::<SurfaceInput>(b) {
-            harness::check_quads(&i);
-        }
-    });
-    assert!(n >= 5, "quad_ops corpus missing");
+/// Replays `target`'s files through `check` after decoding them as `T`; returns how
+/// many decoded (each one checked).
+fn replay_decoded<T: for<'a> arbitrary::Arbitrary<'a>>(target: &str, check: impl Fn(&T)) -> usize {
     let decoded = std::cell::Cell::new(0);
-    let n = replay("simplify", |b| {
-        if let Some(i) = harness::decode::<harness::SimplifyInput>(b) {
-            harness::check_simplify_input(&i);
+    replay(target, |b| {
+        if let Some(i) = harness::decode::<T>(b) {
+            check(&i);
             decoded.set(decoded.get() + 1);
         }
     });
-    assert!(n >= 4, "simplify corpus missing");
-    assert!(decoded.get() >= 4, "simplify corpus does not decode");
+    decoded.get()
+}
+
+#[test]
+fn seed_corpora_and_regressions_of_the_structured_targets() {
+    let n = replay_decoded("surface_ops", harness::check_reductions);
+    assert!(n >= 5, "surface_ops: {n} inputs decoded");
+    let n = replay_decoded("rs_vertex_orders", harness::check_vertex_orders);
+    assert!(n >= 5, "rs_vertex_orders: {n} inputs decoded");
+    let n = replay_decoded("contract_split", harness::check_contract_undo);
+    assert!(n >= 5, "contract_split: {n} inputs decoded");
+    let n = replay_decoded("journal_ops", harness::check_journal);
+    assert!(n >= 5, "journal_ops: {n} inputs decoded");
+    let n = replay_decoded("quad_ops", harness::check_quads);
+    assert!(n >= 5, "quad_ops: {n} inputs decoded");
+    let n = replay_decoded("simplify", harness::check_simplify_input);
+    assert!(n >= 4, "simplify: {n} inputs decoded");
 }
 
 #[test]
@@ -112,7 +103,9 @@ fn seed_corpora_and_regressions_of_the_parsers() {
 /// corpora would only exercise error paths).
 #[test]
 fn parser_seed_meshes_are_closed_surfaces() {
-    for (path, bytes) in files("corpus", "parse_any") {
+    let seeds = files("corpus", "parse_any");
+    assert!(seeds.len() >= 18, "{} parse_any seeds", seeds.len());
+    for (path, bytes) in seeds {
         let mesh = contractible::io::read_tri_mesh_bytes(&bytes, None)
             .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         let s = contractible::Surfaces::from_mesh(&mesh)
@@ -250,13 +243,23 @@ fn every_start_surface_journal_of_contractions_flips_and_undos() {
     }
 }
 
-/// The decoder is the one libFuzzer uses: a fixed byte string decodes to a fixed input
-/// (if `arbitrary` changed its format, saved crash files would replay as other inputs).
+/// The decoder is the one libFuzzer uses: a fixed byte string decodes to a fixed input,
+/// pinned here (if `arbitrary` changed its format, saved crash files would replay as other
+/// inputs, and this test says so).
 #[test]
 fn crash_files_decode_stably() {
     let bytes: Vec<u8> = (0u8..64).collect();
     let a = harness::decode::<SurfaceInput>(&bytes).expect("decodes");
-    let b = harness::decode::<SurfaceInput>(&bytes).expect("decodes");
-    assert_eq!(a, b);
-    assert!(!a.ops.is_empty());
+    assert_eq!(
+        a,
+        SurfaceInput {
+            surface: Surface::Orientable(4),
+            ops: vec![Op::Split {
+                vertex: 2826,
+                i: 12,
+                j: 13
+            }],
+            seed: 1_591_200_115_485_380_623,
+        }
+    );
 }

@@ -13,7 +13,8 @@ use contractible::{Mesh, QuadMesh, TriMesh};
 /// A predicate on an error kind.
 type KindCheck = fn(&K) -> bool;
 
-const MESHES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/meshes");
+/// The small real meshes the repository carries (the corpus run reads the corpus's).
+const MESHES: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data/meshes");
 
 /// Coordinates that stress shortest-round-trip formatting.
 fn tricky_positions(n: usize) -> Vec<[f64; 3]> {
@@ -411,7 +412,7 @@ fn writer_rejects_inconsistent_meshes_before_writing() {
     assert!(out.is_empty());
 }
 
-// ---------------------------------------------------------------- shared meshes
+// ---------------------------------------------------------------- real meshes
 
 struct ManifestRow {
     file: String,
@@ -419,8 +420,10 @@ struct ManifestRow {
     f: usize,
 }
 
-fn manifest() -> Vec<ManifestRow> {
-    let text = std::fs::read_to_string(format!("{MESHES}/manifest.csv")).unwrap();
+/// The rows of `dir/manifest.csv`, parsed here (not by the tests' common helpers) from
+/// the first columns only.
+fn manifest(dir: &str) -> Vec<ManifestRow> {
+    let text = std::fs::read_to_string(format!("{dir}/manifest.csv")).unwrap();
     let mut lines = text.lines();
     let head: Vec<&str> = lines.next().unwrap().split(',').collect();
     let col = |n: &str| head.iter().position(|h| *h == n).unwrap();
@@ -442,14 +445,15 @@ fn manifest() -> Vec<ManifestRow> {
         .collect()
 }
 
-#[test]
-fn every_closed_shared_mesh_reads_with_manifest_counts() {
-    let rows = manifest();
+/// Every closed mesh of `dir` is listed in its manifest and reads with the manifest's
+/// face and used-vertex counts; returns how many were read.
+fn closed_meshes_read_with_manifest_counts(dir: &str) -> usize {
+    let rows = manifest(dir);
     let closed: Vec<&ManifestRow> = rows
         .iter()
         .filter(|r| r.file.starts_with("closed/"))
         .collect();
-    let on_disk = std::fs::read_dir(format!("{MESHES}/closed"))
+    let on_disk = std::fs::read_dir(format!("{dir}/closed"))
         .unwrap()
         .filter(|e| {
             e.as_ref()
@@ -461,8 +465,8 @@ fn every_closed_shared_mesh_reads_with_manifest_counts() {
         .count();
     assert!(on_disk > 0);
     assert_eq!(closed.len(), on_disk, "manifest lists every closed file");
-    for r in closed {
-        let path = PathBuf::from(format!("{MESHES}/{}", r.file));
+    for r in &closed {
+        let path = PathBuf::from(format!("{dir}/{}", r.file));
         let m = read_tri_mesh(&path).unwrap_or_else(|e| panic!("{e}"));
         assert_eq!(m.faces.len(), r.f, "{}", r.file);
         let used: HashSet<u32> = m.faces.iter().flatten().copied().collect();
@@ -470,16 +474,54 @@ fn every_closed_shared_mesh_reads_with_manifest_counts() {
         assert!(r.v <= m.vertex_count, "{}", r.file);
         assert_eq!(m.positions.as_ref().unwrap().len(), m.vertex_count);
     }
+    closed.len()
 }
 
-#[test]
-fn invalid_shared_meshes_still_parse() {
-    // They are not closed manifolds, but they are well-formed files: rejecting them is the
-    // job of validation, not of the reader.
-    for e in std::fs::read_dir(format!("{MESHES}/invalid")).unwrap() {
+/// Every invalid mesh of `dir` is a well-formed file: rejecting it is the job of
+/// validation, not of the reader. Returns how many were read (all the manifest lists).
+fn invalid_meshes_parse(dir: &str) -> usize {
+    let listed = manifest(dir)
+        .iter()
+        .filter(|r| r.file.starts_with("invalid/"))
+        .count();
+    let mut read = 0;
+    for e in std::fs::read_dir(format!("{dir}/invalid")).unwrap() {
         let path = e.unwrap().path();
         let m = read_tri_mesh(&path).unwrap_or_else(|e| panic!("{e}"));
         assert!(!m.faces.is_empty(), "{}", path.display());
+        read += 1;
+    }
+    assert_eq!(read, listed, "manifest lists every invalid file");
+    read
+}
+
+#[test]
+fn every_closed_real_mesh_reads_with_manifest_counts() {
+    assert_eq!(closed_meshes_read_with_manifest_counts(MESHES), 9);
+}
+
+#[test]
+fn invalid_real_meshes_still_parse() {
+    assert_eq!(invalid_meshes_parse(MESHES), 2);
+}
+
+/// The same over the real-mesh corpus.
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    fn dir() -> String {
+        crate::common::corpus_meshes().display().to_string()
+    }
+
+    #[test]
+    fn every_closed_shared_mesh_reads_with_manifest_counts() {
+        assert!(closed_meshes_read_with_manifest_counts(&dir()) >= 90);
+    }
+
+    #[test]
+    fn invalid_shared_meshes_still_parse() {
+        assert_eq!(invalid_meshes_parse(&dir()), 7);
     }
 }
 

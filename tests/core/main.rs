@@ -1,5 +1,5 @@
-//! Integration tests of the core, I/O and generators, the exhaustive twins of the Kani
-//! harnesses and the fuzz regressions. One test target per area, so that the test
+//! Integration tests of the core, I/O and generators, the bounded exhaustive tests of
+//! the Kani harnesses and the fuzz regressions. One test target per area, so that the test
 //! binaries are linked once, not once per file.
 
 #[path = "../common/mod.rs"]

@@ -1,9 +1,11 @@
-//! The exhaustive twins of the Kani harnesses in `proofs/harnesses.rs`: the same harness
-//! bodies, called for every value of their bounded input instead of a symbolic one.
+//! The bounded exhaustive tests of the Kani harnesses in `proofs/harnesses.rs`: the same
+//! harness bodies, called for every value of their bounded input instead of a symbolic
+//! one. These tests are what has run; the harnesses themselves have not been run under
+//! Kani (see `proofs/README.md` for what that needs).
 //!
 //! - every one of the 57 closed surfaces with at most 8 vertices
-//!   (`proofs/surfaces.rs`, generated from `../shared/irreducible/surfaces-upto-8-vertices.txt`
-//!   and checked against it by `surfaces_table_matches_shared_file`), every edge in both
+//!   (`proofs/surfaces.rs`, generated from `tests/data/irreducible/surfaces-upto-8-vertices.txt`
+//!   and checked against it by `surfaces_table_matches_the_published_list`), every edge in both
 //!   directions, every (trapped vertex, contractible edge) pair for Lemma 5, every
 //!   degree-3 vertex for Prop. 6, every ordered pair of edges for Prop. 7;
 //! - every maximal contraction sequence from each of the 57 surfaces (DFS, memoised on the
@@ -12,7 +14,7 @@
 //! - every sequence of one or two vertex splits of T4, the 7-vertex torus and the
 //!   6-vertex projective plane.
 //!
-//! Each twin prints how many cases it covered and asserts a lower bound on the number of
+//! Each test prints how many cases it covered and asserts a lower bound on the number of
 //! non-vacuous ones, so it cannot silently cover nothing.
 
 use crate::common;
@@ -30,25 +32,25 @@ use surfaces::SURFACES;
 
 const SURFACES_FILE: &str = "surfaces-upto-8-vertices.txt";
 
-/// The text `proofs/surfaces.rs` must have, rendered from the shared list.
+/// The text `proofs/surfaces.rs` must have, rendered from the published list.
 fn render_surfaces_table() -> String {
     let list = common::read_surface_list(SURFACES_FILE);
     let mut s = String::new();
     s.push_str(
         "//! GENERATED FILE: do not edit. The closed triangulated surfaces with at most 8\n\
-         //! vertices of `../shared/irreducible/surfaces-upto-8-vertices.txt`, one entry per line\n\
+         //! vertices of `tests/data/irreducible/surfaces-upto-8-vertices.txt`, one entry per line\n\
          //! of that file in order, embedded for the Kani harnesses of `proofs/harnesses.rs`.\n\
          //!\n\
          //! Regenerate with\n\
-         //! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_shared_file`;\n\
-         //! without the variable that test fails if this file and the shared list differ.\n\
+         //! `CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_the_published_list`;\n\
+         //! without the variable that test fails if this file and the list differ.\n\
          #![allow(dead_code)]\n\
          \n\
          use contractible::Triangulation;\n\
          \n\
-         /// One embedded surface: its name in the shared list and its faces.\n\
+         /// One embedded surface: its name in the list and its faces.\n\
          pub struct SmallSurface {\n    \
-             /// `SURFACE_nV_irr_K` or `SURFACE_nV_red_K` (see the shared README).\n    \
+             /// `SURFACE_nV_irr_K` or `SURFACE_nV_red_K` (see `tests/data/irreducible/README.md`).\n    \
              pub name: &'static str,\n    \
              /// Vertices `0..vertex_count`.\n    \
              pub vertex_count: usize,\n    \
@@ -87,7 +89,7 @@ fn render_surfaces_table() -> String {
 }
 
 #[test]
-fn surfaces_table_matches_shared_file() {
+fn surfaces_table_matches_the_published_list() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/proofs/surfaces.rs");
     let want = render_surfaces_table();
     if std::env::var_os("CONTRACTIBLE_REGEN_SURFACES").is_some() {
@@ -97,7 +99,7 @@ fn surfaces_table_matches_shared_file() {
     assert!(
         have == want,
         "proofs/surfaces.rs differs from {SURFACES_FILE}: regenerate it \
-         (CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_shared_file)"
+         (CONTRACTIBLE_REGEN_SURFACES=1 cargo test --test core surfaces_table_matches_the_published_list)"
     );
     // And the compiled table is what the file says.
     let list = common::read_surface_list(SURFACES_FILE);
@@ -267,10 +269,10 @@ fn canonical_form_separates_exactly_the_isomorphism_classes() {
     assert!(distinct.len() >= 57 + 21 + 2 - 8);
 }
 
-// ---- Twins over the 57 surfaces.
+// ---- Bounded exhaustive tests over the 57 surfaces.
 
 #[test]
-fn twin_link_conditions_agree_and_theorem3() {
+fn exhaustive_link_conditions_agree_and_theorem3() {
     let (mut cases, mut contractible) = (0, 0);
     for (name, t) in small_surfaces() {
         for e in 0..t.edge_count() {
@@ -286,7 +288,7 @@ fn twin_link_conditions_agree_and_theorem3() {
 }
 
 #[test]
-fn twin_contract_then_split_is_identity() {
+fn exhaustive_contract_then_split_is_identity() {
     let (mut cases, mut contracted) = (0, 0);
     for (_, t) in small_surfaces() {
         for e in 0..t.edge_count() {
@@ -301,7 +303,7 @@ fn twin_contract_then_split_is_identity() {
 }
 
 #[test]
-fn twin_lemma5_trapped_stays_trapped() {
+fn exhaustive_lemma5_trapped_stays_trapped() {
     let (mut cases, mut applicable) = (0, 0);
     for (_, t) in small_surfaces() {
         for w in 0..t.vertex_count() {
@@ -318,7 +320,7 @@ fn twin_lemma5_trapped_stays_trapped() {
 }
 
 #[test]
-fn twin_prop6_degree3_edges_contractible_unless_t4() {
+fn exhaustive_prop6_degree3_edges_contractible_unless_t4() {
     let (mut cases, mut degree3) = (0, 0);
     for (_, t) in small_surfaces() {
         for v in 0..t.vertex_count() {
@@ -331,7 +333,7 @@ fn twin_prop6_degree3_edges_contractible_unless_t4() {
 }
 
 #[test]
-fn twin_prop7() {
+fn exhaustive_prop7() {
     let (mut cases, mut stays, mut became) = (0, 0, 0);
     for (_, t) in small_surfaces() {
         for f in 0..t.edge_count() {
@@ -350,7 +352,7 @@ fn twin_prop7() {
 }
 
 #[test]
-fn twin_rs_output_irreducible() {
+fn exhaustive_rs_output_irreducible() {
     let mut cases = 0;
     for (_, t) in small_surfaces() {
         harnesses::rs_output_irreducible(&t);
@@ -402,7 +404,7 @@ impl Leaves {
         };
         published.insert("S1", list("torus.txt"));
         published.insert("N1", list("projective-plane.txt"));
-        // Every N2 surface with <= 8 vertices is irreducible (shared README).
+        // Every N2 surface with <= 8 vertices is irreducible (`tests/data/irreducible/README.md`).
         let n2: Vec<Vec<[u32; 3]>> = SURFACES
             .iter()
             .filter(|s| s.name.starts_with("N2"))

@@ -6,6 +6,7 @@
 use super::graph::{Cubic, Dfs, NONE};
 use super::*;
 use crate::rng::Rng;
+#[cfg(any(debug_assertions, feature = "invariants"))]
 use crate::spec::testing::assert_fails;
 
 fn graph(n: usize, edges: &[[u32; 2]]) -> Cubic {
@@ -380,8 +381,10 @@ fn inputs_that_are_not_connected_bridgeless_cubic_are_refused() {
 }
 
 /// A wrong strategy: always `H1`, untested.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 struct AlwaysH1;
 
+#[cfg(any(debug_assertions, feature = "invariants"))]
 impl Strategy for AlwaysH1 {
     fn choose(&mut self, _: &mut Cubic, _: &Candidate) -> Option<Reconnection> {
         Some(Reconnection::H1)
@@ -389,9 +392,11 @@ impl Strategy for AlwaysH1 {
 }
 
 /// A wrong strategy: always the reconnection the naive one rejects, when it rejects one.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[derive(Default)]
 struct Contrary(Naive);
 
+#[cfg(any(debug_assertions, feature = "invariants"))]
 impl Strategy for Contrary {
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
         let r = g.reduce(cand, Reconnection::H1);
@@ -407,6 +412,7 @@ impl Strategy for Contrary {
 
 /// F1 catches a wrong choice: on K4, `H1` at 0–1 makes two loops; on the prism, the
 /// contrary choice yields a graph with a bridge or a loop.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn f1_catches_a_wrong_reconnection() {
     assert_fails("F1", || {
@@ -434,6 +440,7 @@ fn f1_catches_a_wrong_reconnection() {
 }
 
 /// F2 catches a lift that leaves the matching imperfect.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn f2_catches_a_broken_lift() {
     let mut g = k4();
@@ -867,9 +874,11 @@ fn diks_stanczyk_on_random_surfaces() {
 
 /// A broken connectivity structure for the test of F3: [`NaiveForest`] that never links
 /// a replacement edge, so its forest stops spanning `H'`.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[derive(Default)]
 struct NoReplacement(NaiveForest);
 
+#[cfg(any(debug_assertions, feature = "invariants"))]
 impl ds::SpanningForest for NoReplacement {
     fn with_nodes(n: usize) -> Self {
         NoReplacement(NaiveForest::with_nodes(n))
@@ -895,6 +904,7 @@ impl ds::SpanningForest for NoReplacement {
 
 /// F3 fails when the forest the decision reads does not span `H'` (a connectivity
 /// structure that drops replacement edges), and holds for the real one (the runs above).
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn f3_catches_a_forest_that_stops_spanning() {
     for (name, g) in small_graphs() {
@@ -1041,6 +1051,7 @@ fn bbdl_decides_every_reduction_of_small_and_random_graphs() {
 
 /// F4 fails when the 2-edge structure does not hold the current graph (an edge missing,
 /// an extra edge) or its invariants are broken; holds for the real runs above.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
 fn f4_catches_a_structure_out_of_step_with_the_graph() {
     let g = petersen();

@@ -271,9 +271,14 @@ pub(super) fn at_end(ex: &Expander) {
 /// stopped when `u_1`, the vertex processed last, is fully expanded) passes every hook;
 /// each test corrupts one thing and asserts the panic names the statement. With the
 /// checks off ([`ENABLED`] false) the expected failures are skipped.
+/// Corrupted-state tests. L1–L6 and L8 are gated hooks: their tests are compiled only where
+/// the checks are. L7's materialisation (`check_k`) is not gated, so its tests run in
+/// every build.
 #[cfg(test)]
 mod tests {
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     use crate::spec::testing::assert_fails;
+    use crate::spec::testing::assert_fails_ungated;
 
     use super::super::{Expander, Split, Variant};
     use super::*;
@@ -298,10 +303,12 @@ mod tests {
         (ex, last.expect("u_1 has splits"))
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     fn new_flags(s: &Split) -> usize {
         s.flagged.iter().flatten().count()
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     fn all_edges(ex: &Expander) -> Vec<(EdgeId, [VertexId; 2])> {
         (0..ex.numbers.capacity())
             .filter_map(|i| {
@@ -311,10 +318,21 @@ mod tests {
             .collect()
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     fn pending(ex: &Expander, w: VertexId) -> bool {
         processed_before(ex, w, ex.current.expect("current"))
     }
 
+    /// The consistent state passes L7's materialisation (every build), so the L7 failures
+    /// below are caused by their corruptions.
+    #[test]
+    fn the_uncorrupted_state_passes_l7() {
+        let (ex, _) = state();
+        check_k(&ex, None, None);
+    }
+
+    /// The consistent state passes every gated check too.
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn the_uncorrupted_state_passes_every_check() {
         let (ex, s) = state();
@@ -327,6 +345,7 @@ mod tests {
             .any(|(_, [a, b])| pending(&ex, *a) || pending(&ex, *b)));
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l1_a_split_that_adds_no_edge_to_m() {
         let (mut ex, s) = state();
@@ -336,6 +355,7 @@ mod tests {
         assert_fails("L1 (Alg. 3.1)", || after_vertex(&ex, u));
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l2_three_flips_or_a_flip_away_from_v() {
         let (ex, s) = state();
@@ -352,11 +372,9 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l2_a_flag_that_is_not_flippable_in_t_ij() {
-        if !ENABLED {
-            return;
-        }
         // Walk the real expansion to a split whose new vertex v has an edge [v, w],
         // w ∈ V_i, that is not flippable in T_ij, and claim the split flagged it.
         let (mut ex, _) = state();
@@ -380,6 +398,7 @@ mod tests {
         );
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l3_a_flipped_or_misplaced_edge_inserted() {
         let (mut ex, s) = state();
@@ -401,6 +420,7 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l8_both_split_edges_in_m_with_x_y_unflipped() {
         let (ex, mut s) = state();
@@ -410,6 +430,7 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l4_u_i_with_splits_left() {
         let (mut ex, _) = state();
@@ -420,6 +441,7 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l6_a_flipped_edge_in_m() {
         let (mut ex, s) = state();
@@ -430,6 +452,7 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l6_an_unsafe_edge_in_m() {
         let (mut ex, s) = state();
@@ -445,6 +468,7 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l5_a_flag_at_a_vertex_of_t_prime() {
         let (mut ex, _) = state();
@@ -459,6 +483,7 @@ mod tests {
         assert_fails("L5 (Prop. 3.3 (i))", || after_vertex(&ex, u));
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l5_a_flag_on_an_edge_that_is_not_flippable() {
         let (mut ex, _) = state();
@@ -478,6 +503,7 @@ mod tests {
         });
     }
 
+    #[cfg(any(debug_assertions, feature = "invariants"))]
     #[test]
     fn l7_a_triangle_paired_twice() {
         let (mut ex, _) = state();
@@ -518,7 +544,7 @@ mod tests {
         // was created by a split, so dropping the edge from M leaves it unmatched...
         ex.in_m[s.inserted.index()] = false;
         ex.reduced_faces += 2; // ...with the count adjusted, only the identity is wrong.
-        assert_fails("L7 (Prop. 3.3): M* matches all expanded triangles", || {
+        assert_fails_ungated("L7 (Prop. 3.3): M* matches all expanded triangles", || {
             check_k(&ex, None, None)
         });
     }
@@ -527,7 +553,7 @@ mod tests {
     fn l7_too_many_unpaired_faces() {
         let (mut ex, _) = state();
         ex.reduced_faces -= 2;
-        assert_fails("L7 (Prop. 3.3): M* matches all expanded triangles", || {
+        assert_fails_ungated("L7 (Prop. 3.3): M* matches all expanded triangles", || {
             check_k(&ex, None, None)
         });
     }
@@ -535,7 +561,7 @@ mod tests {
     #[test]
     fn l7_a_flag_that_cannot_be_flipped_in_k() {
         let (ex, _) = state();
-        assert_fails("L7 (Claim 3.1 (i))", || {
+        assert_fails_ungated("L7 (Claim 3.1 (i))", || {
             check_k(&ex, Some(Some("flagged edge #0: not flippable")), None)
         });
     }
