@@ -475,7 +475,12 @@ mod tests {
             used[f] = false;
         }
         let mut out = Vec::new();
-        go(faces, &mut vec![false; faces.len()], &mut Vec::new(), &mut out);
+        go(
+            faces,
+            &mut vec![false; faces.len()],
+            &mut Vec::new(),
+            &mut out,
+        );
         out
     }
 
@@ -503,7 +508,8 @@ mod tests {
                     let mut q: Vec<u32> = m.faces[f].iter().chain(&m.faces[g]).copied().collect();
                     q.sort_unstable();
                     q.dedup();
-                    q.try_into().expect("two triangles sharing an edge span 4 vertices")
+                    q.try_into()
+                        .expect("two triangles sharing an edge span 4 vertices")
                 })
                 .collect();
             let mut got: Vec<[u32; 4]> = quads

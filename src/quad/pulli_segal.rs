@@ -565,9 +565,7 @@ mod corpus {
     fn rule_variants_on_real_meshes() {
         let corpus = std::env::var_os("CONTRACTIBLE_CORPUS")
             .map(std::path::PathBuf::from)
-            .unwrap_or_else(|| {
-                std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared")
-            });
+            .unwrap_or_else(|| std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared"));
         let dir = corpus.join("meshes/closed");
         let mut names: Vec<_> = std::fs::read_dir(&dir)
             .unwrap_or_else(|e| {
@@ -581,7 +579,12 @@ mod corpus {
             .filter(|p| p.to_string_lossy().ends_with(".off.gz"))
             .collect();
         names.sort();
-        assert!(names.len() >= 90, "{} closed meshes in {}", names.len(), dir.display());
+        assert!(
+            names.len() >= 90,
+            "{} closed meshes in {}",
+            names.len(),
+            dir.display()
+        );
         let rules = Rules::ALL;
         let seeds = 0..5u64;
         // Unpaired faces summed over seeds, per rule set: all meshes / meshes ≥ 10k faces.

@@ -646,8 +646,7 @@ mod corpus {
     fn shared_open_meshes_report_their_loops() {
         let dir = common::corpus_meshes().join("invalid");
         for (name, loops) in [("open_camelhead", 1), ("open_bunny_stanford", 5)] {
-            let m =
-                contractible::io::read_tri_mesh(&dir.join(format!("{name}.off.gz"))).unwrap();
+            let m = contractible::io::read_tri_mesh(&dir.join(format!("{name}.off.gz"))).unwrap();
             assert_eq!(check_mesh(&m, name), (1, loops), "{name}");
         }
     }
