@@ -39,11 +39,11 @@ fn build(name: &str) -> Triangulation {
             Some((f, l)) => (f, l.parse().expect("levels")),
             None => (rest, 0),
         };
-        let path = format!(
-            "{}/../shared/meshes/closed/{file}.off.gz",
-            env!("CARGO_MANIFEST_DIR")
-        );
-        let m = contractible::io::read_tri_mesh(path.as_ref()).expect("mesh reads");
+        // Real meshes come from the corpus (CONTRACTIBLE_CORPUS, else ../shared).
+        let corpus = std::env::var("CONTRACTIBLE_CORPUS")
+            .unwrap_or_else(|_| format!("{}/../shared", env!("CARGO_MANIFEST_DIR")));
+        let path = format!("{corpus}/meshes/closed/{file}.off.gz");
+        let m = contractible::io::read_tri_mesh(path.as_ref()).unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"));
         subdivide(&m, levels)
     } else {
         let mut c = name.chars();

@@ -2,7 +2,8 @@
 //! the same inputs in one run, so that every ratio compares medians of one run. Inputs:
 //! the paper's bricks (`gen::paper_family`: B0 is the tri-quad paper's A1, C0 its B1; see
 //! `docs/benchmarks.md`), a subset of the B and C families, and the biggest component of
-//! every real mesh of `../shared/meshes/closed/` with at least 80,000 triangles.
+//! every real mesh of the corpus (`$CONTRACTIBLE_CORPUS/meshes/closed/`, else
+//! `../shared/meshes/closed/`) with at least 80,000 triangles.
 //!
 //! Groups (filter with the group name, e.g. `cargo bench --bench quad -- total`):
 //! - `total` (3 samples): `quad::convert` (initial step + completion, as the CLI runs it;
@@ -35,7 +36,7 @@ fn main() {
 
 const OPTIONS: Options = Options { seed: 1 };
 
-/// The real meshes of `../shared/meshes/closed/` with at least 80,000 triangles.
+/// The real meshes of the corpus with at least 80,000 triangles.
 const MESHES: &[&str] = &[
     "mesh:armadillo",
     "mesh:botijo",
@@ -74,11 +75,11 @@ fn input(name: &str) -> Triangulation {
 
 fn build(name: &str) -> Triangulation {
     let mesh = if let Some(file) = name.strip_prefix("mesh:") {
-        let path = format!(
-            "{}/../shared/meshes/closed/{file}.off.gz",
-            env!("CARGO_MANIFEST_DIR")
-        );
-        contractible::io::read_tri_mesh(path.as_ref()).expect("mesh reads")
+        // Real meshes come from the corpus (CONTRACTIBLE_CORPUS, else ../shared).
+        let corpus = std::env::var("CONTRACTIBLE_CORPUS")
+            .unwrap_or_else(|_| format!("{}/../shared", env!("CARGO_MANIFEST_DIR")));
+        let path = format!("{corpus}/meshes/closed/{file}.off.gz");
+        contractible::io::read_tri_mesh(path.as_ref()).unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"))
     } else {
         let mut c = name.chars();
         let group = c.next().expect("group letter");

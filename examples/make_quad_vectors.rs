@@ -2,7 +2,7 @@
 //! `spec/vectors/README.md`, section "Tri-quad vectors").
 //!
 //! `cargo run --example make_quad_vectors [OUT_DIR]` (default `spec/vectors` of this
-//! checkout). Reads `../shared/irreducible/surfaces-upto-8-vertices.txt`, generates seven
+//! checkout). Reads `tests/data/irreducible/surfaces-upto-8-vertices.txt`, generates seven
 //! small random surfaces, and runs every tri-quad algorithm with seeds 0 and 1 on each:
 //! the initial pairing (`quad::{lrs, pulli_segal, greedy, matching}::initial_pairing`),
 //! then the completion (`quad::augment::complete`), and checks that `quad::convert` gives
@@ -172,13 +172,13 @@ fn main() {
         .nth(1)
         .map_or_else(|| root.join("spec/vectors"), PathBuf::from);
     std::fs::create_dir_all(&out_dir).expect("create output directory");
-    let list = root.join("../shared/irreducible/surfaces-upto-8-vertices.txt");
+    let list = root.join("tests/data/irreducible/surfaces-upto-8-vertices.txt");
     let small: Vec<Input> = contractible::io::list::read_surface_list(&list)
         .unwrap_or_else(|e| panic!("{e}"))
         .into_iter()
         .map(|s| Input {
             name: s.name,
-            source: json!({ "file": "shared/irreducible/surfaces-upto-8-vertices.txt" }),
+            source: json!({ "file": "tests/data/irreducible/surfaces-upto-8-vertices.txt" }),
             vertex_count: s.vertex_count,
             faces: s.faces,
         })

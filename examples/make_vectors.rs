@@ -1,7 +1,7 @@
 //! Regenerates the conformance vectors in `spec/vectors/` (format: `spec/vectors/README.md`).
 //!
 //! `cargo run --example make_vectors [OUT_DIR]` (default `spec/vectors` of this checkout).
-//! Reads the published small surfaces from `../shared/irreducible/*.txt`, generates the
+//! Reads the published small surfaces from `tests/data/irreducible/*.txt`, generates the
 //! rest, runs RS, Schipper and the brute force (seed 0) on each and writes one JSON-lines
 //! file per group. `tests/algorithms/vectors.rs` checks that the library still reproduces them.
 
@@ -45,7 +45,7 @@ fn read_list(path: &Path) -> Vec<Input> {
         .into_iter()
         .map(|s| Input {
             name: s.name,
-            source: json!({ "file": format!("shared/irreducible/{file}") }),
+            source: json!({ "file": format!("tests/data/irreducible/{file}") }),
             vertex_count: s.vertex_count,
             faces: s.faces,
         })
@@ -162,16 +162,16 @@ fn main() {
         .nth(1)
         .map_or_else(|| root.join("spec/vectors"), PathBuf::from);
     std::fs::create_dir_all(&out_dir).expect("create output directory");
-    let shared = root.join("../shared/irreducible");
+    let lists = root.join("tests/data/irreducible");
     let groups: Vec<(&str, Vec<Input>)> = vec![
         (
             "surfaces-upto-8-vertices",
-            read_list(&shared.join("surfaces-upto-8-vertices.txt")),
+            read_list(&lists.join("surfaces-upto-8-vertices.txt")),
         ),
-        ("torus", read_list(&shared.join("torus.txt"))),
+        ("torus", read_list(&lists.join("torus.txt"))),
         (
             "projective-plane",
-            read_list(&shared.join("projective-plane.txt")),
+            read_list(&lists.join("projective-plane.txt")),
         ),
         ("generated", generated()),
     ];
