@@ -6,7 +6,10 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
-use crate::cli_common::{meshes, run, run_json, stderr, Scratch};
+use crate::cli_common::{
+    data_closed, data_meshes, read_mesh, run, run_json, stderr, with_duplicate_faces,
+    write_off_text, Scratch,
+};
 
 /// The lines of a JSON-lines text.
 fn lines(text: &str) -> Vec<Value> {
@@ -41,13 +44,17 @@ fn files_of(dir: &Path) -> Vec<PathBuf> {
     v
 }
 
-#[test]
-fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
-    let d = Scratch::new("batch-all");
+/// `batch --task reduce` over a folder of meshes (`closed/` and `invalid/` below it): one
+/// line per file in sorted order, the invalid ones failing with a located input error
+/// (exit code 1 for the batch, with a summary), the valid ones irreducible, and each
+/// result equal to the single-file command's for the files named in `spread`. At least
+/// `min_files` files are checked; `scratch` names the working directory.
+fn reduce_over_a_mesh_folder(meshes: &Path, spread: &[&str], min_files: usize, scratch: &str) {
+    let d = Scratch::new(scratch);
     let jsonl = d.path("r.jsonl");
     let out = run(&[
         "batch".as_ref(),
-        meshes().as_os_str(),
+        meshes.as_os_str(),
         "--task".as_ref(),
         "reduce".as_ref(),
         "--jsonl".as_ref(),
@@ -59,21 +66,29 @@ fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     assert!(stderr(&out).contains("files failed"), "{}", stderr(&out));
     let got = lines(&std::fs::read_to_string(&jsonl).expect("jsonl"));
-    let mut expected: Vec<PathBuf> = files_of(&meshes().join("closed"));
-    expected.extend(files_of(&meshes().join("invalid")));
+    let mut expected: Vec<PathBuf> = files_of(&meshes.join("closed"));
+    expected.extend(files_of(&meshes.join("invalid")));
     expected.sort();
+    assert!(
+        expected.len() >= min_files,
+        "only {} files under {}",
+        expected.len(),
+        meshes.display()
+    );
     let names: Vec<String> = got
         .iter()
         .map(|l| l["file"].as_str().unwrap().to_string())
         .collect();
     let want: Vec<String> = expected.iter().map(|p| p.display().to_string()).collect();
     assert_eq!(names, want);
+    let mut invalid_seen = 0;
     for l in &got {
         let file = l["file"].as_str().unwrap();
         let invalid = file.contains("/invalid/");
         assert_eq!(l["ok"], !invalid, "{l}");
         assert_eq!(l["task"], "reduce");
         if invalid {
+            invalid_seen += 1;
             let e = &l["error"];
             assert_eq!(e["kind"], "input", "{l}");
             assert_eq!(e["exit_code"], 2, "{l}");
@@ -87,9 +102,14 @@ fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
             assert_eq!(l["result"]["irreducible"], true, "{l}");
         }
     }
+    assert!(
+        invalid_seen >= 1,
+        "no invalid file under {}",
+        meshes.display()
+    );
     // The results are the single-file command's, for a spread of files.
-    for name in ["socket", "footbones", "tetrahedron", "two_objects"] {
-        let file = meshes().join("closed").join(format!("{name}.off.gz"));
+    for name in spread {
+        let file = meshes.join("closed").join(format!("{name}.off.gz"));
         let line = got
             .iter()
             .find(|l| l["file"] == file.display().to_string())
@@ -99,10 +119,22 @@ fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
     }
 }
 
+/// Over the repository's real meshes: every closed and invalid one, one line each.
+#[test]
+fn reduce_over_all_in_repo_meshes_gives_one_line_per_file_and_located_errors() {
+    reduce_over_a_mesh_folder(
+        &data_meshes(),
+        &["plate_holes_stl", "box_stl", "bunny_npm", "two_objects"],
+        11,
+        "batch-all",
+    );
+}
+
 #[test]
 fn lines_do_not_depend_on_the_number_of_jobs_and_resume_completes_a_cut_run() {
     let d = Scratch::new("batch-resume");
-    let pattern = meshes().join("closed").join("c*.off.gz");
+    // The repository's meshes converted from STL: a glob that picks 5 of its 9 files.
+    let pattern = data_meshes().join("closed").join("*_stl.off.gz");
     let one = d.path("one.jsonl");
     let two = d.path("two.jsonl");
     for (jobs, path) in [("1", &one), ("2", &two)] {
@@ -125,7 +157,7 @@ fn lines_do_not_depend_on_the_number_of_jobs_and_resume_completes_a_cut_run() {
     }
     let a = lines(&std::fs::read_to_string(&one).unwrap());
     let b = lines(&std::fs::read_to_string(&two).unwrap());
-    assert!(a.len() >= 5);
+    assert_eq!(a.len(), 5);
     assert_eq!(
         a.iter().map(untimed).collect::<Vec<_>>(),
         b.iter().map(untimed).collect::<Vec<_>>()
@@ -168,10 +200,8 @@ fn lines_do_not_depend_on_the_number_of_jobs_and_resume_completes_a_cut_run() {
 fn outputs_go_under_outdir_and_info_reports_problems_with_the_error() {
     let d = Scratch::new("batch-out");
     let outdir = d.path("out");
-    let files = [
-        meshes().join("closed").join("casting.off.gz"),
-        meshes().join("closed").join("socket.off.gz"),
-    ];
+    let names = ["high_genus_3", "plate_holes_stl"];
+    let files = names.map(data_closed);
     let out = run(&[
         "batch".as_ref(),
         files[0].as_os_str(),
@@ -185,20 +215,23 @@ fn outputs_go_under_outdir_and_info_reports_problems_with_the_error() {
         "0.02".as_ref(),
     ]);
     assert!(out.status.success(), "{}", stderr(&out));
-    for (name, l) in ["casting", "socket"]
-        .iter()
-        .zip(lines(&String::from_utf8_lossy(&out.stdout)))
-    {
+    let got = lines(&String::from_utf8_lossy(&out.stdout));
+    assert_eq!(got.len(), names.len());
+    for (name, l) in names.iter().zip(got) {
         let written = outdir.join(format!("{name}.simplify.off.gz"));
         assert_eq!(l["result"]["output"], written.display().to_string());
         let info = run_json(&["info".as_ref(), written.as_os_str()]);
         assert_eq!(info["faces"], l["result"]["faces_after"]);
     }
-    // info on a broken mesh: the problems and the error, in one line.
-    let crank = meshes().join("invalid").join("dupfaces_crank.off.gz");
+    // info on a broken mesh (a real mesh with two vertex stars listed twice): the
+    // problems and the error, in one line.
+    let (broken, dups) = with_duplicate_faces(&read_mesh(&data_closed("high_genus_3")));
+    assert!(dups > 1);
+    let broken_file = d.path("duplicates.off");
+    write_off_text(&broken_file, &broken);
     let out = run(&[
         "batch".as_ref(),
-        crank.as_os_str(),
+        broken_file.as_os_str(),
         "--task".as_ref(),
         "info".as_ref(),
     ]);
@@ -209,16 +242,16 @@ fn outputs_go_under_outdir_and_info_reports_problems_with_the_error() {
         l["error"]["message"]
             .as_str()
             .unwrap()
-            .contains("12 duplicate faces"),
+            .contains(&format!("{dups} duplicate faces")),
         "{l}"
     );
     let problems = l["result"]["problems"].as_array().expect("problems");
-    assert!(problems.iter().any(|p| p["count"] == 12), "{l}");
+    assert!(problems.iter().any(|p| p["count"] == dups), "{l}");
 }
 
 #[test]
 fn bad_arguments_fail_before_any_work() {
-    let closed = meshes().join("closed");
+    let closed = data_meshes().join("closed");
     let cases: [&[&str]; 5] = [
         &["--task", "reduce", "--", "--algo", "nope"],
         &["--task", "simplify"],
@@ -238,4 +271,21 @@ fn bad_arguments_fail_before_any_work() {
     let out = run(&["batch", "/no/such/dir/*.off", "--task", "info"]);
     assert_eq!(out.status.code(), Some(2));
     assert!(stderr(&out).contains("no file matches"), "{}", stderr(&out));
+}
+
+/// Over the real-mesh corpus (`--features corpus`).
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+    use crate::cli_common::corpus_meshes;
+
+    #[test]
+    fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
+        reduce_over_a_mesh_folder(
+            &corpus_meshes(),
+            &["socket", "footbones", "tetrahedron", "two_objects"],
+            100,
+            "batch-all-corpus",
+        );
+    }
 }

@@ -9,7 +9,10 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::ffi::OsStr;
 use std::path::Path;
 
-use cli_common::{int, meshes, run, run_json, run_ok, stderr, Scratch};
+use cli_common::{
+    data_closed, int, read_mesh, run, run_json, run_ok, stderr, tetrahedron_file, with_holes,
+    Scratch,
+};
 use contractible::TriMesh;
 
 /// Boundary loop lengths (sorted) and χ of a face list, from edge counts alone: an edge
@@ -98,10 +101,23 @@ fn check_info(path: &Path, orientable: bool) -> serde_json::Value {
     j
 }
 
+/// A real open surface: the repository's genus-0 bunny with `holes` holes cut in it,
+/// written as `DIR/NAME.off.gz`. The face list's own count says it has `holes` boundary
+/// loops and χ = 2 − `holes`.
+fn open_bunny(dir: &Scratch, name: &str, holes: usize) -> std::path::PathBuf {
+    let open = with_holes(&read_mesh(&data_closed("bunny_npm")), holes);
+    let (lengths, chi) = loops_and_chi(&open.faces);
+    assert_eq!((lengths.len(), chi), (holes, 2 - holes as i64), "{name}");
+    let path = dir.path(&format!("{name}.off.gz"));
+    contractible::io::write_mesh(&path, &open).unwrap();
+    path
+}
+
 #[test]
-fn info_describes_the_shared_open_meshes() {
-    for (name, loops, genus) in [("open_camelhead", 1, 0), ("open_bunny_stanford", 5, 0)] {
-        let path = meshes().join(format!("invalid/{name}.off.gz"));
+fn info_describes_open_meshes() {
+    let d = Scratch::new("boundary-open");
+    for (name, loops, genus) in [("disc_bunny", 1, 0), ("holed_bunny", 5, 0)] {
+        let path = open_bunny(&d, name, loops as usize);
         let j = check_info(&path, true);
         assert_eq!(int(&j, "boundary_loops"), loops, "{name}");
         assert_eq!(int(&j["component_list"][0], "genus"), genus, "{name}");
@@ -166,14 +182,16 @@ fn info_names_a_moebius_band_and_a_punctured_torus() {
 
 #[test]
 fn closed_reports_have_no_boundary_fields() {
-    for m in ["closed/tetrahedron.off.gz", "closed/box_stl.off.gz"] {
-        let j = run_json(&[OsStr::new("info"), meshes().join(m).as_os_str()]);
+    let d = Scratch::new("boundary-closed");
+    for path in [tetrahedron_file(&d), data_closed("box_stl")] {
+        let j = run_json(&[OsStr::new("info"), path.as_os_str()]);
+        let m = path.display();
         assert!(j.get("boundary_loops").is_none(), "{m}");
         for c in j["component_list"].as_array().unwrap() {
             assert!(c.get("boundary_loops").is_none(), "{m}");
             assert!(c.get("boundary_loop_lengths").is_none(), "{m}");
         }
-        let out = run_ok(&[OsStr::new("info"), meshes().join(m).as_os_str()]);
+        let out = run_ok(&[OsStr::new("info"), path.as_os_str()]);
         // (The path itself may contain the word, as this checkout's does.)
         assert!(!String::from_utf8_lossy(&out.stdout).contains("boundary loop"));
     }
@@ -188,7 +206,7 @@ fn reduce_and_quad_refuse_open_meshes() {
         6,
         &without_star(&contractible::gen::projective_plane6(), 0),
     );
-    let bunny = meshes().join("invalid/open_bunny_stanford.off.gz");
+    let bunny = open_bunny(&d, "holed_bunny", 5);
     for cmd in ["reduce", "quad"] {
         for (input, loops) in [
             (bunny.as_path(), "5 boundary loops"),
@@ -267,7 +285,7 @@ fn pinched_meshes_stay_errors_everywhere() {
 #[test]
 fn convert_keeps_open_meshes_and_refuses_pinched_ones() {
     let d = Scratch::new("boundary-convert");
-    let src = meshes().join("invalid/open_bunny_stanford.off.gz");
+    let src = open_bunny(&d, "holed_bunny", 5);
     let out = d.path("bunny.ply");
     let j = run_json(&[
         OsStr::new("convert"),

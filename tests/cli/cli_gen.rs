@@ -4,7 +4,7 @@ use crate::cli_common;
 
 use std::ffi::OsStr;
 
-use cli_common::{int, load, meshes, run_json, run_ok, Scratch};
+use cli_common::{data_closed, genus_two_file, int, load, run_json, run_ok, Scratch};
 use contractible::gen;
 
 /// Expected topology of a generated file.
@@ -201,7 +201,8 @@ fn bricks_round_trip() {
 #[test]
 fn subdivide_round_trips_and_keeps_positions() {
     let d = Scratch::new("gen-subdivide");
-    let input = meshes().join("closed/double_torus.off.gz");
+    let input = genus_two_file(&d);
+    let faces_in = load(&input).0.faces.len() as i64;
     let out = d.path("s.off");
     let g = run_json(&[
         OsStr::new("gen"),
@@ -213,7 +214,7 @@ fn subdivide_round_trips_and_keeps_positions() {
         OsStr::new("-o"),
         out.as_os_str(),
     ]);
-    assert_eq!(int(&g, "faces"), 68 * 16);
+    assert_eq!(int(&g, "faces"), faces_in * 16);
     assert_eq!(int(&g, "euler_characteristic"), -2);
     assert_eq!(int(&g["component_list"][0], "genus"), 2);
     let (orig, _) = load(&input);
@@ -229,7 +230,7 @@ fn subdivide_round_trips_and_keeps_positions() {
 #[test]
 fn convert_round_trip_off_ply_obj_off_keeps_counts_and_coordinates() {
     let d = Scratch::new("convert");
-    let src = meshes().join("closed/bunny_npm.off.gz");
+    let src = data_closed("bunny_npm");
     let chain = [
         src.clone(),
         d.path("a.ply"),
@@ -249,12 +250,14 @@ fn convert_round_trip_off_ply_obj_off_keeps_counts_and_coordinates() {
     let (b, sb) = load(&chain[4]);
     assert_eq!(a, b, "mesh changed in the round trip");
     assert_eq!(sa.counts(), sb.counts());
+    // The manifest's counts of bunny_npm.
     let i = run_json(&[OsStr::new("info"), chain[4].as_os_str()]);
     assert_eq!(int(&i, "vertices"), 1839);
     assert_eq!(int(&i, "faces"), 3674);
 
-    // Several components survive; unused vertices are dropped and the rest renumbered.
-    let multi = meshes().join("closed/gears_stl.off.gz");
+    // Several components survive (box_stl: 10 in the manifest); unused vertices are
+    // dropped and the rest renumbered.
+    let multi = data_closed("box_stl");
     let out = d.path("g.obj");
     run_ok(&[
         OsStr::new("-q"),
@@ -263,7 +266,7 @@ fn convert_round_trip_off_ply_obj_off_keeps_counts_and_coordinates() {
         out.as_os_str(),
     ]);
     let i = run_json(&[OsStr::new("info"), out.as_os_str()]);
-    assert_eq!(int(&i, "components"), 7);
+    assert_eq!(int(&i, "components"), 10);
 
     let unused = d.path("u.off");
     std::fs::write(

@@ -1,12 +1,14 @@
-//! `contractible info` against the shared mesh manifest: every closed mesh, through the
-//! binary, must report exactly the manifest's counts, components, genera, χ and
-//! orientability.
+//! `contractible info` against a mesh manifest (the repository's, and with
+//! `--features corpus` the real-mesh corpus's): every closed mesh, through the binary,
+//! must report exactly the manifest's counts, components, genera, χ and orientability.
 
 use crate::cli_common;
 use crate::common;
 
-use cli_common::{int, meshes, run, run_json, run_ok};
-use common::{manifest, ManifestRow};
+use std::path::Path;
+
+use cli_common::{data_closed, data_meshes, int, run, run_json, run_ok};
+use common::{data_manifest, ManifestRow};
 
 /// The genus of one `component_list` entry as the manifest writes it (`N<h>` for a
 /// non-orientable one).
@@ -17,8 +19,8 @@ fn genus_code(c: &serde_json::Value) -> String {
     }
 }
 
-fn check_row(row: &ManifestRow) {
-    let path = meshes().join(&row.file);
+fn check_row(meshes: &Path, row: &ManifestRow) {
+    let path = meshes.join(&row.file);
     let v = run_json(&[std::ffi::OsStr::new("info"), path.as_os_str()]);
     let what = &row.name;
     assert_eq!(int(&v, "vertices") as usize, row.v, "{what}: V");
@@ -59,14 +61,12 @@ fn check_row(row: &ManifestRow) {
     }
 }
 
-#[test]
-fn info_matches_the_manifest_for_every_closed_mesh() {
-    let rows: Vec<ManifestRow> = manifest()
-        .into_iter()
-        .filter(|r| r.set == "closed")
-        .collect();
+/// Every closed mesh of the manifest under `meshes` (at least `min_rows` of them, and
+/// every file of `closed/` listed) through `info`, in parallel.
+fn info_matches_the_manifest(meshes: &Path, rows: Vec<ManifestRow>, min_rows: usize) {
+    let rows: Vec<ManifestRow> = rows.into_iter().filter(|r| r.set == "closed").collect();
     // Every file in closed/ is in the manifest (so none is skipped silently).
-    let mut files: Vec<String> = std::fs::read_dir(meshes().join("closed"))
+    let mut files: Vec<String> = std::fs::read_dir(meshes.join("closed"))
         .expect("closed/")
         .map(|e| format!("closed/{}", e.expect("entry").file_name().to_string_lossy()))
         .collect();
@@ -74,20 +74,26 @@ fn info_matches_the_manifest_for_every_closed_mesh() {
     let mut listed: Vec<String> = rows.iter().map(|r| r.file.clone()).collect();
     listed.sort();
     assert_eq!(files, listed, "closed/ and the manifest disagree");
-    assert!(rows.len() > 90, "only {} closed meshes", rows.len());
+    assert!(rows.len() >= min_rows, "only {} closed meshes", rows.len());
 
     let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     let chunk = rows.len().div_ceil(threads);
     std::thread::scope(|s| {
         for part in rows.chunks(chunk) {
-            s.spawn(move || part.iter().for_each(check_row));
+            s.spawn(move || part.iter().for_each(|r| check_row(meshes, r)));
         }
     });
 }
 
+/// The repository's closed real meshes (`tests/data/meshes`).
+#[test]
+fn info_matches_the_manifest_for_every_in_repo_closed_mesh() {
+    info_matches_the_manifest(&data_meshes(), data_manifest(), 9);
+}
+
 #[test]
 fn info_human_output_and_quiet() {
-    let path = meshes().join("closed/box_stl.off.gz");
+    let path = data_closed("box_stl");
     let out = run_ok(&[std::ffi::OsStr::new("info"), path.as_os_str()]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("components=10"), "{text}");
@@ -123,4 +129,17 @@ fn info_warns_about_unused_vertices() {
         "{}",
         cli_common::stderr(&out)
     );
+}
+
+/// Over the real-mesh corpus (`--features corpus`).
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+    use crate::cli_common::corpus_meshes;
+    use crate::common::corpus_manifest;
+
+    #[test]
+    fn info_matches_the_manifest_for_every_closed_mesh() {
+        info_matches_the_manifest(&corpus_meshes(), corpus_manifest(), 91);
+    }
 }

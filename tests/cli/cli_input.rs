@@ -12,7 +12,11 @@ use std::fmt::Write as _;
 use std::io::Write as _;
 use std::process::{Command, Output, Stdio};
 
-use cli_common::{int, meshes, run, run_json, run_ok, stderr, Scratch};
+use cli_common::{
+    data_closed, data_meshes, genus_two_file, grid_torus, int, read_mesh, run, run_json, run_ok,
+    stderr, with_duplicate_faces, write_off_text, Scratch,
+};
+use common::{data_manifest, ManifestRow};
 
 /// Runs `contractible ARGS...` with `input` on its standard input.
 fn run_stdin(args: &[&str], input: &[u8]) -> Output {
@@ -71,13 +75,22 @@ fn raw_counts(m: &contractible::TriMesh) -> (usize, usize) {
     (dups, nonmanifold)
 }
 
-#[test]
-fn info_lists_every_duplicate_face_and_non_manifold_edge_of_the_crank() {
-    let file = meshes().join("invalid/dupfaces_crank.off.gz");
-    // The manifest's notes: "12 duplicate faces, 24 non-manifold edges".
-    let r = info_json(&file, &[], 2);
-    assert_eq!(problem_count(&r, "duplicate_face"), 12, "{r}");
-    assert_eq!(problem_count(&r, "non_manifold_edge"), 24, "{r}");
+/// `info` on an OFF file with duplicate faces and non-manifold edges (laid out as `OFF`,
+/// `V F 0`, then one line per vertex and per face): the counts made here from the raw
+/// faces, five examples of duplicates located by line, an edge shared by 4 faces, one
+/// summary line on stderr; `reduce` stops at the first problem and points at `info`.
+fn lists_every_duplicate_face_and_non_manifold_edge(file: &std::path::Path) {
+    let mesh = read_mesh(file);
+    let (dups, nonmanifold) = raw_counts(&mesh);
+    let v = mesh.vertex_count as i64;
+    assert!(dups > 5, "{}: {dups} duplicate faces", file.display());
+    let r = info_json(file, &[], 2);
+    assert_eq!(problem_count(&r, "duplicate_face") as usize, dups, "{r}");
+    assert_eq!(
+        problem_count(&r, "non_manifold_edge") as usize,
+        nonmanifold,
+        "{r}"
+    );
     assert_eq!(r["surface"], false);
     let dup = r["problems"]
         .as_array()
@@ -102,11 +115,14 @@ fn info_lists_every_duplicate_face_and_non_manifold_edge_of_the_crank() {
             .map(|x| x.as_i64().unwrap())
             .collect();
         assert!(faces[0] > faces[1], "{e}");
-        assert_eq!(
-            lines,
-            vec![49986 + 3 + faces[0], 49986 + 3 + faces[1]],
-            "{e}"
-        );
+        assert_eq!(lines, vec![v + 3 + faces[0], v + 3 + faces[1]], "{e}");
+        // The two faces really have the same vertex set.
+        let set = |f: i64| {
+            let mut s = mesh.faces[f as usize];
+            s.sort_unstable();
+            s
+        };
+        assert_eq!(set(faces[0]), set(faces[1]), "{e}");
     }
 
     // Human-readable: the counts, one hint per kind, stderr's summary.
@@ -114,19 +130,25 @@ fn info_lists_every_duplicate_face_and_non_manifold_edge_of_the_crank() {
     assert_eq!(out.status.code(), Some(2));
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
-        text.contains("12 duplicate faces: the same face is listed more than once"),
+        text.contains(&format!(
+            "{dups} duplicate faces: the same face is listed more than once"
+        )),
         "{text}"
     );
     assert!(
-        text.contains("24 non-manifold edges: more than two faces meet"),
+        text.contains(&format!(
+            "{nonmanifold} non-manifold edges: more than two faces meet"
+        )),
         "{text}"
     );
     assert!(text.contains("is shared by 4 faces"), "{text}");
-    assert!(text.contains("… and 7 more"), "{text}");
+    assert!(text.contains(&format!("… and {} more", dups - 5)), "{text}");
     let err = stderr(&out);
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(
-        err.contains("not a surface: 12 duplicate faces, 24 non-manifold edges"),
+        err.contains(&format!(
+            "not a surface: {dups} duplicate faces, {nonmanifold} non-manifold edges"
+        )),
         "{err}"
     );
 
@@ -140,15 +162,29 @@ fn info_lists_every_duplicate_face_and_non_manifold_edge_of_the_crank() {
     );
 }
 
+/// A real mesh (the repository's genus-3 surface) with the faces around two vertices
+/// listed a second time after the others.
 #[test]
-fn every_invalid_mesh_gets_a_multi_problem_report_matching_raw_counts() {
-    let rows: Vec<_> = common::manifest()
-        .into_iter()
-        .filter(|r| r.set == "invalid")
-        .collect();
-    assert!(rows.len() >= 7);
+fn info_lists_every_duplicate_face_and_non_manifold_edge() {
+    let d = Scratch::new("duplicates");
+    let (mesh, _) = with_duplicate_faces(&read_mesh(&data_closed("high_genus_3")));
+    let file = d.path("duplicates.off");
+    write_off_text(&file, &mesh);
+    lists_every_duplicate_face_and_non_manifold_edge(&file);
+}
+
+/// `info` on every invalid mesh of a manifest (at least `min_rows`): the problem counts
+/// made here from the raw faces, the manifest's E and F, a hint and 1 to 5 examples per
+/// group; open surfaces are described (exit 0) with their loops.
+fn every_invalid_mesh_matches_raw_counts(
+    meshes: &std::path::Path,
+    rows: Vec<ManifestRow>,
+    min_rows: usize,
+) {
+    let rows: Vec<_> = rows.into_iter().filter(|r| r.set == "invalid").collect();
+    assert!(rows.len() >= min_rows, "only {} invalid meshes", rows.len());
     for r in rows {
-        let path = meshes().join(&r.file);
+        let path = meshes.join(&r.file);
         let mesh = contractible::io::read_tri_mesh(&path).unwrap();
         let (dups, nonmanifold) = raw_counts(&mesh);
         let open = r.name.starts_with("open_");
@@ -184,6 +220,12 @@ fn every_invalid_mesh_gets_a_multi_problem_report_matching_raw_counts() {
                 .all(|e| !e["message"].as_str().unwrap().is_empty()));
         }
     }
+}
+
+/// The repository's invalid real meshes (a duplicate face, a non-manifold edge).
+#[test]
+fn every_invalid_in_repo_mesh_gets_a_multi_problem_report_matching_raw_counts() {
+    every_invalid_mesh_matches_raw_counts(&data_meshes(), data_manifest(), 2);
 }
 
 #[test]
@@ -301,8 +343,8 @@ fn polygon_files_are_described_refused_with_a_hint_or_triangulated() {
 #[test]
 fn tri_quad_output_round_trips_through_info() {
     let d = Scratch::new("quad-round-trip");
-    for name in ["torus_288", "rocker_arm_2500", "fertility"] {
-        let input = meshes().join(format!("closed/{name}.off.gz"));
+    for name in ["round_stl", "high_genus_3", "bunny_npm"] {
+        let input = data_closed(name);
         let t = run_json(&[OsStr::new("info"), input.as_os_str()]);
         let (v, e, f) = (int(&t, "vertices"), int(&t, "edges"), int(&t, "faces"));
         for ext in ["obj", "off"] {
@@ -334,7 +376,9 @@ fn tri_quad_output_round_trips_through_info() {
 
 #[test]
 fn weld_with_a_tolerance_merges_near_copies_and_reports_collapsed_faces() {
-    let m = contractible::io::read_tri_mesh(&meshes().join("closed/double_torus.off.gz")).unwrap();
+    let d = Scratch::new("weld-eps");
+    // A genus-2 surface whose vertices are at least 0.5 apart.
+    let m = read_mesh(&genus_two_file(&d));
     let p = m.positions.as_ref().unwrap();
     // A soup whose copies of a vertex differ by up to 1e-9 (as float noise does).
     let mut s = String::new();
@@ -350,11 +394,10 @@ fn weld_with_a_tolerance_merges_near_copies_and_reports_collapsed_faces() {
     for i in 0..m.faces.len() {
         writeln!(s, "f {} {} {}", 3 * i + 1, 3 * i + 2, 3 * i + 3).unwrap();
     }
-    let d = Scratch::new("weld-eps");
     let soup = d.path("noisy.obj");
     std::fs::write(&soup, &s).unwrap();
     let soup_s = soup.to_str().unwrap();
-    // Exact welding leaves it open; within 1e-6 it is the double torus again.
+    // Exact welding leaves it open; within 1e-6 it is the genus-2 surface again.
     let exact = run(&["reduce", "--weld", soup_s]);
     assert_eq!(exact.status.code(), Some(2), "{}", stderr(&exact));
     let out = run_ok(&["info", "--weld=1e-6", soup_s]);
@@ -462,35 +505,116 @@ fn standard_input_sniffing_bom_and_skipped_statements() {
     );
 }
 
-/// `--triangulate` never folds a quad surface it can cut cleanly: the coarse torus's
-/// quads (from `quad`, 288 quads on 288 vertices) cut by the shorter diagonal alone gave
-/// 48 duplicate faces and non-manifold edges; with the diagonal choice that avoids
-/// existing edges, the triangles are a closed torus again (checked by `info`'s own
-/// validation, and V − E + F = 0 from its counts).
-#[test]
-fn triangulating_quads_of_a_coarse_torus_gives_a_torus() {
-    let d = Scratch::new("coarse_torus_quads");
-    let input = format!(
-        "{}/../shared/meshes/closed/torus_288.off.gz",
-        env!("CARGO_MANIFEST_DIR")
-    );
+/// `quad --algo ALGO` on `input` (a closed torus of `vertices` vertices and `faces`
+/// faces), then `info --triangulate` on the quads, for the four initial-pairing
+/// algorithms: a closed torus again each time. `scratch` names the working directory.
+fn triangulated_quads_are_a_torus(input: &str, vertices: i64, faces: i64, scratch: &str) {
+    let d = Scratch::new(scratch);
     let quads = d.path("quads.off");
     for algo in ["lrs", "ps", "sg", "matching"] {
-        run_ok(&[
-            "quad",
-            "--algo",
-            algo,
-            &input,
-            "-o",
-            quads.to_str().unwrap(),
-        ]);
+        run_ok(&["quad", "--algo", algo, input, "-o", quads.to_str().unwrap()]);
         let r = run_json(&["info", "--triangulate", quads.to_str().unwrap()]);
         assert!(r.get("problems").is_none(), "{algo}: {r}");
         assert_eq!(r["orientable"], true, "{algo}: {r}");
         assert_eq!(int(&r["component_list"][0], "genus"), 1, "{algo}: {r}");
         let (v, e, f) = (int(&r, "vertices"), int(&r, "edges"), int(&r, "faces"));
-        assert_eq!((v, f), (288, 576), "{algo}: {r}");
+        assert_eq!((v, f), (vertices, faces), "{algo}: {r}");
         assert_eq!(v - e + f, 0, "{algo}: {r}");
-        assert_eq!(int(&r, "triangulated_polygons"), 288, "{algo}");
+        assert_eq!(int(&r, "triangulated_polygons"), faces / 2, "{algo}");
+    }
+}
+
+/// The duplicate faces a cut of every quad along its shorter diagonal alone would make
+/// (an independent count on the quads `quad` writes: the reason the choice of diagonal
+/// must also avoid existing edges).
+fn shorter_diagonal_duplicates(input: &str, algo: &str, dir: &Scratch) -> usize {
+    let quads = dir.path("plain.off");
+    run_ok(&["quad", "--algo", algo, input, "-o", quads.to_str().unwrap()]);
+    let text = std::fs::read_to_string(&quads).unwrap();
+    let mut nums = text
+        .lines()
+        .skip(1)
+        .flat_map(str::split_whitespace)
+        .map(|x| x.parse::<f64>().unwrap());
+    let mut next = || nums.next().unwrap();
+    let (nv, nf, _) = (next() as usize, next() as usize, next());
+    let p: Vec<[f64; 3]> = (0..nv).map(|_| [next(), next(), next()]).collect();
+    let dist = |a: u32, b: u32| -> f64 {
+        let (x, y) = (p[a as usize], p[b as usize]);
+        (0..3).map(|k| (x[k] - y[k]).powi(2)).sum::<f64>()
+    };
+    let mut seen = std::collections::HashSet::new();
+    let mut dups = 0;
+    for _ in 0..nf {
+        assert_eq!(next() as usize, 4);
+        let [a, b, c, d] = [next(), next(), next(), next()].map(|x| x as u32);
+        let cut = if dist(a, c) <= dist(b, d) {
+            [[a, b, c], [a, c, d]]
+        } else {
+            [[a, b, d], [b, c, d]]
+        };
+        for mut t in cut {
+            t.sort_unstable();
+            dups += usize::from(!seen.insert(t));
+        }
+    }
+    dups
+}
+
+/// `--triangulate` never folds a quad surface it can cut cleanly: on a coarse torus's
+/// quads, cutting by the shorter diagonal alone gives duplicate faces and non-manifold
+/// edges (checked here on a 24 × 6 grid torus whose tube is as thick as its hole is
+/// wide); with the diagonal choice that avoids existing edges, the triangles are a
+/// closed torus again (checked by `info`'s own validation, and V − E + F = 0 from its
+/// counts).
+#[test]
+fn triangulating_quads_of_a_coarse_torus_gives_a_torus() {
+    let d = Scratch::new("coarse_torus");
+    let torus = d.path("torus.off");
+    let (n, m) = (24, 6);
+    contractible::io::write_mesh(&torus, &grid_torus(n, m, 2.0, 1.0)).unwrap();
+    let input = torus.to_str().unwrap();
+    let naive: Vec<usize> = ["lrs", "ps", "sg", "matching"]
+        .iter()
+        .map(|algo| shorter_diagonal_duplicates(input, algo, &d))
+        .collect();
+    assert!(naive.iter().any(|&x| x > 0), "{naive:?}");
+    let v = i64::from(n * m);
+    triangulated_quads_are_a_torus(input, v, 2 * v, "coarse_torus_quads");
+}
+
+/// Over the real-mesh corpus (`--features corpus`).
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+    use crate::cli_common::corpus_meshes;
+    use crate::common::corpus_manifest;
+
+    #[test]
+    fn info_lists_every_duplicate_face_and_non_manifold_edge_of_the_crank() {
+        let file = corpus_meshes().join("invalid/dupfaces_crank.off.gz");
+        // The manifest's notes: "12 duplicate faces, 24 non-manifold edges".
+        let mesh = read_mesh(&file);
+        assert_eq!(raw_counts(&mesh), (12, 24));
+        assert_eq!(mesh.vertex_count, 49986);
+        lists_every_duplicate_face_and_non_manifold_edge(&file);
+    }
+
+    #[test]
+    fn every_invalid_mesh_gets_a_multi_problem_report_matching_raw_counts() {
+        every_invalid_mesh_matches_raw_counts(&corpus_meshes(), corpus_manifest(), 7);
+    }
+
+    /// The coarse torus of the corpus (288 vertices, 576 faces): its quads cut by the
+    /// shorter diagonal alone gave 48 duplicate faces and non-manifold edges.
+    #[test]
+    fn triangulating_quads_of_a_coarse_torus_gives_a_torus() {
+        let input = corpus_meshes().join("closed/torus_288.off.gz");
+        triangulated_quads_are_a_torus(
+            input.to_str().unwrap(),
+            288,
+            576,
+            "coarse_torus_quads-corpus",
+        );
     }
 }

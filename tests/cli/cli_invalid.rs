@@ -1,17 +1,20 @@
 //! Invalid and malformed inputs: exit code 2, one clean located message on stderr; the
-//! library's error kind for each shared invalid mesh matches the manifest's notes.
+//! library's error kind for each invalid real mesh (the repository's, and with
+//! `--features corpus` the corpus's) matches the manifest's notes.
 
 use crate::cli_common;
 use crate::common;
 
 use std::ffi::OsStr;
+use std::path::Path;
 
-use cli_common::{meshes, run, stderr, Scratch};
+use cli_common::{data_invalid, data_meshes, run, stderr, Scratch};
+use common::{data_manifest, ManifestRow};
 use contractible::BuildError;
 
-/// The manifest line of `name` (lowercase), for its free-text notes.
-fn manifest_line(name: &str) -> String {
-    let text = std::fs::read_to_string(meshes().join("manifest.csv")).unwrap();
+/// The line of `name` (lowercase) in `meshes/manifest.csv`, for its free-text notes.
+fn manifest_line(meshes: &Path, name: &str) -> String {
+    let text = std::fs::read_to_string(meshes.join("manifest.csv")).unwrap();
     text.lines()
         .find(|l| l.starts_with(&format!("{name},")))
         .unwrap_or_else(|| panic!("{name} not in manifest"))
@@ -55,21 +58,19 @@ fn expected(name: &str) -> (fn(&BuildError) -> bool, &'static str) {
     }
 }
 
-#[test]
-fn library_error_kinds_match_the_manifest_notes() {
-    let rows: Vec<_> = common::manifest()
-        .into_iter()
-        .filter(|r| r.set == "invalid")
-        .collect();
-    assert!(rows.len() >= 7);
+/// Every invalid mesh of the manifest under `meshes` (at least `min_rows`): the notes
+/// name the problem, and the library refuses the mesh with an error of that kind.
+fn library_error_kinds_match_the_notes(meshes: &Path, rows: Vec<ManifestRow>, min_rows: usize) {
+    let rows: Vec<_> = rows.into_iter().filter(|r| r.set == "invalid").collect();
+    assert!(rows.len() >= min_rows, "only {} invalid meshes", rows.len());
     for r in rows {
         let (ok, word) = expected(&r.name);
         assert!(
-            manifest_line(&r.name).contains(word),
+            manifest_line(meshes, &r.name).contains(word),
             "{}: manifest notes do not mention {word:?}",
             r.name
         );
-        let mesh = contractible::io::read_tri_mesh(&meshes().join(&r.file)).unwrap();
+        let mesh = contractible::io::read_tri_mesh(&meshes.join(&r.file)).unwrap();
         let err = contractible::Surfaces::from_mesh(&mesh)
             .err()
             .unwrap_or_else(|| panic!("{}: accepted", r.name));
@@ -77,14 +78,20 @@ fn library_error_kinds_match_the_manifest_notes() {
     }
 }
 
+/// The repository's invalid real meshes.
 #[test]
-fn info_rejects_every_non_manifold_mesh_with_exit_code_2() {
+fn library_error_kinds_match_the_in_repo_manifest_notes() {
+    library_error_kinds_match_the_notes(&data_meshes(), data_manifest(), 2);
+}
+
+/// `info` on every file of `dir` (at least `min_files` that are not open surfaces):
+/// exit code 2, "not a surface" on stdout, one located line on stderr naming the kind.
+fn info_rejects_every_non_manifold_mesh_in(dir: &Path, min_files: usize) {
     // The open meshes (surfaces with boundary) are described instead: `cli_boundary`.
     // The others get their problems listed on stdout (`cli_input` checks the counts) and
     // one summary line on stderr.
-    let dir = meshes().join("invalid");
     let mut n = 0;
-    for e in std::fs::read_dir(&dir).unwrap() {
+    for e in std::fs::read_dir(dir).unwrap() {
         let path = e.unwrap().path();
         let name = path.file_name().unwrap().to_string_lossy().into_owned();
         let out = run(&[OsStr::new("info"), path.as_os_str()]);
@@ -109,7 +116,17 @@ fn info_rejects_every_non_manifold_mesh_with_exit_code_2() {
         assert!(msg.contains(kind_word), "{name}: {err}");
         n += 1;
     }
-    assert!(n >= 5);
+    assert!(
+        n >= min_files,
+        "only {n} non-manifold meshes in {}",
+        dir.display()
+    );
+}
+
+/// The repository's invalid real meshes.
+#[test]
+fn info_rejects_every_in_repo_non_manifold_mesh_with_exit_code_2() {
+    info_rejects_every_non_manifold_mesh_in(&data_meshes().join("invalid"), 2);
 }
 
 /// Writes `content` as `name` and expects `info` to fail with exit 2 and `needle`.
@@ -246,7 +263,7 @@ fn missing_files_and_bad_arguments_exit_2() {
 #[test]
 fn convert_rejects_invalid_input_unless_told_not_to_validate() {
     let d = Scratch::new("convert-invalid");
-    let input = meshes().join("invalid/joined_tetrahedra.off.gz");
+    let input = data_invalid("joined_tetrahedra");
     let out_path = d.path("j.ply");
     let out = run(&[
         OsStr::new("convert"),
@@ -267,4 +284,22 @@ fn convert_rejects_invalid_input_unless_told_not_to_validate() {
     let b = contractible::io::read_tri_mesh(&out_path).unwrap();
     assert_eq!(a.faces, b.faces);
     assert_eq!(a.positions, b.positions);
+}
+
+/// Over the real-mesh corpus (`--features corpus`).
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+    use crate::cli_common::corpus_meshes;
+    use crate::common::corpus_manifest;
+
+    #[test]
+    fn library_error_kinds_match_the_manifest_notes() {
+        library_error_kinds_match_the_notes(&corpus_meshes(), corpus_manifest(), 7);
+    }
+
+    #[test]
+    fn info_rejects_every_non_manifold_mesh_with_exit_code_2() {
+        info_rejects_every_non_manifold_mesh_in(&corpus_meshes().join("invalid"), 5);
+    }
 }

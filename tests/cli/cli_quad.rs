@@ -11,7 +11,10 @@ use std::collections::HashMap;
 use std::ffi::OsStr;
 use std::path::Path;
 
-use cli_common::{int, load, meshes, run, run_json, Scratch};
+use cli_common::{
+    cube_mesh, data_closed, data_invalid, genus_two_file, grid_torus, int, load, mid_surface_file,
+    read_mesh, run, run_json, with_holes, Scratch,
+};
 
 const ALGOS: [&str; 8] = [
     "lrs",
@@ -232,16 +235,22 @@ fn check_quad(input: &Path, algo: &str, dir: &Scratch) {
 #[test]
 fn every_algorithm_writes_a_closed_quad_manifold_on_the_input_vertices() {
     let dir = Scratch::new("quad");
+    let cube = dir.path("cube.off");
+    contractible::io::write_mesh(&cube, &cube_mesh()).unwrap();
+    let torus = dir.path("torus.off");
+    contractible::io::write_mesh(&torus, &grid_torus(24, 12, 3.0, 1.0)).unwrap();
+    // A cube, a coarse torus, a genus-2 brick and real meshes: genus 0, several
+    // components, genus 3.
     for m in [
-        "closed/cube.off.gz",
-        "closed/torus_288.off.gz",
-        "closed/double_torus.off.gz",
-        "closed/bunny_3k.off.gz",
-        "closed/dude_2cc.off.gz",
-        "closed/three_holes.off.gz",
+        cube,
+        torus,
+        genus_two_file(&dir),
+        data_closed("bunny_npm"),
+        data_closed("box_stl"),
+        data_closed("high_genus_3"),
     ] {
         for algo in ALGOS {
-            check_quad(&meshes().join(m), algo, &dir);
+            check_quad(&m, algo, &dir);
         }
     }
 }
@@ -321,12 +330,20 @@ fn ds_naive_refuses_large_components() {
 #[test]
 fn open_and_non_manifold_meshes_are_refused_with_their_location() {
     let dir = Scratch::new("quad-invalid");
-    for (m, what) in [
-        ("invalid/open_camelhead.off.gz", "boundary edge"),
-        ("invalid/nonmanifold_dino.off.gz", "joined by 2 edges"),
+    // A real mesh with one hole cut in it, and one with a non-manifold edge.
+    let open = dir.path("open_bunny.off.gz");
+    contractible::io::write_mesh(&open, &with_holes(&read_mesh(&data_closed("bunny_npm")), 1))
+        .unwrap();
+    let non_manifold = data_invalid("shared_edge_stl");
+    for (path, m, what) in [
+        (&open, "open_bunny.off.gz", "boundary edge"),
+        (
+            &non_manifold,
+            "invalid/shared_edge_stl.off.gz",
+            "joined by 2 edges",
+        ),
     ] {
         let out_path = dir.path("out.off");
-        let path = meshes().join(m);
         let out = run(&[
             OsStr::new("quad"),
             path.as_os_str(),
@@ -360,7 +377,8 @@ fn demo_converts_its_surfaces_with_every_algorithm() {
 #[test]
 fn a_closed_stdout_ends_the_run_without_a_panic() {
     use std::process::{Command, Stdio};
-    let path = meshes().join("closed/bunny_35k.off.gz");
+    let dir = Scratch::new("quad-closed-stdout");
+    let path = mid_surface_file(&dir);
     for args in [vec!["--json", "info"], vec!["info"], vec!["--json", "quad"]] {
         let mut child = Command::new(env!("CARGO_BIN_EXE_contractible"))
             .args(&args)

@@ -5,9 +5,12 @@
 use crate::cli_common;
 
 use std::ffi::OsStr;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
-use cli_common::{int, load, meshes, run, run_json, run_ok, Scratch};
+use cli_common::{
+    data_closed, disjoint_tetrahedra, genus_two_file, int, load, read_mesh, run, run_json, run_ok,
+    tetrahedron_file, with_holes, Scratch,
+};
 
 const KEYS: [&str; 14] = [
     "algo",
@@ -113,18 +116,28 @@ fn check_reduce(input: &Path, algo: &str, dir: &Scratch, out_name: &str) -> serd
     j
 }
 
+/// 167 disjoint tetrahedra (each irreducible), written as `DIR/tetrahedra.off.gz`.
+fn tetrahedra_file(dir: &Scratch) -> PathBuf {
+    let path = dir.path("tetrahedra.off.gz");
+    contractible::io::write_mesh(&path, &disjoint_tetrahedra(167)).unwrap();
+    path
+}
+
+/// The vertex count an OFF file's header declares (its second line, `V F E`).
+fn off_vertices(path: &Path) -> i64 {
+    let text = std::fs::read_to_string(path).unwrap();
+    let header = text.lines().nth(1).expect("counts line");
+    header.split_whitespace().next().unwrap().parse().unwrap()
+}
+
 #[test]
 fn reduce_tetrahedron_does_nothing() {
     let d = Scratch::new("reduce-tet");
-    let j = check_reduce(
-        &meshes().join("closed/tetrahedron.off.gz"),
-        "rs",
-        &d,
-        "t.off",
-    );
+    let tet = tetrahedron_file(&d);
+    let j = check_reduce(&tet, "rs", &d, "t.off");
     assert_eq!(int(&j, "contractions"), 0);
     assert_eq!(int(&j, "vertices_out"), 4);
-    let (a, _) = load(&meshes().join("closed/tetrahedron.off.gz"));
+    let (a, _) = load(&tet);
     let (b, _) = load(&d.path("t.off"));
     assert_eq!(a, b, "T4 must come back unchanged");
 }
@@ -171,32 +184,24 @@ fn reduce_generated_torus_and_klein_bottle() {
 #[test]
 fn reduce_double_torus() {
     let d = Scratch::new("reduce-dt");
-    let j = check_reduce(
-        &meshes().join("closed/double_torus.off.gz"),
-        "rs",
-        &d,
-        "dt.off",
-    );
+    let input = genus_two_file(&d);
+    let j = check_reduce(&input, "rs", &d, "dt.off");
     assert_eq!(int(&j, "genus"), 2);
-    assert_eq!(int(&j, "vertices_in"), 32);
+    assert_eq!(int(&j, "vertices_in"), off_vertices(&input));
 }
 
 #[test]
 fn reduce_167_tetrahedra() {
     let d = Scratch::new("reduce-mctet");
-    let j = check_reduce(
-        &meshes().join("closed/mctet_167cc.off.gz"),
-        "rs",
-        &d,
-        "m.off.gz",
-    );
+    let j = check_reduce(&tetrahedra_file(&d), "rs", &d, "m.off.gz");
     assert_eq!(int(&j, "components"), 167);
     assert_eq!(int(&j, "contractions"), 0);
 }
 
 #[test]
 fn reduce_quiet_prints_nothing_and_human_prints_a_table() {
-    let input = meshes().join("closed/double_torus.off.gz");
+    let d = Scratch::new("reduce-quiet");
+    let input = genus_two_file(&d);
     let out = run_ok(&[
         OsStr::new("--quiet"),
         OsStr::new("reduce"),
@@ -212,10 +217,12 @@ fn reduce_quiet_prints_nothing_and_human_prints_a_table() {
 
 #[test]
 fn reduce_rejects_invalid_input_with_exit_2() {
-    let out = run(&[
-        OsStr::new("reduce"),
-        meshes().join("invalid/open_camelhead.off.gz").as_os_str(),
-    ]);
+    // A real mesh with a hole cut in it.
+    let d = Scratch::new("reduce-open");
+    let open = d.path("open.off.gz");
+    contractible::io::write_mesh(&open, &with_holes(&read_mesh(&data_closed("bunny_npm")), 1))
+        .unwrap();
+    let out = run(&[OsStr::new("reduce"), open.as_os_str()]);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());
 }
@@ -223,42 +230,19 @@ fn reduce_rejects_invalid_input_with_exit_2() {
 #[test]
 fn reduce_schipper() {
     let d = Scratch::new("reduce-schipper");
-    check_reduce(
-        &meshes().join("closed/double_torus.off.gz"),
-        "schipper",
-        &d,
-        "a.off",
-    );
-    check_reduce(
-        &meshes().join("closed/mctet_167cc.off.gz"),
-        "schipper",
-        &d,
-        "b.off",
-    );
-    check_reduce(
-        &meshes().join("closed/socket.off.gz"),
-        "schipper",
-        &d,
-        "c.off",
-    );
+    check_reduce(&genus_two_file(&d), "schipper", &d, "a.off");
+    check_reduce(&tetrahedra_file(&d), "schipper", &d, "b.off");
+    // A real CAD model of genus 5.
+    check_reduce(&data_closed("plate_holes_stl"), "schipper", &d, "c.off");
 }
 
 #[test]
 fn reduce_brute() {
     let d = Scratch::new("reduce-brute");
-    check_reduce(
-        &meshes().join("closed/double_torus.off.gz"),
-        "brute",
-        &d,
-        "a.off",
-    );
-    check_reduce(
-        &meshes().join("closed/mctet_167cc.off.gz"),
-        "brute",
-        &d,
-        "b.off",
-    );
-    check_reduce(&meshes().join("closed/socket.off.gz"), "brute", &d, "c.off");
+    check_reduce(&genus_two_file(&d), "brute", &d, "a.off");
+    check_reduce(&tetrahedra_file(&d), "brute", &d, "b.off");
+    // A real CAD model of genus 5.
+    check_reduce(&data_closed("plate_holes_stl"), "brute", &d, "c.off");
 }
 
 #[test]

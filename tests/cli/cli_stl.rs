@@ -6,7 +6,9 @@ use std::collections::HashSet;
 use std::fmt::Write as _;
 use std::path::Path;
 
-use crate::cli_common::{int, meshes, run, run_json, run_ok, stderr, Scratch};
+use crate::cli_common::{
+    cube_mesh, data_closed, genus_two_file, int, read_mesh, run, run_json, run_ok, stderr, Scratch,
+};
 
 /// The keys of `info --json` that describe the surface (not the file or the timings).
 const TOPOLOGY_KEYS: [&str; 6] = [
@@ -27,11 +29,6 @@ fn topology(v: &serde_json::Value) -> Vec<serde_json::Value> {
                 .unwrap_or_else(|| panic!("missing {k:?} in {v}"))
         })
         .collect()
-}
-
-fn read_off(name: &str) -> contractible::TriMesh {
-    let path = meshes().join("closed").join(name);
-    contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// A binary STL written byte by byte: 80-byte header, count, then per triangle a zero
@@ -87,9 +84,9 @@ fn soup_obj(m: &contractible::TriMesh) -> String {
 
 #[test]
 fn stl_binary_and_ascii_give_the_same_info_as_the_off() {
-    let name = "eight.off.gz";
-    let off = meshes().join("closed").join(name);
-    let m = read_off(name);
+    // A real mesh of genus 3 (χ = −4 in the manifest).
+    let off = data_closed("high_genus_3");
+    let m = read_mesh(&off);
     // Precondition of the comparison: the vertices stay distinct in f32, and every vertex
     // is used (STL cannot hold an unused vertex).
     let p = m.positions.as_ref().unwrap();
@@ -97,19 +94,19 @@ fn stl_binary_and_ascii_give_the_same_info_as_the_off() {
     assert_eq!(distinct.len(), m.vertex_count);
     let expected = run_json(&[Path::new("info"), &off]);
     assert_eq!(int(&expected, "dropped_vertices"), 0);
-    assert_eq!(int(&expected, "euler_characteristic"), -2);
+    assert_eq!(int(&expected, "euler_characteristic"), -4);
 
     let dir = Scratch::new("stl-round-trip");
-    let bin = dir.path("eight_binary.stl");
+    let bin = dir.path("hg3_binary.stl");
     // A header starting with `solid`, as many exporters write it.
-    std::fs::write(&bin, binary_stl(&m, b"solid eight (binary)")).unwrap();
-    let asc = dir.path("eight_ascii.STL");
+    std::fs::write(&bin, binary_stl(&m, b"solid hg3 (binary)")).unwrap();
+    let asc = dir.path("hg3_ascii.STL");
     std::fs::write(&asc, ascii_stl(&m)).unwrap();
-    let unnamed = dir.path("eight_ascii_stl_content.mesh");
+    let unnamed = dir.path("hg3_ascii_stl_content.mesh");
     std::fs::write(&unnamed, ascii_stl(&m)).unwrap();
     // The library's writer, plain and gzip, through `convert`.
-    let converted = dir.path("eight_converted.stl");
-    let converted_gz = dir.path("eight_converted.stl.gz");
+    let converted = dir.path("hg3_converted.stl");
+    let converted_gz = dir.path("hg3_converted.stl.gz");
     run_ok(&[Path::new("convert"), &off, &converted]);
     run_ok(&[Path::new("convert"), &off, &converted_gz]);
     assert_eq!(
@@ -130,11 +127,11 @@ fn stl_binary_and_ascii_give_the_same_info_as_the_off() {
 
 #[test]
 fn obj_soup_fails_with_the_soup_hint_and_succeeds_with_weld() {
-    let name = "double_torus.off.gz";
-    let off = meshes().join("closed").join(name);
-    let m = read_off(name);
-    let expected = run_json(&[Path::new("info"), &off]);
     let dir = Scratch::new("stl-soup");
+    // A genus-2 surface whose vertices all have distinct positions.
+    let off = genus_two_file(&dir);
+    let m = read_mesh(&off);
+    let expected = run_json(&[Path::new("info"), &off]);
     let soup = dir.path("soup.obj");
     std::fs::write(&soup, soup_obj(&m)).unwrap();
     let soup_s = soup.to_str().unwrap();
@@ -221,7 +218,7 @@ fn assert_refused(dir: &Scratch, name: &str, bytes: &[u8], needles: &[&str]) {
 
 #[test]
 fn malformed_stl_gives_located_errors() {
-    let m = read_off("cube.off.gz");
+    let m = cube_mesh();
     let good = binary_stl(&m, b"cube");
     let dir = Scratch::new("stl-malformed");
     // Cut 10 bytes into triangle 3.
