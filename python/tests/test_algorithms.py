@@ -1,5 +1,7 @@
-"""Every function on real meshes, checked by the independent checks of conftest.py and
-against the command line's outputs for the same files."""
+"""Every function on real meshes (the repository's `tests/data/meshes`) and on meshes
+generated at test time, checked by the independent checks of conftest.py and against the
+command line's outputs for the same files. The sweeps over every small closed mesh also
+run over the real-mesh corpus with `--corpus` (class TestCorpus, at the end)."""
 
 import json
 
@@ -7,23 +9,24 @@ import numpy as np
 import pytest
 
 import contractible as c
-from conftest import (MESHES, closed_meshes, contractible_edges, edges_of,
-                      is_closed_manifold_faces, surface_signature)
+from conftest import (CORPUS_SMALL_MIN, DATA, DATA_SMALL_MIN, contractible_edges,
+                      corpus_meshes, edges_of, is_closed_manifold_faces, manifest,
+                      small_closed, surface_signature)
 
-SMALL = closed_meshes(12_000)
+SMALL = small_closed(manifest(DATA))
 SMALL_IDS = [m["name"] for m in SMALL]
-# A spread of sizes, genera and component counts for the comparisons with the CLI.
-CLI_SET = ["tetrahedron", "cube", "tiny_torus", "double_torus", "socket", "casting",
-           "two_objects", "mctet_167cc", "footbones", "high_genus_3"]
-
-
-def load(name):
-    return c.read(MESHES / "closed" / f"{name}.off.gz")
+# A spread of sizes, genera and component counts for the comparisons with the CLI: the
+# tetrahedron, octahedron, 7-vertex torus and Klein bottle; genus 2 (an isosurface and a
+# random surface); genus 3, 5 and 24; 2, 10 and 120 components; and a mesh orientable
+# but not consistently oriented (see conftest.GENERATED and tests/data/meshes).
+CLI_SET = ["tetrahedron", "octahedron", "torus7", "klein", "genus2_iso", "random_g2",
+           "high_genus_3", "plate_holes_stl", "adis16480_stl", "two_objects", "box_stl",
+           "many_components", "multibody_stl"]
 
 
 @pytest.fixture(scope="module")
 def nonorientable(tmp_path_factory, cli):
-    """Non-orientable closed surfaces made by the CLI's generators (the shared meshes are
+    """Non-orientable closed surfaces made by the CLI's generators (the real meshes are
     all orientable): the 6-vertex RP², the 9-vertex Klein bottle, and random surfaces of
     Euler genus 1, 3 and 6."""
     d = tmp_path_factory.mktemp("nonorientable")
@@ -41,9 +44,16 @@ def nonorientable(tmp_path_factory, cli):
 
 # ------------------------------------------------------------------------ read / info
 
-@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
-def test_read_and_info_match_the_manifest(m):
-    V, F = c.read(MESHES / m["file"])
+def test_the_sweeps_cover_the_repositorys_meshes():
+    """The sweeps below run over every small closed mesh of tests/data/meshes: none of
+    its files went missing."""
+    assert len(SMALL) >= DATA_SMALL_MIN, SMALL_IDS
+    for m in SMALL:
+        assert (DATA / m["file"]).is_file(), m["file"]
+
+
+def check_read_and_info(meshes, m):
+    V, F = c.read(meshes / m["file"])
     assert V.dtype == np.float64 and V.shape == (int(m["V"]), 3)
     assert F.dtype == np.int64 and F.shape == (int(m["F"]), 3)
     i = c.info(V, F)
@@ -57,14 +67,21 @@ def test_read_and_info_match_the_manifest(m):
                   for d in i["component_list"]) == sig
 
 
+@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
+def test_read_and_info_match_the_manifest(m):
+    check_read_and_info(DATA, m)
+
+
 @pytest.mark.parametrize("name", CLI_SET)
-def test_info_equals_the_cli(name, cli):
-    V, F = load(name)
+def test_info_equals_the_cli(name, cli, mesh_file):
+    src = mesh_file(name)
+    V, F = c.read(src)
     mine = c.info(V, F)
-    theirs = json.loads(cli("info", MESHES / "closed" / f"{name}.off.gz", "--json").stdout)
+    theirs = json.loads(cli("info", src, "--json").stdout)
     for k in ["vertices", "edges", "faces", "components", "euler_characteristic",
               "orientable", "dropped_vertices"]:
         assert mine[k] == theirs[k], k
+    assert len(mine["component_list"]) == len(theirs["component_list"])
     for a, b in zip(mine["component_list"], theirs["component_list"]):
         for k in a:
             assert a[k] == b[k], k
@@ -82,8 +99,10 @@ def test_info_describes_boundary(cli, tmp_path):
                for d in i["component_list"])
 
 
-def test_write_round_trips(tmp_path):
-    V, F = load("casting")
+@pytest.mark.parametrize("name", ["letter", "genus2_iso"])
+def test_write_round_trips(name, tmp_path, mesh_file):
+    # Coordinates that float32 does not hold exactly: a real mesh and an isosurface.
+    V, F = c.read(mesh_file(name))
     for ext in ["off", "obj", "ply", "stl", "off.gz"]:
         p = tmp_path / f"x.{ext}"
         c.write(p, V, F)
@@ -98,9 +117,8 @@ def test_write_round_trips(tmp_path):
 
 # ----------------------------------------------------------------------------- reduce
 
-@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
-def test_reduce_is_irreducible_and_keeps_the_surface(m):
-    V, F = c.read(MESHES / m["file"])
+def check_reduce(meshes, m):
+    V, F = c.read(meshes / m["file"])
     r = c.reduce(V, F)
     assert contractible_edges(r.faces) == []
     assert surface_signature(r.faces) == surface_signature(F)
@@ -113,10 +131,16 @@ def test_reduce_is_irreducible_and_keeps_the_surface(m):
     assert r.stats["components"] == int(m["components"])
 
 
+@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
+def test_reduce_is_irreducible_and_keeps_the_surface(m):
+    check_reduce(DATA, m)
+
+
+# Genus 2; genus 5 (one component); 10 components of genus 0 to 6.
 @pytest.mark.parametrize("algo", ["schipper", "brute"])
-@pytest.mark.parametrize("name", ["double_torus", "socket", "footbones"])
-def test_reduce_baselines(name, algo):
-    V, F = load(name)
+@pytest.mark.parametrize("name", ["genus2_iso", "plate_holes_stl", "box_stl"])
+def test_reduce_baselines(name, algo, mesh_file):
+    V, F = c.read(mesh_file(name))
     r = c.reduce(V, F, algo=algo, seed=5)
     assert contractible_edges(r.faces) == []
     assert surface_signature(r.faces) == surface_signature(F)
@@ -124,8 +148,8 @@ def test_reduce_baselines(name, algo):
 
 
 @pytest.mark.parametrize("name", CLI_SET)
-def test_reduce_equals_the_cli(name, cli, tmp_path):
-    src = MESHES / "closed" / f"{name}.off.gz"
+def test_reduce_equals_the_cli(name, cli, tmp_path, mesh_file):
+    src = mesh_file(name)
     out = tmp_path / "out.off"
     theirs = json.loads(cli("reduce", src, "-o", out, "--json", "--seed", 3,
                             "--algo", "brute").stdout)
@@ -138,13 +162,14 @@ def test_reduce_equals_the_cli(name, cli, tmp_path):
     for k, v in r.stats.items():
         if k in theirs and k not in timing and k != "component_list":
             assert v == theirs[k], k
+    assert len(r.stats["component_list"]) == len(theirs["component_list"])
     for a, b in zip(r.stats["component_list"], theirs["component_list"]):
         assert {k: v for k, v in a.items() if k not in timing} == \
             {k: b[k] for k in a if k not in timing}
 
 
-def test_history_replays_the_input():
-    V, F = load("footbones")  # 26 components
+def test_history_replays_the_input(mesh_file):
+    V, F = c.read(mesh_file("box_stl"))  # 10 components
     r = c.reduce(V, F)
     rec = r.history.records()
     assert rec.shape == (len(r.history), 5) == (r.stats["contractions"], 5)
@@ -192,9 +217,8 @@ def check_pairing(F, q):
         assert (i - j) % 4 == 2
 
 
-@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
-def test_quad_lrs_is_perfect(m):
-    V, F = c.read(MESHES / m["file"])
+def check_quad_lrs(meshes, m):
+    V, F = c.read(meshes / m["file"])
     q = c.quad(V, F)
     check_pairing(F, q)
     # K differs from the input by the flips only: every face not in a flip is unchanged.
@@ -202,10 +226,16 @@ def test_quad_lrs_is_perfect(m):
     assert q.stats["flips"] >= 0
 
 
+@pytest.mark.parametrize("m", SMALL, ids=SMALL_IDS)
+def test_quad_lrs_is_perfect(m):
+    check_quad_lrs(DATA, m)
+
+
+# Genus 2; genus 5 and genus 24 (one component each); 10 components of genus 0 to 6.
 @pytest.mark.parametrize("algo", ["ps", "sg", "matching", "ds", "bbdl", "frink-lct", "ds-naive"])
-@pytest.mark.parametrize("name", ["double_torus", "socket", "casting", "footbones"])
-def test_quad_other_algorithms(name, algo):
-    V, F = load(name)
+@pytest.mark.parametrize("name", ["genus2_iso", "plate_holes_stl", "adis16480_stl", "box_stl"])
+def test_quad_other_algorithms(name, algo, mesh_file):
+    V, F = c.read(mesh_file(name))
     q = c.quad(V, F, algo=algo, seed=2)
     check_pairing(F, q)
     assert np.array_equal(q.triangles, F)  # no flips outside LRS
@@ -213,8 +243,8 @@ def test_quad_other_algorithms(name, algo):
 
 
 @pytest.mark.parametrize("name", CLI_SET)
-def test_quad_equals_the_cli(name, cli, tmp_path):
-    src = MESHES / "closed" / f"{name}.off.gz"
+def test_quad_equals_the_cli(name, cli, tmp_path, mesh_file):
+    src = mesh_file(name)
     pairs = tmp_path / "pairs.txt"
     theirs = json.loads(cli("quad", src, "--pairs", pairs, "--json").stdout)
     V, F = c.read(src)
@@ -234,10 +264,12 @@ def test_quad_nonorientable(nonorientable):
 
 # --------------------------------------------------------------------------- simplify
 
-@pytest.mark.parametrize("name", ["casting", "socket", "botijo_11k", "footbones"])
+# Genus 1, 5 and 24 (one component each) and 10 components of genus 0 to 6, with
+# positions.
+@pytest.mark.parametrize("name", ["letter", "plate_holes_stl", "adis16480_stl", "box_stl"])
 @pytest.mark.parametrize("mode", ["nested", "naive"])
-def test_simplify_keeps_the_surface(name, mode):
-    V, F = load(name)
+def test_simplify_keeps_the_surface(name, mode, mesh_file):
+    V, F = c.read(mesh_file(name))
     s = c.simplify(V, F, eps_rel=0.02, mode=mode)
     assert surface_signature(s.faces) == surface_signature(F)
     assert is_closed_manifold_faces(s.faces)
@@ -255,9 +287,9 @@ def test_simplify_open_surface(cli, tmp_path):
     assert s.stats["boundary_loops"] == 2
 
 
-@pytest.mark.parametrize("name", ["casting", "socket", "footbones"])
-def test_simplify_equals_the_cli(name, cli, tmp_path):
-    src = MESHES / "closed" / f"{name}.off.gz"
+@pytest.mark.parametrize("name", ["adis16480_stl", "plate_holes_stl", "box_stl"])
+def test_simplify_equals_the_cli(name, cli, tmp_path, mesh_file):
+    src = mesh_file(name)
     out = tmp_path / "out.off"
     theirs = json.loads(cli("simplify", src, "--eps-rel", 0.02, "-o", out, "--json").stdout)
     V, F = c.read(src)
@@ -270,9 +302,34 @@ def test_simplify_equals_the_cli(name, cli, tmp_path):
         assert s.stats[k] == pytest.approx(theirs[k]), k
 
 
-def test_results_are_deterministic():
-    V, F = load("socket")
+def test_results_are_deterministic(mesh_file):
+    V, F = c.read(mesh_file("plate_holes_stl"))
     for f in [lambda: c.reduce(V, F, algo="brute", seed=9).faces,
               lambda: c.quad(V, F, algo="sg", seed=9).pairs,
               lambda: c.simplify(V, F, eps_rel=0.02).faces]:
         assert np.array_equal(f(), f())
+
+
+# ------------------------------------------------------------------------ corpus
+
+@pytest.mark.corpus
+class TestCorpus:
+    """The sweeps above over every closed mesh of the real-mesh corpus with at most
+    conftest.SMALL_FACES faces (run with --corpus; they fail when the corpus is
+    missing)."""
+
+    def test_the_sweeps_cover_the_corpus(self):
+        meshes = corpus_meshes()
+        rows = small_closed(manifest(meshes))
+        assert len(rows) >= CORPUS_SMALL_MIN, [m["name"] for m in rows]
+        for m in rows:
+            assert (meshes / m["file"]).is_file(), m["file"]
+
+    def test_read_and_info_match_the_manifest(self, corpus_small):
+        check_read_and_info(corpus_meshes(), corpus_small)
+
+    def test_reduce_is_irreducible_and_keeps_the_surface(self, corpus_small):
+        check_reduce(corpus_meshes(), corpus_small)
+
+    def test_quad_lrs_is_perfect(self, corpus_small):
+        check_quad_lrs(corpus_meshes(), corpus_small)

@@ -138,16 +138,6 @@ pub fn genus_two_file(dir: &Scratch) -> PathBuf {
     )
 }
 
-/// A large closed surface: the marching-tetrahedra sphere at resolution 100 (about
-/// 180,000 faces, gzip-compressed).
-pub fn large_surface_file(dir: &Scratch) -> PathBuf {
-    gen_file(
-        dir,
-        "large.off.gz",
-        &["isosurface", "--surface", "sphere", "--resolution", "100"],
-    )
-}
-
 /// A mid-sized closed surface with positions: the marching-tetrahedra sphere at
 /// resolution 60 (about 65,000 faces, gzip-compressed).
 pub fn mid_surface_file(dir: &Scratch) -> PathBuf {
