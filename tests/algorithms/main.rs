@@ -14,6 +14,7 @@ mod cpu;
 #[path = "../../fuzz/src/lib.rs"]
 mod harness;
 
+mod closed_inputs;
 mod irreducible_algorithms;
 mod irreducible_meshes;
 mod oracles;

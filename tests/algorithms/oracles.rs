@@ -8,24 +8,27 @@
 //!   against the link tests: the naive link condition, `is_contractible` and the marked
 //!   `LinkTester` all say "contractible" iff the count is 0 and the surface is not T4.
 //!   Inputs: the 57 small surfaces, the published tori and projective planes, random
-//!   surfaces of genus 0..8 and non-orientable genus 1..6 (100 and 2000 faces), and the
-//!   real meshes socket, casting, double_torus, helmet, fertility (every edge).
+//!   surfaces of genus 0..8 and non-orientable genus 1..6 (100 and 2000 faces), and real
+//!   meshes (every edge): every closed mesh the repository carries, and with the feature
+//!   `corpus` the corpus meshes socket, casting, double_torus, helmet, fertility.
 //!   After random contraction sequences: **every step** on the small inputs (the 57
 //!   surfaces, the published lists, the 100-face random surfaces); **sampled** on the
 //!   large ones (every 100th contraction and the final state for the 2000-face random
 //!   surfaces; every 500th and the final state on the real meshes).
 //! - **Perfect matchings of the dual graph** (`common::dual_graph`,
 //!   `petgraph::algo::maximum_matching`): perfect (F/2 edges, checked to be a matching
-//!   of dual edges) on every component of the closed meshes of `../shared/meshes/closed`
-//!   with at most `MATCHING_FACE_CAP` faces (the others are skipped in debug builds
-//!   because Gabow's algorithm is cubic in the worst case; set
-//!   `CONTRACTIBLE_ORACLE_ALL_MESHES=1`, best with `--release`, to include every mesh)
-//!   and on random surfaces of every kind (Petersen's theorem: a bridgeless cubic graph
-//!   has a perfect matching).
+//!   of dual edges) on every component of the closed real meshes (the repository's, and
+//!   with the feature `corpus` the corpus's) with at most `MATCHING_FACE_CAP` faces (the
+//!   others are skipped because Gabow's algorithm is cubic in the worst case; set
+//!   `CONTRACTIBLE_ORACLE_ALL_MESHES=1`, best with `--release`, to include every mesh),
+//!   on the generated closed surfaces of `closed_inputs` (bricks, subdivisions, an
+//!   isosurface, several components) and on random surfaces of every kind (Petersen's
+//!   theorem: a bridgeless cubic graph has a perfect matching).
 
-use crate::common;
+use crate::{closed_inputs, common};
 
 use std::collections::{HashMap, HashSet};
+use std::path::Path;
 
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::rng::Rng;
@@ -213,8 +216,9 @@ fn critical_cycles_agree_on_random_surfaces() {
     assert!(edges >= 15 * 3150 && comparisons >= 15 * 20);
 }
 
-fn closed_mesh(name: &str) -> Vec<Triangulation> {
-    let path = common::shared_dir().join(format!("meshes/closed/{name}.off.gz"));
+/// The components of the closed mesh `meshes/closed/NAME.off.gz`.
+fn closed_mesh(meshes: &Path, name: &str) -> Vec<Triangulation> {
+    let path = meshes.join(format!("closed/{name}.off.gz"));
     let mesh = contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
     Surfaces::from_mesh(&mesh)
         .unwrap_or_else(|e| panic!("{name}: {e}"))
@@ -224,18 +228,33 @@ fn closed_mesh(name: &str) -> Vec<Triangulation> {
         .collect()
 }
 
-#[test]
-fn critical_cycles_agree_on_real_meshes() {
+/// Every edge of the closed meshes `names` of `meshes`, before and along a random
+/// contraction sequence (every 500th state); at least `min_edges` edges in all.
+fn critical_cycles_on_real_meshes(meshes: &Path, names: &[&str], min_edges: usize) {
     let mut edges = 0;
-    for name in ["double_torus", "helmet", "socket", "fertility", "casting"] {
-        for (k, t) in closed_mesh(name).iter().enumerate() {
+    for name in names {
+        for (k, t) in closed_mesh(meshes, name).iter().enumerate() {
             let label = format!("{name}[{k}]");
             edges += compare_all(t, &label).0;
             contraction_sequence(t, k as u64, 500, &label);
         }
     }
     println!("real meshes: {edges} edges");
-    assert!(edges >= 2544 + 15336 + 13500 + 1500 + 102);
+    assert!(edges >= min_edges, "{edges} edges");
+}
+
+/// Every closed mesh the repository carries (genus 0 to 24, up to 10 components, one
+/// not consistently oriented), every edge: as many as the manifest's E column says.
+#[test]
+fn critical_cycles_agree_on_the_repository_meshes() {
+    let rows: Vec<_> = common::data_manifest()
+        .into_iter()
+        .filter(|r| r.set == "closed")
+        .collect();
+    assert_eq!(rows.len(), 9);
+    let names: Vec<&str> = rows.iter().map(|r| r.name.as_str()).collect();
+    let edges: usize = rows.iter().map(|r| r.e).sum();
+    critical_cycles_on_real_meshes(&common::data_meshes(), &names, edges);
 }
 
 // ---- Perfect matchings of the dual graph.
@@ -296,18 +315,22 @@ fn assert_perfect_dual_matching(t: &Triangulation, label: &str) {
     }
 }
 
-#[test]
-fn dual_graphs_of_closed_meshes_have_perfect_matchings() {
+/// Every closed mesh of the manifest of `meshes` up to [`MATCHING_FACE_CAP`] faces (or
+/// all with `CONTRACTIBLE_ORACLE_ALL_MESHES`); returns the components checked and the
+/// components of the meshes above the cap, which were skipped.
+fn perfect_matchings_on_closed_meshes(meshes: &Path) -> (usize, usize) {
     let all = std::env::var_os("CONTRACTIBLE_ORACLE_ALL_MESHES").is_some();
-    let manifest = common::manifest();
+    let manifest = common::manifest_in(meshes);
     let mut components = 0;
     let mut skipped = Vec::new();
+    let mut skipped_components = 0;
     for row in manifest.iter().filter(|r| r.set == "closed") {
         if !all && row.f > MATCHING_FACE_CAP {
             skipped.push(row.name.clone());
+            skipped_components += row.components;
             continue;
         }
-        let path = common::shared_dir().join("meshes").join(&row.file);
+        let path = meshes.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let surfaces = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
@@ -320,7 +343,42 @@ fn dual_graphs_of_closed_meshes_have_perfect_matchings() {
         "perfect dual matchings: {components} components; skipped (> {MATCHING_FACE_CAP} faces): {}",
         skipped.len()
     );
-    assert!(components >= 40, "{components}");
+    (components, skipped_components)
+}
+
+/// Every closed mesh the repository carries up to [`MATCHING_FACE_CAP`] faces: every
+/// component of theirs (the manifest's count), the others' counted as skipped.
+#[test]
+fn dual_graphs_of_the_repository_meshes_have_perfect_matchings() {
+    let rows: Vec<_> = common::data_manifest()
+        .into_iter()
+        .filter(|r| r.set == "closed")
+        .collect();
+    assert_eq!(rows.len(), 9);
+    let (components, skipped) = perfect_matchings_on_closed_meshes(&common::data_meshes());
+    assert_eq!(
+        components + skipped,
+        rows.iter().map(|r| r.components).sum::<usize>()
+    );
+    assert!(components >= 9, "{components}");
+}
+
+/// Every component of the generated closed surfaces of `closed_inputs` (bricks,
+/// subdivisions, an isosurface, random surfaces with and without orientation, a mesh of
+/// four components).
+#[test]
+fn dual_graphs_of_generated_closed_surfaces_have_perfect_matchings() {
+    let mut components = 0;
+    for g in closed_inputs::closed_surfaces() {
+        for (k, t) in closed_inputs::components(&g.mesh, &g.name)
+            .iter()
+            .enumerate()
+        {
+            assert_perfect_dual_matching(t, &format!("{}[{k}]", g.name));
+            components += 1;
+        }
+    }
+    assert_eq!(components, closed_inputs::COMPONENTS);
 }
 
 #[test]
@@ -387,4 +445,26 @@ fn face_list_oracle_agrees_with_list_names_and_the_core() {
         euler_and_orientability(&[[0, 1, 2], [0, 1, 3], [0, 1, 4], [2, 3, 4]]),
         None
     );
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// The corpus meshes double_torus, helmet, socket, fertility and casting, every edge.
+    #[test]
+    fn critical_cycles_agree_on_real_meshes() {
+        critical_cycles_on_real_meshes(
+            &common::corpus_meshes(),
+            &["double_torus", "helmet", "socket", "fertility", "casting"],
+            2544 + 15336 + 13500 + 1500 + 102,
+        );
+    }
+
+    /// Every closed corpus mesh up to [`MATCHING_FACE_CAP`] faces.
+    #[test]
+    fn dual_graphs_of_closed_meshes_have_perfect_matchings() {
+        let (components, _) = perfect_matchings_on_closed_meshes(&common::corpus_meshes());
+        assert!(components >= 40, "{components}");
+    }
 }

@@ -3,16 +3,19 @@
 //! is in exactly one pair), and on small inputs its size is compared with petgraph's
 //! maximum matching of the dual graph.
 //!
-//! The biggest shared meshes are slow in debug builds; the README's test command is
-//! `cargo test --release --features invariants,cli`.
+//! Inputs: random surfaces of every kind, the repository's closed meshes, the generated
+//! closed surfaces of `closed_inputs`, the published small surfaces, the paper's C0, and
+//! with the feature `corpus` every closed mesh of the real-mesh corpus (the biggest are
+//! slow in debug builds; the README's test command is a release build).
 
 use std::collections::BTreeSet;
+use std::path::Path;
 
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::quad::augment::{complete, Completion};
 use contractible::quad::{matching, Pairing};
 use contractible::rng::Rng;
-use contractible::{FaceId, Surfaces, Triangulation};
+use contractible::{FaceId, Surfaces, TriMesh, Triangulation};
 
 use crate::common;
 
@@ -199,39 +202,64 @@ fn triangulations_with_removed_faces_are_completed() {
     }
 }
 
-#[test]
-fn every_shared_closed_mesh_component_is_completed() {
-    let dir = common::shared_dir().join("meshes").join("closed");
+/// Completes every component of `name`'s mesh from the first four [`starts`] (checked
+/// by [`complete_checked`]; petgraph's matching size up to 2,000 faces); adds the faces
+/// and edge visits of the greedy starts to `totals`.
+fn complete_every_component(mesh: &TriMesh, name: &str, totals: &mut (usize, u64)) {
+    let s = Surfaces::from_mesh(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+    for (k, comp) in s.components.iter().enumerate() {
+        let t = &comp.tri;
+        if t.face_count() <= 2_000 {
+            assert_eq!(petgraph_matching_size(t), t.face_count() / 2, "{name}#{k}");
+        }
+        for (start_name, start) in starts(t, k as u64).into_iter().take(4) {
+            let c = complete_checked(t, &start, &format!("{name}#{k} {start_name}"));
+            if start_name == "greedy" {
+                totals.0 += t.face_count();
+                totals.1 += c.edge_visits;
+            }
+        }
+    }
+}
+
+/// Every mesh of `meshes/closed` (at least `min_files`) by [`complete_every_component`];
+/// returns the greedy starts' faces and edge visits.
+fn complete_every_closed_mesh_of(meshes: &Path, min_files: usize) -> (usize, u64) {
+    let dir = meshes.join("closed");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.expect("directory entry").path())
         .filter(|p| p.to_string_lossy().ends_with(".off.gz"))
         .collect();
     files.sort();
-    assert!(files.len() >= 90, "{} closed meshes", files.len());
-    let (mut faces, mut visits) = (0usize, 0u64);
+    assert!(files.len() >= min_files, "{} closed meshes", files.len());
+    let mut totals = (0usize, 0u64);
     for path in files {
         let name = path.file_name().map(|n| n.to_string_lossy().into_owned());
         let name = name.unwrap_or_default();
         let mesh = contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
-        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
-        for (k, comp) in s.components.iter().enumerate() {
-            let t = &comp.tri;
-            if t.face_count() <= 2_000 {
-                assert_eq!(petgraph_matching_size(t), t.face_count() / 2, "{name}#{k}");
-            }
-            for (start_name, start) in starts(t, k as u64).into_iter().take(4) {
-                let c = complete_checked(t, &start, &format!("{name}#{k} {start_name}"));
-                if start_name == "greedy" {
-                    faces += t.face_count();
-                    visits += c.edge_visits;
-                }
-            }
-        }
+        complete_every_component(&mesh, &name, &mut totals);
     }
+    totals
+}
+
+/// Fewer than 10 edge visits per face of the greedy starts, over everything completed.
+fn assert_near_linear((faces, visits): (usize, u64), what: &str) {
     let per_face = visits as f64 / faces as f64;
-    eprintln!("closed meshes, greedy starts: {per_face:.2} edge visits per face");
+    eprintln!("{what}, greedy starts: {per_face:.2} edge visits per face");
     assert!(per_face < 10.0, "{per_face:.2} edge visits per face");
+}
+
+/// Every component of every closed mesh the repository carries and of every generated
+/// closed surface of `closed_inputs` (genera 0 to 24, cross-caps 1 to 5, meshes of up to
+/// 10 components).
+#[test]
+fn every_repository_and_generated_closed_mesh_component_is_completed() {
+    let mut totals = complete_every_closed_mesh_of(&common::data_meshes(), 9);
+    for g in crate::closed_inputs::closed_surfaces() {
+        complete_every_component(&g.mesh, &g.name, &mut totals);
+    }
+    assert_near_linear(totals, "repository and generated closed meshes");
 }
 
 /// Every small published surface, from empty and from every single-pair start (every
@@ -397,5 +425,17 @@ fn sparse_ps_leftovers_are_completed_by_single_root_searches() {
             "{label}: {} searches, the sparse pass did not run",
             c.phases
         );
+    }
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// Every component of every closed corpus mesh.
+    #[test]
+    fn every_shared_closed_mesh_component_is_completed() {
+        let totals = complete_every_closed_mesh_of(&common::corpus_meshes(), 90);
+        assert_near_linear(totals, "closed meshes");
     }
 }

@@ -1,14 +1,17 @@
 //! `quad::convert` end to end, every algorithm (initial step + completion), on every
-//! component of every shared closed mesh and on random surfaces of genus 0..8 and
-//! cross-caps 1..6, checked by code that shares nothing with the algorithms: the fuzz
-//! harness's `check_quadrangulation` (face lists, pairs and quads only) and, on inputs up
-//! to 2,000 faces, petgraph's `maximum_matching` of the dual graph (F/2 edges: a perfect
-//! matching exists, so "perfect" is the right target).
+//! component of every closed mesh the repository carries, of the generated closed
+//! surfaces of `closed_inputs`, with the feature `corpus` of every closed corpus mesh,
+//! and on random surfaces of genus 0..8 and cross-caps 1..6, checked by code that shares
+//! nothing with the algorithms: the fuzz harness's `check_quadrangulation` (face lists,
+//! pairs and quads only) and, on inputs up to 2,000 faces, petgraph's
+//! `maximum_matching` of the dual graph (F/2 edges: a perfect matching exists, so
+//! "perfect" is the right target).
 
 use crate::{common, harness};
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::quad::{convert, Algorithm, Options, Quadrangulation};
-use contractible::{Surfaces, Triangulation};
+use contractible::{Surfaces, TriMesh, Triangulation};
+use std::path::Path;
 
 const ALGORITHMS: [Algorithm; 4] = [
     Algorithm::Lrs,
@@ -54,28 +57,52 @@ fn every_algorithm_on_random_surfaces_of_every_kind() {
     }
 }
 
-#[test]
-fn every_algorithm_on_every_component_of_every_shared_mesh() {
-    let dir = common::shared_dir().join("meshes/closed");
+/// Every algorithm on every component of `mesh`; returns the number of components.
+fn every_algorithm_on_every_component(mesh: &TriMesh, name: &str) -> usize {
+    let surfaces = Surfaces::from_mesh(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+    for (i, c) in surfaces.components.iter().enumerate() {
+        for algo in ALGORITHMS {
+            let q = convert(c.tri.clone(), algo, &Options { seed: 1 });
+            let label = format!("{name} #{i} {}", algo.name());
+            check(&c.tri, &q, &label);
+        }
+    }
+    surfaces.components.len()
+}
+
+/// Every mesh of `meshes/closed`; returns the number of components.
+fn every_component_of_every_closed_mesh_of(meshes: &Path) -> usize {
+    let dir = meshes.join("closed");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
-        .expect("meshes/closed")
+        .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.expect("entry").path())
         .collect();
     files.sort();
     let mut components = 0;
     for path in files {
         let mesh = contractible::io::read_tri_mesh(&path).expect("readable");
-        let surfaces = Surfaces::from_mesh(&mesh).expect("closed");
-        for (i, c) in surfaces.components.iter().enumerate() {
-            for algo in ALGORITHMS {
-                let q = convert(c.tri.clone(), algo, &Options { seed: 1 });
-                let label = format!("{} #{i} {}", path.display(), algo.name());
-                check(&c.tri, &q, &label);
-            }
-            components += 1;
-        }
+        components += every_algorithm_on_every_component(&mesh, &path.display().to_string());
     }
-    assert!(components >= 100, "{components} components");
+    components
+}
+
+/// Every closed mesh the repository carries (as many components as its manifest lists)
+/// and every generated closed surface of `closed_inputs`.
+#[test]
+fn every_algorithm_on_every_component_of_the_repository_and_generated_meshes() {
+    let listed: usize = common::data_manifest()
+        .iter()
+        .filter(|r| r.set == "closed")
+        .map(|r| r.components)
+        .sum();
+    let components = every_component_of_every_closed_mesh_of(&common::data_meshes());
+    assert_eq!(components, listed, "components of the repository's meshes");
+    assert!(components >= 20, "{components} components");
+    let mut generated = 0;
+    for g in crate::closed_inputs::closed_surfaces() {
+        generated += every_algorithm_on_every_component(&g.mesh, &g.name);
+    }
+    assert_eq!(generated, crate::closed_inputs::COMPONENTS);
 }
 
 #[test]
@@ -93,5 +120,17 @@ fn the_same_input_and_seed_give_the_same_quads() {
         assert_eq!(a.tri, b.tri, "{}", algo.name());
         assert_eq!(a.stats.flips, b.stats.flips);
         assert_eq!(a.stats.augmenting_paths, b.stats.augmenting_paths);
+    }
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// Every component of every closed corpus mesh.
+    #[test]
+    fn every_algorithm_on_every_component_of_every_shared_mesh() {
+        let components = every_component_of_every_closed_mesh_of(&common::corpus_meshes());
+        assert!(components >= 100, "{components} components");
     }
 }

@@ -1,33 +1,38 @@
 //! `quad::frink`: Frink's reduction with the naive strategy (tri-quad paper, App. A),
 //! checked by code that shares nothing with it: the fuzz harness's
 //! `check_quadrangulation` (face lists, pairs and quads only) and petgraph's
-//! `maximum_matching` of the dual graph (its size must be F/2, as the pairing's). The
-//! naive strategy is O(F²), so the shared meshes are covered up to [`MAX_FACES`] faces
-//! (every face of every mesh with `FRINK_FULL=1`, see [`full`]).
+//! `maximum_matching` of the dual graph (its size must be F/2, as the pairing's).
 //! Under `invariants` (the README's test command) the specification checks F1/F2 run
-//! on every step. The link–cut (`CoverTree`) and Diks–Stańczyk strategies run on every
-//! shared closed mesh, whatever its size.
+//! on every step.
+//!
+//! Inputs: the standard small surfaces, random surfaces of every kind, the closed meshes
+//! the repository carries and the generated closed surfaces of `closed_inputs` (by
+//! default), and with the feature `corpus` every closed mesh of the real-mesh corpus. The
+//! naive strategy is O(F²), so meshes are covered up to [`MAX_FACES`] faces per
+//! component (every face of every mesh with `FRINK_FULL=1`, see [`full`]). The link–cut
+//! (`CoverTree`) and Diks–Stańczyk strategies run on every component, whatever its size.
 
-use crate::{common, harness};
+use crate::{closed_inputs, common, harness};
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::quad::frink::{self, BiedlBoseDemaineLubiw, CoverTree, DiksStanczyk, Naive};
 use contractible::quad::{initial_stats, Algorithm, Pairing, Quadrangulation};
-use contractible::{Surfaces, Triangulation};
+use contractible::{Surfaces, TriMesh, Triangulation};
 use proptest::prelude::*;
+use std::path::Path;
 
-/// Largest component of a shared mesh run here (the naive strategy is quadratic), and
-/// the largest checked against petgraph; `FRINK_FULL=1` lifts the first (see [`full`]).
+/// Largest component of a mesh run here (the naive strategy is quadratic), and the
+/// largest checked against petgraph; `FRINK_FULL=1` lifts the first (see [`full`]).
 const MAX_FACES: usize = 6_000;
 
-/// Largest component of a shared mesh the BBDL test runs (its 2-edge structure's
+/// Largest component of a corpus mesh the BBDL test runs (its 2-edge structure's
 /// tree-edge deletions are not polylogarithmic; this keeps the test short);
 /// `FRINK_FULL=1` lifts it.
 const BBDL_MAX_FACES: usize = 15_000;
 
-/// With `FRINK_FULL` set, the naive and BBDL tests run every component of every shared
-/// closed mesh (up to 199,034 faces) instead of stopping at [`MAX_FACES`] and
-/// [`BBDL_MAX_FACES`]: the one-off run that shows each strategy on every mesh
-/// (`FRINK_FULL=1 cargo test --release --features invariants --test algorithms
+/// With `FRINK_FULL` set, the naive and BBDL tests run every component of every closed
+/// mesh (up to 199,034 faces in the corpus) instead of stopping at [`MAX_FACES`] and
+/// [`BBDL_MAX_FACES`]: the one-off run that shows each strategy on every corpus mesh
+/// (`FRINK_FULL=1 cargo test --release --features invariants,corpus --test algorithms
 /// quad_frink::`; tens of minutes, the naive strategy being O(F²)).
 fn full() -> bool {
     std::env::var_os("FRINK_FULL").is_some()
@@ -172,14 +177,34 @@ fn triangulations_with_removed_faces() {
     run(&t, "reduced", true);
 }
 
-/// Every component of the shared closed meshes with at most [`MAX_FACES`] faces.
-#[test]
-fn shared_closed_mesh_components() {
-    let rows: Vec<_> = common::manifest()
+/// Runs the naive strategy ([`run`]) on every component of `mesh` with at most `max`
+/// faces; returns the components run, their faces, and the components skipped.
+fn naive_on_components(mesh: &TriMesh, name: &str, max: usize) -> [usize; 3] {
+    let s = Surfaces::from_mesh(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let (mut components, mut faces, mut skipped) = (0usize, 0usize, 0usize);
+    for (k, comp) in s.components.iter().enumerate() {
+        let t = &comp.tri;
+        if t.face_count() > max {
+            skipped += 1;
+            continue;
+        }
+        run(t, &format!("{name}#{k}"), false);
+        components += 1;
+        faces += t.face_count();
+    }
+    [components, faces, skipped]
+}
+
+/// The naive strategy on every component of the closed meshes of the manifest of
+/// `meshes` (at least `min_meshes`) with at most [`MAX_FACES`] faces (a mesh whose mean
+/// component is larger is skipped whole, unread); returns the components run and
+/// skipped.
+fn naive_on_closed_meshes(meshes: &Path, min_meshes: usize) -> (usize, usize) {
+    let rows: Vec<_> = common::manifest_in(meshes)
         .into_iter()
         .filter(|r| r.set == "closed")
         .collect();
-    assert!(rows.len() >= 90, "{} closed meshes", rows.len());
+    assert!(rows.len() >= min_meshes, "{} closed meshes", rows.len());
     let (mut components, mut faces, mut skipped) = (0usize, 0usize, 0usize);
     let clock = std::time::Instant::now();
     let max = cap(MAX_FACES);
@@ -188,29 +213,53 @@ fn shared_closed_mesh_components() {
             skipped += row.components;
             continue;
         }
-        let path = common::shared_dir().join("meshes").join(&row.file);
+        let path = meshes.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
-        let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
-        assert_eq!(s.components.len(), row.components, "{}", row.name);
-        for (k, comp) in s.components.iter().enumerate() {
-            let t = &comp.tri;
-            if t.face_count() > max {
-                skipped += 1;
-                continue;
-            }
-            run(t, &format!("{}#{k}", row.name), false);
-            components += 1;
-            faces += t.face_count();
-        }
+        let [c, f, k] = naive_on_components(&mesh, &row.name, max);
+        assert_eq!(c + k, row.components, "{}", row.name);
+        components += c;
+        faces += f;
+        skipped += k;
     }
     eprintln!(
         "frink: {components} components ({faces} faces) of {} closed meshes in {:.1} s, {skipped} larger skipped",
         rows.len(),
         clock.elapsed().as_secs_f64()
     );
-    let want = if full() { (339 + 65, 0) } else { (339, 65) };
-    assert_eq!((components, skipped), want, "components covered, skipped");
+    (components, skipped)
+}
+
+/// Every component of the closed meshes the repository carries with at most
+/// [`MAX_FACES`] faces (the components run and skipped are those the face lists' own
+/// components, found by union–find, say), and every component of the generated closed
+/// surfaces of `closed_inputs` (all below the cap).
+#[test]
+fn repository_and_generated_closed_mesh_components() {
+    let max = cap(MAX_FACES);
+    let mut want = (0, 0);
+    for row in common::data_manifest().iter().filter(|r| r.set == "closed") {
+        let mesh = contractible::io::read_tri_mesh(&common::data_meshes().join(&row.file))
+            .unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        let sizes = closed_inputs::component_sizes(&mesh.faces);
+        assert_eq!(sizes.len(), row.components, "{}", row.name);
+        if row.f > max.saturating_mul(row.components) {
+            want.1 += row.components;
+        } else {
+            want.0 += sizes.iter().filter(|&&f| f <= max).count();
+            want.1 += sizes.iter().filter(|&&f| f > max).count();
+        }
+    }
+    let got = naive_on_closed_meshes(&common::data_meshes(), 9);
+    assert_eq!(got, want, "components covered, skipped");
+    assert!(got.0 >= 15, "{got:?}");
+    let mut generated = 0;
+    for g in closed_inputs::closed_surfaces() {
+        let [c, _, skipped] = naive_on_components(&g.mesh, &g.name, max);
+        assert_eq!(skipped, 0, "{}", g.name);
+        generated += c;
+    }
+    assert_eq!(generated, closed_inputs::COMPONENTS);
 }
 
 /// Runs `make()`'s strategy on `t` and checks the result independently (the harness
@@ -260,16 +309,16 @@ fn run_bbdl(t: &Triangulation, label: &str) -> frink::BbdlCounters {
     c
 }
 
-/// Calls `f` on every component of every shared closed mesh (label `name#k`); returns
-/// the number of meshes, components and faces.
-fn each_shared_closed_component(mut f: impl FnMut(&Triangulation, &str)) -> [usize; 3] {
-    let rows: Vec<_> = common::manifest()
+/// Calls `f` on every component of every closed mesh of the manifest of `meshes` (label
+/// `name#k`); returns the number of meshes, components and faces.
+fn each_closed_component(meshes: &Path, mut f: impl FnMut(&Triangulation, &str)) -> [usize; 3] {
+    let rows: Vec<_> = common::manifest_in(meshes)
         .into_iter()
         .filter(|r| r.set == "closed")
         .collect();
     let (mut components, mut faces) = (0usize, 0usize);
     for row in &rows {
-        let path = common::shared_dir().join("meshes").join(&row.file);
+        let path = meshes.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let s = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
@@ -280,6 +329,40 @@ fn each_shared_closed_component(mut f: impl FnMut(&Triangulation, &str)) -> [usi
         }
     }
     [rows.len(), components, faces]
+}
+
+/// Calls `f` on every component of the closed meshes the repository carries and of the
+/// generated closed surfaces of `closed_inputs`; checks that every component was visited
+/// (the manifest's count, and the generated ones') and returns the number of components
+/// and faces.
+fn each_repository_and_generated_component(mut f: impl FnMut(&Triangulation, &str)) -> [usize; 2] {
+    let listed: usize = common::data_manifest()
+        .iter()
+        .filter(|r| r.set == "closed")
+        .map(|r| r.components)
+        .sum();
+    let [meshes, mut components, mut faces] = each_closed_component(&common::data_meshes(), &mut f);
+    assert_eq!(
+        (meshes, components),
+        (9, listed),
+        "every repository component"
+    );
+    for g in closed_inputs::closed_surfaces() {
+        for (k, t) in closed_inputs::components(&g.mesh, &g.name)
+            .iter()
+            .enumerate()
+        {
+            f(t, &format!("{}#{k}", g.name));
+            components += 1;
+            faces += t.face_count();
+        }
+    }
+    assert_eq!(
+        components,
+        listed + closed_inputs::COMPONENTS,
+        "every component"
+    );
+    [components, faces]
 }
 
 /// Calls `f` on random surfaces of every kind (orientable genus 0..8, non-orientable
@@ -301,71 +384,50 @@ fn each_random_surface(mut f: impl FnMut(&Triangulation, &str)) {
     }
 }
 
-/// Diks–Stańczyk on every component of every shared closed mesh (no size limit: up to
-/// 199k faces), random surfaces of every kind (orientable genus 0..8, non-orientable
-/// 1..6) at two sizes.
+/// Diks–Stańczyk on every component of the closed meshes the repository carries and of
+/// the generated closed surfaces (no size limit), and on random surfaces of every kind
+/// (orientable genus 0..8, non-orientable 1..6) at two sizes.
 #[test]
-fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
+fn diks_stanczyk_on_every_repository_and_generated_closed_mesh_and_random_surfaces() {
     let mut total = frink::DsCounters::default();
-    let clock = std::time::Instant::now();
-    let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+    let [components, faces] = each_repository_and_generated_component(|t, label| {
         total += run_ds(t, label);
     });
-    eprintln!(
-        "ds: {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s, {total:?}",
-        clock.elapsed().as_secs_f64()
-    );
-    assert_eq!(components, 339 + 65, "every component");
+    eprintln!("ds: {components} components ({faces} faces), {total:?}");
     assert!(total.forced > 0 && total.free > 0, "{total:?}");
     each_random_surface(|t, label| {
         run_ds(t, label);
     });
 }
 
-/// Biedl–Bose–Demaine–Lubiw on every component of every shared closed mesh up to
-/// [`BBDL_MAX_FACES`] faces (its 2-edge structure is not polylogarithmic: module
-/// `frink::two_edge`) and random surfaces of every kind at two sizes.
+/// Biedl–Bose–Demaine–Lubiw on every component of the closed meshes the repository
+/// carries and of the generated closed surfaces (all below [`BBDL_MAX_FACES`] faces), and
+/// on random surfaces of every kind at two sizes.
 #[test]
-fn bbdl_on_shared_closed_meshes_and_random_surfaces() {
-    let (mut runs, mut skipped, mut h2, mut digons, mut swaps) = (0, 0, 0, 0, 0);
-    let clock = std::time::Instant::now();
-    let max = cap(BBDL_MAX_FACES);
-    let [meshes, components, faces] = each_shared_closed_component(|t, label| {
-        if t.face_count() > max {
-            skipped += 1;
-            return;
-        }
+fn bbdl_on_repository_and_generated_closed_meshes_and_random_surfaces() {
+    let (mut runs, mut h2) = (0, 0);
+    let [components, faces] = each_repository_and_generated_component(|t, label| {
+        assert!(t.face_count() <= BBDL_MAX_FACES, "{label}");
         let c = run_bbdl(t, label);
         runs += 1;
         h2 += c.took_h2;
-        digons += c.digon_steps;
-        swaps += c.structure.swaps;
     });
-    eprintln!(
-        "bbdl: {runs} of {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s ({skipped} above {BBDL_MAX_FACES} faces); {h2} steps took H2, {digons} digon steps, {swaps} swaps",
-        clock.elapsed().as_secs_f64()
-    );
-    assert_eq!(components, 339 + 65, "every component");
-    assert!(runs > 300 && h2 > 0, "{runs} runs, {h2} H2 steps");
+    eprintln!("bbdl: {runs} of {components} components ({faces} faces); {h2} steps took H2");
+    assert!(runs == components && h2 > 0, "{runs} runs, {h2} H2 steps");
     each_random_surface(|t, label| {
         run_bbdl(t, label);
     });
 }
 
-/// The link–cut strategy on every component of every shared closed mesh (no size limit:
-/// up to 199k faces), random surfaces of every kind and the standard ones.
+/// The link–cut strategy on every component of the closed meshes the repository carries
+/// and of the generated closed surfaces, and on random surfaces of every kind.
 #[test]
-fn cover_tree_on_every_shared_closed_mesh_and_random_surfaces() {
+fn cover_tree_on_every_repository_and_generated_closed_mesh_and_random_surfaces() {
     let mut fallbacks = 0;
-    let clock = std::time::Instant::now();
-    let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+    let [components, faces] = each_repository_and_generated_component(|t, label| {
         fallbacks += run_cover(t, label).naive_steps;
     });
-    eprintln!(
-        "frink-lct: {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s, {fallbacks} naive steps",
-        clock.elapsed().as_secs_f64()
-    );
-    assert_eq!(components, 339 + 65, "every component");
+    eprintln!("frink-lct: {components} components ({faces} faces), {fallbacks} naive steps");
     each_random_surface(|t, label| {
         run_cover(t, label);
     });
@@ -396,5 +458,94 @@ proptest! {
             seed,
         });
         run_ds(&t, &format!("{surface:?} F {} seed {seed}", t.face_count()));
+    }
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// Every component of the closed corpus meshes with at most [`MAX_FACES`] faces.
+    #[test]
+    fn shared_closed_mesh_components() {
+        let got = naive_on_closed_meshes(&common::corpus_meshes(), 90);
+        let want = if full() { (339 + 65, 0) } else { (339, 65) };
+        assert_eq!(got, want, "components covered, skipped");
+    }
+
+    /// Calls `f` on every component of every closed corpus mesh (label `name#k`); returns
+    /// the number of meshes, components and faces.
+    fn each_shared_closed_component(f: impl FnMut(&Triangulation, &str)) -> [usize; 3] {
+        each_closed_component(&common::corpus_meshes(), f)
+    }
+
+    /// Diks–Stańczyk on every component of every closed corpus mesh (no size limit: up to
+    /// 199k faces), random surfaces of every kind (orientable genus 0..8, non-orientable
+    /// 1..6) at two sizes.
+    #[test]
+    fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
+        let mut total = frink::DsCounters::default();
+        let clock = std::time::Instant::now();
+        let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+            total += run_ds(t, label);
+        });
+        eprintln!(
+            "ds: {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s, {total:?}",
+            clock.elapsed().as_secs_f64()
+        );
+        assert_eq!(components, 339 + 65, "every component");
+        assert!(total.forced > 0 && total.free > 0, "{total:?}");
+        each_random_surface(|t, label| {
+            run_ds(t, label);
+        });
+    }
+
+    /// Biedl–Bose–Demaine–Lubiw on every component of every closed corpus mesh up to
+    /// [`BBDL_MAX_FACES`] faces (its 2-edge structure is not polylogarithmic: module
+    /// `frink::two_edge`) and random surfaces of every kind at two sizes.
+    #[test]
+    fn bbdl_on_shared_closed_meshes_and_random_surfaces() {
+        let (mut runs, mut skipped, mut h2, mut digons, mut swaps) = (0, 0, 0, 0, 0);
+        let clock = std::time::Instant::now();
+        let max = cap(BBDL_MAX_FACES);
+        let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+            if t.face_count() > max {
+                skipped += 1;
+                return;
+            }
+            let c = run_bbdl(t, label);
+            runs += 1;
+            h2 += c.took_h2;
+            digons += c.digon_steps;
+            swaps += c.structure.swaps;
+        });
+        eprintln!(
+            "bbdl: {runs} of {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s ({skipped} above {BBDL_MAX_FACES} faces); {h2} steps took H2, {digons} digon steps, {swaps} swaps",
+            clock.elapsed().as_secs_f64()
+        );
+        assert_eq!(components, 339 + 65, "every component");
+        assert!(runs > 300 && h2 > 0, "{runs} runs, {h2} H2 steps");
+        each_random_surface(|t, label| {
+            run_bbdl(t, label);
+        });
+    }
+
+    /// The link–cut strategy on every component of every closed corpus mesh (no size limit:
+    /// up to 199k faces), random surfaces of every kind and the standard ones.
+    #[test]
+    fn cover_tree_on_every_shared_closed_mesh_and_random_surfaces() {
+        let mut fallbacks = 0;
+        let clock = std::time::Instant::now();
+        let [meshes, components, faces] = each_shared_closed_component(|t, label| {
+            fallbacks += run_cover(t, label).naive_steps;
+        });
+        eprintln!(
+            "frink-lct: {components} components ({faces} faces) of {meshes} closed meshes in {:.1} s, {fallbacks} naive steps",
+            clock.elapsed().as_secs_f64()
+        );
+        assert_eq!(components, 339 + 65, "every component");
+        each_random_surface(|t, label| {
+            run_cover(t, label);
+        });
     }
 }

@@ -11,19 +11,23 @@
 //!   at least half of it (a maximal matching has at least half the maximum size).
 //! - **Determinism**: the same seed gives the same pairing; different seeds give
 //!   different pairings on all but tiny inputs.
-//! - **Quality** on every component of every mesh of `../shared/meshes/closed`: SG pairs
-//!   85–90% of the faces of each mesh of at least 10k faces (the paper: 87.45–87.86%),
-//!   PS at least 99% (the paper: α ≤ 0.0021). The measured distribution is printed
-//!   (`--nocapture`) and recorded in `spec/quad.md`.
+//! - **Quality** on every component of every real mesh: SG pairs 85–90% of the faces of
+//!   each mesh of at least 10k faces (the paper: 87.45–87.86%), PS at least 99% (the
+//!   paper: α ≤ 0.0021). By default the meshes the repository carries and their
+//!   subdivisions to 10k faces or more; with the feature `corpus` every closed corpus
+//!   mesh. The measured distribution is printed (`--nocapture`) and, for the corpus,
+//!   recorded in `spec/quad.md`.
 //!
 //! Inputs: random surfaces of genus 0..8 and 1..6 cross-caps, the meshes, and proptest
 //! cases over random surfaces.
 
 use crate::common;
 
-use contractible::gen::{random, RandomParams, SurfaceKind};
+use std::path::Path;
+
+use contractible::gen::{random, subdivide, RandomParams, SurfaceKind};
 use contractible::quad::{greedy, pulli_segal, Options, Pairing};
-use contractible::{Surfaces, Triangulation};
+use contractible::{Surfaces, TriMesh, Triangulation};
 use petgraph::algo::maximum_matching;
 use petgraph::visit::EdgeRef;
 use proptest::prelude::*;
@@ -156,62 +160,109 @@ fn spread(mut v: Vec<f64>) -> (f64, f64, f64) {
     (v[0], v[v.len() / 2], v[v.len() - 1])
 }
 
-#[test]
-fn every_real_mesh() {
-    let manifest = common::manifest();
-    let mut components = 0;
-    let mut large = Vec::new();
-    let mut exceptions = Vec::new();
+/// What [`pairing_quality`] found over several meshes.
+#[derive(Default)]
+struct Quality {
+    components: usize,
+    /// SG and PS % paired of each mesh of at least 10k faces.
+    large: Vec<[f64; 2]>,
+    /// The meshes of at least 10k faces outside the paper's bands.
+    exceptions: Vec<String>,
+}
+
+/// Both algorithms on every component of `mesh` ([`run_both`]), and the paper's bands on
+/// the whole mesh if it has at least 10k faces.
+fn pairing_quality(mesh: &TriMesh, name: &str, q: &mut Quality) {
+    let surfaces = Surfaces::from_mesh(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let (mut faces, mut paired) = (0, [0usize; 2]);
+    for (k, c) in surfaces.components.iter().enumerate() {
+        // Two seeds on the small components, one on the large (determinism and
+        // seed-dependence are covered on the random surfaces too).
+        let seeds = if c.tri.face_count() > 20_000 {
+            0..1
+        } else {
+            0..2
+        };
+        let p = run_both(&c.tri, seeds.clone(), &format!("{name}[{k}]"));
+        let runs = (seeds.end - seeds.start) as usize;
+        faces += c.tri.face_count();
+        for i in 0..2 {
+            paired[i] += p[i] / runs;
+        }
+        q.components += 1;
+    }
+    let pct = paired.map(|p| 100.0 * p as f64 / faces as f64);
+    println!(
+        "{name}, {faces}, {}, {:.3}, {:.4}",
+        surfaces.components.len(),
+        pct[0],
+        pct[1]
+    );
+    if faces >= 10_000 {
+        if !(85.0..=90.0).contains(&pct[0]) || pct[1] < 99.0 {
+            q.exceptions.push(format!("{name} (F = {faces}): {pct:?}"));
+        }
+        q.large.push(pct);
+    }
+}
+
+/// [`pairing_quality`] on every closed mesh of the manifest of `meshes`.
+fn every_closed_mesh_of(meshes: &Path, q: &mut Quality) {
     println!("mesh, faces, components, SG % paired, PS % paired (seed 0)");
-    for row in manifest.iter().filter(|r| r.set == "closed") {
-        let path = common::shared_dir().join("meshes").join(&row.file);
+    for row in common::manifest_in(meshes)
+        .iter()
+        .filter(|r| r.set == "closed")
+    {
+        let path = meshes.join(&row.file);
         let mesh =
             contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{}: {e}", row.name));
-        let surfaces = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", row.name));
-        let (mut faces, mut paired) = (0, [0usize; 2]);
-        for (k, c) in surfaces.components.iter().enumerate() {
-            // Two seeds on the small components, one on the large (determinism and
-            // seed-dependence are covered on the random surfaces too).
-            let seeds = if c.tri.face_count() > 20_000 {
-                0..1
-            } else {
-                0..2
-            };
-            let p = run_both(&c.tri, seeds.clone(), &format!("{}[{k}]", row.name));
-            let runs = (seeds.end - seeds.start) as usize;
-            faces += c.tri.face_count();
-            for i in 0..2 {
-                paired[i] += p[i] / runs;
-            }
-            components += 1;
-        }
-        let pct = paired.map(|p| 100.0 * p as f64 / faces as f64);
-        println!(
-            "{}, {faces}, {}, {:.3}, {:.4}",
-            row.name,
-            surfaces.components.len(),
-            pct[0],
-            pct[1]
-        );
-        if faces >= 10_000 {
-            if !(85.0..=90.0).contains(&pct[0]) || pct[1] < 99.0 {
-                exceptions.push(format!("{} (F = {faces}): {pct:?}", row.name));
-            }
-            large.push(pct);
-        }
+        pairing_quality(&mesh, &row.name, q);
     }
-    let (sg, ps): (Vec<f64>, Vec<f64>) = large.iter().map(|p| (p[0], p[1])).unzip();
+}
+
+/// Prints the spread over the meshes of at least 10k faces.
+fn print_spread(q: &Quality) {
+    let (sg, ps): (Vec<f64>, Vec<f64>) = q.large.iter().map(|p| (p[0], p[1])).unzip();
     println!(
         "{} meshes of ≥ 10k faces: SG min/median/max {:.3?}, PS {:.4?}",
-        large.len(),
+        q.large.len(),
         spread(sg),
         spread(ps)
     );
-    assert!(components >= 100, "{components} components");
-    assert!(large.len() >= 50, "{} large meshes", large.len());
+}
+
+/// The closed meshes the repository carries (all below 10k faces: the checks without
+/// the bands), and each of those of at least 1,000 faces subdivided until it has 10k
+/// faces or more (1-to-4 subdivision of a real mesh is as regular as a finer scan: the
+/// bands must hold on it).
+#[test]
+fn every_repository_mesh_and_its_subdivisions() {
+    let mut q = Quality::default();
+    every_closed_mesh_of(&common::data_meshes(), &mut q);
+    assert!(q.components >= 20, "{} components", q.components);
+    assert!(q.large.is_empty(), "no repository mesh has 10k faces");
+    let mut subdivided = 0;
+    for row in common::data_manifest()
+        .iter()
+        .filter(|r| r.set == "closed" && r.f >= 1_000)
+    {
+        let mut mesh = contractible::io::read_tri_mesh(&common::data_meshes().join(&row.file))
+            .unwrap_or_else(|e| panic!("{}: {e}", row.name));
+        let mut levels = 0;
+        while mesh.faces.len() < 10_000 {
+            mesh = subdivide(&mesh, 1);
+            levels += 1;
+        }
+        pairing_quality(&mesh, &format!("{} subdivided {levels}", row.name), &mut q);
+        subdivided += 1;
+    }
+    print_spread(&q);
+    assert_eq!(subdivided, 7);
+    assert_eq!(q.large.len(), subdivided, "meshes of at least 10k faces");
     assert!(
-        exceptions.is_empty(),
-        "outside the paper's bands: {exceptions:#?}"
+        q.exceptions.is_empty(),
+        "outside the paper's bands: {:#?}",
+        q.exceptions
     );
 }
 
@@ -234,5 +285,25 @@ proptest! {
             check_pairing(&t, &p, &format!("{name} kind {kind} F {}", t.face_count()));
             prop_assert_eq!(&p, &algo(&t, &opts));
         }
+    }
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// Every closed corpus mesh; the paper's bands on each of at least 10k faces.
+    #[test]
+    fn every_real_mesh() {
+        let mut q = Quality::default();
+        every_closed_mesh_of(&common::corpus_meshes(), &mut q);
+        print_spread(&q);
+        assert!(q.components >= 100, "{} components", q.components);
+        assert!(q.large.len() >= 50, "{} large meshes", q.large.len());
+        assert!(
+            q.exceptions.is_empty(),
+            "outside the paper's bands: {:#?}",
+            q.exceptions
+        );
     }
 }

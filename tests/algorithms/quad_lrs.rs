@@ -7,12 +7,13 @@
 //! `n'_v ≤ 13h − 4`).
 
 use std::collections::HashSet;
+use std::path::Path;
 
 use crate::common;
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::quad::lrs::{initial_pairing, initial_pairing_variant, Expansion, Variant};
 use contractible::rng::Rng;
-use contractible::{Surfaces, Triangulation, VertexId};
+use contractible::{Surfaces, TriMesh, Triangulation, VertexId};
 
 /// The edge set of a face list, as sorted vertex pairs.
 fn edge_set(faces: &[[u32; 3]]) -> HashSet<(u32, u32)> {
@@ -324,15 +325,33 @@ fn every_small_surface_and_random_splits_of_it() {
     assert_eq!(twins, 80 * 13 * 30, "conversions checked by the twins");
 }
 
-#[test]
-fn every_closed_mesh_component() {
-    let dir = common::shared_dir().join("meshes/closed");
+/// LRS on every component of `mesh` ([`check`]); returns the components and flips.
+fn lrs_on_every_component(mesh: &TriMesh, name: &str) -> (usize, usize) {
+    let surfaces = Surfaces::from_mesh(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
+    let mut flips = 0;
+    for (k, comp) in surfaces.components.iter().enumerate() {
+        let label = format!("{name} component {k}");
+        let ex = initial_pairing(comp.tri.clone());
+        check(&comp.tri, &ex, &label);
+        flips += ex.flips;
+    }
+    (surfaces.components.len(), flips)
+}
+
+/// LRS on every component of every mesh of `meshes/closed` (at least `min_files`).
+fn every_closed_mesh_component_of(meshes: &Path, min_files: usize) {
+    let dir = meshes.join("closed");
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.expect("directory entry").path())
         .collect();
     files.sort();
-    assert!(!files.is_empty(), "no meshes in {}", dir.display());
+    assert!(
+        files.len() >= min_files,
+        "{} meshes in {}",
+        files.len(),
+        dir.display()
+    );
     let mut components = 0;
     let mut flips = 0;
     for path in &files {
@@ -342,17 +361,29 @@ fn every_closed_mesh_component() {
             .to_string_lossy()
             .to_string();
         let mesh = contractible::io::read_tri_mesh(path).unwrap_or_else(|e| panic!("{name}: {e}"));
-        let surfaces = Surfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
-        for (k, comp) in surfaces.components.iter().enumerate() {
-            let label = format!("{name} component {k}");
-            let ex = initial_pairing(comp.tri.clone());
-            check(&comp.tri, &ex, &label);
-            flips += ex.flips;
-            components += 1;
-        }
+        let (c, f) = lrs_on_every_component(&mesh, &name);
+        components += c;
+        flips += f;
     }
     assert!(components >= files.len());
     eprintln!("{components} components, {flips} flips");
+}
+
+/// Every component of every closed mesh the repository carries.
+#[test]
+fn every_repository_closed_mesh_component() {
+    every_closed_mesh_component_of(&common::data_meshes(), 9);
+}
+
+/// Every component of the generated closed surfaces of `closed_inputs` (orientable and
+/// not: the bound differs).
+#[test]
+fn every_generated_closed_surface_component() {
+    let mut components = 0;
+    for g in crate::closed_inputs::closed_surfaces() {
+        components += lrs_on_every_component(&g.mesh, &g.name).0;
+    }
+    assert_eq!(components, crate::closed_inputs::COMPONENTS);
 }
 
 /// Erratum T7 (`spec/ERRATA.md`): Lemma 3.4's proof says the unmatched faces of `K` are
@@ -397,4 +428,15 @@ fn erratum_unmatched_faces_of_k_are_not_the_faces_of_t_prime() {
     eprintln!("{not_in_t_prime} of {unmatched} unmatched faces are not faces of T' ({ids_not_in_t_prime} by id)");
     assert!(not_in_t_prime > 0);
     assert_eq!(ids_not_in_t_prime, 0);
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// Every component of every closed corpus mesh.
+    #[test]
+    fn every_closed_mesh_component() {
+        every_closed_mesh_component_of(&common::corpus_meshes(), 90);
+    }
 }

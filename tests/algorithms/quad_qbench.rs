@@ -7,6 +7,12 @@
 //! One deliberate change since: LRS's `K` on the non-orientable input (`rand:n5`), whose
 //! flips now start from each edge's canonical corner (`quad/lrs/mod.rs`, "Flips trust
 //! Prop. 3.3"), re-pinned with the reason beside the values.
+//!
+//! Inputs: random surfaces, the paper's bricks B6 and C5 and four meshes the repository
+//! carries (`data:NAME`, the largest component of `tests/data/meshes/closed/NAME.off.gz`)
+//! by default; the corpus mesh botijo with the feature `corpus`. The repository's meshes
+//! were pinned later, by this file's fingerprint code linked against the library of
+//! commit b70e3ef (which reproduces this file's pins of `rand:o3` and botijo exactly).
 
 use contractible::gen::{paper_family, random, RandomParams, SurfaceKind};
 use contractible::quad::{self, greedy, lrs, matching, pulli_segal};
@@ -60,6 +66,17 @@ fn fingerprint_output(k: &Triangulation, p: &Pairing) -> u64 {
     h.0
 }
 
+/// The largest component of `mesh`.
+fn largest_component(mesh: &contractible::TriMesh) -> Triangulation {
+    Surfaces::from_mesh(mesh)
+        .expect("closed surface")
+        .components
+        .into_iter()
+        .max_by_key(|c| c.tri.face_count())
+        .expect("a component")
+        .tri
+}
+
 fn build(name: &str) -> Triangulation {
     let random_surface = |surface| {
         random(&RandomParams {
@@ -72,29 +89,25 @@ fn build(name: &str) -> Triangulation {
     let mesh = match name {
         "rand:o3" => return random_surface(SurfaceKind::Orientable(3)),
         "rand:n5" => return random_surface(SurfaceKind::NonOrientable(5)),
-        "botijo" => {
-            let path = format!(
-                "{}/../shared/meshes/closed/botijo.off.gz",
-                env!("CARGO_MANIFEST_DIR")
-            );
-            contractible::io::read_tri_mesh(path.as_ref()).expect("botijo reads")
-        }
         "B6" => paper_family('B', 6),
         "C5" => paper_family('C', 5),
-        _ => panic!("no input {name}"),
+        _ => {
+            let file = name
+                .strip_prefix("data:")
+                .unwrap_or_else(|| panic!("no input {name}"));
+            let path = crate::common::data_meshes().join(format!("closed/{file}.off.gz"));
+            contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"))
+        }
     };
-    Surfaces::from_mesh(&mesh)
-        .expect("closed surface")
-        .components
-        .into_iter()
-        .max_by_key(|c| c.tri.face_count())
-        .expect("a component")
-        .tri
+    largest_component(&mesh)
 }
+
+/// An input, an algorithm, and what it gives with seed 1 (see [`PINS`]).
+type Pin = (&'static str, Algorithm, usize, usize, usize, u64, u64);
 
 /// (input, algorithm, unpaired after the initial step, augmenting paths, phases,
 /// fingerprint of the initial pairing, fingerprint of the output), seed 1.
-const PINS: &[(&str, Algorithm, usize, usize, usize, u64, u64)] = &[
+const PINS: &[Pin] = &[
     (
         "rand:o3",
         Algorithm::Lrs,
@@ -171,42 +184,6 @@ const PINS: &[(&str, Algorithm, usize, usize, usize, u64, u64)] = &[
         0x044e443ef766566e,
     ),
     (
-        "botijo",
-        Algorithm::Lrs,
-        66,
-        33,
-        1,
-        0x53d666a94cd189fb,
-        0x62e69497006bb02e,
-    ),
-    (
-        "botijo",
-        Algorithm::Ps,
-        6,
-        3,
-        1,
-        0x8055c0e5834fdaa4,
-        0x1636280d87895f22,
-    ),
-    (
-        "botijo",
-        Algorithm::Sg,
-        10314,
-        5157,
-        2,
-        0x71373e06a08c01dd,
-        0xffbdebdae82bfcd0,
-    ),
-    (
-        "botijo",
-        Algorithm::Matching,
-        82332,
-        41166,
-        2,
-        0xcbf29ce484222325,
-        0xfc15a074ff232468,
-    ),
-    (
         "B6",
         Algorithm::Lrs,
         4,
@@ -278,13 +255,157 @@ const PINS: &[(&str, Algorithm, usize, usize, usize, u64, u64)] = &[
         0xcbf29ce484222325,
         0x42fd99bd4a746e1c,
     ),
+    (
+        "data:bunny_npm",
+        Algorithm::Lrs,
+        4,
+        2,
+        1,
+        0x5c635f5b501e5347,
+        0x75e1122d5528e2b0,
+    ),
+    (
+        "data:bunny_npm",
+        Algorithm::Ps,
+        4,
+        2,
+        1,
+        0x4124e001ebddf141,
+        0x6b9e97bd38975a8e,
+    ),
+    (
+        "data:bunny_npm",
+        Algorithm::Sg,
+        436,
+        218,
+        2,
+        0x9169c9bf5ce03d64,
+        0xa7b848c7a4da4453,
+    ),
+    (
+        "data:bunny_npm",
+        Algorithm::Matching,
+        3674,
+        1837,
+        2,
+        0xcbf29ce484222325,
+        0x9811c51f7e328366,
+    ),
+    (
+        "data:letter",
+        Algorithm::Lrs,
+        16,
+        8,
+        1,
+        0xc27429e5ddbe4c06,
+        0x4331c83bc25026c1,
+    ),
+    (
+        "data:letter",
+        Algorithm::Ps,
+        6,
+        3,
+        1,
+        0x361055d3048eaf1a,
+        0xdeaeda6e6a1ff73a,
+    ),
+    (
+        "data:letter",
+        Algorithm::Sg,
+        1072,
+        536,
+        2,
+        0x6d8aea3844e2a6e3,
+        0xb8db957d87d6e611,
+    ),
+    (
+        "data:letter",
+        Algorithm::Matching,
+        8832,
+        4416,
+        2,
+        0xcbf29ce484222325,
+        0x7746d15b0836c6b5,
+    ),
+    (
+        "data:adis16480_stl",
+        Algorithm::Lrs,
+        244,
+        122,
+        2,
+        0xb76256f1450ef8e8,
+        0xc728c6add787571d,
+    ),
+    (
+        "data:adis16480_stl",
+        Algorithm::Ps,
+        12,
+        6,
+        1,
+        0xf1dfe7b88eca2885,
+        0x4d3980b5760699f5,
+    ),
+    (
+        "data:adis16480_stl",
+        Algorithm::Sg,
+        922,
+        461,
+        2,
+        0x462fa04205d93e64,
+        0x360eebb85ac2d20a,
+    ),
+    (
+        "data:adis16480_stl",
+        Algorithm::Matching,
+        7436,
+        3718,
+        2,
+        0xcbf29ce484222325,
+        0x04f7ec9174e36cac,
+    ),
+    (
+        "data:box_stl",
+        Algorithm::Lrs,
+        82,
+        41,
+        1,
+        0xc22e3bfc80578d5e,
+        0x89481e7db98cab04,
+    ),
+    (
+        "data:box_stl",
+        Algorithm::Ps,
+        22,
+        11,
+        1,
+        0xf87534cab203a965,
+        0x89d7bd8676484db3,
+    ),
+    (
+        "data:box_stl",
+        Algorithm::Sg,
+        188,
+        94,
+        3,
+        0xacbdf45b117d1ad5,
+        0xc8fef0ec1dfb2051,
+    ),
+    (
+        "data:box_stl",
+        Algorithm::Matching,
+        1594,
+        797,
+        2,
+        0xcbf29ce484222325,
+        0xe972fa22b49b2c73,
+    ),
 ];
 
-#[test]
-fn outputs_are_those_of_the_unoptimised_implementation() {
+/// Checks every pin of `pins`, building each input once with `build`.
+fn check_pins(pins: &[Pin], build: impl Fn(&str) -> Triangulation) {
     const OPTIONS: Options = Options { seed: 1 };
     let mut current: Option<(&str, Triangulation)> = None;
-    for &(name, alg, unpaired, paths, phases, fp_initial, fp_output) in PINS {
+    for &(name, alg, unpaired, paths, phases, fp_initial, fp_output) in pins {
         if current.as_ref().map(|c| c.0) != Some(name) {
             current = Some((name, build(name)));
         }
@@ -331,5 +452,67 @@ fn outputs_are_those_of_the_unoptimised_implementation() {
             fp_output,
             "{label}: output changed"
         );
+    }
+}
+
+#[test]
+fn outputs_are_those_of_the_unoptimised_implementation() {
+    assert_eq!(PINS.len(), 4 * 8, "four algorithms on eight inputs");
+    check_pins(PINS, build);
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// The pins of the corpus mesh botijo (82,332 faces, genus 5).
+    const PINS: &[Pin] = &[
+        (
+            "botijo",
+            Algorithm::Lrs,
+            66,
+            33,
+            1,
+            0x53d666a94cd189fb,
+            0x62e69497006bb02e,
+        ),
+        (
+            "botijo",
+            Algorithm::Ps,
+            6,
+            3,
+            1,
+            0x8055c0e5834fdaa4,
+            0x1636280d87895f22,
+        ),
+        (
+            "botijo",
+            Algorithm::Sg,
+            10314,
+            5157,
+            2,
+            0x71373e06a08c01dd,
+            0xffbdebdae82bfcd0,
+        ),
+        (
+            "botijo",
+            Algorithm::Matching,
+            82332,
+            41166,
+            2,
+            0xcbf29ce484222325,
+            0xfc15a074ff232468,
+        ),
+    ];
+
+    fn build(name: &str) -> Triangulation {
+        assert_eq!(name, "botijo", "no corpus input {name}");
+        let path = crate::common::corpus_meshes().join("closed/botijo.off.gz");
+        largest_component(&contractible::io::read_tri_mesh(&path).expect("botijo reads"))
+    }
+
+    #[test]
+    fn outputs_are_those_of_the_unoptimised_implementation() {
+        check_pins(PINS, build);
     }
 }

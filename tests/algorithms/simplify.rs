@@ -7,12 +7,14 @@
 //! `frozen`; nested contracts at least as many edges as naive).
 //!
 //! 1. The must-show matrix: marching-tetrahedra surfaces of genus 0..5, a sphere and a
-//!    torus with both tessellations, a two-sheet hyperboloid with boundary, every mesh of
-//!    `../shared/meshes/closed/`, the open meshes of `../shared/meshes/invalid/` that are
-//!    manifold with boundary; each at ε = 1 % and 3 % of the bounding-box diagonal, in
-//!    both modes, and on a seeded random perturbation of it (for the closed shared
-//!    meshes, to bound the run time: the perturbed copy at one ε, alternating, and only
-//!    for the 85 meshes of at most 50,000 faces).
+//!    torus with both tessellations, a two-sheet hyperboloid with boundary, every closed
+//!    mesh the repository carries, the generated closed surfaces of `closed_inputs` and
+//!    the same with vertex stars removed (surfaces with boundary), and with the feature
+//!    `corpus` every closed corpus mesh and the corpus's open meshes that are manifold
+//!    with boundary; each at ε = 1 % and 3 % of the bounding-box diagonal, in both
+//!    modes, and on a seeded random perturbation of it (for the real and generated
+//!    closed meshes, to bound the run time: the perturbed copy at one ε, alternating,
+//!    and for the corpus only for the 85 meshes of at most 50,000 faces).
 //! 2. Hand-made edge cases: irreducible surfaces (nothing may be contracted), huge ε
 //!    (the output must be irreducible: every edge fails the link condition, checked
 //!    here), open discs, non-orientable surfaces, two components, every option.
@@ -256,9 +258,9 @@ fn hyperboloid_with_boundary_keeps_both_sheets_and_their_loops() {
     eprintln!("hyperboloid: {total:?}");
 }
 
-/// Every `*.off.gz` of `../shared/meshes/<set>/`, sorted by name.
-fn shared_meshes(set: &str) -> Vec<std::path::PathBuf> {
-    let dir = common::shared_dir().join("meshes").join(set);
+/// Every `*.off.gz` of `meshes/<set>/`, sorted by name.
+fn mesh_files(meshes: &Path, set: &str) -> Vec<std::path::PathBuf> {
+    let dir = meshes.join(set);
     let mut files: Vec<_> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e}", dir.display()))
         .map(|e| e.expect("a directory entry").path())
@@ -275,30 +277,33 @@ fn file_name(p: &Path) -> String {
         .into_owned()
 }
 
-/// The must-show matrix on the closed shared meshes whose index is `shard` mod
-/// `SHARDS` (split so that the test harness runs the shards on several threads). The
-/// checker's verdict on each input is compared with the manifest's first.
-const SHARDS: usize = 3;
-
-fn closed_shared_meshes(shard: usize) {
-    let manifest: BTreeMap<String, common::ManifestRow> = common::manifest()
+/// The must-show matrix on the closed meshes of `meshes` (at least `min_files`) whose
+/// index is `shard` mod `shards` (the corpus is split so that the test harness runs the
+/// shards on several threads). The checker's verdict on each input is compared with
+/// the manifest's first.
+fn closed_meshes(meshes: &Path, min_files: usize, shard: usize, shards: usize) {
+    let manifest: BTreeMap<String, common::ManifestRow> = common::manifest_in(meshes)
         .into_iter()
         .map(|r| (r.file.clone(), r))
         .collect();
-    let files = shared_meshes("closed");
-    assert!(files.len() >= 90, "only {} closed meshes", files.len());
+    let files = mesh_files(meshes, "closed");
+    assert!(
+        files.len() >= min_files,
+        "only {} closed meshes",
+        files.len()
+    );
     let mut total = Tally::default();
     let mut count = 0;
     for (i, path) in files.iter().enumerate() {
-        if i % SHARDS != shard {
+        if i % shards != shard {
             continue;
         }
         let name = file_name(path);
         let mesh = contractible::io::read_tri_mesh(path).unwrap_or_else(|e| panic!("{name}: {e}"));
         // Perturbed copies: at one ε, alternating between meshes, and only for meshes
-        // up to 50,000 faces (85 of 99): the whole set at both ε on both variants
-        // would add about 40 s of CPU time. `SIMPLIFY_FULL=1` runs that whole set
-        // (the full matrix; its last result is in docs/benchmarks.md).
+        // up to 50,000 faces (85 of the corpus's 99): the whole corpus at both ε on both
+        // variants would add about 40 s of CPU time. `SIMPLIFY_FULL=1` runs that whole
+        // set (the full matrix; its last result is in docs/benchmarks.md).
         let rels: &[f64] = if std::env::var_os("SIMPLIFY_FULL").is_some() {
             &RELATIVE_EPS
         } else if mesh.faces.len() <= 50_000 {
@@ -323,55 +328,167 @@ fn closed_shared_meshes(shard: usize) {
         total.add(&t);
         count += 1;
     }
-    assert!(count >= files.len() / SHARDS);
+    assert!(count >= files.len() / shards);
     eprintln!("closed shard {shard}: {count} meshes, {total:?}");
 }
 
+/// Every closed mesh the repository carries, the whole matrix (perturbed copies at one
+/// ε, alternating).
 #[test]
-fn shared_closed_meshes_shard_0() {
-    closed_shared_meshes(0);
+fn repository_closed_meshes() {
+    closed_meshes(&common::data_meshes(), 9, 0, 1);
 }
 
+/// The must-show matrix on the generated closed surfaces of `closed_inputs` (random
+/// surfaces with crumpled positions, orientable and not, bricks, subdivisions, an
+/// isosurface, four components in one mesh), the perturbed copy at one ε, alternating;
+/// the checker's verdict on each is the surface its construction makes.
 #[test]
-fn shared_closed_meshes_shard_1() {
-    closed_shared_meshes(1);
-}
-
-#[test]
-fn shared_closed_meshes_shard_2() {
-    closed_shared_meshes(2);
-}
-
-#[test]
-fn shared_open_manifold_meshes_keep_their_boundary_loops() {
-    let mut qualified = Vec::new();
+fn generated_closed_surfaces() {
     let mut total = Tally::default();
-    for path in shared_meshes("invalid") {
-        let name = file_name(&path);
-        let mesh = contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
-        let ours = surface_topology(&mesh.faces);
-        match ConedSurfaces::from_mesh(&mesh) {
-            Ok(s) if !s.is_closed() => {
-                // The independent checker agrees that it is a surface with boundary.
-                let topo = ours.unwrap_or_else(|e| panic!("{name}: checker: {e}"));
-                assert_eq!(topo.loops(), s.loop_count(), "{name}");
-                let (_, t) = matrix(&mesh, &name, 11, &RELATIVE_EPS);
-                total.add(&t);
-                qualified.push(name);
-            }
-            Ok(_) => panic!("{name}: a closed surface in invalid/"),
-            Err(e) => {
-                assert!(
-                    ours.is_err(),
-                    "{name}: the library says {e}, the checker accepts it"
-                );
-            }
+    let all = crate::closed_inputs::closed_surfaces();
+    for (i, g) in all.iter().enumerate() {
+        let (topo, t) = matrix(&g.mesh, &g.name, i as u64, &RELATIVE_EPS[i % 2..i % 2 + 1]);
+        let mut types: Vec<(i64, bool)> = topo
+            .components
+            .iter()
+            .map(|c| (c.euler, c.orientable))
+            .collect();
+        types.sort_unstable();
+        assert_eq!(types, g.types(), "{}", g.name);
+        assert!(
+            topo.components.iter().all(|c| c.boundary_loops == 0),
+            "{}",
+            g.name
+        );
+        total.add(&t);
+    }
+    assert_eq!(all.len(), crate::closed_inputs::MESHES);
+    eprintln!("generated closed surfaces: {total:?}");
+    assert!(total.nested_contracted > 0, "nothing was simplified");
+}
+
+/// The must-show matrix on `mesh` if it is a manifold with boundary (returns what the
+/// runs did); `None` if it is no surface, the library and the independent checker
+/// agreeing on that. Panics on a closed surface.
+fn open_manifold_matrix(mesh: &TriMesh, name: &str) -> Option<(Topology, Tally)> {
+    let ours = surface_topology(&mesh.faces);
+    match ConedSurfaces::from_mesh(mesh) {
+        Ok(s) if !s.is_closed() => {
+            // The independent checker agrees that it is a surface with boundary.
+            let topo = ours.unwrap_or_else(|e| panic!("{name}: checker: {e}"));
+            assert_eq!(topo.loops(), s.loop_count(), "{name}");
+            let (_, t) = matrix(mesh, name, 11, &RELATIVE_EPS);
+            Some((topo, t))
+        }
+        Ok(_) => panic!("{name}: a closed surface in invalid/"),
+        Err(e) => {
+            assert!(
+                ours.is_err(),
+                "{name}: the library says {e}, the checker accepts it"
+            );
+            None
         }
     }
-    // open_bunny_stanford (5 loops) and open_camelhead (1 loop); the others are
-    // non-manifold or have duplicate faces.
-    assert_eq!(qualified.len(), 2, "{qualified:?}");
-    eprintln!("open shared meshes {qualified:?}: {total:?}");
+}
+
+/// [`open_manifold_matrix`] on every mesh of `meshes/invalid`; returns the names of
+/// those that are manifolds with boundary, and what their runs did.
+fn open_manifold_meshes(meshes: &Path) -> (Vec<String>, Tally) {
+    let mut qualified = Vec::new();
+    let mut total = Tally::default();
+    for path in mesh_files(meshes, "invalid") {
+        let name = file_name(&path);
+        let mesh = contractible::io::read_tri_mesh(&path).unwrap_or_else(|e| panic!("{name}: {e}"));
+        if let Some((_, t)) = open_manifold_matrix(&mesh, &name) {
+            total.add(&t);
+            qualified.push(name);
+        }
+    }
+    (qualified, total)
+}
+
+/// `mesh` without the faces around each vertex of `centres`, and without those vertices
+/// (the others renumbered in order, keeping their positions).
+fn without_stars(mesh: &TriMesh, centres: &BTreeSet<u32>) -> TriMesh {
+    let pos = mesh.positions.as_deref().expect("positions");
+    let mut id = vec![u32::MAX; mesh.vertex_count];
+    let mut kept = Vec::new();
+    for v in 0..mesh.vertex_count as u32 {
+        if !centres.contains(&v) {
+            id[v as usize] = kept.len() as u32;
+            kept.push(pos[v as usize]);
+        }
+    }
+    let faces = mesh
+        .faces
+        .iter()
+        .filter(|f| !f.iter().any(|v| centres.contains(v)))
+        .map(|f| f.map(|v| id[v as usize]))
+        .collect();
+    TriMesh::with_positions(kept, faces)
+}
+
+/// Up to `k` vertices of `mesh` whose closed stars (the vertex and its neighbours) are
+/// pairwise disjoint, from a seeded order: removing their open stars cuts `k` disjoint
+/// discs, each leaving a boundary loop (its link) and lowering χ by one.
+fn far_apart(mesh: &TriMesh, k: usize, seed: u64) -> BTreeSet<u32> {
+    let nb = neighbours(&mesh.faces);
+    let mut order: Vec<u32> = nb.keys().copied().collect();
+    let mut rng = ChaCha8Rng::seed_from_u64(seed);
+    for i in (1..order.len()).rev() {
+        order.swap(i, (rng.next_u64() % (i as u64 + 1)) as usize);
+    }
+    let (mut centres, mut taken) = (BTreeSet::new(), BTreeSet::new());
+    for v in order {
+        if centres.len() == k {
+            break;
+        }
+        let star: BTreeSet<u32> = nb[&v].iter().copied().chain([v]).collect();
+        if star.is_disjoint(&taken) {
+            taken.extend(star);
+            centres.insert(v);
+        }
+    }
+    assert_eq!(centres.len(), k, "{k} far-apart vertices");
+    centres
+}
+
+/// The manifold meshes with boundary of the repository (none: its two invalid meshes
+/// are not surfaces, which the library and the checker must agree on) and generated
+/// ones: the single-component generated closed surfaces of `closed_inputs` with 1 to 5
+/// disjoint vertex stars removed, each then a surface of the same orientability with χ
+/// lowered by the number of stars and one boundary loop per star.
+#[test]
+fn open_manifold_meshes_keep_their_boundary_loops() {
+    let (qualified, mut total) = open_manifold_meshes(&common::data_meshes());
+    assert!(qualified.is_empty(), "{qualified:?}");
+    assert_eq!(mesh_files(&common::data_meshes(), "invalid").len(), 2);
+    let mut opened = 0;
+    for (i, g) in crate::closed_inputs::closed_surfaces().iter().enumerate() {
+        let [surface] = g.surfaces[..] else {
+            continue; // the several-component mesh: its stars' components are unknown
+        };
+        let k = 1 + i % 5;
+        let mesh = without_stars(&g.mesh, &far_apart(&g.mesh, k, i as u64));
+        let name = format!("{} without {k} stars", g.name);
+        let (topo, t) = open_manifold_matrix(&mesh, &name)
+            .unwrap_or_else(|| panic!("{name}: not a surface with boundary"));
+        assert_eq!(
+            topo.components,
+            vec![ComponentType {
+                euler: surface.euler_characteristic() - k as i64,
+                orientable: surface.is_orientable(),
+                boundary_loops: k,
+            }],
+            "{name}"
+        );
+        total.add(&t);
+        opened += 1;
+    }
+    // Every generated mesh but the one of several components.
+    assert_eq!(opened, crate::closed_inputs::MESHES - 1);
+    eprintln!("open generated meshes: {total:?}");
 }
 
 // ---- Hand-made inputs.
@@ -990,4 +1107,36 @@ fn the_topology_checker_rejects_non_surfaces_and_tells_surfaces_apart() {
     two_t4.extend(t4.iter().map(|f| f.map(|v| if v == 0 { 0 } else { v + 3 })));
     assert!(surface_topology(&two_t4).is_err());
     assert!(surface_topology(&[[0, 1, 2], [0, 3, 4]]).is_err());
+}
+
+#[cfg(feature = "corpus")]
+mod corpus {
+    use super::*;
+
+    /// The closed corpus meshes, in three shards.
+    const SHARDS: usize = 3;
+
+    #[test]
+    fn shared_closed_meshes_shard_0() {
+        closed_meshes(&common::corpus_meshes(), 90, 0, SHARDS);
+    }
+
+    #[test]
+    fn shared_closed_meshes_shard_1() {
+        closed_meshes(&common::corpus_meshes(), 90, 1, SHARDS);
+    }
+
+    #[test]
+    fn shared_closed_meshes_shard_2() {
+        closed_meshes(&common::corpus_meshes(), 90, 2, SHARDS);
+    }
+
+    #[test]
+    fn shared_open_manifold_meshes_keep_their_boundary_loops() {
+        let (qualified, total) = open_manifold_meshes(&common::corpus_meshes());
+        // open_bunny_stanford (5 loops) and open_camelhead (1 loop); the others are
+        // non-manifold or have duplicate faces.
+        assert_eq!(qualified.len(), 2, "{qualified:?}");
+        eprintln!("open shared meshes {qualified:?}: {total:?}");
+    }
 }

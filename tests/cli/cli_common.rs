@@ -178,6 +178,17 @@ pub fn write_off_text(path: &Path, mesh: &TriMesh) {
     std::fs::write(path, s).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
 }
 
+/// The six squares of the unit cube's boundary over its corners `i` at
+/// `(i & 1, i >> 1 & 1, i >> 2 & 1)`, each oriented outward.
+pub const CUBE_QUADS: [[u32; 4]; 6] = [
+    [0, 2, 3, 1],
+    [4, 5, 7, 6],
+    [0, 1, 5, 4],
+    [2, 6, 7, 3],
+    [0, 4, 6, 2],
+    [1, 3, 7, 5],
+];
+
 /// The unit cube's boundary: 8 vertices at the corners of `[0, 1]³` (vertex `i` at
 /// `(i & 1, i >> 1 & 1, i >> 2 & 1)`), each square cut into two triangles, oriented
 /// outward (12 faces).
@@ -186,14 +197,7 @@ pub fn cube_mesh() -> TriMesh {
         .map(|i| [i & 1, (i >> 1) & 1, (i >> 2) & 1].map(f64::from))
         .collect();
     let mut faces = Vec::new();
-    for [a, b, c, d] in [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ] {
+    for [a, b, c, d] in CUBE_QUADS {
         faces.push([a, b, c]);
         faces.push([a, c, d]);
     }

@@ -264,14 +264,7 @@ fn cube_quads_obj() -> String {
     for i in 0..8 {
         writeln!(s, "v {} {} {}", i & 1, (i >> 1) & 1, (i >> 2) & 1).unwrap();
     }
-    for q in [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ] {
+    for q in crate::cli_common::CUBE_QUADS {
         writeln!(s, "f {} {} {} {}", q[0] + 1, q[1] + 1, q[2] + 1, q[3] + 1).unwrap();
     }
     s
