@@ -43,7 +43,8 @@ fn build(name: &str) -> Triangulation {
         let corpus = std::env::var("CONTRACTIBLE_CORPUS")
             .unwrap_or_else(|_| format!("{}/../shared", env!("CARGO_MANIFEST_DIR")));
         let path = format!("{corpus}/meshes/closed/{file}.off.gz");
-        let m = contractible::io::read_tri_mesh(path.as_ref()).unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"));
+        let m = contractible::io::read_tri_mesh(path.as_ref())
+            .unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"));
         subdivide(&m, levels)
     } else {
         let mut c = name.chars();

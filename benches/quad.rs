@@ -79,7 +79,8 @@ fn build(name: &str) -> Triangulation {
         let corpus = std::env::var("CONTRACTIBLE_CORPUS")
             .unwrap_or_else(|_| format!("{}/../shared", env!("CARGO_MANIFEST_DIR")));
         let path = format!("{corpus}/meshes/closed/{file}.off.gz");
-        contractible::io::read_tri_mesh(path.as_ref()).unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"))
+        contractible::io::read_tri_mesh(path.as_ref())
+            .unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"))
     } else {
         let mut c = name.chars();
         let group = c.next().expect("group letter");

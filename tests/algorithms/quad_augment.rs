@@ -403,7 +403,10 @@ fn long_augmenting_paths_are_found() {
 /// the counters: one search per augmentation rather than a few phases); its output is
 /// checked independently like every other completion.
 #[test]
-#[cfg_attr(debug_assertions, ignore = "bricks of up to 1M faces: runs in release builds")]
+#[cfg_attr(
+    debug_assertions,
+    ignore = "bricks of up to 1M faces: runs in release builds"
+)]
 fn sparse_ps_leftovers_are_completed_by_single_root_searches() {
     use contractible::gen::paper_family;
     use contractible::quad::{pulli_segal, Options};
