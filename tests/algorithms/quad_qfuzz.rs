@@ -374,11 +374,23 @@ fn octahedron_conversion(alg: Algorithm) -> (Triangulation, quad::Quadrangulatio
     (t, q)
 }
 
-fn rejects(t: &Triangulation, q: &quad::Quadrangulation, what: &str) {
+/// Asserts that the harness rejects `q` for the reason `because` (a substring of its
+/// panic message), not for an unrelated failure.
+fn rejects(t: &Triangulation, q: &quad::Quadrangulation, what: &str, because: &str) {
     let r = catch_unwind(AssertUnwindSafe(|| {
         harness::check_quadrangulation(t, q, what)
     }));
-    assert!(r.is_err(), "the harness accepted {what}");
+    let err = r
+        .err()
+        .unwrap_or_else(|| panic!("the harness accepted {what}"));
+    let msg = err
+        .downcast_ref::<String>()
+        .cloned()
+        .unwrap_or_else(|| "non-string panic".into());
+    assert!(
+        msg.contains(because),
+        "{what}: rejected for another reason: {msg}"
+    );
 }
 
 #[test]
@@ -389,7 +401,7 @@ fn the_harness_rejects_broken_conversions() {
         // A pair removed: not perfect.
         let mut b = q.clone();
         b.pairing.unpair(FaceId(0));
-        rejects(&t, &b, "a pairing with two faces unpaired");
+        rejects(&t, &b, "a pairing with two faces unpaired", "in 0 pairs");
         // An unreported flip in K.
         let mut b = q.clone();
         // An edge of the input too, so the flip cannot undo one of LRS's flips.
@@ -405,13 +417,18 @@ fn the_harness_rejects_broken_conversions() {
             b.stats.augmenting_paths = b.pairing.len();
             b.stats.initial_unpaired = b.tri.face_count();
             b.stats.initial_paired_percent = 0.0;
-            rejects(&t, &b, "K with an unreported flip");
+            rejects(&t, &b, "K with an unreported flip", "K differs in");
             flipped += 1;
         }
         // Counters that disagree.
         let mut b = q.clone();
         b.stats.augmenting_paths += 1;
-        rejects(&t, &b, "an augmenting path count off by one");
+        rejects(
+            &t,
+            &b,
+            "an augmenting path count off by one",
+            "each augmenting path pairs two faces",
+        );
     }
     assert_eq!(
         flipped,
