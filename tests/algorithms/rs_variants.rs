@@ -5,25 +5,29 @@
 //! (`debug_assertions` or the `invariants` feature). Where a variant's error also shows in
 //! its output, a twin test for builds without the checks asserts the wrong output.
 
-#[cfg(any(debug_assertions, feature = "invariants"))]
 use contractible::gen::{random, RandomParams, SurfaceKind};
 use contractible::irreducible::rs::{reduce_variant, Variant};
 use contractible::irreducible::Options;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-/// Runs `variant` on the random input for (`surface`, `seed`) and returns the panic
-/// message of the specification check that fired, if any.
-#[cfg(any(debug_assertions, feature = "invariants"))]
-fn failure(variant: Variant, surface: SurfaceKind, seed: u64) -> Option<String> {
+/// The random input the variants run on, for (`surface`, `seed`).
+fn input(surface: SurfaceKind, seed: u64) -> contractible::Triangulation {
     let g = match surface {
         SurfaceKind::Orientable(g) | SurfaceKind::NonOrientable(g) => g as usize,
     };
-    let t = random(&RandomParams {
+    random(&RandomParams {
         surface,
         min_faces: 200 + 100 * g,
         flip_percent: 40,
         seed,
-    });
+    })
+}
+
+/// Runs `variant` on the random input for (`surface`, `seed`) and returns the panic
+/// message of the specification check that fired, if any.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+fn failure(variant: Variant, surface: SurfaceKind, seed: u64) -> Option<String> {
+    let t = input(surface, seed);
     let res = catch_unwind(AssertUnwindSafe(|| {
         reduce_variant(t, &Options::default(), variant)
     }));
@@ -142,6 +146,45 @@ fn not_moving_an_incremented_edge_is_caught_by_proposition_10() {
         ..Variant::default()
     };
     assert_caught(v, SurfaceKind::Orientable(0), 2, "Proposition 10");
+}
+
+#[cfg(not(any(debug_assertions, feature = "invariants")))]
+/// Without the checks, the mutations whose effect reaches the output are caught by the
+/// naive link test: on these inputs the mutated algorithm returns a triangulation with a
+/// contractible edge, where the correct one returns an irreducible one. (The other
+/// mutations leave these outputs right, or stop with an out-of-bounds panic, and are
+/// caught by the checks only.)
+#[test]
+fn mutations_that_reach_the_output_leave_it_reducible() {
+    for (variant, surface, seed) in [
+        (
+            Variant {
+                count_link_vertices: true,
+                ..Variant::default()
+            },
+            SurfaceKind::Orientable(1),
+            0,
+        ),
+        (
+            Variant {
+                skip_degree3_decrement: true,
+                ..Variant::default()
+            },
+            SurfaceKind::Orientable(0),
+            2,
+        ),
+    ] {
+        let t = input(surface, seed);
+        let (ours, _) = reduce_variant(t.clone(), &Options::default(), Variant::default());
+        assert!(ours.tri.is_irreducible_naive());
+        let (theirs, _) = reduce_variant(t.clone(), &Options::default(), variant);
+        theirs.tri.validate().expect("still a triangulation");
+        assert_eq!(theirs.tri.euler_characteristic(), t.euler_characteristic());
+        assert!(
+            !theirs.tri.is_irreducible_naive(),
+            "{variant:?}: the output should keep a contractible edge"
+        );
+    }
 }
 
 /// Erratum E4 witness: a 16-vertex Klein bottle (found by a search over random small
