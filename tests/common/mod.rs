@@ -1,4 +1,4 @@
-//! Shared helpers for the integration tests: the repository's own test data
+//! Helpers common to the integration tests: the repository's own test data
 //! (`tests/data/`), the opt-in real-mesh corpus, list parsing and independent checkers.
 #![allow(dead_code)]
 
