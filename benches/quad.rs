@@ -116,7 +116,7 @@ fn initial_step(t: Triangulation, alg: Algorithm) -> (Triangulation, Pairing) {
 fn total(b: divan::Bencher, name: &str, alg: Algorithm) {
     let t = input(name);
     b.with_inputs(|| t.clone())
-        .bench_local_values(|t| quad::convert(t, alg, &OPTIONS));
+        .bench_local_values(|t| quad::convert(t, alg, &OPTIONS).expect("a closed triangulation"));
 }
 
 fn init(b: divan::Bencher, name: &str, alg: Algorithm) {
@@ -128,7 +128,7 @@ fn init(b: divan::Bencher, name: &str, alg: Algorithm) {
 fn completion(b: divan::Bencher, name: &str, alg: Algorithm) {
     let (t, p) = initial(name, alg);
     b.with_inputs(|| p.clone())
-        .bench_local_refs(|p| augment::complete(&t, p));
+        .bench_local_refs(|p| augment::complete(&t, p).expect("a closed triangulation"));
 }
 
 /// One bench per algorithm of the group (`$name => $alg`), all on [`inputs`].

@@ -77,8 +77,8 @@ fn run_json(tri: &Triangulation, alg: Algorithm, seed: u64, name: &str) -> Value
         ),
     };
     let mut full = initial.clone();
-    let work = quad::augment::complete(&k, &mut full);
-    let q = quad::convert(tri.clone(), alg, &opts);
+    let work = quad::augment::complete(&k, &mut full).expect("a closed triangulation");
+    let q = quad::convert(tri.clone(), alg, &opts).expect("a closed triangulation");
     let label = format!("{name} {} seed {seed}", alg.name());
     assert!(q.tri == k, "{label}: convert's K differs");
     assert_eq!(q.pairing, full, "{label}: convert's pairs differ");

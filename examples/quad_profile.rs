@@ -64,7 +64,7 @@ fn main() {
             let fp_initial = fingerprint_pairing(&p);
             let unpaired = k.face_count() - 2 * p.len();
             let (w1, c1) = (Instant::now(), cpu());
-            let work = augment::complete(&k, &mut p);
+            let work = augment::complete(&k, &mut p).expect("a closed triangulation");
             let (wd, cd) = (w1.elapsed().as_secs_f64(), cpu() - c1);
             assert!(p.is_perfect(&k), "perfect");
             println!(

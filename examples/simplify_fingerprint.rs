@@ -86,8 +86,8 @@ fn line(label: &str, mesh: &TriMesh, opts: &Options) -> String {
     let r = &s.remaining;
     format!(
         "{label} V={} F={} contracted={} discs={} inside={} passes={} remaining={}/{}/{}/{} shortest={:016x} hash={:016x}",
-        s.vertices_after,
-        s.faces_after,
+        s.vertices_out,
+        s.faces_out,
         s.edges_contracted,
         s.discs_removed,
         s.vertices_removed_inside,

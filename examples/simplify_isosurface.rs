@@ -21,7 +21,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let s = &out.stats;
     println!(
         "genus 2: {} → {} faces in {} passes, {} contractions, {} discs removed, {} short edges left",
-        s.faces_before, s.faces_after, s.passes, s.edges_contracted, s.discs_removed,
+        s.faces_in, s.faces_out, s.passes, s.edges_contracted, s.discs_removed,
         s.short_edges_remaining
     );
     // The surface is the same: rebuild the output and compare its type.

@@ -105,8 +105,8 @@ fn main() {
         f / t_all / 1e6,
         f / cpu_all / 1e6,
         s.passes,
-        s.vertices_after,
-        s.faces_after,
+        s.vertices_out,
+        s.faces_out,
         s.edges_contracted,
         s.discs_removed,
         s.remaining

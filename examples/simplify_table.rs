@@ -41,7 +41,7 @@ fn matching_eps(mesh: &TriMesh, diag: f64, target: usize) -> f64 {
     let (mut lo, mut hi) = (1e-5 * diag, 0.1 * diag);
     for _ in 0..30 {
         let mid = (lo * hi).sqrt();
-        if run(mesh, Mode::Nested, mid).stats.vertices_after > target {
+        if run(mesh, Mode::Nested, mid).stats.vertices_out > target {
             lo = mid;
         } else {
             hi = mid;
@@ -71,10 +71,10 @@ fn main() {
                     let t = median_time(&mesh, mode, eps);
                     println!(
                         "| {name} | {tess:?} | {label} | {mode:?} | {} | {} | {} | {} | {} | {} ({}) | {} / {} / {} | {} | {t:.3} |",
-                        s.vertices_before,
-                        s.faces_before,
-                        s.vertices_after,
-                        s.faces_after,
+                        s.vertices_in,
+                        s.faces_in,
+                        s.vertices_out,
+                        s.faces_out,
                         s.edges_contracted,
                         s.discs_removed,
                         s.vertices_removed_inside,

@@ -175,7 +175,7 @@ pub fn contract_then_split_is_identity(t: &Triangulation, e: usize, direction: b
     let (a, b) = nth_edge(t, e);
     let (u, v) = if direction { (b, a) } else { (a, b) };
     let before = t.clone();
-    let faces_before = face_set(t);
+    let faces_in = face_set(t);
     let contractible = t.link_condition_naive(u, v);
     let mut work = t.clone();
     let mut history = History::new();
@@ -209,7 +209,7 @@ pub fn contract_then_split_is_identity(t: &Triangulation, e: usize, direction: b
             assert_eq!(work.face_count() + 2, t.face_count());
             assert_eq!(work.euler_characteristic(), t.euler_characteristic());
             assert_eq!(work.is_orientable(), t.is_orientable());
-            assert_eq!(face_set(&work), renamed(&faces_before, v, u), "face set");
+            assert_eq!(face_set(&work), renamed(&faces_in, v, u), "face set");
             assert_eq!(work.degree(u), t.degree(u) + t.degree(v) - 4);
             assert_eq!(work.degree(x) + 1, t.degree(x));
             assert_eq!(work.degree(y) + 1, t.degree(y));
@@ -228,7 +228,7 @@ pub fn contract_then_split_is_identity(t: &Triangulation, e: usize, direction: b
                     "split edge fails the link condition"
                 );
                 // w is new, so no face holds both v and w: a pure renaming.
-                if face_set(&s) == renamed(&faces_before, v, w) {
+                if face_set(&s) == renamed(&faces_in, v, w) {
                     inverted += 1;
                 }
             }

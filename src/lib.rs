@@ -12,11 +12,13 @@ pub mod gen;
 pub mod io;
 pub mod irreducible;
 pub mod mesh;
+pub mod names;
 pub mod progress;
 pub mod quad;
 pub mod rng;
 pub mod simplify;
 pub mod spec;
+pub mod task;
 pub mod topology;
 
 pub use crate::core::{
@@ -25,4 +27,9 @@ pub use crate::core::{
     SplitError, Surfaces, Triangulation, UndoError, ValidationError, VertexId,
 };
 pub use mesh::{Mesh, QuadMesh, TriMesh};
+pub use names::UnknownName;
+pub use task::{
+    describe, quadrangulate, reduce, simplify, Description, Eps, Error, Monitor, QuadOptions,
+    QuadResult, ReduceOptions, ReduceResult, SimplifyOptions, SimplifyResult,
+};
 pub use topology::SurfaceType;

@@ -291,9 +291,12 @@ impl TriMesh {
     /// has a length other than `vertex_count`. O(vertex_count + F).
     pub fn reassemble<'a>(
         vertex_count: usize,
-        positions: Option<Vec<[f64; 3]>>,
+        positions: Option<&[[f64; 3]]>,
         parts: impl IntoIterator<Item = (&'a Triangulation, &'a [u32])>,
     ) -> Option<TriMesh> {
+        if positions.is_some_and(|p| p.len() != vertex_count) {
+            return None;
+        }
         let mut faces = Vec::new();
         for (t, origin) in parts {
             for f in t.faces() {
@@ -305,12 +308,34 @@ impl TriMesh {
                 ]);
             }
         }
-        let full = TriMesh {
-            vertex_count,
-            positions,
+        // Compacted as `Mesh::compacted` does, copying only the kept positions (the
+        // source's may be large).
+        const UNUSED: u32 = u32::MAX;
+        let mut new_id = vec![UNUSED; vertex_count];
+        for f in &faces {
+            for &v in f {
+                *new_id.get_mut(v as usize)? = 0;
+            }
+        }
+        let mut kept = 0u32;
+        let mut out = positions.map(|_| Vec::new());
+        for (v, id) in new_id.iter_mut().enumerate() {
+            if *id != UNUSED {
+                *id = kept;
+                kept += 1;
+                if let (Some(out), Some(p)) = (&mut out, positions) {
+                    out.push(p[v]);
+                }
+            }
+        }
+        for f in &mut faces {
+            *f = f.map(|v| new_id[v as usize]);
+        }
+        Some(TriMesh {
+            vertex_count: kept as usize,
+            positions: out,
             faces,
-        };
-        full.compacted().map(|(m, _)| m)
+        })
     }
 }
 
@@ -591,7 +616,7 @@ mod tests {
         let s = Surfaces::from_mesh(&mesh).expect("two spheres");
         let parts = || s.components.iter().map(|c| (&c.tri, &c.vertex_origin[..]));
         // Nothing reduced: the mesh minus its unused vertex.
-        let whole = TriMesh::reassemble(9, mesh.positions.clone(), parts()).expect("ok");
+        let whole = TriMesh::reassemble(9, mesh.positions.as_deref(), parts()).expect("ok");
         let (compact, dropped) = mesh.compacted().expect("ok");
         assert_eq!(dropped, 1);
         let mut got = whole.faces.clone();
@@ -610,7 +635,7 @@ mod tests {
             &crate::irreducible::Options::default(),
         );
         let origin: Vec<u32> = (0..6).collect();
-        let out = TriMesh::reassemble(6, Some(p.clone()), [(&r.tri, &origin[..])]).expect("ok");
+        let out = TriMesh::reassemble(6, Some(&p[..]), [(&r.tri, &origin[..])]).expect("ok");
         assert_eq!(out.vertex_count, 4);
         let survivors: Vec<[f64; 3]> = r.tri.vertices().map(|v| p[v.index()]).collect();
         assert_eq!(out.positions, Some(survivors));

@@ -608,7 +608,7 @@ pub fn check_quad_algorithm(
 ) -> contractible::quad::Quadrangulation {
     use contractible::quad::{convert, Algorithm as QAlg, Options as QOptions};
     let label = format!("{}(seed {seed})", alg.name());
-    let q = convert(tri.clone(), alg, &QOptions { seed });
+    let q = convert(tri.clone(), alg, &QOptions { seed }).expect("a closed triangulation");
     check_quadrangulation(tri, &q, &label);
     if alg == QAlg::Lrs {
         assert_eq!(
@@ -1275,17 +1275,14 @@ pub fn check_simplify_with(
         "{label}: an unused output vertex"
     );
     // Statistics against the meshes.
-    assert_eq!(s.faces_before, mesh.faces.len(), "{label}: faces_before");
-    assert_eq!(
-        s.vertices_before, before.vertices,
-        "{label}: vertices_before"
-    );
-    assert_eq!(s.faces_after, m.faces.len(), "{label}: faces_after");
-    assert_eq!(s.vertices_after, m.vertex_count, "{label}: vertices_after");
+    assert_eq!(s.faces_in, mesh.faces.len(), "{label}: faces_in");
+    assert_eq!(s.vertices_in, before.vertices, "{label}: vertices_in");
+    assert_eq!(s.faces_out, m.faces.len(), "{label}: faces_out");
+    assert_eq!(s.vertices_out, m.vertex_count, "{label}: vertices_out");
     assert_eq!(s.components, before.components.len(), "{label}: components");
     assert_eq!(s.boundary_loops, before.loops(), "{label}: boundary_loops");
     assert_eq!(
-        s.vertices_before - s.vertices_after,
+        s.vertices_in - s.vertices_out,
         s.edges_contracted + s.vertices_removed_inside,
         "{label}: one vertex per contraction and per vertex removed inside a disc"
     );
@@ -1293,7 +1290,7 @@ pub fn check_simplify_with(
     // loop loses that edge); a disc of 2I + 1 faces becomes one face.
     let lost_boundary = before.boundary_edges - after.boundary_edges;
     assert_eq!(
-        s.faces_before - s.faces_after,
+        s.faces_in - s.faces_out,
         2 * s.edges_contracted - lost_boundary + 2 * s.vertices_removed_inside,
         "{label}: faces removed"
     );

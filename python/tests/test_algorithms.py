@@ -274,7 +274,7 @@ def test_simplify_keeps_the_surface(name, mode, mesh_file):
     assert surface_signature(s.faces) == surface_signature(F)
     assert is_closed_manifold_faces(s.faces)
     assert s.vertices.shape == (len(np.unique(s.faces)), 3)
-    assert s.stats["faces_after"] == len(s.faces) < len(F)
+    assert s.stats["faces_out"] == len(s.faces) < len(F)
     assert s.stats["eps_rel"] == 0.02
 
 
@@ -297,7 +297,7 @@ def test_simplify_equals_the_cli(name, cli, tmp_path, mesh_file):
     V2, F2 = c.read(out)
     assert np.array_equal(s.faces, F2)
     assert np.allclose(s.vertices, V2, rtol=0, atol=1e-9 * np.abs(V).max())
-    for k in ["eps", "edges_contracted", "discs_removed", "faces_after", "vertices_after",
+    for k in ["eps", "edges_contracted", "discs_removed", "faces_out", "vertices_out",
               "passes", "short_edges_remaining"]:
         assert s.stats[k] == pytest.approx(theirs[k]), k
 

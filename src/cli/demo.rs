@@ -141,8 +141,8 @@ fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface
             outln!(
                 "  {:<9} {:>7} {:>7} {:>10} {:>6} {:>7} {:>7} {:>6} {:>9.4}{}",
                 mode_name(mode),
-                s.vertices_after,
-                s.faces_after,
+                s.vertices_out,
+                s.faces_out,
                 s.edges_contracted,
                 s.discs_removed,
                 s.vertices_removed_inside,

@@ -381,10 +381,10 @@ fn print_human(r: &SimplifyReport) {
         |n: usize, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
     outln!(
         "  vertices {} -> {}, faces {} -> {}; {}, {} (kept, checked independently)",
-        s.vertices_before,
-        s.vertices_after,
-        s.faces_before,
-        s.faces_after,
+        s.vertices_in,
+        s.vertices_out,
+        s.faces_in,
+        s.faces_out,
         plural(s.components, "component", "components"),
         plural(s.boundary_loops, "boundary loop", "boundary loops")
     );

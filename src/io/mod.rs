@@ -290,24 +290,59 @@ pub fn check_mesh<const N: usize>(mesh: &Mesh<N>) -> Result<(), WriteError> {
 /// `.stl`, case-insensitive), a trailing `.gz` gzip-compresses, PLY and STL are binary
 /// little-endian (STL: triangles with positions only, coordinates rounded to `f32`).
 ///
-/// Guarantees: the mesh is checked ([`check_mesh`]) before the file is created; positions
-/// are written with full `f64` precision (they read back bit-exactly); a mesh without
-/// positions is written with `0 0 0` for every vertex.
+/// Guarantees: the mesh is checked ([`check_mesh`]) and the format chosen before
+/// anything is created; the content goes to a temporary file in the same directory
+/// (`.contractible-<pid>-<name>`), renamed over `path` only when complete, so an error
+/// never leaves a partial, empty or temporary file behind and a reader never sees one;
+/// positions are written with full `f64` precision (they read back bit-exactly); a mesh
+/// without positions is written with `0 0 0` for every vertex.
 pub fn write_mesh<const N: usize>(path: &Path, mesh: &Mesh<N>) -> Result<(), WriteError> {
     let (format, gz) = Format::from_path(path);
     let format = format.ok_or_else(|| WriteError::UnknownFormat(path.to_path_buf()))?;
-    check_mesh(mesh)?;
-    let file = BufWriter::with_capacity(1 << 16, File::create(path)?);
-    if gz {
-        let mut enc = flate2::write::GzEncoder::new(file, flate2::Compression::default());
-        write_mesh_to(&mut enc, mesh, format, true)?;
-        enc.finish()?.flush()?;
-    } else {
-        let mut file = file;
-        write_mesh_to(&mut file, mesh, format, true)?;
-        file.flush()?;
+    if format == Format::Stl {
+        if let Some(reason) = stl::unrepresentable(mesh) {
+            return Err(WriteError::Unrepresentable {
+                format: "STL",
+                reason,
+            });
+        }
     }
-    Ok(())
+    check_mesh(mesh)?;
+    let tmp = temp_path(path);
+    let r = (|| -> Result<(), WriteError> {
+        let file = BufWriter::with_capacity(1 << 16, File::create(&tmp)?);
+        if gz {
+            let mut enc = flate2::write::GzEncoder::new(file, flate2::Compression::default());
+            write_mesh_to(&mut enc, mesh, format, true)?;
+            enc.finish()?.flush()?;
+        } else {
+            let mut file = file;
+            write_mesh_to(&mut file, mesh, format, true)?;
+            file.flush()?;
+        }
+        std::fs::rename(&tmp, path)?;
+        Ok(())
+    })();
+    if r.is_err() {
+        // Nothing to report if it is already gone.
+        let _ = std::fs::remove_file(&tmp);
+    }
+    r
+}
+
+/// A temporary path beside `out` that keeps its file name (hence its extension):
+/// `.contractible-<pid>-<name>` in the same directory, so the final rename stays on one
+/// file system.
+pub fn temp_path(out: &Path) -> std::path::PathBuf {
+    let name = out
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let tmp = format!(".contractible-{}-{name}", std::process::id());
+    match out.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.join(tmp),
+        _ => std::path::PathBuf::from(tmp),
+    }
 }
 
 /// Writes a mesh in `format` (PLY binary little-endian when `ply_binary`, else ascii;

@@ -405,7 +405,7 @@ fn parse_ascii(bytes: &[u8]) -> Result<TriMesh, ReadError> {
 }
 
 /// What makes `mesh` impossible to write as STL, if anything (checked before writing).
-fn unrepresentable<const N: usize>(mesh: &Mesh<N>) -> Option<String> {
+pub(crate) fn unrepresentable<const N: usize>(mesh: &Mesh<N>) -> Option<String> {
     if N != 3 {
         return Some(format!(
             "STL holds triangles only, this mesh has {N}-corner faces"

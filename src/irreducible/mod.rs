@@ -20,11 +20,10 @@ pub mod rs;
 pub mod schipper;
 
 /// Which algorithm to run.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Algorithm {
-    /// Ramaswami–Siqueira.
+    /// Ramaswami–Siqueira (the default).
+    #[default]
     Rs,
     /// Schipper.
     Schipper,
@@ -33,7 +32,11 @@ pub enum Algorithm {
 }
 
 impl Algorithm {
-    /// The short name used on the command line and in JSON (`rs`, `schipper`, `brute`).
+    /// Every algorithm, in the order the documentation lists them.
+    pub const ALL: [Algorithm; 3] = [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute];
+
+    /// The short name used on the command line, in Python and in JSON (`rs`, `schipper`,
+    /// `brute`; `Display` writes it, `FromStr` reads it).
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Rs => "rs",
@@ -42,6 +45,8 @@ impl Algorithm {
         }
     }
 }
+
+crate::names::named_choice!(Algorithm, "reduction algorithm");
 
 /// Counters and timings of one reduction (the quantities of the RS paper's Tables 6–11).
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -145,13 +145,20 @@ pub struct Completion {
 /// documentation for the algorithm, its determinism and complexity). Existing pairs may
 /// be re-paired. Returns the counters.
 ///
-/// # Panics
-/// If `pairing` is not a pairing of `tri` (what [`Pairing::check`] verifies; checked
-/// first, by one read-only pass in O(F)): completing it would otherwise read
-/// faces that are not there. If `tri.face_capacity() >= 2^30`.
-pub fn complete(tri: &Triangulation, pairing: &mut Pairing) -> Completion {
-    run(tri, pairing, &mut progress::ignore).0
+/// # Errors
+/// [`NotAPairing`] (and `pairing` unchanged) if `pairing` is not a pairing of `tri`
+/// (what [`Pairing::check`] verifies; checked first, by one read-only pass in O(F)):
+/// completing it would otherwise read faces that are not there; or if
+/// `tri.face_capacity() >= 2^30`.
+pub fn complete(tri: &Triangulation, pairing: &mut Pairing) -> Result<Completion, NotAPairing> {
+    run(tri, pairing, &mut progress::ignore).map(|(c, _)| c)
 }
+
+/// Why [`complete`] refused a pairing: it is not a pairing of the triangulation (the
+/// message says which pair is wrong), or the triangulation is too large for the search.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("augment::complete: {0}")]
+pub struct NotAPairing(pub String);
 
 /// [`complete`], reporting the faces paired out of all faces (stage "faces paired") to
 /// `observer` when it starts, after the linear pass and after every phase. Same result
@@ -160,8 +167,8 @@ pub fn complete_observed(
     tri: &Triangulation,
     pairing: &mut Pairing,
     observer: &mut dyn FnMut(Progress),
-) -> Completion {
-    run(tri, pairing, observer).0
+) -> Result<Completion, NotAPairing> {
+    run(tri, pairing, observer).map(|(c, _)| c)
 }
 
 /// [`complete_observed`], also returning the number of blossoms shrunk (for tests).
@@ -169,11 +176,8 @@ pub(crate) fn run(
     tri: &Triangulation,
     pairing: &mut Pairing,
     observer: &mut dyn FnMut(Progress),
-) -> (Completion, u64) {
-    let roots = match check_and_roots(tri, pairing) {
-        Ok(r) => r,
-        Err(e) => panic!("augment::complete: {e}"),
-    };
+) -> Result<(Completion, u64), NotAPairing> {
+    let roots = check_and_roots(tri, pairing).map_err(NotAPairing)?;
     let faces = tri.face_count() as u64;
     let mut report = |unpaired: usize| {
         observer(Progress::new(
@@ -184,7 +188,7 @@ pub(crate) fn run(
     };
     report(roots.len());
     if roots.is_empty() {
-        return (Completion::default(), 0);
+        return Ok((Completion::default(), 0));
     }
     let mut search = Search::new(tri, &mut pairing.mate);
     let mut roots = search.linear_pass(roots);
@@ -211,7 +215,7 @@ pub(crate) fn run(
     let (counters, blossoms) = (search.counters, search.blossoms);
     pairing.pairs += counters.augmenting_paths;
     debug_assert!(pairing.check(tri).is_ok());
-    (counters, blossoms)
+    Ok((counters, blossoms))
 }
 
 /// Checks that `pairing` is a pairing of `tri` (what [`Pairing::check`] checks, reading
@@ -581,7 +585,7 @@ mod tests {
         for m in [tetrahedron(), octahedron(), icosahedron()] {
             let t = tri(&m);
             let mut p = Pairing::new(t.face_capacity());
-            let c = complete(&t, &mut p);
+            let c = complete(&t, &mut p).expect("a pairing of the triangulation");
             assert!(p.is_perfect(&t));
             assert_eq!(p.check(&t), Ok(()));
             assert_eq!(c.augmenting_paths, t.face_count() / 2);
@@ -592,9 +596,9 @@ mod tests {
     fn a_completed_pairing_is_left_alone() {
         let t = tri(&icosahedron());
         let mut p = Pairing::new(t.face_capacity());
-        complete(&t, &mut p);
+        complete(&t, &mut p).expect("a pairing of the triangulation");
         let before = p.clone();
-        let c = complete(&t, &mut p);
+        let c = complete(&t, &mut p).expect("a pairing of the triangulation");
         assert_eq!(p, before);
         assert_eq!(c, Completion::default());
     }
@@ -610,18 +614,17 @@ mod tests {
             .expect("the octahedron has faces not adjacent to face 0");
         let mut p = Pairing::new(t.face_capacity());
         p.pair(f, far);
-        complete(&t, &mut p);
+        complete(&t, &mut p).expect("a pairing of the triangulation");
     }
 
     #[test]
-    #[should_panic(expected = "not a pairing")]
     fn a_pairing_too_small_for_the_triangulation_is_refused() {
         let t = tri(&octahedron());
-        complete(&t, &mut Pairing::new(t.face_capacity() - 1));
+        let e = complete(&t, &mut Pairing::new(t.face_capacity() - 1)).unwrap_err();
+        assert!(e.to_string().contains("not a pairing"), "{e}");
     }
 
     #[test]
-    #[should_panic(expected = "not a pairing")]
     fn a_pair_of_removed_faces_is_refused() {
         let t = random(&RandomParams {
             surface: SurfaceKind::Orientable(1),
@@ -639,7 +642,10 @@ mod tests {
         };
         let mut p = Pairing::new(t.face_capacity());
         p.pair(a, b);
-        complete(&t, &mut p);
+        let before = p.clone();
+        let e = complete(&t, &mut p).unwrap_err();
+        assert!(e.to_string().contains("not a pairing"), "{e}");
+        assert_eq!(p, before, "a refused pairing is left as it was");
     }
 
     /// Every perfect matching `m` of `t` (as mate arrays), by exhaustive search.
@@ -773,7 +779,8 @@ mod tests {
                             }
                         }
                         assert_eq!(p.check(t), Ok(()));
-                        let (c, blossoms) = run(t, &mut p, &mut progress::ignore);
+                        let (c, blossoms) =
+                            run(t, &mut p, &mut progress::ignore).expect("a pairing");
                         assert!(p.is_perfect(t) && p.check(t).is_ok());
                         assert_eq!(c.augmenting_paths, 1);
                         assert!(blossoms > 0, "a path was found without a blossom");
@@ -802,7 +809,7 @@ mod tests {
         // `b`, re-pair `b` with a neighbour `c` and free `a` and `c`'s former mate `d`
         // (so the two free faces of each change are not neighbours).
         let mut p = Pairing::new(t.face_capacity());
-        complete(&t, &mut p);
+        complete(&t, &mut p).expect("a pairing of the triangulation");
         let mut mate: Vec<u32> = (0..t.face_capacity() as u32)
             .map(|f| p.mate(FaceId(f)).map_or(NONE, |g| g.0))
             .collect();
@@ -879,7 +886,7 @@ mod tests {
                 seed: 7 + k as u64,
             });
             let mut p = Pairing::new(t.face_capacity());
-            let (c, _) = run(&t, &mut p, &mut progress::ignore);
+            let (c, _) = run(&t, &mut p, &mut progress::ignore).expect("a pairing");
             assert!(p.is_perfect(&t) && p.check(&t).is_ok());
             assert_eq!(c.augmenting_paths, t.face_count() / 2);
         }

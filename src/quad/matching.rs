@@ -47,7 +47,7 @@ mod tests {
         assert!(p.is_empty());
         assert_eq!(p.face_capacity(), t.face_capacity());
         assert_eq!(p.unpaired(&t).count(), t.face_count());
-        let c = complete(&t, &mut p);
+        let c = complete(&t, &mut p).expect("a pairing of the triangulation");
         assert!(p.is_perfect(&t));
         assert_eq!(p.check(&t), Ok(()));
         assert_eq!(c.augmenting_paths, t.face_count() / 2);

@@ -27,11 +27,10 @@ pub mod matching;
 pub mod pulli_segal;
 
 /// Which algorithm to run.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-#[cfg_attr(feature = "serde", serde(rename_all = "lowercase"))]
+#[derive(Copy, Clone, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Algorithm {
-    /// The paper's contraction/expansion algorithm ([`lrs`]).
+    /// The paper's contraction/expansion algorithm ([`lrs`]; the default).
+    #[default]
     Lrs,
     /// Pulli–Segal greedy ([`pulli_segal`]).
     Ps,
@@ -58,7 +57,21 @@ pub enum Algorithm {
 }
 
 impl Algorithm {
-    /// The short name used on the command line and in JSON.
+    /// Every algorithm, in the order the documentation lists them.
+    pub const ALL: [Algorithm; 8] = [
+        Algorithm::Lrs,
+        Algorithm::Ps,
+        Algorithm::Sg,
+        Algorithm::Matching,
+        Algorithm::Ds,
+        Algorithm::Bbdl,
+        Algorithm::FrinkLct,
+        Algorithm::DsNaive,
+    ];
+
+    /// The short name used on the command line, in Python and in JSON (the one list of
+    /// names: [`Display`](std::fmt::Display) writes it, [`FromStr`](std::str::FromStr)
+    /// reads it).
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Lrs => "lrs",
@@ -71,13 +84,59 @@ impl Algorithm {
             Algorithm::Bbdl => "bbdl",
         }
     }
+
+    /// Whether the initial step pairs every face itself (Frink's reduction), so that no
+    /// completion runs.
+    pub fn is_perfect_directly(self) -> bool {
+        matches!(
+            self,
+            Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds | Algorithm::Bbdl
+        )
+    }
 }
 
-/// The largest component the command line and the Python package run
-/// [`Algorithm::DsNaive`] on: its naive strategy is O(F²) (about a minute at this size on
-/// the reference machine), so larger inputs are refused with a pointer to
-/// [`Algorithm::FrinkLct`]. The library itself runs any size.
+crate::names::named_choice!(Algorithm, "tri-quad algorithm");
+
+/// The largest component [`crate::quadrangulate`] (and so the command line and the
+/// Python package) runs [`Algorithm::DsNaive`] on: its naive strategy is O(F²) (about a
+/// minute at this size on the reference machine), so larger inputs are refused with a
+/// pointer to [`Algorithm::FrinkLct`]. [`convert`] itself runs any size.
 pub const DS_NAIVE_MAX_FACES: usize = 100_000;
+
+/// Why [`convert`] produced no quadrangulation. On a valid closed triangulation only
+/// [`ConvertError::TooLarge`] can happen; the other variants mean the input broke the
+/// triangulation's invariants.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ConvertError {
+    /// The dual graph has more nodes than the chosen Frink strategy's structures hold
+    /// ([`frink::Strategy::max_nodes`]).
+    #[error("{algorithm}: {faces} faces are more than its structures hold (at most {limit})")]
+    TooLarge {
+        /// The algorithm.
+        algorithm: Algorithm,
+        /// The faces of the input.
+        faces: usize,
+        /// The most faces the algorithm's structures hold.
+        limit: usize,
+    },
+    /// Frink's reduction failed on the dual graph.
+    #[error("{algorithm}: {source}")]
+    Frink {
+        /// The algorithm.
+        algorithm: Algorithm,
+        /// What failed.
+        source: frink::FrinkError,
+    },
+    /// The completion refused the initial pairing.
+    #[error("{algorithm}: {source}")]
+    Completion {
+        /// The algorithm.
+        algorithm: Algorithm,
+        /// What failed.
+        source: augment::NotAPairing,
+    },
+}
 
 /// Options shared by the algorithms.
 #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
@@ -130,9 +189,10 @@ pub struct Quadrangulation {
 }
 
 impl Quadrangulation {
-    /// The quad mesh over `tri`'s vertex ids ([`quad_mesh`]).
-    pub fn quad_mesh(&self) -> QuadMesh {
-        quad_mesh(&self.tri, &self.pairing).expect("the pairing of a Quadrangulation is perfect")
+    /// The quad mesh over `tri`'s vertex ids ([`quad_mesh`]); `None` only if the
+    /// fields were changed so that the pairing is no longer a perfect pairing of `tri`.
+    pub fn quad_mesh(&self) -> Option<QuadMesh> {
+        quad_mesh(&self.tri, &self.pairing)
     }
 }
 
@@ -162,7 +222,16 @@ pub fn initial_stats(tri: &Triangulation, initial: &Pairing, seconds: f64) -> St
 ///
 /// Deterministic: the result (all but the timings) is a function of the input (ids and
 /// corner slots included), the algorithm and `options.seed`.
-pub fn convert(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Quadrangulation {
+///
+/// # Errors
+/// [`ConvertError::TooLarge`] for [`Algorithm::Ds`] and [`Algorithm::Bbdl`] above their
+/// structures' node limits; the other errors only on a triangulation that broke its
+/// invariants.
+pub fn convert(
+    tri: Triangulation,
+    algorithm: Algorithm,
+    options: &Options,
+) -> Result<Quadrangulation, ConvertError> {
     convert_observed(tri, algorithm, options, &mut crate::progress::ignore)
 }
 
@@ -178,7 +247,7 @@ pub fn convert_observed(
     algorithm: Algorithm,
     options: &Options,
     observer: &mut dyn FnMut(crate::progress::Progress),
-) -> Quadrangulation {
+) -> Result<Quadrangulation, ConvertError> {
     use crate::progress::Progress;
     let faces = tri.face_count() as u64;
     observer(Progress::new(INITIAL, 0, faces));
@@ -187,37 +256,35 @@ pub fn convert_observed(
         tri,
         pairing,
         flips,
-    } = initial_pairing(tri, algorithm, options);
-    if matches!(
-        algorithm,
-        Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds | Algorithm::Bbdl
-    ) {
+    } = initial_pairing(tri, algorithm, options)?;
+    if algorithm.is_perfect_directly() {
         // Perfect by Frink's construction: (c) = 0 and no completion, (d) = 0.
         let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
         stats.total_seconds = stats.initial_seconds;
-        return Quadrangulation {
+        return Ok(Quadrangulation {
             algorithm,
             tri,
             pairing,
             stats,
-        };
+        });
     }
     let mut stats = initial_stats(&tri, &pairing, started.elapsed().as_secs_f64());
     observer(Progress::new(INITIAL, 2 * pairing.len() as u64, faces));
     stats.flips = flips;
     let mut pairing = pairing;
     let completion_started = Instant::now();
-    let work = augment::complete_observed(&tri, &mut pairing, observer);
+    let work = augment::complete_observed(&tri, &mut pairing, observer)
+        .map_err(|source| ConvertError::Completion { algorithm, source })?;
     stats.completion_seconds = completion_started.elapsed().as_secs_f64();
     stats.total_seconds = stats.initial_seconds + stats.completion_seconds;
     stats.augmenting_paths = work.augmenting_paths;
     stats.phases = work.phases;
-    Quadrangulation {
+    Ok(Quadrangulation {
         algorithm,
         tri,
         pairing,
         stats,
-    }
+    })
 }
 
 /// The result of an algorithm's initial pairing step (before any completion).
@@ -232,8 +299,23 @@ pub struct Initial {
 }
 
 /// The initial pairing step of `algorithm` alone (what [`convert`] times as (a)), for
-/// callers that time or complete it themselves (benchmarks, profiles).
-pub fn initial_pairing(tri: Triangulation, algorithm: Algorithm, options: &Options) -> Initial {
+/// callers that time or complete it themselves (benchmarks, profiles). Errors as
+/// [`convert`]'s.
+pub fn initial_pairing(
+    tri: Triangulation,
+    algorithm: Algorithm,
+    options: &Options,
+) -> Result<Initial, ConvertError> {
+    use frink::Strategy as _;
+    let faces = tri.face_count();
+    let frink_error = |source: frink::FrinkError, limit: usize| match source {
+        frink::FrinkError::TooLarge(_) => ConvertError::TooLarge {
+            algorithm,
+            faces,
+            limit,
+        },
+        source => ConvertError::Frink { algorithm, source },
+    };
     let (tri, pairing, flips) = match algorithm {
         Algorithm::Lrs => {
             let e = lrs::initial_pairing(tri);
@@ -252,27 +334,39 @@ pub fn initial_pairing(tri: Triangulation, algorithm: Algorithm, options: &Optio
             (tri, p, 0)
         }
         Algorithm::DsNaive => {
-            let p = frink::perfect_matching(&tri);
+            let mut s = frink::Naive::new();
+            let limit = s.max_nodes();
+            let (p, _) =
+                frink::perfect_matching_with(&tri, &mut s).map_err(|e| frink_error(e, limit))?;
             (tri, p, 0)
         }
         Algorithm::FrinkLct => {
-            let p = frink::perfect_matching_with(&tri, &mut frink::CoverTree::new()).0;
+            let mut s = frink::CoverTree::new();
+            let limit = s.max_nodes();
+            let (p, _) =
+                frink::perfect_matching_with(&tri, &mut s).map_err(|e| frink_error(e, limit))?;
             (tri, p, 0)
         }
         Algorithm::Ds => {
-            let p = frink::perfect_matching_with(&tri, &mut frink::DiksStanczyk::new()).0;
+            let mut s = frink::DiksStanczyk::new();
+            let limit = s.max_nodes();
+            let (p, _) =
+                frink::perfect_matching_with(&tri, &mut s).map_err(|e| frink_error(e, limit))?;
             (tri, p, 0)
         }
         Algorithm::Bbdl => {
-            let p = frink::perfect_matching_with(&tri, &mut frink::BiedlBoseDemaineLubiw::new()).0;
+            let mut s = frink::BiedlBoseDemaineLubiw::new();
+            let limit = s.max_nodes();
+            let (p, _) =
+                frink::perfect_matching_with(&tri, &mut s).map_err(|e| frink_error(e, limit))?;
             (tri, p, 0)
         }
     };
-    Initial {
+    Ok(Initial {
         tri,
         pairing,
         flips,
-    }
+    })
 }
 
 /// No mate.

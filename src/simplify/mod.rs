@@ -62,6 +62,21 @@ pub enum Mode {
     Nested,
 }
 
+impl Mode {
+    /// Every mode.
+    pub const ALL: [Mode; 2] = [Mode::Nested, Mode::Naive];
+
+    /// The name used on the command line, in Python and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mode::Naive => "naive",
+            Mode::Nested => "nested",
+        }
+    }
+}
+
+crate::names::named_choice!(Mode, "simplification mode");
+
 /// How the nested mode splits the 3-cycles through an edge between its two sides (the
 /// paper's heuristics; every choice is checked, only the amount removed differs).
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
@@ -77,6 +92,22 @@ pub enum Side {
     Euclidean,
 }
 
+impl Side {
+    /// Every heuristic.
+    pub const ALL: [Side; 3] = [Side::Count, Side::Path, Side::Euclidean];
+
+    /// The name used on the command line, in Python and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Side::Count => "count",
+            Side::Path => "path",
+            Side::Euclidean => "euclidean",
+        }
+    }
+}
+
+crate::names::named_choice!(Side, "side heuristic");
+
 /// Where the vertex that replaces a contracted edge goes.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]
 pub enum Position {
@@ -90,6 +121,21 @@ pub enum Position {
     /// edges); the best of the endpoints and the midpoint when it is ill-conditioned.
     Quadric,
 }
+
+impl Position {
+    /// Every placement.
+    pub const ALL: [Position; 2] = [Position::Midpoint, Position::Quadric];
+
+    /// The name used on the command line, in Python and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Position::Midpoint => "midpoint",
+            Position::Quadric => "quadric",
+        }
+    }
+}
+
+crate::names::named_choice!(Position, "vertex placement");
 
 /// Options of [`simplify`].
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -159,13 +205,13 @@ impl SkipCounts {
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Stats {
     /// Vertices of the input that faces use.
-    pub vertices_before: usize,
+    pub vertices_in: usize,
     /// Faces of the input.
-    pub faces_before: usize,
+    pub faces_in: usize,
     /// Vertices of the output.
-    pub vertices_after: usize,
+    pub vertices_out: usize,
     /// Faces of the output.
-    pub faces_after: usize,
+    pub faces_out: usize,
     /// Connected components (each simplified on its own).
     pub components: usize,
     /// Boundary loops (the same before and after).
@@ -355,12 +401,12 @@ pub fn simplify_surfaces_observed(
         }
     }
     let mut stats = Stats {
-        faces_before: surfaces
+        faces_in: surfaces
             .components
             .iter()
             .map(|c| c.real_face_count())
             .sum(),
-        vertices_before: surfaces
+        vertices_in: surfaces
             .components
             .iter()
             .map(|c| c.real_vertex_count())
@@ -400,8 +446,8 @@ pub fn simplify_surfaces_observed(
         out_positions.extend(points);
     }
     stats.short_edges_remaining = stats.remaining.total();
-    stats.vertices_after = out_positions.len();
-    stats.faces_after = out_faces.len();
+    stats.vertices_out = out_positions.len();
+    stats.faces_out = out_faces.len();
     stats.seconds = start.elapsed().as_secs_f64();
     Ok(Simplified {
         mesh: TriMesh::with_positions(out_positions, out_faces),

@@ -103,7 +103,7 @@ fn tri_quad_reports_the_initial_step_and_the_completion() {
         let options = quad::Options { seed: 2 };
         let mut reports = Vec::new();
         let q = quad::convert_observed(t.clone(), algo, &options, &mut |p| reports.push(p));
-        let plain = quad::convert(t.clone(), algo, &options);
+        let plain = quad::convert(t.clone(), algo, &options).expect("a closed triangulation");
         assert_eq!(q.pairing, plain.pairing, "{label}");
         check_reports(&reports, label);
         assert_eq!(

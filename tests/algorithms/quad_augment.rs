@@ -90,7 +90,7 @@ fn sparse(t: &Triangulation, seed: u64) -> Pairing {
 /// Completes `start` and checks the result independently; returns the counters.
 fn complete_checked(t: &Triangulation, start: &Pairing, label: &str) -> Completion {
     let mut p = start.clone();
-    let c = complete(t, &mut p);
+    let c = complete(t, &mut p).expect("a closed triangulation");
     assert_perfect(t, &p, label);
     assert_eq!(
         c.augmenting_paths,
@@ -99,7 +99,11 @@ fn complete_checked(t: &Triangulation, start: &Pairing, label: &str) -> Completi
     );
     // Deterministic: the same input gives the same output.
     let mut again = start.clone();
-    assert_eq!(complete(t, &mut again), c, "{label}: counters differ");
+    assert_eq!(
+        complete(t, &mut again).expect("a closed triangulation"),
+        c,
+        "{label}: counters differ"
+    );
     assert!(again == p, "{label}: output differs between runs");
     c
 }
@@ -310,7 +314,7 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     let unpaired = t.face_count() - 2 * start.len();
     let mut p = start.clone();
     let (clock, cpu) = (std::time::Instant::now(), crate::cpu::cpu());
-    let c = complete(&t, &mut p);
+    let c = complete(&t, &mut p).expect("a closed triangulation");
     let seconds = clock.elapsed().as_secs_f64();
     let cpu = crate::cpu::cpu() - cpu;
     let per_face = c.edge_visits as f64 / t.face_count() as f64;
@@ -347,7 +351,7 @@ fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
     );
     let mut q = matching::initial_pairing(&t);
     let (clock, cpu) = (std::time::Instant::now(), crate::cpu::cpu());
-    let c = complete(&t, &mut q);
+    let c = complete(&t, &mut q).expect("a closed triangulation");
     eprintln!(
         "C0 from empty: {:?}, {:.2} edge visits per face, {:.3} s wall, {:.2} s CPU",
         c,
@@ -375,7 +379,7 @@ fn long_augmenting_paths_are_found() {
             seed: 40 + k as u64,
         });
         let mut p = matching::initial_pairing(&t);
-        complete(&t, &mut p);
+        complete(&t, &mut p).expect("a closed triangulation");
         assert_perfect(&t, &p, "base");
         let mut rng = Rng::new(k as u64);
         let a = t.faces().nth(rng.index(t.face_count())).expect("a face");

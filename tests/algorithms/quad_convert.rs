@@ -50,7 +50,8 @@ fn every_algorithm_on_random_surfaces_of_every_kind() {
                 seed,
             });
             for algo in ALGORITHMS {
-                let q = convert(input.clone(), algo, &Options { seed });
+                let q = convert(input.clone(), algo, &Options { seed })
+                    .expect("a closed triangulation");
                 check(&input, &q, &format!("{kind:?} seed {seed} {}", algo.name()));
             }
         }
@@ -62,7 +63,8 @@ fn every_algorithm_on_every_component(mesh: &TriMesh, name: &str) -> usize {
     let surfaces = Surfaces::from_mesh(mesh).unwrap_or_else(|e| panic!("{name}: {e}"));
     for (i, c) in surfaces.components.iter().enumerate() {
         for algo in ALGORITHMS {
-            let q = convert(c.tri.clone(), algo, &Options { seed: 1 });
+            let q =
+                convert(c.tri.clone(), algo, &Options { seed: 1 }).expect("a closed triangulation");
             let label = format!("{name} #{i} {}", algo.name());
             check(&c.tri, &q, &label);
         }
@@ -114,8 +116,8 @@ fn the_same_input_and_seed_give_the_same_quads() {
         seed: 9,
     });
     for algo in ALGORITHMS {
-        let a = convert(input.clone(), algo, &Options { seed: 4 });
-        let b = convert(input.clone(), algo, &Options { seed: 4 });
+        let a = convert(input.clone(), algo, &Options { seed: 4 }).expect("a closed triangulation");
+        let b = convert(input.clone(), algo, &Options { seed: 4 }).expect("a closed triangulation");
         assert_eq!(a.pairing, b.pairing, "{}", algo.name());
         assert_eq!(a.tri, b.tri, "{}", algo.name());
         assert_eq!(a.stats.flips, b.stats.flips);

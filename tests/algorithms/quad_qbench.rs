@@ -435,7 +435,7 @@ fn check_pins(pins: &[Pin], build: impl Fn(&str) -> Triangulation) {
             "{label}: initial pairing changed"
         );
         // The whole pipeline, as the CLI runs it.
-        let q = quad::convert(t.clone(), alg, &OPTIONS);
+        let q = quad::convert(t.clone(), alg, &OPTIONS).expect("a closed triangulation");
         assert_eq!(q.pairing.check(&q.tri), Ok(()), "{label}");
         assert!(q.pairing.is_perfect(&q.tri), "{label}: perfect");
         assert_eq!(

@@ -203,7 +203,7 @@ fn library_reproduces_every_quad_vector_exactly() {
                 pairs_of(&r["initial_pairs"]),
                 "{label}: initial pairs"
             );
-            let q = quad::convert(tri.clone(), alg, &opts);
+            let q = quad::convert(tri.clone(), alg, &opts).expect("a closed triangulation");
             assert_eq!(
                 pairs_json(&q.pairing),
                 pairs_of(&r["pairs"]),
@@ -369,7 +369,7 @@ fn edge_set(faces: &[[u32; 3]]) -> BTreeSet<(u32, u32)> {
 fn octahedron_conversion(alg: Algorithm) -> (Triangulation, quad::Quadrangulation) {
     let m = contractible::gen::octahedron();
     let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron");
-    let q = quad::convert(t.clone(), alg, &Options { seed: 3 });
+    let q = quad::convert(t.clone(), alg, &Options { seed: 3 }).expect("a closed triangulation");
     harness::check_quadrangulation(&t, &q, "octahedron");
     (t, q)
 }
@@ -413,7 +413,7 @@ fn the_harness_rejects_broken_conversions() {
             b.tri.flip_at(c).expect("flippable");
             b.stats.flips = 0;
             b.pairing = Pairing::new(b.tri.face_capacity());
-            quad::augment::complete(&b.tri, &mut b.pairing);
+            quad::augment::complete(&b.tri, &mut b.pairing).expect("a closed triangulation");
             b.stats.augmenting_paths = b.pairing.len();
             b.stats.initial_unpaired = b.tri.face_count();
             b.stats.initial_paired_percent = 0.0;

@@ -249,10 +249,10 @@ fn hyperboloid_with_boundary_keeps_both_sheets_and_their_loops() {
     let (naive, nested) = check_simplify_modes(&mesh, &topo, &opts, "paper hyperboloid");
     eprintln!(
         "paper hyperboloid at 1 %: naive {} -> {} faces, nested {} -> {} faces, {} discs",
-        naive.stats.faces_before,
-        naive.stats.faces_after,
-        nested.stats.faces_before,
-        nested.stats.faces_after,
+        naive.stats.faces_in,
+        naive.stats.faces_out,
+        nested.stats.faces_in,
+        nested.stats.faces_out,
         nested.stats.discs_removed
     );
     eprintln!("hyperboloid: {total:?}");

@@ -221,7 +221,7 @@ fn outputs_go_under_outdir_and_info_reports_problems_with_the_error() {
         let written = outdir.join(format!("{name}.simplify.off.gz"));
         assert_eq!(l["result"]["output"], written.display().to_string());
         let info = run_json(&["info".as_ref(), written.as_os_str()]);
-        assert_eq!(info["faces"], l["result"]["faces_after"]);
+        assert_eq!(info["faces"], l["result"]["faces_out"]);
     }
     // info on a broken mesh (a real mesh with two vertex stars listed twice): the
     // problems and the error, in one line.

@@ -170,16 +170,12 @@ fn simplify_checked(input: &Path, output: &Path, extra: &[&str]) -> Value {
     assert_eq!(j["file"], input.display().to_string());
     assert_eq!(j["output"], output.display().to_string());
     let used: BTreeSet<u32> = before.faces.iter().flatten().copied().collect();
-    assert_eq!(int(&j, "vertices_before"), used.len() as i64, "{what}");
-    assert_eq!(int(&j, "faces_before"), before.faces.len() as i64, "{what}");
-    assert_eq!(
-        int(&j, "vertices_after"),
-        after.vertex_count as i64,
-        "{what}"
-    );
-    assert_eq!(int(&j, "faces_after"), after.faces.len() as i64, "{what}");
-    assert!(int(&j, "faces_after") <= int(&j, "faces_before"), "{what}");
-    assert!(int(&j, "vertices_after") <= int(&j, "vertices_before"));
+    assert_eq!(int(&j, "vertices_in"), used.len() as i64, "{what}");
+    assert_eq!(int(&j, "faces_in"), before.faces.len() as i64, "{what}");
+    assert_eq!(int(&j, "vertices_out"), after.vertex_count as i64, "{what}");
+    assert_eq!(int(&j, "faces_out"), after.faces.len() as i64, "{what}");
+    assert!(int(&j, "faces_out") <= int(&j, "faces_in"), "{what}");
+    assert!(int(&j, "vertices_out") <= int(&j, "vertices_in"));
     assert_eq!(int(&j, "components"), topo_before.len() as i64, "{what}");
     let loops: usize = topo_before.iter().map(|t| t.2).sum();
     assert_eq!(int(&j, "boundary_loops"), loops as i64, "{what}");
@@ -285,7 +281,7 @@ fn simplifies_closed_and_open_isosurfaces_keeping_their_topology() {
                 assert_eq!(j["guard"], true);
                 assert_eq!(j["eps_rel"].as_f64(), Some(rel.parse().unwrap()));
                 assert!(
-                    int(&j, "faces_after") < int(&j, "faces_before"),
+                    int(&j, "faces_out") < int(&j, "faces_in"),
                     "{name}: nothing simplified"
                 );
                 contracted.push(int(&j, "edges_contracted"));
@@ -417,8 +413,8 @@ fn each_component_is_simplified_on_its_own() {
         let out = d.path(&format!("part{i}-out.off"));
         let j = simplify_checked(p, &out, &["--eps", eps]);
         for k in [
-            "vertices_after",
-            "faces_after",
+            "vertices_out",
+            "faces_out",
             "edges_contracted",
             "discs_removed",
             "short_edges_remaining",
@@ -470,8 +466,8 @@ fn eps_rel_and_the_matching_eps_agree_and_runs_are_deterministic() {
         assert_eq!(k["eps"], j["eps"]);
         assert!(k["eps_rel"].is_null());
         for key in [
-            "vertices_after",
-            "faces_after",
+            "vertices_out",
+            "faces_out",
             "edges_contracted",
             "discs_removed",
             "vertices_removed_inside",
@@ -834,8 +830,8 @@ fn demo_simplifies_its_isosurfaces_with_both_modes() {
         assert_eq!(s["eps_rel"].as_f64(), Some(0.01));
         for r in runs {
             assert_eq!(r["verified"], true);
-            assert!(int(r, "faces_after") < int(r, "faces_before"));
-            assert_eq!(int(r, "faces_before"), int(&s["info"], "faces"));
+            assert!(int(r, "faces_out") < int(r, "faces_in"));
+            assert_eq!(int(r, "faces_in"), int(&s["info"], "faces"));
             assert_eq!(int(r, "components"), int(&s["info"], "components"));
         }
         assert!(int(&runs[1], "edges_contracted") >= int(&runs[0], "edges_contracted"));

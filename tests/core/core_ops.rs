@@ -213,14 +213,14 @@ fn random_splits_flips_contractions_keep_every_invariant() {
                     let flippable = !t.has_edge(w, z);
                     assert_eq!(t.is_flippable(u, v), flippable);
                     if flippable {
-                        let faces_before = sorted_faces(&t);
+                        let faces_in = sorted_faces(&t);
                         t.flip(u, v).unwrap();
                         t.validate().unwrap();
                         assert!(t.has_edge(w, z) && !t.has_edge(u, v));
                         // Flipping back restores the same face set.
                         let mut t2 = t.clone();
                         t2.flip(w, z).unwrap();
-                        assert_eq!(sorted_faces(&t2), faces_before);
+                        assert_eq!(sorted_faces(&t2), faces_in);
                     } else {
                         assert!(t.flip(u, v).is_err());
                     }

@@ -432,30 +432,26 @@ pub fn dual_graph(tri: &Triangulation) -> Result<(Cubic, Vec<FaceId>), FrinkErro
 /// [`Naive`] strategy, the dual graph ([`dual_graph`]) matched by [`solve`].
 /// Deterministic (module documentation).
 ///
-/// # Panics
+/// # Errors
 /// Only if `tri` broke its invariants (its dual graph is always cubic, connected and
 /// bridgeless), or has 2^32 faces or more.
-pub fn perfect_matching(tri: &Triangulation) -> Pairing {
-    perfect_matching_with(tri, &mut Naive::new()).0
+pub fn perfect_matching(tri: &Triangulation) -> Result<Pairing, FrinkError> {
+    perfect_matching_with(tri, &mut Naive::new()).map(|(p, _)| p)
 }
 
 /// [`perfect_matching`] with any strategy, also returning the counters.
 ///
-/// # Panics
-/// As [`perfect_matching`]; also if `strategy` chooses a reconnection that is not
-/// connected and bridgeless and the run then fails.
+/// # Errors
+/// As [`perfect_matching`]; [`FrinkError::TooLarge`] when the dual graph has more nodes
+/// than `strategy` holds ([`Strategy::max_nodes`]); and any error of a run in which
+/// `strategy` chose a reconnection that is not connected and bridgeless.
 pub fn perfect_matching_with<S: Strategy>(
     tri: &Triangulation,
     strategy: &mut S,
-) -> (Pairing, Stats) {
-    let run = dual_graph(tri).and_then(|(g, faces)| {
-        let ends: Vec<[u32; 2]> = g.ends.clone();
-        solve(g, strategy).map(|s| (s, faces, ends))
-    });
-    let (sol, faces, ends) = match run {
-        Ok(x) => x,
-        Err(e) => panic!("frink::perfect_matching: the dual graph of a closed triangulation: {e}"),
-    };
+) -> Result<(Pairing, Stats), FrinkError> {
+    let (g, faces) = dual_graph(tri)?;
+    let ends: Vec<[u32; 2]> = g.ends.clone();
+    let sol = solve(g, strategy)?;
     let mut pairing = Pairing::new(tri.face_capacity());
     for (k, &m) in sol.mate.iter().enumerate() {
         let [a, b] = ends[m as usize];
@@ -464,7 +460,7 @@ pub fn perfect_matching_with<S: Strategy>(
             pairing.pair(faces[k], faces[other as usize]);
         }
     }
-    (pairing, sol.stats)
+    Ok((pairing, sol.stats))
 }
 
 #[cfg(test)]

@@ -484,7 +484,7 @@ fn perfect_matching_pairs_the_standard_surfaces() {
         klein_bottle(),
     ] {
         let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("standard");
-        let p = perfect_matching(&t);
+        let p = perfect_matching(&t).expect("a closed triangulation");
         assert!(p.is_perfect(&t));
         assert_eq!(p.check(&t), Ok(()));
     }
@@ -720,7 +720,8 @@ fn cover_tree_on_random_surfaces() {
     on_random_surfaces(|t, g, label| {
         let s = run_cover(g, label);
         assert!(s.steps > 0);
-        let (p, _) = perfect_matching_with(t, &mut CoverTree::new());
+        let (p, _) =
+            perfect_matching_with(t, &mut CoverTree::new()).expect("a closed triangulation");
         assert!(p.is_perfect(t), "{label}");
         assert_eq!(p.check(t), Ok(()));
     });
@@ -866,7 +867,8 @@ fn diks_stanczyk_on_random_surfaces() {
     on_random_surfaces(|t, g, label| {
         let (_, stats, c) = run_ds::<DiksStanczyk>(g, label, DiksStanczyk::counters);
         assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
-        let (p, _) = perfect_matching_with(t, &mut DiksStanczyk::new());
+        let (p, _) =
+            perfect_matching_with(t, &mut DiksStanczyk::new()).expect("a closed triangulation");
         assert!(p.is_perfect(t), "{label}");
         assert_eq!(p.check(t), Ok(()));
     });
@@ -1084,10 +1086,12 @@ fn bbdl_on_random_surfaces() {
     on_random_surfaces(|t, g, label| {
         let (_, stats, c) = run_bbdl(g, label);
         assert_eq!(stats.case_iv, 0, "{label}: {c:?}");
-        let (p, _) = perfect_matching_with(t, &mut BiedlBoseDemaineLubiw::new());
+        let (p, _) = perfect_matching_with(t, &mut BiedlBoseDemaineLubiw::new())
+            .expect("a closed triangulation");
         assert!(p.is_perfect(t), "{label}");
         assert_eq!(p.check(t), Ok(()));
-        let (again, _) = perfect_matching_with(t, &mut BiedlBoseDemaineLubiw::new());
+        let (again, _) = perfect_matching_with(t, &mut BiedlBoseDemaineLubiw::new())
+            .expect("a closed triangulation");
         assert_eq!(p, again, "{label}: not deterministic");
     });
 }

@@ -1,0 +1,376 @@
+//! [`quadrangulate`]: a quad mesh on the same vertices, by a perfect pairing of the
+//! triangles of every component.
+
+use crate::core::Triangulation;
+use crate::mesh::{QuadMesh, TriMesh};
+use crate::quad::{self, Algorithm, Quadrangulation, DS_NAIVE_MAX_FACES};
+use crate::topology::SurfaceType;
+
+use super::reduce::closed_surfaces;
+use super::{Error, Monitor, Step};
+
+/// Options of [`quadrangulate`]. The default: LRS, seed 0, outputs verified.
+#[derive(Clone, Debug)]
+pub struct QuadOptions {
+    /// The algorithm.
+    pub algorithm: Algorithm,
+    /// Seed of the documented random stream ([`crate::rng`]) for the randomised orders
+    /// of SG and PS.
+    pub seed: u64,
+    /// Check every pairing independently ([`verify_quadrangulation`]) and fail with
+    /// [`Error::Unverified`] if one is wrong.
+    pub verify: bool,
+    /// Progress and cancellation.
+    pub monitor: Monitor,
+}
+
+impl Default for QuadOptions {
+    fn default() -> Self {
+        QuadOptions {
+            algorithm: Algorithm::default(),
+            seed: 0,
+            verify: true,
+            monitor: Monitor::default(),
+        }
+    }
+}
+
+/// Counters of one conversion (one component, or the totals): the paper's Table 4.3
+/// columns (a)–(e) plus the work of each step. The fields are the command line's
+/// `quad --json` keys.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct QuadStats {
+    /// The algorithm.
+    #[cfg_attr(feature = "serde", serde(rename = "algo"))]
+    pub algorithm: Algorithm,
+    /// Triangles of the input.
+    pub faces: usize,
+    /// Quads of the output (half the triangles).
+    pub quads: usize,
+    /// χ of the input (summed in the totals).
+    pub euler_characteristic: i64,
+    /// Whether the input is orientable (every component, in the totals).
+    pub orientable: bool,
+    /// (a) Seconds of the initial pairing.
+    pub initial_seconds: f64,
+    /// (b) Percentage of the triangles paired by the initial step.
+    pub initial_paired_percent: f64,
+    /// (c) Triangles left unpaired by the initial step.
+    pub initial_unpaired: usize,
+    /// (d) Seconds of the completion.
+    pub completion_seconds: f64,
+    /// (e) Total seconds.
+    pub total_seconds: f64,
+    /// Edge flips (LRS only).
+    pub flips: usize,
+    /// Augmenting paths applied by the completion.
+    pub augmenting_paths: usize,
+    /// Searches of the completion (the maximum over components in the totals).
+    pub phases: usize,
+    /// Whether the independent check passed (`true` also when not checked: see
+    /// [`QuadOptions::verify`]).
+    pub verified: bool,
+}
+
+impl QuadStats {
+    /// The counters of `q`, the conversion of a surface of type `input`.
+    pub fn of(q: &Quadrangulation, input: SurfaceType, verified: bool) -> Self {
+        let s = &q.stats;
+        QuadStats {
+            algorithm: q.algorithm,
+            faces: s.faces,
+            quads: q.pairing.len(),
+            euler_characteristic: input.euler_characteristic(),
+            orientable: input.is_orientable(),
+            initial_seconds: s.initial_seconds,
+            initial_paired_percent: s.initial_paired_percent,
+            initial_unpaired: s.initial_unpaired,
+            completion_seconds: s.completion_seconds,
+            total_seconds: s.total_seconds,
+            flips: s.flips,
+            augmenting_paths: s.augmenting_paths,
+            phases: s.phases,
+            verified,
+        }
+    }
+
+    /// The totals of `parts`.
+    pub fn total(algorithm: Algorithm, parts: &[QuadStats]) -> Self {
+        let sum = |f: fn(&QuadStats) -> usize| parts.iter().map(f).sum::<usize>();
+        let sumf = |f: fn(&QuadStats) -> f64| parts.iter().map(f).sum::<f64>();
+        let faces = sum(|p| p.faces);
+        let unpaired = sum(|p| p.initial_unpaired);
+        QuadStats {
+            algorithm,
+            faces,
+            quads: sum(|p| p.quads),
+            euler_characteristic: parts.iter().map(|p| p.euler_characteristic).sum(),
+            orientable: parts.iter().all(|p| p.orientable),
+            initial_seconds: sumf(|p| p.initial_seconds),
+            initial_paired_percent: if faces == 0 {
+                100.0
+            } else {
+                100.0 * (faces - unpaired) as f64 / faces as f64
+            },
+            initial_unpaired: unpaired,
+            completion_seconds: sumf(|p| p.completion_seconds),
+            total_seconds: sumf(|p| p.total_seconds),
+            flips: sum(|p| p.flips),
+            augmenting_paths: sum(|p| p.augmenting_paths),
+            phases: parts.iter().map(|p| p.phases).max().unwrap_or(0),
+            verified: parts.iter().all(|p| p.verified),
+        }
+    }
+}
+
+/// One component's conversion counters.
+#[derive(Clone, Debug)]
+pub struct QuadComponent {
+    /// Counters and the verdict of the check.
+    pub stats: QuadStats,
+}
+
+/// What [`quadrangulate`] returns.
+#[derive(Clone, Debug)]
+pub struct QuadResult {
+    /// The quads over the input's vertices (the same `vertex_count`, the input's
+    /// positions): per component, one quad per pair in increasing order of the pair's
+    /// smaller face, each the cycle `[c, a, d, b]` around its two triangles
+    /// ([`quad::quad_of`]), so consistently oriented triangles give consistently oriented
+    /// quads.
+    pub mesh: QuadMesh,
+    /// The paired triangulation `K`, one row per input face: the input's faces, except
+    /// that LRS's flips changed some (same vertices, same face count).
+    pub triangles: Vec<[u32; 3]>,
+    /// The pairs, as rows of `triangles` (input face indices), in the order of the quads.
+    pub pairs: Vec<[u32; 2]>,
+    /// Per component, in the order of their smallest input face.
+    pub components: Vec<QuadComponent>,
+    /// The totals.
+    pub totals: QuadStats,
+    /// Input vertices no face uses (kept in `mesh`, used by no quad).
+    pub dropped_vertices: usize,
+    /// Seconds validating the input and splitting it into components.
+    pub seconds_build: f64,
+    /// Seconds of the independent check (`None` when not checked).
+    pub seconds_verify: Option<f64>,
+}
+
+/// The independent check of a conversion of `input`: `K` validates from scratch, has the
+/// input's vertex set, counts and surface type, and the pairing is perfect with every
+/// pair sharing an edge of `K` (checked on `K`'s face lists, not by the pairing's own
+/// bookkeeping).
+pub fn verify_quadrangulation(input: &Triangulation, q: &Quadrangulation) -> bool {
+    let k = &q.tri;
+    if k.validate().is_err()
+        || k.vertex_count() != input.vertex_count()
+        || k.face_count() != input.face_count()
+        || !k.vertices().eq(input.vertices())
+        || SurfaceType::of(k) != SurfaceType::of(input)
+        || 2 * q.pairing.len() != k.face_count()
+    {
+        return false;
+    }
+    let mut seen = vec![false; k.face_capacity()];
+    for (f, g) in q.pairing.pairs() {
+        if !k.is_face(f) || !k.is_face(g) || seen[f.index()] || seen[g.index()] {
+            return false;
+        }
+        seen[f.index()] = true;
+        seen[g.index()] = true;
+        let (a, b) = (k.face_vertices(f), k.face_vertices(g));
+        if a.iter().filter(|v| b.contains(v)).count() != 2 {
+            return false;
+        }
+    }
+    true
+}
+
+/// A quad mesh on the vertices of `mesh`, a union of closed surfaces (orientable or
+/// not): a perfect pairing of edge-adjacent triangles of every component by
+/// `options.algorithm` (one always exists: Petersen), each pair a quad. Only LRS changes
+/// the triangulation, by flips ([`QuadResult::triangles`]). Every pairing is checked
+/// independently unless `options.verify` is off.
+///
+/// Deterministic for a given mesh and options (timings aside).
+///
+/// # Errors
+/// [`Error::Mesh`] or [`Error::NotClosed`] if `mesh` is not a union of closed surfaces;
+/// [`Error::TooLarge`] for `ds-naive` on a component above [`DS_NAIVE_MAX_FACES`]
+/// faces, and for `ds` and `bbdl` above their structures' limits; [`Error::Cancelled`];
+/// [`Error::Unverified`] if a pairing fails its check (a defect of the library).
+///
+/// # Example
+/// ```
+/// let octahedron = contractible::gen::octahedron();
+/// let q = contractible::quadrangulate(&octahedron, &Default::default())?;
+/// assert_eq!(q.mesh.faces.len(), 4);
+/// # Ok::<(), contractible::Error>(())
+/// ```
+pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult, Error> {
+    let monitor = &options.monitor;
+    let algorithm = options.algorithm;
+    let started = std::time::Instant::now();
+    let surfaces = closed_surfaces(mesh, "quad", monitor)?;
+    let seconds_build = started.elapsed().as_secs_f64();
+    let n = surfaces.components.len();
+    if algorithm == Algorithm::DsNaive {
+        // O(F²): about F²/4 node visits, minutes beyond this size.
+        if let Some((component, c)) = surfaces
+            .components
+            .iter()
+            .enumerate()
+            .find(|(_, c)| c.tri.face_count() > DS_NAIVE_MAX_FACES)
+        {
+            return Err(Error::TooLarge {
+                algorithm,
+                component,
+                faces: c.tri.face_count(),
+                limit: DS_NAIVE_MAX_FACES,
+            });
+        }
+    }
+    let qopts = quad::Options { seed: options.seed };
+    let mut done = Vec::with_capacity(n);
+    for (i, c) in surfaces.components.iter().enumerate() {
+        monitor.step(Step::Run, i, n, c.tri.face_count())?;
+        let q = quad::convert_observed(c.tri.clone(), algorithm, &qopts, &mut monitor.progress())
+            .map_err(|source| match source {
+            quad::ConvertError::TooLarge { faces, limit, .. } => Error::TooLarge {
+                algorithm,
+                component: i,
+                faces,
+                limit,
+            },
+            source => Error::Convert {
+                component: i,
+                source,
+            },
+        })?;
+        done.push(q);
+    }
+    let mut verdicts = vec![true; n];
+    let mut seconds_verify = None;
+    if options.verify {
+        let started = std::time::Instant::now();
+        for (i, (c, q)) in surfaces.components.iter().zip(&done).enumerate() {
+            monitor.step(Step::Verify, i, n, q.tri.face_count())?;
+            verdicts[i] = verify_quadrangulation(&c.tri, q);
+        }
+        seconds_verify = Some(started.elapsed().as_secs_f64());
+        let bad: Vec<usize> = (0..n).filter(|&i| !verdicts[i]).collect();
+        if !bad.is_empty() {
+            return Err(Error::Unverified {
+                task: "quad",
+                components: bad,
+                detail: "not a perfect pairing of adjacent faces of a valid triangulation \
+                         with the input's vertices and topology"
+                    .into(),
+            });
+        }
+    }
+    let mut quads: Vec<[u32; 4]> = Vec::with_capacity(mesh.faces.len() / 2);
+    let mut pairs: Vec<[u32; 2]> = Vec::with_capacity(mesh.faces.len() / 2);
+    let mut triangles = mesh.faces.clone();
+    let mut components = Vec::with_capacity(n);
+    for ((c, q), ok) in surfaces.components.iter().zip(&done).zip(verdicts) {
+        for (f, g) in q.pairing.pairs() {
+            let Some(quad) = quad::quad_of(&q.tri, f, g) else {
+                return Err(Error::Unverified {
+                    task: "quad",
+                    components: vec![components.len()],
+                    detail: format!("pair {f}, {g} shares no edge"),
+                });
+            };
+            quads.push(quad.map(|v| c.vertex_origin[v as usize]));
+            pairs.push([c.face_origin[f.index()], c.face_origin[g.index()]]);
+        }
+        for f in q.tri.faces() {
+            let vs = q.tri.face_vertices(f).map(|v| c.vertex_origin[v.index()]);
+            triangles[c.face_origin[f.index()] as usize] = vs;
+        }
+        components.push(QuadComponent {
+            stats: QuadStats::of(q, SurfaceType::of(&c.tri), ok),
+        });
+    }
+    let stats: Vec<QuadStats> = components.iter().map(|c| c.stats.clone()).collect();
+    Ok(QuadResult {
+        mesh: QuadMesh {
+            vertex_count: mesh.vertex_count,
+            positions: mesh.positions.clone(),
+            faces: quads,
+        },
+        triangles,
+        pairs,
+        totals: QuadStats::total(algorithm, &stats),
+        components,
+        dropped_vertices: surfaces.dropped_vertices.len(),
+        seconds_build,
+        seconds_verify,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gen;
+
+    /// Every algorithm on two components with positions: the quads carry the input's
+    /// positions, cover each input triangle exactly once (by the pairs), and each quad is
+    /// the union of its pair's triangles, checked from the face lists alone.
+    #[test]
+    fn every_algorithm_gives_quads_with_positions_on_every_component() {
+        let mut faces = gen::icosahedron().faces;
+        faces.extend(gen::torus7().faces.iter().map(|f| f.map(|v| v + 12)));
+        let positions: Vec<[f64; 3]> = (0..19).map(|i| [i as f64, 0.5 * i as f64, 1.0]).collect();
+        let mesh = TriMesh::with_positions(positions.clone(), faces);
+        for algorithm in Algorithm::ALL {
+            let q = quadrangulate(
+                &mesh,
+                &QuadOptions {
+                    algorithm,
+                    seed: 3,
+                    ..QuadOptions::default()
+                },
+            )
+            .expect("closed surfaces");
+            assert_eq!(q.mesh.positions.as_deref(), Some(&positions[..]));
+            assert_eq!(q.mesh.faces.len(), mesh.faces.len() / 2, "{algorithm}");
+            assert_eq!(q.components.len(), 2);
+            let mut covered = vec![0; mesh.faces.len()];
+            for (quad, [f, g]) in q.mesh.faces.iter().zip(&q.pairs) {
+                covered[*f as usize] += 1;
+                covered[*g as usize] += 1;
+                let mut a: Vec<u32> = q.triangles[*f as usize]
+                    .iter()
+                    .chain(&q.triangles[*g as usize])
+                    .copied()
+                    .collect();
+                a.sort_unstable();
+                a.dedup();
+                let mut b = quad.to_vec();
+                b.sort_unstable();
+                assert_eq!(a, b, "{algorithm}");
+            }
+            assert!(covered.iter().all(|&c| c == 1), "{algorithm}");
+        }
+    }
+
+    /// A component above ds-naive's limit is refused, located, before any work.
+    #[test]
+    fn ds_naive_refuses_large_components() {
+        let big = gen::subdivide(&gen::octahedron(), 7);
+        assert!(big.faces.len() > DS_NAIVE_MAX_FACES);
+        let e = quadrangulate(
+            &big,
+            &QuadOptions {
+                algorithm: Algorithm::DsNaive,
+                ..QuadOptions::default()
+            },
+        )
+        .unwrap_err();
+        assert!(matches!(e, Error::TooLarge { component: 0, .. }), "{e}");
+        assert!(e.to_string().contains("use ds or frink-lct"), "{e}");
+    }
+}
