@@ -14,9 +14,12 @@ Functions:
     simplify(V, F, eps, mode="nested")      short-edge simplification  -> Simplified
 
 Every problem of a mesh raises :class:`MeshError` (a ``ValueError``) with ``kind`` and
-``location``; a wrong array shape or dtype raises ``ValueError``. The algorithms release
-the GIL. Results are deterministic for a given input and seed and equal to the command
-line's (``contractible reduce|quad|simplify``) for the same mesh.
+``location``; a wrong array shape or dtype, an unknown algorithm name or a bad ``eps``
+raises ``ValueError``; a file that cannot be opened or written raises ``OSError``. The
+functions are a thin layer over the library's task calls and release the GIL while
+they work. Results are checked independently before they are returned, deterministic
+for a given input and seed, and equal to the command line's
+(``contractible reduce|quad|simplify``) for the same mesh, statistics included.
 """
 
 from dataclasses import dataclass, field
@@ -192,8 +195,9 @@ def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0) -> Quadrangula
     link–cut trees, O(F log² F); ``bbdl``: Biedl–Bose–Demaine–Lubiw, dynamic
     2-edge-connectivity, O(F² log F) in the worst case with this package's structure;
     ``frink-lct``: the link–cut cover-count strategy;
-    ``ds-naive``: the quadratic reference, refused above 100,000 faces per component),
-    perfect without completion. Closed surfaces only; positions optional."""
+    ``ds-naive``: the quadratic reference, refused above 100,000 faces per component
+    with a :class:`MeshError` of kind ``too_large``), perfect without completion. Closed
+    surfaces only; positions optional."""
     V, F = _vf(V, F)
     d = _native.quad(_vertices(V), _faces(F), algo, int(seed))
     return Quadrangulated(d["vertices"], d["quads"], d["triangles"], d["pairs"], d["stats"])

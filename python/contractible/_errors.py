@@ -13,11 +13,15 @@ class MeshError(ValueError):
             ``"non_finite_coordinate"``, ``"degenerate_face"``, ``"duplicate_face"``,
             ``"boundary_edge"``, ``"non_manifold_edge"``, ``"multiple_edges"``,
             ``"pinched_vertex"``, ``"pinched_boundary_vertex"``,
-            ``"vertex_degree_too_low"``, ``"empty"``, ``"too_large"``, ``"read"``
-            (a file that does not parse) ...
+            ``"vertex_degree_too_low"``, ``"empty"``, ``"too_large"`` (too many
+            vertices, or a component too large for the algorithm),
+            ``"no_coordinates"`` (every vertex at one point), ``"read"`` (a file that
+            does not parse) ...: the library's ``Error::kind``.
         location: where, as a dict of 0-based indices: ``face``, ``vertex``, ``a`` and
-            ``b`` (an edge's ends), ``first`` (the face a duplicate repeats), or for
-            files ``line`` (1-based, as editors count) or ``byte_offset``.
+            ``b`` (an edge's ends), ``first`` (the face a duplicate repeats),
+            ``component`` (in the order of the smallest face index), ``count`` (a count
+            too large), or for files ``line`` (1-based, as editors count) or
+            ``byte_offset``.
     """
 
     def __init__(self, message: str, kind: str = "invalid_mesh",
