@@ -8,7 +8,7 @@ use std::sync::OnceLock;
 
 fn b0() -> &'static TriMesh {
     static M: OnceLock<TriMesh> = OnceLock::new();
-    M.get_or_init(|| paper_family('B', 0))
+    M.get_or_init(|| paper_family('B', 0).expect("valid brick parameters"))
 }
 
 fn main() {

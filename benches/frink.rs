@@ -45,7 +45,8 @@ fn dual(name: &str) -> Cubic {
         .or_insert_with(|| {
             let mut c = name.chars();
             let group = c.next().expect("group letter");
-            let mesh = paper_family(group, c.as_str().parse().expect("member index"));
+            let mesh = paper_family(group, c.as_str().parse().expect("member index"))
+                .expect("valid brick parameters");
             let s = Surfaces::from_mesh(&mesh).expect("closed surface");
             let t = s
                 .components

@@ -45,11 +45,12 @@ fn build(name: &str) -> Triangulation {
         let path = format!("{corpus}/meshes/closed/{file}.off.gz");
         let m = contractible::io::read_tri_mesh(path.as_ref())
             .unwrap_or_else(|e| panic!("the real-mesh corpus: {e}"));
-        subdivide(&m, levels)
+        subdivide(&m, levels).expect("a valid mesh within the limits")
     } else {
         let mut c = name.chars();
         let group = c.next().expect("group letter");
         paper_family(group, c.as_str().parse().expect("member index"))
+            .expect("valid brick parameters")
     };
     let s = Surfaces::from_mesh(&mesh).expect("closed surface");
     s.components

@@ -24,13 +24,14 @@ fn small() -> &'static Triangulation {
             flip_percent: 30,
             seed: 1,
         })
+        .expect("a random surface within the limits")
     })
 }
 
 fn b0() -> &'static Triangulation {
     static T: OnceLock<Triangulation> = OnceLock::new();
     T.get_or_init(|| {
-        let m = paper_family('B', 0);
+        let m = paper_family('B', 0).expect("valid brick parameters");
         Triangulation::from_faces(m.vertex_count, &m.faces).expect("B0 is a surface")
     })
 }

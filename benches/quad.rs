@@ -85,6 +85,7 @@ fn build(name: &str) -> Triangulation {
         let mut c = name.chars();
         let group = c.next().expect("group letter");
         paper_family(group, c.as_str().parse().expect("member index"))
+            .expect("valid brick parameters")
     };
     let s = Surfaces::from_mesh(&mesh).expect("closed surface");
     s.components
@@ -109,7 +110,7 @@ fn initial(name: &str, alg: Algorithm) -> (Triangulation, Pairing) {
 }
 
 fn initial_step(t: Triangulation, alg: Algorithm) -> (Triangulation, Pairing) {
-    let i = contractible::quad::initial_pairing(t, alg, &OPTIONS);
+    let i = contractible::quad::initial_pairing(t, alg, &OPTIONS).expect("a closed triangulation");
     (i.tri, i.pairing)
 }
 

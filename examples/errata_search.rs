@@ -77,7 +77,8 @@ fn main() {
             min_faces: 20 + rng.below(150) as usize,
             flip_percent: rng.below(100) as u32,
             seed: rng.below(1 << 40),
-        });
+        })
+        .expect("a random surface within the limits");
         let faces = t.face_list();
         let n = t.vertex_capacity();
         for _ in 0..50 {

@@ -43,7 +43,8 @@ fn main() {
     for name in names {
         let mut c = name.chars();
         let group = c.next().expect("member name");
-        let mesh = paper_family(group, c.as_str().parse().expect("member index"));
+        let mesh = paper_family(group, c.as_str().parse().expect("member index"))
+            .expect("valid brick parameters");
         let s = Surfaces::from_mesh(&mesh).expect("closed surface");
         let tri = s
             .components

@@ -61,19 +61,18 @@ fn run_json(tri: &Triangulation, alg: Algorithm, seed: u64, name: &str) -> Value
         Algorithm::Ps => (tri.clone(), quad::pulli_segal::initial_pairing(tri, &opts)),
         Algorithm::Sg => (tri.clone(), quad::greedy::initial_pairing(tri, &opts)),
         Algorithm::Matching => (tri.clone(), quad::matching::initial_pairing(tri)),
-        Algorithm::DsNaive => (tri.clone(), quad::frink::perfect_matching(tri)),
-        Algorithm::FrinkLct => (
+        Algorithm::DsNaive => (
             tri.clone(),
-            quad::frink::perfect_matching_with(tri, &mut quad::frink::CoverTree::new()).0,
+            quad::frink::perfect_matching(tri).expect("a closed triangulation"),
         ),
+        Algorithm::FrinkLct => (tri.clone(), frink(tri, &mut quad::frink::CoverTree::new())),
         Algorithm::Ds => (
             tri.clone(),
-            quad::frink::perfect_matching_with(tri, &mut quad::frink::DiksStanczyk::new()).0,
+            frink(tri, &mut quad::frink::DiksStanczyk::new()),
         ),
         Algorithm::Bbdl => (
             tri.clone(),
-            quad::frink::perfect_matching_with(tri, &mut quad::frink::BiedlBoseDemaineLubiw::new())
-                .0,
+            frink(tri, &mut quad::frink::BiedlBoseDemaineLubiw::new()),
         ),
     };
     let mut full = initial.clone();
@@ -144,7 +143,8 @@ fn generated() -> Vec<Input> {
                 min_faces,
                 flip_percent,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             let (kind, tag, n) = match surface {
                 SurfaceKind::Orientable(g) => ("orientable", "S", g),
                 SurfaceKind::NonOrientable(h) => ("non_orientable", "N", h),
@@ -197,4 +197,10 @@ fn main() {
         std::fs::write(&path, text).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
         println!("{}: {} vectors", path.display(), inputs.len());
     }
+}
+
+/// The perfect matching of Frink's reduction with `strategy`.
+fn frink(tri: &Triangulation, strategy: &mut impl quad::frink::Strategy) -> quad::Pairing {
+    let (p, _) = quad::frink::perfect_matching_with(tri, strategy).expect("a closed triangulation");
+    p
 }

@@ -60,7 +60,8 @@ fn generated() -> Vec<Input> {
             min_faces,
             flip_percent,
             seed,
-        });
+        })
+        .expect("a random surface within the limits");
         let (kind, n) = match surface {
             SurfaceKind::Orientable(g) => ("orientable", g),
             SurfaceKind::NonOrientable(h) => ("non_orientable", h),

@@ -54,7 +54,7 @@ fn main() {
             continue;
         }
         let index: u32 = name[1..].parse().expect("index");
-        let mesh = paper_family(group, index);
+        let mesh = paper_family(group, index).expect("valid brick parameters");
         let tri = Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("surface");
         let genus = tri.euler_genus() / 2;
         let opts = |seed| Options {

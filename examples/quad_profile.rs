@@ -80,7 +80,7 @@ fn main() {
 }
 
 fn initial_step(t: Triangulation, alg: Algorithm, options: &Options) -> (Triangulation, Pairing) {
-    let i = contractible::quad::initial_pairing(t, alg, options);
+    let i = contractible::quad::initial_pairing(t, alg, options).expect("a closed triangulation");
     (i.tri, i.pairing)
 }
 
@@ -98,7 +98,8 @@ fn build(name: &str) -> Triangulation {
             min_faces: faces.parse().expect("faces"),
             flip_percent: 30,
             seed: 1,
-        });
+        })
+        .expect("a random surface within the limits");
     }
     let mesh = if let Some(file) = name.strip_prefix("mesh:") {
         let path = format!(
@@ -110,6 +111,7 @@ fn build(name: &str) -> Triangulation {
         let mut c = name.chars();
         let group = c.next().expect("group letter");
         paper_family(group, c.as_str().parse().expect("member index"))
+            .expect("valid brick parameters")
     };
     let s = Surfaces::from_mesh(&mesh).expect("closed surface");
     s.components

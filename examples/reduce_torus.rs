@@ -48,7 +48,8 @@ fn main() {
         min_faces: 5_000,
         flip_percent: 30,
         seed: 7,
-    });
+    })
+    .expect("a random surface within the limits");
     let r = reduce(surface, Algorithm::Rs, &Options::default());
     println!(
         "genus 2: {} → {} vertices in {} contractions, ℓ = {}, irreducible: {}",

@@ -240,8 +240,16 @@ struct Use {
 /// Finds every problem of `mesh` (see the module docs), keeping at most `max_examples`
 /// examples per kind.
 pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
-    let nv = mesh.vertex_count();
+    let declared = mesh.vertex_count();
     let nf = mesh.face_count();
+    // Only vertices up to the largest index a face uses need room: a larger declared
+    // count (even one no machine could allocate) adds unused vertices, nothing else.
+    let max_used = (0..nf)
+        .flat_map(|f| mesh.corners(f).iter().copied())
+        .map(|v| v as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let nv = declared.min(max_used);
     let mut groups: Vec<ProblemGroup> = Vec::new();
     let mut add = |kind: ProblemKind, p: Problem| {
         let g = match groups.iter_mut().position(|g| g.kind == kind) {
@@ -276,7 +284,7 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
         let s0 = sorted.len();
         sorted.extend_from_slice(c);
         sorted[s0..].sort_unstable();
-        if let Some(&v) = c.iter().find(|&&v| v as usize >= nv) {
+        if let Some(&v) = c.iter().find(|&&v| v as usize >= declared) {
             add(
                 ProblemKind::IndexOutOfRange,
                 Problem::IndexOutOfRange { face: f, vertex: v },
@@ -416,7 +424,7 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
 
     // Boundary loops: components of the boundary edges, ordered by their smallest edge
     // (boundary is in edge order already).
-    let mut vparent: Vec<u32> = (0..nv as u32).collect();
+    let mut vparent: Vec<u32> = (0..nv).map(|v| v as u32).collect();
     for &(a, b, _) in &boundary {
         union(&mut vparent, a, b);
     }
@@ -441,7 +449,7 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
 
     // Components: vertices joined by good faces (an out-of-range or degenerate face still
     // joins its in-range vertices).
-    let mut cparent: Vec<u32> = (0..nv as u32).collect();
+    let mut cparent: Vec<u32> = (0..nv).map(|v| v as u32).collect();
     for f in 0..nf {
         let c = mesh.corners(f);
         let inr: Vec<u32> = c.iter().copied().filter(|&v| (v as usize) < nv).collect();
@@ -499,7 +507,7 @@ pub fn diagnose(mesh: &impl FaceList, max_examples: usize) -> Diagnosis {
     groups.sort_by_key(|g| g.kind);
     Diagnosis {
         vertices,
-        unused_vertices: nv - vertices,
+        unused_vertices: declared - vertices,
         edges,
         faces: nf,
         components,

@@ -354,7 +354,8 @@ mod tests {
                 min_faces: 200,
                 flip_percent: 30,
                 seed: 1,
-            });
+            })
+            .expect("a random surface within the limits");
             assert_eq!(SurfaceType::of(&t), SurfaceType::from(kind));
         }
     }

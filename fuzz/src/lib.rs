@@ -222,7 +222,7 @@ fn sorted2(mut p: [VertexId; 2]) -> [VertexId; 2] {
 /// The triangulation `input` describes: the seed surface with the ops applied, validated
 /// (fully every [`VALIDATE_EVERY`] applied ops and at the end, χ after every op).
 pub fn build_surface(input: &SurfaceInput) -> Triangulation {
-    let mut tri = seed_surface(input.surface.kind());
+    let mut tri = seed_surface(input.surface.kind()).expect("a seed surface within the limits");
     tri.validate().expect("seed surface valid");
     let chi = tri.euler_characteristic();
     let orientable = tri.is_orientable();

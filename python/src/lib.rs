@@ -360,13 +360,7 @@ fn info<'py>(
         } => (components, dropped_vertices),
         // `describe` lists every problem; the exception names the first one the
         // validation meets, located (the same as the other functions raise).
-        problems => {
-            let first = py.detach(|| contractible::ConedSurfaces::from_mesh(&mesh).err());
-            return Err(match first {
-                Some(e) => raise(py, &Error::Mesh(e), None),
-                None => mesh_error(py, "invalid_mesh", problems.to_string(), &[]),
-            });
-        }
+        Description::Problems { first, .. } => return Err(raise(py, &Error::Mesh(first), None)),
     };
     let list = PyList::empty(py);
     for c in &components {

@@ -202,8 +202,7 @@ fn run_task(cmd: &Command) -> (Option<Value>, Option<CliError>) {
             info::Outcome::Surface(report) => Ok((value(&report)?, None)),
             info::Outcome::Diagnosis { report, error, .. } => Ok((value(&report)?, error)),
         }),
-        Command::Reduce(a) => reduce::compute(a, ui)
-            .and_then(|report| Ok((value(&report)?, reduce::failure(&report)))),
+        Command::Reduce(a) => reduce::compute(a, ui).and_then(|report| Ok((value(&report)?, None))),
         Command::Quad(a) => quad::compute(a, ui).and_then(|report| Ok((value(&report)?, None))),
         Command::Simplify(a) => {
             simplify::compute(a, ui).and_then(|report| Ok((value(&report)?, None)))

@@ -5,16 +5,17 @@ use std::path::Path;
 use contractible::gen::{self, Implicit, IsoParams, RandomParams, SurfaceKind, Tessellation};
 use contractible::irreducible::Algorithm;
 use contractible::quad;
-use contractible::simplify::{bbox_diagonal, Mode, Options, Stats};
-use contractible::{ConedSurfaces, Surfaces, TriMesh};
+use contractible::simplify::{bbox_diagonal, Mode, Stats};
+use contractible::task::{QuadStats, ReduceStats};
+use contractible::{ConedSurfaces, Eps, SimplifyOptions, Surfaces, TriMesh};
 use serde::Serialize;
 
 use super::args::DemoArgs;
 use super::info::Report;
 use super::progress::spinner;
-use super::quad::{quad_all, QuadStats};
-use super::reduce::{reduce_all, ReduceStats};
-use super::simplify::{component_types, fmt_len, mode_name, simplify_with_progress, verify};
+use super::quad::quadrangulate_with_bars;
+use super::reduce::reduce_with_bars;
+use super::simplify::{fmt_len, simplify_with_bars};
 use super::{print_json, CliError, Ui};
 
 #[derive(Serialize)]
@@ -101,7 +102,7 @@ fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface
     let surfaces = ConedSurfaces::from_mesh(mesh)
         .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
     let info = Report::of_coned(Path::new(&name), &surfaces, None, None);
-    let types = component_types(&surfaces);
+    drop(surfaces);
     let diagonal = bbox_diagonal(mesh.positions.iter().flatten().copied());
     let eps = DEMO_EPS_REL * diagonal;
     if ui.human() {
@@ -125,22 +126,26 @@ fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface
     }
     let mut runs: Vec<DemoSimplifyRun> = Vec::new();
     for mode in [Mode::Naive, Mode::Nested] {
-        let options = Options {
+        let options = SimplifyOptions {
+            eps: Eps::Absolute(eps),
             mode,
-            ..Options::new(eps)
+            ..SimplifyOptions::default()
         };
-        let positions = mesh.positions.as_deref().unwrap_or(&[]);
-        let out = simplify_with_progress(surfaces.clone(), positions, &options, ui)
-            .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
-        let kept = verify(&types, &out.mesh);
-        if let Err(e) = &kept {
-            ui.warn(&format!("{name} ({}): {e}", mode_name(mode)));
-        }
-        let s = out.stats;
+        // The library checks every output (rebuilt from its faces: the input's
+        // components and topology) and reports a failed check as an error.
+        let out = simplify_with_bars(mesh, options, ui);
+        let (s, kept) = match out {
+            Ok(out) => (out.stats, Ok(())),
+            Err(e @ contractible::Error::Unverified { .. }) => {
+                ui.warn(&format!("{name} ({mode}): {e}"));
+                (Stats::default(), Err(()))
+            }
+            Err(e) => return Err(CliError::Failure(format!("built-in input {name}: {e}"))),
+        };
         if ui.human() {
             outln!(
                 "  {:<9} {:>7} {:>7} {:>10} {:>6} {:>7} {:>7} {:>6} {:>9.4}{}",
-                mode_name(mode),
+                mode.name(),
                 s.vertices_out,
                 s.faces_out,
                 s.edges_contracted,
@@ -157,7 +162,7 @@ fn simplify_demo(name: String, mesh: &TriMesh, ui: Ui) -> Result<(DemoIsosurface
             );
         }
         runs.push(DemoSimplifyRun {
-            mode: mode_name(mode),
+            mode: mode.name(),
             stats: s,
             verified: kept.is_ok(),
         });
@@ -200,6 +205,7 @@ fn inputs(seed: u64, ui: Ui) -> Vec<(String, TriMesh)> {
             flip_percent: 30,
             seed,
         })
+        .expect("a random surface within the limits")
         .to_mesh()
     };
     let v = vec![
@@ -213,7 +219,7 @@ fn inputs(seed: u64, ui: Ui) -> Vec<(String, TriMesh)> {
         ),
         (
             "paper brick B7 (3,844 cavities)".to_string(),
-            gen::paper_family('B', 7),
+            gen::paper_family('B', 7).expect("valid brick parameters"),
         ),
     ];
     pb.finish_and_clear();
@@ -246,11 +252,15 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
         let mut runs = Vec::new();
         for &algo in &a.algos {
             let algo: Algorithm = algo.into();
-            let (reductions, stats) = reduce_all(&surfaces, algo, a.seed, true, ui);
-            let s = ReduceStats::total(algo, &stats);
-            let same_topology = surfaces.components.iter().zip(&reductions).all(|(c, r)| {
-                c.tri.euler_characteristic() == r.tri.euler_characteristic()
-                    && c.tri.is_orientable() == r.tri.is_orientable()
+            // The library checks every output by the naive link test and reports a
+            // reducible one as an error.
+            let r = reduce_with_bars(&mesh, algo, a.seed, false, ui)
+                .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
+            let s = r.totals;
+            let same_topology = surfaces.components.iter().zip(&r.components).all(|(c, r)| {
+                let t = &r.reduction.tri;
+                c.tri.euler_characteristic() == t.euler_characteristic()
+                    && c.tri.is_orientable() == t.is_orientable()
             });
             let ok = s.irreducible == Some(true) && same_topology;
             report.verified &= ok;
@@ -289,7 +299,9 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             quad::Algorithm::Ds,
             quad::Algorithm::Bbdl,
         ] {
-            let s = QuadStats::total(algo, &quad_all(&surfaces, algo, a.seed, ui));
+            let s = quadrangulate_with_bars(&mesh, algo, a.seed, ui)
+                .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?
+                .totals;
             report.verified &= s.verified;
             if ui.human() {
                 outln!(

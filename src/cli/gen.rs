@@ -14,6 +14,12 @@ use super::info::Report;
 use super::progress::spinner;
 use super::{meshio, print_json, CliError, Ui};
 
+/// A generator's refusal, as an input error (its message names the generator, the
+/// count and the limit).
+fn gen_error(e: gen::GenError) -> CliError {
+    CliError::Input(e.to_string())
+}
+
 fn too_large(what: &str, faces: u64) -> CliError {
     CliError::Input(format!(
         "{what}: {faces} faces requested, at most {MAX_FACES} are supported"
@@ -50,7 +56,8 @@ fn random_mesh(a: &RandomArgs, ui: Ui) -> Result<TriMesh, CliError> {
         min_faces: a.faces,
         flip_percent: a.flips,
         seed: a.seed,
-    });
+    })
+    .map_err(gen_error)?;
     pb.finish_and_clear();
     Ok(t.to_mesh())
 }
@@ -73,7 +80,7 @@ fn brick_mesh(a: &BrickArgs, ui: Ui) -> Result<TriMesh, CliError> {
     if let Some(p) = &a.paper {
         let (group, index) = parse_paper(p)?;
         let pb = spinner(ui, format!("building paper brick {group}{index}"));
-        let m = gen::paper_family(group, index);
+        let m = gen::paper_family(group, index).map_err(gen_error)?;
         pb.finish_and_clear();
         return Ok(m);
     }
@@ -88,13 +95,13 @@ fn brick_mesh(a: &BrickArgs, ui: Ui) -> Result<TriMesh, CliError> {
         if target > MAX_FACES as u64 {
             return Err(too_large("brick", target));
         }
-        let shape = gen::brick_target_shape(cavities, a.holes, target);
-        let (_, _, f) = gen::brick_shape_counts(cavities, a.holes, &shape);
+        let shape = gen::brick_target_shape(cavities, a.holes, target).map_err(gen_error)?;
+        let (_, _, f) = gen::brick_shape_counts(cavities, a.holes, &shape).map_err(gen_error)?;
         if f > MAX_FACES as u64 {
             return Err(too_large("brick", f));
         }
         let pb = spinner(ui, format!("building a brick with about {target} faces"));
-        let m = gen::brick_shaped(cavities, a.holes, &shape);
+        let m = gen::brick_shaped(cavities, a.holes, &shape).map_err(gen_error)?;
         pb.finish_and_clear();
         return Ok(m);
     }
@@ -107,12 +114,12 @@ fn brick_mesh(a: &BrickArgs, ui: Ui) -> Result<TriMesh, CliError> {
         holes: a.holes,
         resolution,
     };
-    let (_, _, f) = gen::brick_counts(&params);
+    let (_, _, f) = gen::brick_counts(&params).map_err(gen_error)?;
     if f > MAX_FACES as u64 {
         return Err(too_large("brick", f));
     }
     let pb = spinner(ui, format!("building a brick with {f} faces"));
-    let m = gen::brick(&params);
+    let m = gen::brick(&params).map_err(gen_error)?;
     pb.finish_and_clear();
     Ok(m)
 }
@@ -135,7 +142,7 @@ fn subdivide_mesh(a: &SubdivideArgs, ui: Ui) -> Result<TriMesh, CliError> {
         )));
     }
     let pb = spinner(ui, format!("subdividing {} levels", a.levels));
-    let m = gen::subdivide(&mesh, a.levels);
+    let m = gen::subdivide(&mesh, a.levels).map_err(gen_error)?;
     pb.finish_and_clear();
     Ok(m)
 }

@@ -1,7 +1,6 @@
 //! `contractible info FILE`: validation and topology per component. Surfaces with
 //! boundary are described (χ, orientability, genus, boundary loops and their lengths);
-//! a closed mesh's report has no boundary field at all, so it is what it was before
-//! boundaries were supported.
+//! a closed mesh's report has no boundary field at all.
 //!
 //! A mesh that is not a surface gets every problem at once ([`contractible::diagnose`]):
 //! a count per kind with a hint in plain words and the first few located examples, on
@@ -13,92 +12,15 @@
 use std::path::Path;
 
 use contractible::diagnose::{diagnose, Diagnosis, Problem, ProblemKind};
-use contractible::{ConedComponent, ConedSurfaces, SurfaceType, Surfaces, Triangulation};
+use contractible::{ConedSurfaces, Surfaces};
 use serde::Serialize;
 
 use super::args::InfoArgs;
 use super::meshio::Names;
 use super::{meshio, print_json, CliError, Ui};
 
-/// Topology of one connected surface.
-#[derive(Serialize, Debug, Clone)]
-pub struct ComponentInfo {
-    pub vertices: usize,
-    pub edges: usize,
-    pub faces: usize,
-    /// Printed as `euler_characteristic`, `orientable`, `genus` (orientable genus, `null`
-    /// for a non-orientable surface) and `euler_genus` (`2 - χ - b`), then
-    /// `boundary_loops` (b) for a surface with boundary only.
-    #[serde(flatten)]
-    pub surface: SurfaceType,
-    /// The length (number of edges) of each boundary loop, in loop order; left out for
-    /// a closed surface.
-    #[serde(skip_serializing_if = "Vec::is_empty")]
-    pub boundary_loop_lengths: Vec<usize>,
-    pub degree_min: usize,
-    pub degree_max: usize,
-    pub degree_mean: f64,
-    /// Entry `d`: number of vertices of degree `d`.
-    pub degree_histogram: Vec<usize>,
-}
-
-impl ComponentInfo {
-    pub fn of(t: &Triangulation) -> Self {
-        let hist = t.degree_histogram();
-        let degree_min = hist.iter().position(|&n| n > 0).unwrap_or(0);
-        let degree_max = hist.len().saturating_sub(1);
-        ComponentInfo {
-            vertices: t.vertex_count(),
-            edges: t.edge_count(),
-            faces: t.face_count(),
-            surface: SurfaceType::of(t),
-            boundary_loop_lengths: Vec::new(),
-            degree_min,
-            degree_max,
-            degree_mean: 2.0 * t.edge_count() as f64 / t.vertex_count().max(1) as f64,
-            degree_histogram: hist,
-        }
-    }
-}
-
-impl ComponentInfo {
-    /// The description of the surface with boundary a coned component stands for: the
-    /// virtual vertices, their edges and the cone faces are left out of every count and
-    /// degree. A closed component gives exactly [`Self::of`] of its triangulation.
-    pub fn of_coned(c: &ConedComponent) -> Self {
-        if c.is_closed() {
-            return Self::of(&c.tri);
-        }
-        let t = &c.tri;
-        let mut on_boundary = vec![false; t.vertex_capacity()];
-        for w in c.virtual_vertices() {
-            for x in t.link(w) {
-                on_boundary[x.index()] = true;
-            }
-        }
-        let mut hist: Vec<usize> = Vec::new();
-        for v in t.vertices().filter(|&v| !c.is_virtual(v)) {
-            // A boundary vertex has exactly one virtual neighbour (its loop's apex).
-            let d = t.degree(v) - usize::from(on_boundary[v.index()]);
-            if hist.len() <= d {
-                hist.resize(d + 1, 0);
-            }
-            hist[d] += 1;
-        }
-        let (vertices, edges, faces) = c.open_counts();
-        ComponentInfo {
-            vertices,
-            edges,
-            faces,
-            surface: c.surface_type(),
-            boundary_loop_lengths: c.loop_lengths(),
-            degree_min: hist.iter().position(|&n| n > 0).unwrap_or(0),
-            degree_max: hist.len().saturating_sub(1),
-            degree_mean: 2.0 * edges as f64 / vertices.max(1) as f64,
-            degree_histogram: hist,
-        }
-    }
-}
+/// Topology of one connected surface: the library's description (the same JSON keys).
+pub type ComponentInfo = contractible::task::ComponentDescription;
 
 /// The JSON result of `info` (also printed by `gen --json`).
 #[derive(Serialize, Debug, Clone)]

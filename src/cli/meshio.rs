@@ -195,6 +195,79 @@ fn describe_build_error(names: &Names, e: &BuildError) -> String {
     m
 }
 
+/// The command line's message for an error of a library task call on `mesh` (read from
+/// the input `names` describes; `command` is the subcommand): faces and vertices named
+/// as the file does, the pointer to `info`, the soup hint where it applies; input
+/// errors are exit code 2, the rest 1.
+pub fn task_error(
+    mesh: &TriMesh,
+    names: &Names,
+    command: &str,
+    e: contractible::Error,
+) -> CliError {
+    use contractible::Error;
+    match e {
+        Error::Mesh(b) => invalid(
+            mesh,
+            names,
+            format!("{}{SEE_INFO}", build_error_message(names, &b)),
+        ),
+        Error::NotClosed {
+            a,
+            b,
+            face,
+            boundary_loops,
+            ..
+        } => {
+            let why = match boundary_loops {
+                Some(n) => {
+                    let loops = if n == 1 { "loop" } else { "loops" };
+                    format!("this mesh has {n} boundary {loops}; `info` describes it")
+                }
+                None => match Surfaces::from_mesh_with_boundary(mesh) {
+                    Err(e) => format!(
+                        "nor is it a surface with boundary: {}{SEE_INFO}",
+                        describe_build_error(names, &e)
+                    ),
+                    Ok(_) => "`info` describes it".to_string(),
+                },
+            };
+            invalid(
+                mesh,
+                names,
+                format!(
+                    "{}: edge {} is a boundary edge, only in {}: `{command}` needs closed surfaces ({why})",
+                    names.shown,
+                    names.edge(a, b),
+                    names.face(face)
+                ),
+            )
+        }
+        Error::NonFiniteCoordinate { vertex, axis, value } => CliError::Input(format!(
+            "{}: vertex {} has a non-finite coordinate {axis} = {value}",
+            names.shown,
+            names.vertex_number(vertex as u32)
+        )),
+        Error::NoCoordinates { vertices, point } => CliError::Input(format!(
+            "{}: all {vertices} vertices are at the same point ({}, {}, {}): the file carries \
+             no coordinates (as `gen random` writes its surfaces); `{command}` needs vertex \
+             positions",
+            names.shown, point[0], point[1], point[2]
+        )),
+        Error::TooLarge {
+            algorithm,
+            faces,
+            limit,
+            ..
+        } if algorithm == contractible::quad::Algorithm::DsNaive => CliError::Input(format!(
+            "{}: --algo ds-naive is quadratic and refuses components above {limit} faces (this one has {faces}); use --algo ds or --algo frink-lct",
+            names.shown
+        )),
+        e if e.is_input() => CliError::Input(format!("{}: {e}", names.shown)),
+        e => CliError::Failure(format!("{}: {e}; nothing written", names.shown)),
+    }
+}
+
 /// What other commands add to a validation error: where to see every problem.
 const SEE_INFO: &str = "; `contractible info` lists every problem";
 
@@ -443,60 +516,6 @@ pub fn build(mesh: &TriMesh, names: &Names, ui: Ui) -> Result<(Surfaces, f64), C
     Ok((s, t.elapsed().as_secs_f64()))
 }
 
-/// [`build`] for a command that needs closed surfaces (`command` names it): a mesh
-/// whose only problem is its boundary is refused with a message that says so and how
-/// many boundary loops it has.
-pub fn build_closed(
-    mesh: &TriMesh,
-    names: &Names,
-    ui: Ui,
-    command: &str,
-) -> Result<(Surfaces, f64), CliError> {
-    let t = Instant::now();
-    let pb = spinner(ui, format!("checking {} faces", mesh.faces.len()));
-    let r = Surfaces::from_mesh(mesh);
-    let r = match r {
-        Err(BuildError::BoundaryEdge { a, b, face }) => {
-            // The boundary edge is the first problem found; say whether the mesh is a
-            // surface with boundary (which `info` describes) or broken in another way.
-            let open = Surfaces::from_mesh_with_boundary(mesh);
-            pb.finish_and_clear();
-            let why = match open {
-                Ok(s) => {
-                    let n = s.loop_count();
-                    let loops = if n == 1 { "loop" } else { "loops" };
-                    format!("this mesh has {n} boundary {loops}; `info` describes it")
-                }
-                Err(e) => format!(
-                    "nor is it a surface with boundary: {}{SEE_INFO}",
-                    describe_build_error(names, &e)
-                ),
-            };
-            return Err(invalid(
-                mesh,
-                names,
-                format!(
-                    "{}: edge {} is a boundary edge, only in {}: `{command}` needs closed surfaces ({why})",
-                    names.shown,
-                    names.edge(a, b),
-                    names.face(face)
-                ),
-            ));
-        }
-        r => r,
-    };
-    pb.finish_and_clear();
-    let s = r.map_err(|e| {
-        invalid(
-            mesh,
-            names,
-            format!("{}{SEE_INFO}", build_error_message(names, &e)),
-        )
-    })?;
-    warn_dropped(names, s.dropped_vertices.len(), ui);
-    Ok((s, t.elapsed().as_secs_f64()))
-}
-
 /// Validates and splits a mesh into compact surfaces that may have boundary, each
 /// closed by coning (with a spinner); returns them and the seconds taken. A valid mesh
 /// with boundary that looks like an unwelded soup (every triangle its own disc, say) gets
@@ -535,7 +554,7 @@ pub fn warn_soup_and_dropped(mesh: &TriMesh, s: &ConedSurfaces, names: &Names, u
     warn_dropped(names, s.dropped_vertices.len(), ui);
 }
 
-fn warn_dropped(names: &Names, dropped: usize, ui: Ui) {
+pub fn warn_dropped(names: &Names, dropped: usize, ui: Ui) {
     if dropped > 0 {
         ui.warn(&format!(
             "{}: {dropped} unused vertices dropped",

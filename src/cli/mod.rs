@@ -93,8 +93,13 @@ pub fn print_json<T: serde::Serialize>(value: &T) -> Result<(), CliError> {
     let s = serde_json::to_string_pretty(value)
         .map_err(|e| CliError::Failure(format!("cannot encode JSON: {e}")))?;
     outln!("{s}");
+    JSON_PRINTED.store(true, std::sync::atomic::Ordering::Relaxed);
     Ok(())
 }
+
+/// Whether a JSON report was printed (then a failure that follows it, such as `info`'s
+/// exit code 2 for a mesh that is not a surface, prints no second JSON value).
+static JSON_PRINTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 /// Whether the report (human or JSON) goes to stderr: stdout carries a mesh (`-o -`).
 static REPORT_TO_STDERR: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
@@ -147,6 +152,21 @@ pub fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
+            if ui.json && !JSON_PRINTED.load(std::sync::atomic::Ordering::Relaxed) {
+                // With --json, stdout carries one JSON value whatever happens.
+                let kind = match e {
+                    CliError::Input(_) => "input",
+                    CliError::Failure(_) => "failure",
+                };
+                let v = serde_json::json!({
+                    "error": {
+                        "kind": kind,
+                        "exit_code": e.exit_code(),
+                        "message": e.message(),
+                    }
+                });
+                outln!("{v:#}");
+            }
             for line in e.message().lines() {
                 eprintln!("error: {line}");
             }

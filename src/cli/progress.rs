@@ -149,3 +149,146 @@ pub fn byte_spinner(ui: Ui, msg: impl Into<String>) -> ProgressBar {
     pb.enable_steady_tick(Duration::from_millis(100));
     pb
 }
+
+/// The bars of one library task call, driven by its [`contractible::Monitor`]: a spinner
+/// while the input is checked, a [`StageBar`] following the algorithm inside each
+/// component (`VERB (NAME), component i/n`), and a bar over the components while their
+/// outputs are verified.
+pub struct TaskBars {
+    ui: Ui,
+    verb: &'static str,
+    name: String,
+    verify_message: &'static str,
+    check: Option<ProgressBar>,
+    run: Option<StageBar>,
+    verify: Option<ProgressBar>,
+    /// Simplification: edges contracted so far in the current component.
+    contracted: usize,
+    /// The number of components (known from the first run step).
+    components: usize,
+}
+
+impl TaskBars {
+    /// The monitor to pass in the task's options, and the bars it drives (call
+    /// [`TaskBars::finish`] on them when the call returns).
+    pub fn monitor(
+        ui: Ui,
+        verb: &'static str,
+        name: String,
+        verify_message: &'static str,
+    ) -> (
+        contractible::Monitor,
+        std::sync::Arc<std::sync::Mutex<TaskBars>>,
+    ) {
+        let bars = std::sync::Arc::new(std::sync::Mutex::new(TaskBars {
+            ui,
+            verb,
+            name,
+            verify_message,
+            check: None,
+            run: None,
+            verify: None,
+            contracted: 0,
+            components: 1,
+        }));
+        let shared = std::sync::Arc::clone(&bars);
+        let monitor = contractible::Monitor::new().observe(move |e| {
+            // A poisoned lock means a bar panicked: drawing is not worth a second panic.
+            if let Ok(mut b) = shared.lock() {
+                b.on(e);
+            }
+        });
+        (monitor, bars)
+    }
+
+    fn on(&mut self, e: &contractible::task::Event) {
+        use contractible::task::{Event, Step};
+        match *e {
+            Event::Step {
+                step: Step::Build,
+                faces,
+                ..
+            } => {
+                self.check = Some(spinner(self.ui, format!("checking {faces} faces")));
+            }
+            Event::Step {
+                step: Step::Run,
+                component,
+                components,
+                ..
+            } => {
+                if let Some(pb) = self.check.take() {
+                    pb.finish_and_clear();
+                }
+                self.contracted = 0;
+                self.components = components;
+                let prefix = component_prefix(self.verb, &self.name, component, components);
+                match &mut self.run {
+                    Some(bar) => bar.set_prefix(prefix),
+                    None => self.run = Some(StageBar::new(self.ui, prefix)),
+                }
+            }
+            Event::Step {
+                step: Step::Verify,
+                component,
+                components,
+                ..
+            } => {
+                if let Some(bar) = self.run.take() {
+                    bar.finish();
+                }
+                let pb = self
+                    .verify
+                    .get_or_insert_with(|| bar(self.ui, components as u64, self.verify_message));
+                pb.set_position(component as u64);
+            }
+            Event::Progress(p) => {
+                if let Some(bar) = &mut self.run {
+                    bar.observe(p);
+                }
+            }
+            Event::Pass(r) => {
+                self.contracted += r.contracted;
+                if let Some(bar) = &mut self.run {
+                    // Short enough for one terminal line.
+                    bar.set_prefix(format!(
+                        "{}, pass {} ({} contracted so far, {} faces)",
+                        component_prefix(self.verb, &self.name, r.component, self.components),
+                        r.pass + 1,
+                        self.contracted,
+                        r.faces
+                    ));
+                }
+            }
+        }
+    }
+
+    /// Clears every bar.
+    pub fn finish(&mut self) {
+        if let Some(pb) = self.check.take() {
+            pb.finish_and_clear();
+        }
+        if let Some(bar) = self.run.take() {
+            bar.finish();
+        }
+        if let Some(pb) = self.verify.take() {
+            pb.finish_and_clear();
+        }
+    }
+}
+
+/// Clears the bars of a finished call.
+pub fn finish(bars: &std::sync::Mutex<TaskBars>) {
+    if let Ok(mut b) = bars.lock() {
+        b.finish();
+    }
+}
+
+/// `VERB (NAME)`, plus `, component i/n` when there are several.
+pub fn component_prefix(verb: &str, name: &str, i: usize, n: usize) -> String {
+    if n > 1 {
+        format!("{verb} ({name}), component {}/{n}", i + 1)
+    } else {
+        format!("{verb} ({name})")
+    }
+}

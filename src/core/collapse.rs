@@ -389,7 +389,8 @@ mod tests {
             min_faces: 60,
             flip_percent: 30,
             seed: 3,
-        });
+        })
+        .expect("a random surface within the limits");
         let mut checked = 0;
         for (a0, b0, _) in t0.edges().collect::<Vec<_>>() {
             for (u, v) in [(a0, b0), (b0, a0)] {

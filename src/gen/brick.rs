@@ -50,6 +50,8 @@
 //! triangles each), bottom face, side walls (row by row from the top, ring order), then
 //! per site in index order its walls row by row from the top and its floor.
 
+use super::GenError;
+use crate::core::{MAX_FACES, MAX_VERTICES};
 use crate::mesh::TriMesh;
 
 /// Parameters of a brick with one uniform resolution (see [`BrickShape::uniform`]).
@@ -96,18 +98,31 @@ impl BrickShape {
         }
     }
 
-    fn check(&self, sites: u32, holes: u32) {
-        assert!(holes <= sites, "brick: more holes than sites");
-        assert!(self.site >= 1, "brick: site must be >= 1");
-        assert!(self.side_segments >= 1, "brick: side_segments must be >= 1");
-        assert!(
-            self.tunnel_segments >= 1 && (self.gap >= 1 || self.tunnel_segments >= 2),
-            "brick: tunnel_segments must be >= 1, and >= 2 when gap == 0"
-        );
-        assert!(
-            !(self.fan_bottom && holes > 0),
-            "brick: a fan bottom is only allowed without holes"
-        );
+    /// The parameter error of a brick with `sites` sites and `holes` holes of this
+    /// shape, if any.
+    fn check(&self, sites: u32, holes: u32) -> Result<(), GenError> {
+        let bad = |reason: &'static str| {
+            Err(GenError::BadParameter {
+                what: "brick",
+                reason,
+            })
+        };
+        if holes > sites {
+            return bad("more holes than sites");
+        }
+        if self.site == 0 {
+            return bad("site must be >= 1");
+        }
+        if self.side_segments == 0 {
+            return bad("side_segments must be >= 1");
+        }
+        if self.tunnel_segments == 0 || (self.gap == 0 && self.tunnel_segments < 2) {
+            return bad("tunnel_segments must be >= 1, and >= 2 when gap == 0");
+        }
+        if self.fan_bottom && holes > 0 {
+            return bad("a fan bottom is only allowed without holes");
+        }
+        Ok(())
     }
 }
 
@@ -199,24 +214,31 @@ impl Layout {
 /// segments: `F = 2(XY − n s²) + 2(XY − h s²) [or r for a fan] + 2rT + c·[2(4sd + s²)
 /// or 4s if d = 0] + 8hst`, `E = 3F/2`, `V = F/2 + 2 − 2h`.
 ///
-/// # Panics
-/// On invalid parameters (see [`brick_shaped`]).
-pub fn brick_shape_counts(cavities: u32, holes: u32, shape: &BrickShape) -> (u64, u64, u64) {
-    shape.check(cavities, holes);
+/// # Errors
+/// [`GenError::BadParameter`] on invalid parameters (see [`brick_shaped`]);
+/// [`GenError::TooLarge`] if a count does not fit `u64`.
+pub fn brick_shape_counts(
+    cavities: u32,
+    holes: u32,
+    shape: &BrickShape,
+) -> Result<(u64, u64, u64), GenError> {
+    shape.check(cavities, holes)?;
     let l = Layout::new(cavities, holes, shape);
-    let (s, n, h) = (l.s, l.n, l.h);
+    // In u128: every term fits (sites < 2^32 give a grid side below 2^49), so nothing
+    // overflows whatever the parameters; the result is then checked against u64.
+    let [s, n, h, x, y] = [l.s, l.n, l.h, l.x, l.y].map(u128::from);
     let c = n - h;
-    let xy = l.x * l.y;
-    let ring = 2 * (l.x + l.y);
-    let d = u64::from(shape.pit_segments);
-    let t = u64::from(shape.tunnel_segments);
+    let xy = x * y;
+    let ring = 2 * (x + y);
+    let d = u128::from(shape.pit_segments);
+    let t = u128::from(shape.tunnel_segments);
     let top = 2 * (xy - n * s * s);
     let bottom = if shape.fan_bottom {
         ring
     } else {
         2 * (xy - h * s * s)
     };
-    let sides = 2 * ring * u64::from(shape.side_segments);
+    let sides = 2 * ring * u128::from(shape.side_segments);
     let pits = if d == 0 {
         c * 4 * s
     } else {
@@ -225,14 +247,22 @@ pub fn brick_shape_counts(cavities: u32, holes: u32, shape: &BrickShape) -> (u64
     let tunnels = 8 * h * s * t;
     let f = top + bottom + sides + pits + tunnels;
     let v = f / 2 + 2 - 2 * h;
-    (v, 3 * f / 2, f)
+    let fit = |count: u128| {
+        u64::try_from(count).map_err(|_| GenError::TooLarge {
+            what: "brick",
+            unit: "faces",
+            count,
+            max: MAX_FACES,
+        })
+    };
+    Ok((fit(v)?, fit(3 * f / 2)?, fit(f)?))
 }
 
 /// Exact `(V, E, F)` of [`brick`]`(params)`, by formula, in O(1).
 ///
-/// # Panics
-/// On invalid parameters (see [`brick`]).
-pub fn brick_counts(params: &BrickParams) -> (u64, u64, u64) {
+/// # Errors
+/// As [`brick_shape_counts`].
+pub fn brick_counts(params: &BrickParams) -> Result<(u64, u64, u64), GenError> {
     brick_shape_counts(
         params.cavities,
         params.holes,
@@ -247,9 +277,10 @@ pub fn brick_counts(params: &BrickParams) -> (u64, u64, u64) {
 /// of genus `holes` with real, non-degenerate 3D positions; counts as
 /// [`brick_counts`]; numbering as in the module documentation. O(F) time and memory.
 ///
-/// # Panics
-/// If `holes > cavities`, `resolution == 0`, or the vertex count overflows `u32`.
-pub fn brick(params: &BrickParams) -> TriMesh {
+/// # Errors
+/// [`GenError::BadParameter`] if `holes > cavities` or `resolution == 0`;
+/// [`GenError::TooLarge`] beyond the core's vertex or face limits.
+pub fn brick(params: &BrickParams) -> Result<TriMesh, GenError> {
     brick_shaped(
         params.cavities,
         params.holes,
@@ -265,13 +296,23 @@ pub fn brick(params: &BrickParams) -> TriMesh {
 /// [`brick_shape_counts`]; deterministic numbering as in the module documentation.
 /// O(F) time and memory (about 20 ms per million triangles in release builds).
 ///
-/// # Panics
-/// If `holes > cavities`, `site == 0`, `side_segments == 0`, `tunnel_segments == 0`
-/// (or `< 2` with `gap == 0`), a fan bottom with holes, or more than `u32::MAX`
-/// vertices.
-pub fn brick_shaped(cavities: u32, holes: u32, shape: &BrickShape) -> TriMesh {
-    let (vc, _, fc) = brick_shape_counts(cavities, holes, shape);
-    assert!(vc <= u64::from(u32::MAX), "brick: too many vertices");
+/// # Errors
+/// [`GenError::BadParameter`] if `holes > cavities`, `site == 0`,
+/// `side_segments == 0`, `tunnel_segments == 0` (or `< 2` with `gap == 0`), or a fan
+/// bottom with holes; [`GenError::TooLarge`] for more vertices or faces than the core
+/// holds (checked by formula before anything is allocated).
+pub fn brick_shaped(cavities: u32, holes: u32, shape: &BrickShape) -> Result<TriMesh, GenError> {
+    let (vc, _, fc) = brick_shape_counts(cavities, holes, shape)?;
+    for (unit, count, max) in [("vertices", vc, MAX_VERTICES), ("faces", fc, MAX_FACES)] {
+        if count > max as u64 {
+            return Err(GenError::TooLarge {
+                what: "brick",
+                unit,
+                count: u128::from(count),
+                max,
+            });
+        }
+    }
     let l = Layout::new(cavities, holes, shape);
     let mut b = Builder {
         pos: Vec::with_capacity(vc as usize),
@@ -441,7 +482,7 @@ pub fn brick_shaped(cavities: u32, holes: u32, shape: &BrickShape) -> TriMesh {
     }
     debug_assert_eq!(b.pos.len() as u64, vc);
     debug_assert_eq!(b.faces.len() as u64, fc);
-    TriMesh::with_positions(b.pos, b.faces)
+    Ok(TriMesh::with_positions(b.pos, b.faces))
 }
 
 struct Builder {
@@ -516,10 +557,19 @@ fn site_rect(x0: u64, y0: u64, w: u64, h: u64) -> impl Iterator<Item = (u64, u64
 /// O(site_max⁴) formula evaluations, about `(target / 8000)²` (milliseconds for
 /// the paper's 4.2M-triangle targets).
 ///
-/// # Panics
-/// If `holes > cavities`.
-pub fn brick_target_shape(cavities: u32, holes: u32, target_triangles: u64) -> BrickShape {
-    assert!(holes <= cavities, "brick: more holes than sites");
+/// # Errors
+/// [`GenError::BadParameter`] if `holes > cavities`.
+pub fn brick_target_shape(
+    cavities: u32,
+    holes: u32,
+    target_triangles: u64,
+) -> Result<BrickShape, GenError> {
+    if holes > cavities {
+        return Err(GenError::BadParameter {
+            what: "brick",
+            reason: "more holes than sites",
+        });
+    }
     let target = target_triangles.max(1);
     let mut best: Option<((u64, u64), BrickShape)> = None;
     // Relative error bucket (steps of 0.5 %) of a count above the target.
@@ -536,7 +586,7 @@ pub fn brick_target_shape(cavities: u32, holes: u32, target_triangles: u64) -> B
             side_segments: 1,
             fan_bottom: holes == 0,
         };
-        let (_, _, f_min) = brick_shape_counts(cavities, holes, &coarsest);
+        let (_, _, f_min) = brick_shape_counts(cavities, holes, &coarsest)?;
         if too_big(f_min, &best) {
             break;
         }
@@ -561,7 +611,7 @@ pub fn brick_target_shape(cavities: u32, holes: u32, target_triangles: u64) -> B
                             side_segments: 1,
                             fan_bottom,
                         };
-                        let (_, _, f1) = brick_shape_counts(cavities, holes, &shape);
+                        let (_, _, f1) = brick_shape_counts(cavities, holes, &shape)?;
                         if too_big(f1, &best) {
                             // The count grows with every parameter: larger ones are worse.
                             if fan_bottom || holes > 0 {
@@ -605,7 +655,9 @@ pub fn brick_target_shape(cavities: u32, holes: u32, target_triangles: u64) -> B
             }
         }
     }
-    best.expect("at least one shape is searched").1
+    // The first site size always yields a valid candidate (site 1, gap 1, one tunnel
+    // segment), so `best` is set; the uniform shape stands in for the impossible case.
+    Ok(best.map_or_else(|| BrickShape::uniform(1), |(_, shape)| shape))
 }
 
 /// The brick with `cavities` sites, `holes` of them through-holes, whose triangle count
@@ -618,13 +670,17 @@ pub fn brick_target_shape(cavities: u32, holes: u32, target_triangles: u64) -> B
 /// allow cannot be met (see [`paper_family`]).
 /// O(F) time plus the shape search.
 ///
-/// # Panics
-/// If `holes > cavities` or the vertex count overflows `u32`.
-pub fn brick_with_target(cavities: u32, holes: u32, target_triangles: u64) -> TriMesh {
+/// # Errors
+/// As [`brick_shaped`].
+pub fn brick_with_target(
+    cavities: u32,
+    holes: u32,
+    target_triangles: u64,
+) -> Result<TriMesh, GenError> {
     brick_shaped(
         cavities,
         holes,
-        &brick_target_shape(cavities, holes, target_triangles),
+        &brick_target_shape(cavities, holes, target_triangles)?,
     )
 }
 
@@ -711,10 +767,13 @@ pub fn paper_entry(group: char, index: u32) -> Option<PaperEntry> {
 
 /// The shape [`paper_family`] uses for a member (see [`brick_target_shape`]).
 ///
-/// # Panics
-/// If the member does not exist.
-pub fn paper_family_shape(group: char, index: u32) -> BrickShape {
-    let e = paper_entry(group, index).expect("paper_family: no such member");
+/// # Errors
+/// [`GenError::BadParameter`] if the member does not exist.
+pub fn paper_family_shape(group: char, index: u32) -> Result<BrickShape, GenError> {
+    let e = paper_entry(group, index).ok_or(GenError::BadParameter {
+        what: "paper_family",
+        reason: "no such member (B0–B9, C0–C7, D0–D9)",
+    })?;
     brick_target_shape(e.cavities, e.holes, e.triangles)
 }
 
@@ -738,9 +797,13 @@ pub fn paper_family_shape(group: char, index: u32) -> BrickShape {
 /// the pits. C7 is likewise limited by its 3,500 tunnels (each at least 16 triangles
 /// here, as two adjacent tunnels may not share a wall).
 ///
-/// # Panics
-/// If the member does not exist.
-pub fn paper_family(group: char, index: u32) -> TriMesh {
-    let e = paper_entry(group, index).expect("paper_family: no such member");
-    brick_shaped(e.cavities, e.holes, &paper_family_shape(group, index))
+/// # Errors
+/// [`GenError::BadParameter`] if the member does not exist.
+pub fn paper_family(group: char, index: u32) -> Result<TriMesh, GenError> {
+    let shape = paper_family_shape(group, index)?;
+    let e = paper_entry(group, index).ok_or(GenError::BadParameter {
+        what: "paper_family",
+        reason: "no such member (B0–B9, C0–C7, D0–D9)",
+    })?;
+    brick_shaped(e.cavities, e.holes, &shape)
 }

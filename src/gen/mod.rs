@@ -33,3 +33,49 @@ pub use isosurface::{
 pub use random::{random, seed_surface, RandomParams, SurfaceKind};
 pub use standard::{icosahedron, klein_bottle, octahedron, projective_plane6, tetrahedron, torus7};
 pub use subdivide::subdivide;
+
+/// Why a generator produced nothing: the parameters ask for more than the 32-bit ids of
+/// the core can hold, or the mesh given to transform is not what it needs.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum GenError {
+    /// The output would have more vertices or faces than the core's ids hold
+    /// ([`crate::core::MAX_VERTICES`], [`crate::core::MAX_FACES`]).
+    #[error("{what}: {count} {unit} requested, at most {max} are supported")]
+    TooLarge {
+        /// Which generator.
+        what: &'static str,
+        /// `"faces"` or `"vertices"`.
+        unit: &'static str,
+        /// The count the parameters imply.
+        count: u128,
+        /// The most supported.
+        max: usize,
+    },
+    /// A parameter is out of its range.
+    #[error("{what}: {reason}")]
+    BadParameter {
+        /// Which generator.
+        what: &'static str,
+        /// What is wrong.
+        reason: &'static str,
+    },
+    /// A face of the input mesh refers to a vertex outside `0..vertex_count`.
+    #[error("face {face}: vertex index {vertex} out of range (vertex count {vertex_count})")]
+    VertexOutOfRange {
+        /// The face.
+        face: usize,
+        /// The index.
+        vertex: u32,
+        /// The mesh's vertex count.
+        vertex_count: usize,
+    },
+    /// The input mesh's positions are not one per vertex.
+    #[error("the mesh has {vertices} vertices but {positions} positions")]
+    PositionCount {
+        /// Vertex count.
+        vertices: usize,
+        /// Position count.
+        positions: usize,
+    },
+}

@@ -1,6 +1,7 @@
 //! Random closed triangulations of any surface, grown by random vertex splits.
 
-use crate::core::{Triangulation, VertexId};
+use super::GenError;
+use crate::core::{Triangulation, VertexId, MAX_FACES, MAX_VERTICES};
 use crate::rng::Rng;
 
 /// Which closed surface to triangulate.
@@ -88,8 +89,29 @@ fn consistently_oriented(faces: &[[u32; 3]], vertices: u32) -> Vec<[u32; 3]> {
 
 /// The smallest seed triangulation this generator uses for `surface`: T4 for the sphere,
 /// connected sums of `g` 7-vertex tori, or of `h` 6-vertex projective planes.
-/// Vertices `4`, `7g − 3(g−1)`, `6h − 3(h−1)` respectively.
-pub fn seed_surface(surface: SurfaceKind) -> Triangulation {
+/// Vertices `4`, `7g − 3(g−1)`, `6h − 3(h−1)` respectively; faces `4`, `12g + 2`,
+/// `8h + 2`.
+///
+/// # Errors
+/// [`GenError::TooLarge`] if those counts exceed what the core holds.
+pub fn seed_surface(surface: SurfaceKind) -> Result<Triangulation, GenError> {
+    let (faces, vertices) = seed_counts(surface);
+    if faces > MAX_FACES as u128 {
+        return Err(GenError::TooLarge {
+            what: "seed surface",
+            unit: "faces",
+            count: faces,
+            max: MAX_FACES,
+        });
+    }
+    if vertices > MAX_VERTICES as u128 {
+        return Err(GenError::TooLarge {
+            what: "seed surface",
+            unit: "vertices",
+            count: vertices,
+            max: MAX_VERTICES,
+        });
+    }
     let (mesh, count) = match surface {
         SurfaceKind::Orientable(0) => (super::tetrahedron(), 1),
         SurfaceKind::Orientable(g) => (super::torus7(), g),
@@ -105,8 +127,26 @@ pub fn seed_surface(surface: SurfaceKind) -> Triangulation {
         connected_sum_into(&mut faces, nv, piece, piece_v);
         nv += piece_v - 3;
     }
-    Triangulation::from_faces(nv as usize, &faces)
-        .expect("connected sums of simplicial surfaces are simplicial surfaces")
+    // Connected sums of simplicial surfaces are simplicial surfaces, and the counts fit
+    // (checked above), so the build cannot fail; a failure would be reported, not hidden.
+    Triangulation::from_faces(nv as usize, &faces).map_err(|_| GenError::TooLarge {
+        what: "seed surface",
+        unit: "faces",
+        count: faces.len() as u128,
+        max: MAX_FACES,
+    })
+}
+
+/// The faces and vertices of [`seed_surface`]`(surface)`.
+fn seed_counts(surface: SurfaceKind) -> (u128, u128) {
+    match surface {
+        SurfaceKind::Orientable(0) => (4, 4),
+        SurfaceKind::Orientable(g) => (12 * g as u128 + 2, 4 * g as u128 + 3),
+        SurfaceKind::NonOrientable(h) => {
+            let h = h.max(1) as u128;
+            (8 * h + 2, 3 * h + 3)
+        }
+    }
 }
 
 /// A random triangulation of `params.surface` with at least `params.min_faces` faces.
@@ -118,8 +158,20 @@ pub fn seed_surface(surface: SurfaceKind) -> Triangulation {
 /// probability `flip_percent`% pick a face `below(F)` and slot `below(3)` and flip the edge
 /// opposite that corner if it is flippable. Deterministic for a given `params`.
 /// O(F · average degree).
-pub fn random(params: &RandomParams) -> Triangulation {
-    let mut tri = seed_surface(params.surface);
+///
+/// # Errors
+/// [`GenError::TooLarge`] if the seed surface or `min_faces` (plus the 2 faces a split
+/// may overshoot by) exceeds what the core holds.
+pub fn random(params: &RandomParams) -> Result<Triangulation, GenError> {
+    if params.min_faces > MAX_FACES - 2 {
+        return Err(GenError::TooLarge {
+            what: "random",
+            unit: "faces",
+            count: params.min_faces as u128,
+            max: MAX_FACES - 2,
+        });
+    }
+    let mut tri = seed_surface(params.surface)?;
     let mut rng = Rng::new(params.seed);
     while tri.face_count() < params.min_faces {
         let u = VertexId(rng.index(tri.vertex_capacity()) as u32);
@@ -127,16 +179,20 @@ pub fn random(params: &RandomParams) -> Triangulation {
         let d = link.len();
         let i = rng.index(d);
         let j = (i + 1 + rng.index(d - 1)) % d;
-        tri.split_vertex(u, link[i], link[j])
-            .expect("link vertices of a live vertex");
+        // `link[i]` and `link[j]` are distinct link vertices of the live vertex `u`, and
+        // the face count stays below MAX_FACES (checked above), so the split succeeds.
+        if tri.split_vertex(u, link[i], link[j]).is_err() {
+            break;
+        }
         if params.flip_percent > 0 && rng.chance(params.flip_percent as u64, 100) {
             let f = crate::core::FaceId(rng.index(tri.face_capacity()) as u32);
             let c = f.corner(rng.index(3) as u32);
             let [a, b] = tri.edge_endpoints(c);
             if tri.is_flippable(a, b) {
-                tri.flip(a, b).expect("checked flippable");
+                // Checked flippable: cannot fail.
+                let _ = tri.flip(a, b);
             }
         }
     }
-    tri
+    Ok(tri)
 }

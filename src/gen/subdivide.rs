@@ -1,5 +1,7 @@
 //! Loop-style 1-to-4 midpoint subdivision (topology only; no smoothing).
 
+use super::GenError;
+use crate::core::{MAX_FACES, MAX_VERTICES};
 use crate::mesh::TriMesh;
 
 /// Numbers the undirected edges of `faces` in order of first appearance.
@@ -72,24 +74,61 @@ fn number_edges(vertex_count: usize, faces: &[[u32; 3]]) -> (Vec<[u32; 3]>, usiz
 /// Complexity: `O(F_out)` time and memory for bounded vertex degree (see the edge
 /// numbering, which uses per-vertex CSR buckets; no hashing, no sorting).
 ///
-/// # Panics
-/// If a face refers to a vertex `>= vertex_count`, or the output would need more than
-/// `u32::MAX` vertices.
-pub fn subdivide(mesh: &TriMesh, levels: u32) -> TriMesh {
+/// # Errors
+/// [`GenError::VertexOutOfRange`] if a face refers to a vertex `>= vertex_count`,
+/// [`GenError::PositionCount`] if the positions are not one per vertex, and
+/// [`GenError::TooLarge`] if the output would have more faces or vertices than the
+/// core holds (checked before anything is allocated: faces grow 4× per level).
+pub fn subdivide(mesh: &TriMesh, levels: u32) -> Result<TriMesh, GenError> {
+    for (face, f) in mesh.faces.iter().enumerate() {
+        if let Some(&vertex) = f.iter().find(|&&v| v as usize >= mesh.vertex_count) {
+            return Err(GenError::VertexOutOfRange {
+                face,
+                vertex,
+                vertex_count: mesh.vertex_count,
+            });
+        }
+    }
+    if let Some(p) = &mesh.positions {
+        if p.len() != mesh.vertex_count {
+            return Err(GenError::PositionCount {
+                vertices: mesh.vertex_count,
+                positions: p.len(),
+            });
+        }
+    }
+    // F·4^L faces and at most V + F·(4^L − 1) vertices: level i adds one vertex per edge,
+    // at most 3·F·4^i, and these sum to F·(4^L − 1) over the L levels.
+    let growth = 4u128.checked_pow(levels).unwrap_or(u128::MAX);
+    let faces = (mesh.faces.len() as u128).saturating_mul(growth);
+    let vertices = (mesh.vertex_count as u128).saturating_add(faces);
+    if faces > MAX_FACES as u128 && !mesh.faces.is_empty() {
+        return Err(GenError::TooLarge {
+            what: "subdivide",
+            unit: "faces",
+            count: faces,
+            max: MAX_FACES,
+        });
+    }
+    if vertices > MAX_VERTICES as u128 {
+        return Err(GenError::TooLarge {
+            what: "subdivide",
+            unit: "vertices",
+            count: vertices,
+            max: MAX_VERTICES,
+        });
+    }
     let mut cur = mesh.clone();
     for _ in 0..levels {
         cur = subdivide_once(&cur);
     }
-    cur
+    Ok(cur)
 }
 
+/// One level; the caller checked every index and that the output's ids fit `u32`.
 fn subdivide_once(mesh: &TriMesh) -> TriMesh {
     let v = mesh.vertex_count;
     let (face_edges, edge_count) = number_edges(v, &mesh.faces);
-    assert!(
-        v + edge_count <= u32::MAX as usize,
-        "subdivide: too many vertices for u32 ids"
-    );
     let base = v as u32;
     let mut faces = Vec::with_capacity(4 * mesh.faces.len());
     for (f, e) in mesh.faces.iter().zip(&face_edges) {

@@ -631,7 +631,8 @@ mod tests {
             min_faces: 200,
             flip_percent: 30,
             seed: 1,
-        });
+        })
+        .expect("a random surface within the limits");
         let t = crate::irreducible::rs::reduce(t, &Default::default()).tri;
         let mut removed = (0..t.face_capacity() as u32)
             .map(FaceId)
@@ -733,12 +734,15 @@ mod tests {
             .into_iter()
             .enumerate()
         {
-            surfaces.push(random(&RandomParams {
-                surface: kind,
-                min_faces: 18,
-                flip_percent: 30,
-                seed: k as u64,
-            }));
+            surfaces.push(
+                random(&RandomParams {
+                    surface: kind,
+                    min_faces: 18,
+                    flip_percent: 30,
+                    seed: k as u64,
+                })
+                .expect("a random surface within the limits"),
+            );
         }
         let mut needing_blossoms = 0;
         for t in &surfaces {
@@ -804,7 +808,8 @@ mod tests {
             min_faces: 3000,
             flip_percent: 30,
             seed: 5,
-        });
+        })
+        .expect("a random surface within the limits");
         // A sparse start: from a perfect pairing, for every 97th face `a` paired with
         // `b`, re-pair `b` with a neighbour `c` and free `a` and `c`'s former mate `d`
         // (so the two free faces of each change are not neighbours).
@@ -884,7 +889,8 @@ mod tests {
                 min_faces: 400,
                 flip_percent: 50,
                 seed: 7 + k as u64,
-            });
+            })
+            .expect("a random surface within the limits");
             let mut p = Pairing::new(t.face_capacity());
             let (c, _) = run(&t, &mut p, &mut progress::ignore).expect("a pairing");
             assert!(p.is_perfect(&t) && p.check(&t).is_ok());

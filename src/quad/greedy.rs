@@ -95,7 +95,8 @@ mod tests {
             min_faces: 400,
             flip_percent: 30,
             seed: 5,
-        });
+        })
+        .expect("a random surface within the limits");
         let a = initial_pairing(&t, &Options { seed: 1 });
         assert_eq!(a, initial_pairing(&t, &Options { seed: 1 }));
         assert_ne!(a, initial_pairing(&t, &Options { seed: 2 }));

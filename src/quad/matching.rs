@@ -42,7 +42,8 @@ mod tests {
             min_faces: 600,
             flip_percent: 40,
             seed: 3,
-        });
+        })
+        .expect("a random surface within the limits");
         let mut p = initial_pairing(&t);
         assert!(p.is_empty());
         assert_eq!(p.face_capacity(), t.face_capacity());

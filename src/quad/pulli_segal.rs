@@ -531,7 +531,8 @@ mod tests {
                 min_faces: 600,
                 flip_percent: 30,
                 seed: 11 + k as u64,
-            });
+            })
+            .expect("a random surface within the limits");
             for rules in Rules::ALL {
                 for seed in 0..3 {
                     let opts = Options { seed };
@@ -637,7 +638,8 @@ mod corpus {
                 min_faces: 50_000,
                 flip_percent: 30,
                 seed: 900 + k as u64,
-            });
+            })
+            .expect("a random surface within the limits");
             faces_random += t.face_count();
             for (i, &r) in rules.iter().enumerate() {
                 for seed in seeds.clone() {

@@ -106,9 +106,14 @@ pub enum Description {
         /// Vertices no face uses.
         dropped_vertices: usize,
     },
-    /// They do not: every problem at once ([`crate::diagnose`]), with up to 5 located
-    /// examples of each kind.
-    Problems(Diagnosis),
+    /// They do not: every problem at once, with up to 5 located examples of each kind,
+    /// and the first problem the validation meets, as the other task calls report it.
+    Problems {
+        /// Every problem ([`crate::diagnose`]).
+        diagnosis: Diagnosis,
+        /// The error [`crate::reduce`] and the others would return for this mesh.
+        first: crate::core::BuildError,
+    },
 }
 
 impl Description {
@@ -123,7 +128,7 @@ impl Description {
             Description::Surfaces { components, .. } => {
                 components.iter().all(|c| c.surface.is_closed())
             }
-            Description::Problems(_) => false,
+            Description::Problems { .. } => false,
         }
     }
 
@@ -131,7 +136,7 @@ impl Description {
     pub fn components(&self) -> &[ComponentDescription] {
         match self {
             Description::Surfaces { components, .. } => components,
-            Description::Problems(_) => &[],
+            Description::Problems { .. } => &[],
         }
     }
 }
@@ -158,7 +163,7 @@ impl fmt::Display for Description {
                 }
                 Ok(())
             }
-            Description::Problems(d) => {
+            Description::Problems { diagnosis: d, .. } => {
                 write!(f, "not a surface:")?;
                 for g in &d.groups {
                     write!(f, "\n  {:?}: {}", g.kind, g.count)?;
@@ -178,7 +183,8 @@ impl fmt::Display for Description {
 /// is not a surface is a description, not an error). O(F log F).
 ///
 /// # Errors
-/// Only [`Error::Cancelled`].
+/// [`Error::Mesh`] with [`crate::BuildError::TooLarge`] for more vertices or faces than
+/// the core's 32-bit ids hold; [`Error::Cancelled`].
 ///
 /// # Example
 /// ```
@@ -193,6 +199,15 @@ pub fn describe(mesh: &TriMesh) -> Result<Description, Error> {
 
 /// [`describe`] reporting to (and cancelled by) `monitor`.
 pub fn describe_monitored(mesh: &TriMesh, monitor: &Monitor) -> Result<Description, Error> {
+    use crate::core::{BuildError, MAX_FACES, MAX_VERTICES};
+    for (what, count, max) in [
+        ("vertices", mesh.vertex_count, MAX_VERTICES),
+        ("faces", mesh.faces.len(), MAX_FACES),
+    ] {
+        if count > max {
+            return Err(Error::Mesh(BuildError::TooLarge { what, count, max }));
+        }
+    }
     monitor.step(Step::Build, 0, 0, mesh.faces.len())?;
     Ok(match ConedSurfaces::from_mesh(mesh) {
         Ok(s) => Description::Surfaces {
@@ -203,7 +218,10 @@ pub fn describe_monitored(mesh: &TriMesh, monitor: &Monitor) -> Result<Descripti
                 .collect(),
             dropped_vertices: s.dropped_vertices.len(),
         },
-        Err(_) => Description::Problems(diagnose(mesh, 5)),
+        Err(first) => Description::Problems {
+            diagnosis: diagnose(mesh, 5),
+            first,
+        },
     })
 }
 

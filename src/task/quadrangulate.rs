@@ -360,7 +360,7 @@ mod tests {
     /// A component above ds-naive's limit is refused, located, before any work.
     #[test]
     fn ds_naive_refuses_large_components() {
-        let big = gen::subdivide(&gen::octahedron(), 7);
+        let big = gen::subdivide(&gen::octahedron(), 7).expect("a valid mesh within the limits");
         assert!(big.faces.len() > DS_NAIVE_MAX_FACES);
         let e = quadrangulate(
             &big,

@@ -72,7 +72,8 @@ fn random_with_positions(surface: SurfaceKind, min_faces: usize, seed: u64) -> T
         min_faces,
         flip_percent: 30,
         seed,
-    });
+    })
+    .expect("a random surface within the limits");
     with_positions(&t, seed)
 }
 
@@ -126,7 +127,8 @@ pub fn closed_surfaces() -> Vec<Generated> {
         cavities: 6,
         holes: 3,
         resolution: 2,
-    });
+    })
+    .expect("valid brick parameters");
     push("brick 6 sites 3 holes", holes, vec![O(3)]);
     // Cavities only, pyramidal dents and a fan bottom: a sphere with high-degree vertices.
     let dents = brick_shaped(
@@ -140,23 +142,24 @@ pub fn closed_surfaces() -> Vec<Generated> {
             side_segments: 1,
             fan_bottom: true,
         },
-    );
+    )
+    .expect("valid brick parameters");
     push("brick 4 dents fan bottom", dents, vec![O(0)]);
     // Subdivision keeps the surface of the 9-vertex Klein bottle, the 7-vertex torus and
     // the 6-vertex projective plane.
     push(
         "Klein bottle subdivided 3 times",
-        subdivide(&placed(&klein_bottle(), 1), 3),
+        subdivide(&placed(&klein_bottle(), 1), 3).expect("a valid mesh within the limits"),
         vec![N(2)],
     );
     push(
         "torus7 subdivided 3 times",
-        subdivide(&torus7(), 3),
+        subdivide(&torus7(), 3).expect("a valid mesh within the limits"),
         vec![O(1)],
     );
     push(
         "RP2_6 subdivided 3 times",
-        subdivide(&placed(&projective_plane6(), 2), 3),
+        subdivide(&placed(&projective_plane6(), 2), 3).expect("a valid mesh within the limits"),
         vec![N(1)],
     );
     // A slab with two holes by marching tetrahedra, cells of about 0.2.
@@ -176,13 +179,14 @@ pub fn closed_surfaces() -> Vec<Generated> {
     // Four components in one mesh: orientable and not, of four genera.
     let parts = [
         random_with_positions(N(3), 800, 77),
-        subdivide(&torus7(), 1),
+        subdivide(&torus7(), 1).expect("a valid mesh within the limits"),
         tetrahedron(),
         brick(&BrickParams {
             cavities: 4,
             holes: 2,
             resolution: 1,
-        }),
+        })
+        .expect("valid brick parameters"),
     ];
     push(
         "four components",

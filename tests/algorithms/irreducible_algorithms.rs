@@ -41,7 +41,8 @@ fn random_surfaces_reduce_to_irreducible_triangulations_of_the_same_surface() {
                     min_faces,
                     flip_percent,
                     seed: 100 * k as u64 + seed,
-                });
+                })
+                .expect("a random surface within the limits");
                 let label = format!("{surface:?} seed {seed} F={}", input.face_count());
                 run(&input, alg, seed, &label);
             }
@@ -146,7 +147,8 @@ fn torus_and_projective_plane_reduce_onto_the_published_lists() {
                     min_faces: 60 + 250 * seed as usize,
                     flip_percent: 25 * (seed % 3) as u32,
                     seed: 7000 + seed,
-                });
+                })
+                .expect("a random surface within the limits");
                 let label = format!("{surface:?} seed {seed}");
                 let r = run(&input, alg, seed, &label);
                 let name = on_list(&r.tri, list)
@@ -197,7 +199,8 @@ fn same_input_and_seed_give_identical_results() {
                 min_faces: 2000,
                 flip_percent: 20,
                 seed: 11,
-            });
+            })
+            .expect("a random surface within the limits");
             let a = reduce(input.clone(), alg, &options(5));
             let b = reduce(input.clone(), alg, &options(5));
             assert!(a.tri == b.tri, "{} {surface:?}: outputs differ", alg.name());

@@ -29,4 +29,5 @@ mod quad_qfuzz;
 mod rs_algorithm;
 mod rs_variants;
 mod simplify;
+mod tasks;
 mod vectors;

@@ -201,7 +201,8 @@ fn critical_cycles_agree_on_random_surfaces() {
                 min_faces,
                 flip_percent: 30,
                 seed: 1000 + k as u64,
-            });
+            })
+            .expect("a random surface within the limits");
             let label = format!("{surface:?} {min_faces}");
             let (e, c) = compare_all(&t, &label);
             assert!(
@@ -391,7 +392,8 @@ fn dual_graphs_of_random_surfaces_have_perfect_matchings() {
                 min_faces,
                 flip_percent: 30,
                 seed: 77 + k as u64,
-            });
+            })
+            .expect("a random surface within the limits");
             assert_perfect_dual_matching(&t, &format!("{surface:?} {min_faces}"));
             cases += 1;
         }
@@ -429,7 +431,8 @@ fn face_list_oracle_agrees_with_list_names_and_the_core() {
             min_faces: 500,
             flip_percent: 30,
             seed: 77 + k as u64,
-        });
+        })
+        .expect("a random surface within the limits");
         let got = euler_and_orientability(&t.face_list()).expect("closed");
         assert_eq!(
             got,

@@ -40,6 +40,7 @@ fn random_surface(kind: SurfaceKind, faces: usize) -> Triangulation {
         flip_percent: 30,
         seed: 11,
     })
+    .expect("a random surface within the limits")
 }
 
 #[test]
@@ -102,7 +103,8 @@ fn tri_quad_reports_the_initial_step_and_the_completion() {
         let label = algo.name();
         let options = quad::Options { seed: 2 };
         let mut reports = Vec::new();
-        let q = quad::convert_observed(t.clone(), algo, &options, &mut |p| reports.push(p));
+        let q = quad::convert_observed(t.clone(), algo, &options, &mut |p| reports.push(p))
+            .expect("a closed triangulation");
         let plain = quad::convert(t.clone(), algo, &options).expect("a closed triangulation");
         assert_eq!(q.pairing, plain.pairing, "{label}");
         check_reports(&reports, label);

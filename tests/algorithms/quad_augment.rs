@@ -140,7 +140,8 @@ fn small_random_surfaces_are_completed_to_maximum_matchings() {
                     min_faces,
                     flip_percent: 40,
                     seed,
-                });
+                })
+                .expect("a random surface within the limits");
                 if t.face_count() > 2_000 {
                     continue;
                 }
@@ -163,7 +164,8 @@ fn medium_random_surfaces_are_completed_in_near_linear_work() {
                 min_faces: 30_000,
                 flip_percent: 30,
                 seed: 100 + seed,
-            });
+            })
+            .expect("a random surface within the limits");
             for (name, start) in starts(&t, seed) {
                 let label = format!("{kind:?} seed {seed} F {} {name}", t.face_count());
                 let c = complete_checked(&t, &start, &label);
@@ -192,7 +194,8 @@ fn triangulations_with_removed_faces_are_completed() {
             min_faces: 800,
             flip_percent: 30,
             seed: 9,
-        });
+        })
+        .expect("a random surface within the limits");
         let r = contractible::irreducible::rs::reduce(t, &Default::default());
         let t = r.tri;
         assert!(
@@ -293,7 +296,8 @@ fn the_matching_route_is_the_completion_from_empty() {
         min_faces: 5_000,
         flip_percent: 30,
         seed: 1,
-    });
+    })
+    .expect("a random surface within the limits");
     let start = matching::initial_pairing(&t);
     assert!(start.is_empty() && start.face_capacity() == t.face_capacity());
     let c = complete_checked(&t, &start, "matching");
@@ -308,7 +312,7 @@ fn the_matching_route_is_the_completion_from_empty() {
 #[test]
 #[cfg_attr(debug_assertions, ignore = "4.2M triangles: runs in release builds")]
 fn c0_greedy_leftovers_are_completed_in_near_linear_work() {
-    let mesh = contractible::gen::paper_family('C', 0);
+    let mesh = contractible::gen::paper_family('C', 0).expect("valid brick parameters");
     let t = Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("C0");
     let start = greedy(&t, 1);
     let unpaired = t.face_count() - 2 * start.len();
@@ -377,7 +381,8 @@ fn long_augmenting_paths_are_found() {
             min_faces: 20_000,
             flip_percent: 30,
             seed: 40 + k as u64,
-        });
+        })
+        .expect("a random surface within the limits");
         let mut p = matching::initial_pairing(&t);
         complete(&t, &mut p).expect("a closed triangulation");
         assert_perfect(&t, &p, "base");
@@ -416,7 +421,8 @@ fn sparse_ps_leftovers_are_completed_by_single_root_searches() {
     use contractible::quad::{pulli_segal, Options};
     for (group, member, seed) in [('C', 4, 1), ('C', 2, 0), ('B', 2, 1)] {
         let label = format!("{group}{member} PS seed {seed}");
-        let s = Surfaces::from_mesh(&paper_family(group, member)).expect("closed surface");
+        let s = Surfaces::from_mesh(&paper_family(group, member).expect("valid brick parameters"))
+            .expect("closed surface");
         let t = &s.components[0].tri;
         let start = pulli_segal::initial_pairing(t, &Options { seed });
         let unpaired = t.face_count() - 2 * start.len();

@@ -48,7 +48,8 @@ fn every_algorithm_on_random_surfaces_of_every_kind() {
                 min_faces: faces,
                 flip_percent: 25,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             for algo in ALGORITHMS {
                 let q = convert(input.clone(), algo, &Options { seed })
                     .expect("a closed triangulation");
@@ -114,7 +115,8 @@ fn the_same_input_and_seed_give_the_same_quads() {
         min_faces: 4000,
         flip_percent: 25,
         seed: 9,
-    });
+    })
+    .expect("a random surface within the limits");
     for algo in ALGORITHMS {
         let a = convert(input.clone(), algo, &Options { seed: 4 }).expect("a closed triangulation");
         let b = convert(input.clone(), algo, &Options { seed: 4 }).expect("a closed triangulation");

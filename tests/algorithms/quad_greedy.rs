@@ -99,6 +99,7 @@ fn random_surface(surface: SurfaceKind, min_faces: usize, seed: u64) -> Triangul
         flip_percent: 30,
         seed,
     })
+    .expect("a random surface within the limits")
 }
 
 /// Runs both algorithms on `t` for `seeds`: checks every output and determinism;
@@ -250,7 +251,7 @@ fn every_repository_mesh_and_its_subdivisions() {
             .unwrap_or_else(|e| panic!("{}: {e}", row.name));
         let mut levels = 0;
         while mesh.faces.len() < 10_000 {
-            mesh = subdivide(&mesh, 1);
+            mesh = subdivide(&mesh, 1).expect("a valid mesh within the limits");
             levels += 1;
         }
         pairing_quality(&mesh, &format!("{} subdivided {levels}", row.name), &mut q);

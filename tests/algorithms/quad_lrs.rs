@@ -163,7 +163,8 @@ fn random_surfaces() {
                     min_faces,
                     flip_percent,
                     seed,
-                });
+                })
+                .expect("a random surface within the limits");
                 let label = format!("{surface:?} seed {seed} faces {min_faces}");
                 let ex = initial_pairing(t.clone());
                 check(&t, &ex, &label);
@@ -203,7 +204,8 @@ fn assert_variant_caught(
         min_faces,
         flip_percent: if min_faces == 200 { 0 } else { 30 },
         seed: 0,
-    });
+    })
+    .expect("a random surface within the limits");
     let err = std::panic::catch_unwind(|| initial_pairing_variant(t, variant))
         .expect_err("the mutation must be caught");
     let msg = err
@@ -405,7 +407,8 @@ fn erratum_unmatched_faces_of_k_are_not_the_faces_of_t_prime() {
                 min_faces: 600,
                 flip_percent: 30,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             let reduced = contractible::irreducible::rs::reduce(
                 t.clone(),
                 &contractible::irreducible::Options::default(),

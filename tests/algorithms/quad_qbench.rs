@@ -85,12 +85,13 @@ fn build(name: &str) -> Triangulation {
             flip_percent: 30,
             seed: 1,
         })
+        .expect("a random surface within the limits")
     };
     let mesh = match name {
         "rand:o3" => return random_surface(SurfaceKind::Orientable(3)),
         "rand:n5" => return random_surface(SurfaceKind::NonOrientable(5)),
-        "B6" => paper_family('B', 6),
-        "C5" => paper_family('C', 5),
+        "B6" => paper_family('B', 6).expect("valid brick parameters"),
+        "C5" => paper_family('C', 5).expect("valid brick parameters"),
         _ => {
             let file = name
                 .strip_prefix("data:")

@@ -182,20 +182,26 @@ fn library_reproduces_every_quad_vector_exactly() {
                 Algorithm::Ps => quad::pulli_segal::initial_pairing(&tri, &opts),
                 Algorithm::Sg => quad::greedy::initial_pairing(&tri, &opts),
                 Algorithm::Matching => quad::matching::initial_pairing(&tri),
-                Algorithm::DsNaive => quad::frink::perfect_matching(&tri),
+                Algorithm::DsNaive => {
+                    quad::frink::perfect_matching(&tri).expect("a closed triangulation")
+                }
                 Algorithm::FrinkLct => {
-                    quad::frink::perfect_matching_with(&tri, &mut quad::frink::CoverTree::new()).0
+                    let mut s = quad::frink::CoverTree::new();
+                    let (p, _) = quad::frink::perfect_matching_with(&tri, &mut s)
+                        .expect("a closed triangulation");
+                    p
                 }
                 Algorithm::Ds => {
-                    quad::frink::perfect_matching_with(&tri, &mut quad::frink::DiksStanczyk::new())
-                        .0
+                    let mut s = quad::frink::DiksStanczyk::new();
+                    let (p, _) = quad::frink::perfect_matching_with(&tri, &mut s)
+                        .expect("a closed triangulation");
+                    p
                 }
                 Algorithm::Bbdl => {
-                    quad::frink::perfect_matching_with(
-                        &tri,
-                        &mut quad::frink::BiedlBoseDemaineLubiw::new(),
-                    )
-                    .0
+                    let mut s = quad::frink::BiedlBoseDemaineLubiw::new();
+                    let (p, _) = quad::frink::perfect_matching_with(&tri, &mut s)
+                        .expect("a closed triangulation");
+                    p
                 }
             };
             assert_eq!(

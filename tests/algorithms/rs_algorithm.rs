@@ -68,7 +68,8 @@ fn rs_on_random_surfaces() {
                 min_faces: 300 + 200 * g as usize,
                 flip_percent: 30,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             check_rs(&t, &format!("genus {g} seed {seed}"));
         }
     }
@@ -79,7 +80,8 @@ fn rs_on_random_surfaces() {
                 min_faces: 300 + 150 * h as usize,
                 flip_percent: 30,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             check_rs(&t, &format!("euler genus {h} (non-orientable) seed {seed}"));
         }
     }
@@ -121,7 +123,8 @@ fn retest_counter_sees_the_retests_of_schipper_and_brute_force() {
             min_faces: 3000,
             flip_percent: 30,
             seed: k as u64,
-        });
+        })
+        .expect("a random surface within the limits");
         for (i, alg) in [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute]
             .into_iter()
             .enumerate()
@@ -158,7 +161,8 @@ fn small_surfaces_under_many_vertex_orders() {
             min_faces: 20 + rng.below(150) as usize,
             flip_percent: rng.below(100) as u32,
             seed: u64::from(k),
-        });
+        })
+        .expect("a random surface within the limits");
         let n = t.vertex_capacity();
         for _ in 0..25 {
             let mut perm: Vec<u32> = (0..n as u32).collect();

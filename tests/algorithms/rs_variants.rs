@@ -21,6 +21,7 @@ fn input(surface: SurfaceKind, seed: u64) -> contractible::Triangulation {
         flip_percent: 40,
         seed,
     })
+    .expect("a random surface within the limits")
 }
 
 /// Runs `variant` on the random input for (`surface`, `seed`) and returns the panic

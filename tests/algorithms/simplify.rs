@@ -904,9 +904,10 @@ fn a_three_cycle_around_a_thin_handle_is_refused_as_non_disc() {
 
 #[test]
 fn a_separating_three_cycle_with_genus_on_both_sides_is_refused() {
-    // Two 7-vertex tori glued along a triangle (`seed_surface(Orientable(2))`): the
+    // Two 7-vertex tori glued along a triangle (`seed_surface(Orientable(2)).expect("a seed surface within the limits")`): the
     // glued 3-cycle separates two punctured tori. One of its edges is made short.
-    let tri = gen::seed_surface(SurfaceKind::Orientable(2));
+    let tri =
+        gen::seed_surface(SurfaceKind::Orientable(2)).expect("a seed surface within the limits");
     let faces = tri.face_list();
     let n = tri.vertex_capacity();
     // The glued cycle: the three vertices shared by the two pieces' (0..7 and 0..3 ∪
@@ -991,7 +992,8 @@ fn random_mesh(
         min_faces: faces,
         flip_percent: 30,
         seed,
-    });
+    })
+    .expect("a random surface within the limits");
     let n = tri.vertex_capacity();
     let mut pos = random_positions(n, seed ^ 0x5eed);
     crate::harness::smooth_positions(&tri, &mut pos, smooth as usize);

@@ -150,7 +150,8 @@ fn bricks_round_trip() {
         cavities: 5,
         holes: 2,
         resolution: 2,
-    });
+    })
+    .expect("valid brick parameters");
     gen_and_check(
         &d,
         "b.off",
@@ -165,7 +166,7 @@ fn bricks_round_trip() {
         ],
         exact(v as i64, f as i64, -2, true),
     );
-    let target = gen::brick_with_target(10, 3, 5000);
+    let target = gen::brick_with_target(10, 3, 5000).expect("valid brick parameters");
     let i = gen_and_check(
         &d,
         "bt.ply",
@@ -186,7 +187,7 @@ fn bricks_round_trip() {
         ),
     );
     assert!((int(&i, "faces") - 5000).abs() < 500, "{i}");
-    let b9 = gen::paper_family('B', 9);
+    let b9 = gen::paper_family('B', 9).expect("valid brick parameters");
     gen_and_check(
         &d,
         "b9.off.gz",

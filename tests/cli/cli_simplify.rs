@@ -563,7 +563,17 @@ fn refused(dir: &Scratch, input: &Path, extra: &[&str], want: &str) {
         let out = run(&all);
         let err = stderr(&out);
         assert_eq!(out.status.code(), Some(2), "{extra:?}: {err}");
-        assert!(out.stdout.is_empty(), "{extra:?}: stdout on error");
+        if json {
+            // With --json the error is a JSON object on stdout too.
+            let v: serde_json::Value =
+                serde_json::from_slice(&out.stdout).expect("one JSON value on stdout");
+            assert_eq!(v["error"]["exit_code"], 2, "{v}");
+            assert_eq!(v["error"]["kind"], "input", "{v}");
+            let m = v["error"]["message"].as_str().expect("a message");
+            assert!(m.contains(want), "{extra:?}: {want:?} not in {m}");
+        } else {
+            assert!(out.stdout.is_empty(), "{extra:?}: stdout on error");
+        }
         assert!(err.starts_with("error: "), "{err}");
         assert!(err.contains(want), "{extra:?}: {want:?} not in {err}");
         assert!(!out_path.exists(), "{extra:?}: wrote an output");

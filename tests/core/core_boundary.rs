@@ -325,7 +325,8 @@ fn random_closed(kind: SurfaceKind, faces: usize, seed: u64) -> TriMesh {
         min_faces: faces,
         flip_percent: 30,
         seed,
-    });
+    })
+    .expect("a random surface within the limits");
     TriMesh::combinatorial(t.vertex_capacity(), t.face_list())
 }
 

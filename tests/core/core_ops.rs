@@ -100,7 +100,7 @@ fn surfaces() -> Vec<SurfaceKind> {
 #[test]
 fn seed_surfaces_have_the_right_topology() {
     for s in surfaces() {
-        let t = seed_surface(s);
+        let t = seed_surface(s).expect("a seed surface within the limits");
         t.validate().unwrap();
         assert_eq!(t.euler_characteristic(), s.euler_characteristic(), "{s:?}");
         assert_eq!(
@@ -132,7 +132,8 @@ fn contractions_undo_exactly_and_preserve_topology() {
                 min_faces: 150,
                 flip_percent: 30,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             input.validate().unwrap();
             let chi = input.euler_characteristic();
             let orientable = input.is_orientable();
@@ -176,7 +177,8 @@ fn random_splits_flips_contractions_keep_every_invariant() {
             min_faces: 60,
             flip_percent: 0,
             seed: k as u64,
-        });
+        })
+        .expect("a random surface within the limits");
         let chi = t.euler_characteristic();
         let orientable = t.is_orientable();
         let mut rng = Rng::new(77 + k as u64);
@@ -268,7 +270,8 @@ fn orientation_is_preserved_by_contractions_splits_and_flips() {
         min_faces: 500,
         flip_percent: 50,
         seed: 3,
-    });
+    })
+    .expect("a random surface within the limits");
     assert!(consistently_oriented(&t), "random() output");
     let mut h = History::new();
     let mut rng = Rng::new(5);
@@ -309,7 +312,8 @@ fn contraction_records_are_compact_and_undo_exactly() {
             min_faces: 400,
             flip_percent: 20,
             seed: 7,
-        });
+        })
+        .expect("a random surface within the limits");
         let mut t = t0.clone();
         let mut h = History::new();
         for (u, v) in all_edges(&t0) {

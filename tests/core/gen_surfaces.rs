@@ -280,7 +280,7 @@ fn subdivide_preserves_topology() {
         let mut prev = m.clone();
         let mut sp = s0;
         for level in 1..=2 {
-            let d = subdivide(&m, level);
+            let d = subdivide(&m, level).expect("a valid mesh within the limits");
             let sd = check(&d).unwrap();
             assert_eq!(sd.chi, sp.chi);
             assert_eq!(sd.orientable, sp.orientable);
@@ -288,7 +288,10 @@ fn subdivide_preserves_topology() {
             assert_eq!(sd.f, 4 * sp.f);
             assert_eq!(sd.v, sp.v + sp.e);
             assert_eq!(sd.e, 2 * sp.e + 3 * sp.f);
-            assert_eq!(d, subdivide(&prev, 1));
+            assert_eq!(
+                d,
+                subdivide(&prev, 1).expect("a valid mesh within the limits")
+            );
             // Original vertices keep their ids (and positions).
             if let (Some(p0), Some(p1)) = (&prev.positions, &d.positions) {
                 assert_eq!(&p1[..prev.vertex_count], &p0[..]);
@@ -301,13 +304,16 @@ fn subdivide_preserves_topology() {
             sp = sd;
         }
     }
-    assert_eq!(subdivide(&torus7(), 0), torus7());
+    assert_eq!(
+        subdivide(&torus7(), 0).expect("a valid mesh within the limits"),
+        torus7()
+    );
 }
 
 #[test]
 fn subdivide_numbering_and_positions() {
     let t = tetrahedron();
-    let d = subdivide(&t, 1);
+    let d = subdivide(&t, 1).expect("a valid mesh within the limits");
     // Faces [0,1,2], [0,3,1], ...: edges in first-appearance order.
     // (0,1)->4, (1,2)->5, (2,0)->6, (0,3)->7, (3,1)->8, ...
     assert_eq!(d.faces[0], [0, 4, 6]);
@@ -328,7 +334,7 @@ fn subdivide_numbering_and_positions() {
 fn subdivide_works_on_non_surfaces() {
     // Two triangles sharing an edge (an open disk): 6 distinct vertices out, 8 faces.
     let m = TriMesh::combinatorial(4, vec![[0, 1, 2], [2, 1, 3]]);
-    let d = subdivide(&m, 1);
+    let d = subdivide(&m, 1).expect("a valid mesh within the limits");
     assert_eq!(d.vertex_count, 4 + 5);
     assert_eq!(d.faces.len(), 8);
     // (2,1) is edge 5 (seen in face 0), (1,3) -> 7, (3,2) -> 8.
@@ -336,11 +342,11 @@ fn subdivide_works_on_non_surfaces() {
 }
 
 fn check_brick(cav: u32, holes: u32, shape: &BrickShape) {
-    let m = brick_shaped(cav, holes, shape);
+    let m = brick_shaped(cav, holes, shape).expect("valid brick parameters");
     let s = check(&m).unwrap_or_else(|e| panic!("{cav} {holes} {shape:?}: {e}"));
     assert!(s.orientable && s.oriented_as_given, "{shape:?}");
     assert_eq!(s.chi, 2 - 2 * i64::from(holes), "{shape:?}");
-    let (v, e, f) = brick_shape_counts(cav, holes, shape);
+    let (v, e, f) = brick_shape_counts(cav, holes, shape).expect("valid brick parameters");
     assert_eq!((s.v as u64, s.e as u64, s.f as u64), (v, e, f), "{shape:?}");
     check_geometry(&m);
     // Outward orientation: positive enclosed volume.
@@ -408,10 +414,13 @@ fn brick_uniform_params() {
                 holes,
                 resolution,
             };
-            let m = brick(&p);
+            let m = brick(&p).expect("valid brick parameters");
             let s = check(&m).unwrap();
             assert_eq!(s.chi, 2 - 2 * i64::from(holes));
-            assert_eq!((s.v as u64, s.e as u64, s.f as u64), brick_counts(&p));
+            assert_eq!(
+                (s.v as u64, s.e as u64, s.f as u64),
+                brick_counts(&p).expect("valid brick parameters")
+            );
             check_geometry(&m);
         }
     }
@@ -424,7 +433,10 @@ fn brick_is_deterministic() {
         holes: 17,
         resolution: 2,
     };
-    let (a, b) = (brick(&p), brick(&p));
+    let (a, b) = (
+        brick(&p).expect("valid brick parameters"),
+        brick(&p).expect("valid brick parameters"),
+    );
     assert_eq!(a.faces, b.faces);
     let bits = |m: &TriMesh| -> Vec<u64> {
         m.positions
@@ -435,13 +447,16 @@ fn brick_is_deterministic() {
             .collect()
     };
     assert_eq!(bits(&a), bits(&b));
-    assert_eq!(paper_family('B', 9), paper_family('B', 9));
+    assert_eq!(
+        paper_family('B', 9).expect("valid brick parameters"),
+        paper_family('B', 9).expect("valid brick parameters")
+    );
 }
 
 #[test]
 fn brick_with_target_hits_reachable_targets() {
     for (cav, holes, target) in [(16, 0, 5_000u64), (16, 4, 5_000), (100, 30, 40_000)] {
-        let m = brick_with_target(cav, holes, target);
+        let m = brick_with_target(cav, holes, target).expect("valid brick parameters");
         let s = check(&m).unwrap();
         assert_eq!(s.chi, 2 - 2 * i64::from(holes));
         let err = (s.f as f64 - target as f64).abs() / target as f64;
@@ -453,14 +468,14 @@ fn brick_with_target_hits_reachable_targets() {
 fn paper_family_small_members_are_valid() {
     for (g, i) in [('B', 7), ('B', 8), ('B', 9), ('C', 7), ('C', 6)] {
         let e = paper_entry(g, i).unwrap();
-        let m = paper_family(g, i);
+        let m = paper_family(g, i).expect("valid brick parameters");
         let s = check(&m).unwrap();
         assert!(s.orientable);
         assert_eq!(s.chi, 2 - 2 * i64::from(e.holes), "{g}{i}");
-        let shape = paper_family_shape(g, i);
+        let shape = paper_family_shape(g, i).expect("valid brick parameters");
         assert_eq!(
             (s.v as u64, s.e as u64, s.f as u64),
-            brick_shape_counts(e.cavities, e.holes, &shape)
+            brick_shape_counts(e.cavities, e.holes, &shape).expect("valid brick parameters")
         );
         check_geometry(&m);
     }
@@ -473,7 +488,12 @@ fn paper_family_counts_match_paper() {
     for e in PAPER_TABLE {
         let g = e.name.chars().next().unwrap();
         let i: u32 = e.name[1..].parse().unwrap();
-        let (v, ed, f) = brick_shape_counts(e.cavities, e.holes, &paper_family_shape(g, i));
+        let (v, ed, f) = brick_shape_counts(
+            e.cavities,
+            e.holes,
+            &paper_family_shape(g, i).expect("a member"),
+        )
+        .expect("valid brick parameters");
         assert_eq!(v as i64 - ed as i64 + f as i64, 2 - 2 * i64::from(e.holes));
         let err = (f as f64 - e.triangles as f64).abs() / e.triangles as f64;
         // B9 and C7 are below what honest pits/tunnels allow (see the docs).
@@ -490,6 +510,6 @@ fn paper_family_counts_match_paper() {
 fn one_large_d_member_is_valid() {
     // D9 at full size is 4.2M triangles; check the same shape on fewer sites plus the
     // genus and count formula of the full member.
-    let shape = paper_family_shape('D', 9);
+    let shape = paper_family_shape('D', 9).expect("valid brick parameters");
     check_brick(40, 10, &shape);
 }

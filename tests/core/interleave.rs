@@ -29,6 +29,7 @@ fn surface(kind: SurfaceKind, seed: u64, min_faces: usize) -> Triangulation {
         flip_percent: 30,
         seed,
     })
+    .expect("a random surface within the limits")
 }
 
 fn random_live_corner(t: &Triangulation, rng: &mut Rng) -> Corner {

@@ -19,5 +19,6 @@ mod gen_surfaces;
 mod interleave;
 mod io_formats;
 mod isosurface;
+mod no_panic;
 mod proofs;
 mod properties;

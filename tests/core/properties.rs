@@ -141,7 +141,8 @@ fn build(inp: &Input) -> Triangulation {
         min_faces: inp.min_faces,
         flip_percent: 20,
         seed: inp.seed,
-    });
+    })
+    .expect("a random surface within the limits");
     let mut h = History::new();
     for op in &inp.ops {
         apply(&mut t, op, &mut h);
@@ -176,7 +177,7 @@ proptest! {
             min_faces: inp.min_faces,
             flip_percent: 20,
             seed: inp.seed,
-        });
+        }).expect("a random surface within the limits");
         let mut t = base.clone();
         let mut h = History::new();
         for op in &inp.ops {
@@ -366,7 +367,8 @@ fn qc_flip_flip_face_set(k: u8, seed: u64, edge: usize) -> bool {
         min_faces: 60,
         flip_percent: 20,
         seed,
-    });
+    })
+    .expect("a random surface within the limits");
     let before = face_set(&t);
     let (u, v, _) = t.edges().nth(edge % t.edge_count()).expect("edge");
     let [w, z] = t.edge_link(u, v).expect("edge");
@@ -387,7 +389,8 @@ fn qc_random_is_deterministic(k: u8, seed: u64) -> bool {
         flip_percent: 30,
         seed,
     };
-    random(&p) == random(&p)
+    random(&p).expect("a random surface within the limits")
+        == random(&p).expect("a random surface within the limits")
 }
 
 #[test]
@@ -421,7 +424,8 @@ fn brute_force_seed_changes_are_allowed_but_outputs_stay_valid() {
         min_faces: 300,
         flip_percent: 20,
         seed: 3,
-    });
+    })
+    .expect("a random surface within the limits");
     for alg in [Algorithm::Rs, Algorithm::Schipper] {
         let a = reduce(t.clone(), alg, &common::options(1));
         let b = reduce(t.clone(), alg, &common::options(2));

@@ -707,7 +707,8 @@ fn on_random_surfaces(mut each: impl FnMut(&Triangulation, &Cubic, &str)) {
                 min_faces: 400,
                 flip_percent: 30,
                 seed,
-            });
+            })
+            .expect("a random surface within the limits");
             let (g, _) = dual_graph(&t).expect("dual");
             each(&t, &g, &format!("{kind:?} seed {seed}"));
         }
@@ -1152,7 +1153,8 @@ fn pin_graphs() -> Vec<Cubic> {
             min_faces,
             flip_percent: 30,
             seed: 7,
-        });
+        })
+        .expect("a random surface within the limits");
         graphs.push(dual_graph(&t).expect("dual").0);
     }
     graphs

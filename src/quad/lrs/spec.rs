@@ -292,7 +292,8 @@ mod tests {
             min_faces: 300,
             flip_percent: 30,
             seed: 0,
-        });
+        })
+        .expect("a random surface within the limits");
         let mut ex = Expander::new(t, Variant::default());
         let first = ex.history.records().last().expect("a reducible input").u;
         let mut last = None;
