@@ -148,7 +148,8 @@ impl ContractionRecord {
     /// `a` was the corner across `[v, x]` (resp. `[v, y]`) and `b` the corner across
     /// `[u, x]` (resp. `[u, y]`); afterwards `a` and `b` are opposite each other across
     /// the merged edge `[u, x]` (resp. `[u, y]`). Code that tracks edge identities uses
-    /// this to let the merged edge keep the identity of `[u, x]` (as Alg. 4.7 keeps the record `f`).
+    /// this to let the merged edge keep the identity of `[u, x]` (as Alg. 4.7 keeps the
+    /// record `f`).
     pub fn glued(&self) -> [(Corner, Corner); 2] {
         let mut out = [(Corner(NONE), Corner(NONE)); 2];
         for (k, pair) in out.iter_mut().enumerate() {
