@@ -1,4 +1,4 @@
-"""The Python session of the repository's README.md, run as a doctest, so that the
+"""The Python example of the repository's README.md, run as a doctest, so that the
 README cannot go stale: every `>>>` line runs and every output shown must be the
 package's. It runs in a scratch directory holding a copy of `tests/data/meshes`, so the
 README's relative paths read the repository's meshes and its outputs land there."""
@@ -10,7 +10,7 @@ import shutil
 from conftest import DATA, ROOT
 
 
-def readme_session() -> tuple[str, int]:
+def readme_example() -> tuple[str, int]:
     """The text between `<!-- python-example -->` and `<!-- /python-example -->`, and the
     line number of the opening marker."""
     lines = (ROOT / "README.md").read_text(encoding="utf-8").splitlines()
@@ -23,8 +23,8 @@ def readme_session() -> tuple[str, int]:
     return "\n".join(body) + "\n", starts[0] + 1
 
 
-def test_readme_python_session_runs_as_shown(tmp_path):
-    text, line = readme_session()
+def test_readme_python_example_runs_as_shown(tmp_path):
+    text, line = readme_example()
     test = doctest.DocTestParser().get_doctest(text, {}, "README.md", str(ROOT / "README.md"),
                                                line)
     assert test.examples, "README.md: the Python block has no >>> examples"
@@ -38,4 +38,4 @@ def test_readme_python_session_runs_as_shown(tmp_path):
     finally:
         os.chdir(cwd)
     assert result.failed == 0, f"README.md: {result.failed} of {result.attempted} " \
-        "examples of the Python session differ:\n" + "".join(report)
+        "lines of the Python example differ:\n" + "".join(report)
