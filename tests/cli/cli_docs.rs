@@ -116,38 +116,45 @@ fn json_prefix(lines: &[String]) -> Option<(usize, serde_json::Value)> {
     })
 }
 
-/// Compares shown and actual output; the error names the first difference. A JSON
-/// report at the start is compared as a value, the lines after it as text.
-fn compare(shown: &[String], actual: &str) -> Result<(), String> {
+/// Compares shown and actual output. The error names the first difference and the
+/// index of the shown line where it is (`shown.len()` when the actual output is
+/// longer). A JSON report at the start is compared as a value, the lines after it as
+/// text.
+fn compare(shown: &[String], actual: &str) -> Result<(), (usize, String)> {
     let shown = trim_end(shown);
     let actual: Vec<String> = actual.lines().map(str::to_string).collect();
     let actual = trim_end(&actual);
-    let stale = |what: String| Err(format!("{what}\nactual output:\n{}", actual.join("\n")));
-    let (mut shown_rest, mut actual_rest) = (shown, actual);
+    let stale = |at: usize, what: String| {
+        Err((at, format!("{what}\nactual output:\n{}", actual.join("\n"))))
+    };
+    let (mut shown_rest, mut actual_rest, mut skipped) = (shown, actual, 0);
     if shown
         .first()
         .is_some_and(|l| l.trim_start().starts_with('{'))
     {
         let Some((ks, s)) = json_prefix(shown) else {
-            return stale("the JSON shown does not parse".into());
+            return stale(0, "the JSON shown does not parse".into());
         };
         let Some((ka, a)) = json_prefix(actual) else {
-            return stale("the actual output is not JSON".into());
+            return stale(0, "the actual output is not JSON".into());
         };
         if s != a {
-            return stale("the JSON differs (timings aside)".into());
+            return stale(0, "the JSON differs (timings aside)".into());
         }
-        (shown_rest, actual_rest) = (&shown[ks..], &actual[ka..]);
+        (shown_rest, actual_rest, skipped) = (&shown[ks..], &actual[ka..], ks);
     }
     for i in 0..shown_rest.len().max(actual_rest.len()) {
         let s = shown_rest.get(i).map(|l| normalise(l));
         let a = actual_rest.get(i).map(|l| normalise(l));
         if s != a {
-            return stale(format!(
-                "a line differs\n  shown:  {}\n  actual: {}",
-                shown_rest.get(i).map_or("(nothing)", |l| l.as_str()),
-                actual_rest.get(i).map_or("(nothing)", |l| l.as_str()),
-            ));
+            return stale(
+                skipped + i,
+                format!(
+                    "a line differs\n  shown:  {}\n  actual: {}",
+                    shown_rest.get(i).map_or("(nothing)", |l| l.as_str()),
+                    actual_rest.get(i).map_or("(nothing)", |l| l.as_str()),
+                ),
+            );
         }
     }
     Ok(())
@@ -273,7 +280,7 @@ fn check_transcripts(doc: &str) -> usize {
                 .strip_prefix("$ ")
                 .unwrap_or_else(|| panic!("{doc}:{at}: output before any command: `{line}`"));
             let command = strip_comment(command);
-            let mut shown = Vec::new();
+            let mut shown: Vec<Line> = Vec::new();
             if let Some(rest) = command.strip_prefix("cat > ") {
                 let (file, marker) = rest
                     .split_once(" << ")
@@ -291,7 +298,7 @@ fn check_transcripts(doc: &str) -> usize {
                 continue;
             }
             while i < lines.len() && !lines[i].1.starts_with("$ ") {
-                shown.push(lines[i].1.clone());
+                shown.push(lines[i].clone());
                 i += 1;
             }
             let actual = if command == "echo $?" {
@@ -309,8 +316,10 @@ fn check_transcripts(doc: &str) -> usize {
                 commands += 1;
                 text
             };
-            if let Err(e) = compare(&shown, &actual) {
-                panic!("{doc}:{at}: `{command}`: the document is stale: {e}");
+            let text: Vec<String> = shown.iter().map(|(_, l)| l.clone()).collect();
+            if let Err((k, e)) = compare(&text, &actual) {
+                let line = shown.get(k).map_or(at, |(n, _)| *n);
+                panic!("{doc}:{line}: `{command}`: the document is stale: {e}");
             }
         }
     }
@@ -380,8 +389,9 @@ fn demo_output_shown_in_docs_demo_md_is_the_binary_s() {
     let scratch = Scratch::new("docs-demo");
     let (actual, code) = run_merged(&["demo".to_string()], &scratch.0);
     assert_eq!(code, Some(0), "demo failed:\n{actual}");
-    if let Err(e) = compare(&shown, &actual) {
-        panic!("{doc}:{start}: the demo output shown is stale: {e}");
+    if let Err((k, e)) = compare(&shown, &actual) {
+        let line = lines.get(k).map_or(*start, |(n, _)| *n);
+        panic!("{doc}:{line}: the demo output shown is stale: {e}");
     }
 }
 
