@@ -1,4 +1,4 @@
-//! Frink's reduction (issue 11): `frink::solve` on the dual graph of the paper's bricks
+//! Frink's reduction: `frink::solve` on the dual graph of the paper's bricks
 //! B9…B0 (16k to 4.2M triangles, genus 0; `gen::paper_family`, see `docs/benchmarks.md`)
 //! with the Diks–Stańczyk strategy (`ds`, O(F log² F)), the Biedl–Bose–Demaine–Lubiw
 //! strategy (`bbdl`, B9…B5 only: its 2-edge structure is not polylogarithmic), the

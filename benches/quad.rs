@@ -1,4 +1,4 @@
-//! Tri-quad conversion (issue 9): LRS, PS, SG and the graph route (Edmonds from empty) on
+//! Tri-quad conversion: LRS, PS, SG and the graph route (Edmonds from empty) on
 //! the same inputs in one run, so that every ratio compares medians of one run. Inputs:
 //! the paper's bricks (`gen::paper_family`: B0 is the tri-quad paper's A1, C0 its B1; see
 //! `docs/benchmarks.md`), a subset of the B and C families, and the biggest component of

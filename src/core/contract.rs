@@ -147,8 +147,9 @@ impl ContractionRecord {
     /// The two edge gluings the contraction made, one per removed face: `(a, b)` where
     /// `a` was the corner across `[v, x]` (resp. `[v, y]`) and `b` the corner across
     /// `[u, x]` (resp. `[u, y]`); afterwards `a` and `b` are opposite each other across
-    /// the merged edge `[u, x]` (resp. `[u, y]`). Edge-identity trackers use this to let
-    /// the merged edge keep the identity of `[u, x]` (as Alg. 4.7 keeps the record `f`).
+    /// the merged edge `[u, x]` (resp. `[u, y]`). Code that tracks edge identities uses
+    /// this to let the merged edge keep the identity of `[u, x]` (as Alg. 4.7 keeps the
+    /// record `f`).
     pub fn glued(&self) -> [(Corner, Corner); 2] {
         let mut out = [(Corner(NONE), Corner(NONE)); 2];
         for (k, pair) in out.iter_mut().enumerate() {

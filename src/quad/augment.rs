@@ -34,7 +34,7 @@
 //!    search can cost before the phases take over. It is not a uniform gain: on the
 //!    genus-3,500 brick C0 the last single-root searches are expensive, and PS's
 //!    leftovers take 10.8 M visits at seed 1 against 6.1 M by phases alone (8.1 M
-//!    against 10.2 M at seed 0); `docs/benchmarks.md`, tri-quad, session 6.
+//!    against 10.2 M at seed 0; `docs/benchmarks.md`, tri-quad conversion).
 //! 3. **Phases**, until no face is unpaired. The roots of a phase are the unpaired faces
 //!    in increasing id. Every root is an even vertex of its own tree and enters a FIFO
 //!    queue in that order (a multi-source BFS, so trees grow level by level). An even

@@ -47,7 +47,7 @@ pub const ENABLED: bool = cfg!(any(debug_assertions, feature = "invariants"));
 
 pub mod oracle;
 
-/// Helpers of the corrupted-state tests that show each check able to fail.
+/// Shared code of the corrupted-state tests that show each check able to fail.
 ///
 /// Tests that show a gated check (one that starts with `if !ENABLED { return }`) firing are
 /// compiled only where the checks are (`#[cfg(any(debug_assertions, feature =

@@ -304,7 +304,7 @@ fn the_matching_route_is_the_completion_from_empty() {
     assert_eq!(c.augmenting_paths, t.face_count() / 2);
 }
 
-/// The performance case: SG-like leftovers (~13% unpaired) on the paper's C0
+/// The performance case: SG-like leftovers (~13% unpaired) on the paper's C0
 /// (4.2M triangles, genus 3,500). Asserts perfection and the near-linear work (edge
 /// visits per face, a deterministic count); prints the time for reference (the timing
 /// itself is `benches/quad.rs`). Runs in release builds (the README's test command,

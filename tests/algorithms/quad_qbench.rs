@@ -1,7 +1,7 @@
-//! Output pins of the tri-quad conversion for the optimisations of issue 9: every
-//! algorithm's initial pairing and final output (`K`'s face lists and the pairs) on a few
-//! inputs, as 64-bit FNV-1a fingerprints recorded from the implementation *before* any
-//! optimisation (commit b70e3ef, by `examples/quad_profile.rs`). A speed-up that changes
+//! Output pins of the tri-quad conversion, so that an optimisation cannot change its
+//! results: every algorithm's initial pairing and final output (`K`'s face lists and the
+//! pairs) on a few inputs, as 64-bit FNV-1a fingerprints recorded from the implementation
+//! *before* any optimisation (commit b70e3ef, by `examples/quad_profile.rs`). A speed-up that changes
 //! a single pair, flip or face slot changes a fingerprint and fails here. The
 //! fingerprints are computed by this file's own code from the public results only.
 //! One deliberate change since: LRS's `K` on the non-orientable input (`rand:n5`), whose
@@ -151,7 +151,7 @@ const PINS: &[Pin] = &[
         34,
         17,
         1,
-        // Re-pinned (session 6): K's flips are now made from each edge's canonical
+        // Re-pinned once: K's flips are made from each edge's canonical
         // corner, which changes face slots on surfaces whose faces are not consistently
         // oriented; the counters and the orientable pins are unchanged.
         0x3401144586e2cb86,

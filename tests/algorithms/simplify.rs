@@ -1,4 +1,4 @@
-//! Short-edge simplification (`simplify`, issue 10) checked by code independent of the
+//! Short-edge simplification (`simplify`) checked by code independent of the
 //! simplifier: the fuzz harness's `surface_topology` (a face-list classifier: edges in
 //! one or two faces, every vertex link one path or cycle, no degenerate or duplicate
 //! face; per component χ, orientability and boundary loops) and `check_simplify`
@@ -303,7 +303,7 @@ fn closed_meshes(meshes: &Path, min_files: usize, shard: usize, shards: usize) {
         // Perturbed copies: at one ε, alternating between meshes, and only for meshes
         // up to 50,000 faces (85 of the corpus's 99): the whole corpus at both ε on both
         // variants would add about 40 s of CPU time. `SIMPLIFY_FULL=1` runs that whole
-        // set (the issue's full matrix; its last result is in docs/benchmarks.md).
+        // set (the full matrix; its last result is in docs/benchmarks.md).
         let rels: &[f64] = if std::env::var_os("SIMPLIFY_FULL").is_some() {
             &RELATIVE_EPS
         } else if mesh.faces.len() <= 50_000 {

@@ -1,4 +1,4 @@
-//! Helpers for the command-line tests: run the binary, parse its JSON, scratch dirs.
+//! Shared code of the command-line tests: run the binary, parse its JSON, scratch dirs.
 #![allow(dead_code)]
 
 use std::path::{Path, PathBuf};

@@ -7,6 +7,7 @@ mod common;
 
 mod cli_batch;
 mod cli_boundary;
+mod cli_docs;
 mod cli_gen;
 mod cli_info;
 mod cli_input;

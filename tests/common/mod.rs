@@ -1,4 +1,4 @@
-//! Helpers common to the integration tests: the repository's own test data
+//! Code common to the integration tests: the repository's own test data
 //! (`tests/data/`), the opt-in real-mesh corpus, list parsing and independent checkers.
 #![allow(dead_code)]
 

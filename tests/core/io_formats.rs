@@ -420,7 +420,7 @@ struct ManifestRow {
     f: usize,
 }
 
-/// The rows of `dir/manifest.csv`, parsed here (not by the tests' common helpers) from
+/// The rows of `dir/manifest.csv`, parsed here (not by the tests' common code) from
 /// the first columns only.
 fn manifest(dir: &str) -> Vec<ManifestRow> {
     let text = std::fs::read_to_string(format!("{dir}/manifest.csv")).unwrap();
