@@ -131,7 +131,28 @@ pub fn write_stdout_line(args: std::fmt::Arguments<'_>) {
 
 /// Parses the command line, runs it and maps the result to an exit code.
 pub fn main() -> ExitCode {
-    let cli = Cli::parse();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            use clap::error::ErrorKind;
+            let usage = !matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion);
+            // A usage error is an error too: with --json it is the JSON object every
+            // other error gives (the flag is global, so it may be anywhere).
+            if usage && std::env::args_os().any(|a| a == "--json") {
+                // The parser's message without its usage and help trailer.
+                let text = e.to_string();
+                let body = text.split("\n\n").next().unwrap_or("").trim();
+                let message = body.strip_prefix("error: ").unwrap_or(body);
+                let v = serde_json::json!({
+                    "error": { "kind": "usage", "exit_code": 2, "message": message }
+                });
+                outln!("{v:#}");
+                eprint!("{e}");
+                return ExitCode::from(2);
+            }
+            e.exit()
+        }
+    };
     signals::install();
     let ui = Ui {
         json: cli.json,

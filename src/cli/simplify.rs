@@ -129,9 +129,11 @@ pub fn compute(a: &SimplifyArgs, ui: Ui) -> Result<SimplifyReport, CliError> {
         ..SimplifyOptions::default()
     };
     let out = simplify_with_bars(&mesh, options.clone(), ui).map_err(|e| match e {
-        contractible::Error::BadOption {
-            value, expected, ..
-        } => CliError::Input(format!("{}: --eps-rel {value}: {expected}", path.display())),
+        // The flags themselves were checked above: what is left is a relative ε that
+        // gives no usable absolute one.
+        contractible::Error::BadOption { expected, .. } => {
+            CliError::Input(format!("--eps-rel {expected}"))
+        }
         e => meshio::task_error(&mesh, &names, "simplify", e),
     })?;
     if !out.verified {

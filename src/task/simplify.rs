@@ -259,8 +259,8 @@ pub fn simplify(mesh: &TriMesh, options: &SimplifyOptions) -> Result<SimplifyRes
                     option: "eps",
                     value: format!("Relative({r:?})"),
                     expected: format!(
-                        "a fraction of the bounding-box diagonal {diagonal:?} that gives a \
-                         finite ε > 0 (it gives {e:?})"
+                        "{r:?} times the bounding-box diagonal {diagonal:?} gives ε = {e:?}, \
+                         not a finite number > 0"
                     ),
                 });
             }
