@@ -226,7 +226,7 @@ fn checked_positions(mesh: &TriMesh) -> Result<(&[[f64; 3]], Vec<usize>), Error>
 /// use contractible::{gen, simplify, SimplifyOptions};
 /// let sphere = gen::isosurface(&gen::IsoParams::new(
 ///     gen::Implicit::Sphere { radius: 1.0 },
-///     gen::Tessellation::Six,
+///     gen::Tessellation::SixTetrahedra,
 ///     12,
 /// ))?;
 /// let s = simplify(&sphere, &SimplifyOptions::relative(0.1))?;
