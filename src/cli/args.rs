@@ -3,6 +3,13 @@
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+// The choices are the library's own enums (one list of names, parsed and printed by
+// them); under these names for the arguments below.
+use contractible::irreducible::Algorithm as Algo;
+use contractible::quad::Algorithm as QuadAlgo;
+use contractible::simplify::{
+    Mode as SimplifyMode, Position as SimplifyPosition, Side as SimplifySide,
+};
 
 /// Topology-preserving edge contraction on closed triangulated surfaces.
 ///
@@ -330,28 +337,6 @@ pub struct ConvertArgs {
     pub input_opts: InputOpts,
 }
 
-/// The reduction algorithms.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Algo {
-    /// Ramaswami–Siqueira.
-    Rs,
-    /// Schipper.
-    Schipper,
-    /// Randomized brute force.
-    Brute,
-}
-
-impl From<Algo> for contractible::irreducible::Algorithm {
-    fn from(a: Algo) -> Self {
-        use contractible::irreducible::Algorithm;
-        match a {
-            Algo::Rs => Algorithm::Rs,
-            Algo::Schipper => Algorithm::Schipper,
-            Algo::Brute => Algorithm::Brute,
-        }
-    }
-}
-
 #[derive(Args, Debug)]
 pub struct ReduceArgs {
     /// Input mesh (`-` for standard input).
@@ -375,45 +360,6 @@ pub struct ReduceArgs {
     pub no_verify: bool,
     #[command(flatten)]
     pub input_opts: InputOpts,
-}
-
-/// The tri-quad algorithms.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum QuadAlgo {
-    /// Lemos–Ramaswami–Siqueira: RS contraction, expansion with flips, completion.
-    Lrs,
-    /// Pulli–Segal greedy, then completion.
-    Ps,
-    /// Simple greedy, then completion.
-    Sg,
-    /// Edmonds' matching on the whole dual graph.
-    Matching,
-    /// Frink's reduction, naive DFS strategy (quadratic: refused above 100,000 faces per
-    /// component).
-    DsNaive,
-    /// Frink's reduction, link–cut cover-count strategy.
-    FrinkLct,
-    /// Frink's reduction, Diks–Stańczyk strategy (dynamic connectivity, O(F log² F)).
-    Ds,
-    /// Frink's reduction, Biedl–Bose–Demaine–Lubiw strategy (dynamic 2-edge-connectivity;
-    /// this crate's structure is O(F² log F) in the worst case).
-    Bbdl,
-}
-
-impl From<QuadAlgo> for contractible::quad::Algorithm {
-    fn from(a: QuadAlgo) -> Self {
-        use contractible::quad::Algorithm;
-        match a {
-            QuadAlgo::Lrs => Algorithm::Lrs,
-            QuadAlgo::Ps => Algorithm::Ps,
-            QuadAlgo::Sg => Algorithm::Sg,
-            QuadAlgo::Matching => Algorithm::Matching,
-            QuadAlgo::DsNaive => Algorithm::DsNaive,
-            QuadAlgo::FrinkLct => Algorithm::FrinkLct,
-            QuadAlgo::Ds => Algorithm::Ds,
-            QuadAlgo::Bbdl => Algorithm::Bbdl,
-        }
-    }
 }
 
 #[derive(Args, Debug)]
@@ -441,69 +387,6 @@ pub struct QuadArgs {
     pub pairs: Option<PathBuf>,
     #[command(flatten)]
     pub input_opts: InputOpts,
-}
-
-/// How `simplify` treats edges that fail the link condition.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SimplifyMode {
-    /// Skip them (what mesh libraries do).
-    Naive,
-    /// The paper's processEdge: remove the discs inside the outermost 3-cycles through
-    /// the edge, then contract it.
-    Nested,
-}
-
-impl From<SimplifyMode> for contractible::simplify::Mode {
-    fn from(m: SimplifyMode) -> Self {
-        use contractible::simplify::Mode;
-        match m {
-            SimplifyMode::Naive => Mode::Naive,
-            SimplifyMode::Nested => Mode::Nested,
-        }
-    }
-}
-
-/// How the nested mode assigns the 3-cycles through an edge to its two sides.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SimplifySide {
-    /// Grow both sides in lockstep, face by face; a 3-cycle goes to the side that closes
-    /// it first.
-    Count,
-    /// The side whose opposite vertex is nearer in edge hops.
-    Path,
-    /// The side whose opposite vertex is nearer in space.
-    Euclidean,
-}
-
-impl From<SimplifySide> for contractible::simplify::Side {
-    fn from(s: SimplifySide) -> Self {
-        use contractible::simplify::Side;
-        match s {
-            SimplifySide::Count => Side::Count,
-            SimplifySide::Path => Side::Path,
-            SimplifySide::Euclidean => Side::Euclidean,
-        }
-    }
-}
-
-/// Where `simplify` puts the vertex that replaces a contracted edge.
-#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SimplifyPosition {
-    /// The edge's midpoint (an edge with one endpoint on the boundary goes to that
-    /// endpoint).
-    Midpoint,
-    /// The minimiser of the endpoints' summed Garland–Heckbert quadrics.
-    Quadric,
-}
-
-impl From<SimplifyPosition> for contractible::simplify::Position {
-    fn from(p: SimplifyPosition) -> Self {
-        use contractible::simplify::Position;
-        match p {
-            SimplifyPosition::Midpoint => Position::Midpoint,
-            SimplifyPosition::Quadric => Position::Quadric,
-        }
-    }
 }
 
 #[derive(Args, Debug)]

@@ -251,7 +251,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
         }
         let mut runs = Vec::new();
         for &algo in &a.algos {
-            let algo: Algorithm = algo.into();
+            let algo: Algorithm = algo;
             // The library checks every output by the naive link test and reports a
             // reducible one as an error.
             let r = reduce_with_bars(&mesh, algo, a.seed, false, ui)

@@ -255,11 +255,11 @@ pub fn task_error(
             names.shown, point[0], point[1], point[2]
         )),
         Error::TooLarge {
-            algorithm,
+            algorithm: contractible::quad::Algorithm::DsNaive,
             faces,
             limit,
             ..
-        } if algorithm == contractible::quad::Algorithm::DsNaive => CliError::Input(format!(
+        } => CliError::Input(format!(
             "{}: --algo ds-naive is quadratic and refuses components above {limit} faces (this one has {faces}); use --algo ds or --algo frink-lct",
             names.shown
         )),

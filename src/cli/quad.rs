@@ -99,7 +99,7 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
     }
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
-    let r = quadrangulate_with_bars(&mesh, a.algo.into(), a.seed, ui)
+    let r = quadrangulate_with_bars(&mesh, a.algo, a.seed, ui)
         .map_err(|e| meshio::task_error(&mesh, &names, "quad", e))?;
     meshio::warn_dropped(&names, r.dropped_vertices, ui);
     drop(mesh);

@@ -136,7 +136,7 @@ pub fn compute(a: &ReduceArgs, ui: Ui) -> Result<ReduceReport, CliError> {
         .transpose()?;
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
-    let r = reduce_with_bars(&mesh, a.algo.into(), a.seed, a.no_verify, ui)
+    let r = reduce_with_bars(&mesh, a.algo, a.seed, a.no_verify, ui)
         .map_err(|e| meshio::task_error(&mesh, &names, "reduce", e))?;
     meshio::warn_dropped(&names, r.dropped_vertices, ui);
     drop(mesh);

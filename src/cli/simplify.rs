@@ -122,9 +122,9 @@ pub fn compute(a: &SimplifyArgs, ui: Ui) -> Result<SimplifyReport, CliError> {
     };
     let options = SimplifyOptions {
         eps,
-        mode: a.mode.into(),
-        side: a.side.into(),
-        position: a.position.into(),
+        mode: a.mode,
+        side: a.side,
+        position: a.position,
         allow_foldover: a.allow_foldover,
         ..SimplifyOptions::default()
     };

@@ -44,6 +44,15 @@ impl Algorithm {
             Algorithm::Brute => "brute",
         }
     }
+
+    /// One line on what the algorithm is (the command line's help).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Algorithm::Rs => "Ramaswami–Siqueira",
+            Algorithm::Schipper => "Schipper",
+            Algorithm::Brute => "Randomized brute force",
+        }
+    }
 }
 
 crate::names::named_choice!(Algorithm, "reduction algorithm");

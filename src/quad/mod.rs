@@ -85,6 +85,31 @@ impl Algorithm {
         }
     }
 
+    /// One line on what the algorithm is (the command line's help).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Algorithm::Lrs => {
+                "Lemos–Ramaswami–Siqueira: RS contraction, expansion with flips, completion"
+            }
+            Algorithm::Ps => "Pulli–Segal greedy, then completion",
+            Algorithm::Sg => "Simple greedy, then completion",
+            Algorithm::Matching => "Edmonds' matching on the whole dual graph",
+            Algorithm::DsNaive => {
+                "Frink's reduction, naive DFS strategy (quadratic: refused above 100,000 \
+                 faces per component)"
+            }
+            Algorithm::FrinkLct => "Frink's reduction, link–cut cover-count strategy",
+            Algorithm::Ds => {
+                "Frink's reduction, Diks–Stańczyk strategy (dynamic connectivity, \
+                 O(F log² F))"
+            }
+            Algorithm::Bbdl => {
+                "Frink's reduction, Biedl–Bose–Demaine–Lubiw strategy (dynamic \
+                 2-edge-connectivity; this crate's structure is O(F² log F) in the worst case)"
+            }
+        }
+    }
+
     /// Whether the initial step pairs every face itself (Frink's reduction), so that no
     /// completion runs.
     pub fn is_perfect_directly(self) -> bool {

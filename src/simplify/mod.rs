@@ -73,6 +73,17 @@ impl Mode {
             Mode::Nested => "nested",
         }
     }
+
+    /// One line on what the mode does (the command line's help).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Mode::Naive => "Skip edges that fail the link condition (what mesh libraries do)",
+            Mode::Nested => {
+                "The paper's processEdge: remove the discs inside the outermost 3-cycles \
+                 through the edge, then contract it"
+            }
+        }
+    }
 }
 
 crate::names::named_choice!(Mode, "simplification mode");
@@ -104,6 +115,18 @@ impl Side {
             Side::Euclidean => "euclidean",
         }
     }
+
+    /// One line on what the heuristic does (the command line's help).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Side::Count => {
+                "Grow both sides in lockstep, face by face; a 3-cycle goes to the side \
+                 that closes it first"
+            }
+            Side::Path => "The side whose opposite vertex is nearer in edge hops",
+            Side::Euclidean => "The side whose opposite vertex is nearer in space",
+        }
+    }
 }
 
 crate::names::named_choice!(Side, "side heuristic");
@@ -131,6 +154,17 @@ impl Position {
         match self {
             Position::Midpoint => "midpoint",
             Position::Quadric => "quadric",
+        }
+    }
+
+    /// One line on the placement (the command line's help).
+    pub fn summary(self) -> &'static str {
+        match self {
+            Position::Midpoint => {
+                "The edge's midpoint (an edge with one endpoint on the boundary goes to \
+                 that endpoint)"
+            }
+            Position::Quadric => "The minimiser of the endpoints' summed Garland–Heckbert quadrics",
         }
     }
 }
