@@ -8,6 +8,7 @@
 
 pub mod core;
 pub mod diagnose;
+pub mod dyngraph;
 pub mod gen;
 pub mod io;
 pub mod irreducible;

@@ -244,14 +244,14 @@ impl Node {
 
 /// Link–cut forest over nodes `0..n` with an `i32` value per node.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Lct {
+pub struct Lct {
     t: Vec<Node>,
     stack: Vec<u32>,
 }
 
 impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
-    pub(crate) fn new(vals: &[i32]) -> Self {
+    pub fn new(vals: &[i32]) -> Self {
         Lct {
             t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
             stack: Vec::new(),
@@ -261,7 +261,7 @@ impl Lct {
     /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root), node `i`
     /// with value `vals[i]`; `parent` must describe a forest. O(n): every node starts as
     /// its own preferred path, with its tree parent as path-parent.
-    pub(crate) fn with_parents(vals: &[i32], parent: &[u32]) -> Self {
+    pub fn with_parents(vals: &[i32], parent: &[u32]) -> Self {
         debug_assert_eq!(parent.len(), vals.len());
         Lct {
             t: vals
@@ -274,7 +274,7 @@ impl Lct {
     }
 
     /// The value of `x` once it is cut off (a single-node tree).
-    pub(crate) fn isolated_value(&self, x: u32) -> i32 {
+    pub fn isolated_value(&self, x: u32) -> i32 {
         self.t[x as usize].val
     }
 
@@ -306,7 +306,7 @@ impl Lct {
     /// `access(x)` the root–`x` path is one preferred path, and the last node at which
     /// `access(y)` joins it is where the root–`y` path leaves the root–`x` path.
     #[cfg(test)]
-    pub(crate) fn lca(&mut self, x: u32, y: u32) -> u32 {
+    fn lca(&mut self, x: u32, y: u32) -> u32 {
         debug_assert!(self.connected(x, y), "lca of two trees");
         self.access(x);
         self.access(y)
@@ -320,18 +320,18 @@ impl Lct {
     /// LCAs along a walk over several nodes cost one access each. (Used in the tests;
     /// DS walks a [`PlainLct`].)
     #[cfg(test)]
-    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+    fn walk_to(&mut self, x: u32) -> u32 {
         self.access(x)
     }
 
     /// Makes `x` the root of its tree.
-    pub(crate) fn make_root(&mut self, x: u32) {
+    pub fn make_root(&mut self, x: u32) {
         make_root(&mut self.t, &mut self.stack, x);
     }
 
     /// The root of `x`'s tree (its current root: re-rooting moves it). O(log n)
     /// amortised.
-    pub(crate) fn find_root(&mut self, x: u32) -> u32 {
+    pub fn find_root(&mut self, x: u32) -> u32 {
         self.access(x);
         let mut y = x;
         loop {
@@ -347,18 +347,18 @@ impl Lct {
     }
 
     /// Whether `x` and `y` are in the same tree.
-    pub(crate) fn connected(&mut self, x: u32, y: u32) -> bool {
+    pub fn connected(&mut self, x: u32, y: u32) -> bool {
         x == y || self.find_root(x) == self.find_root(y)
     }
 
     /// Adds the edge `x`–`y`; they must be in different trees.
-    pub(crate) fn link(&mut self, x: u32, y: u32) {
+    pub fn link(&mut self, x: u32, y: u32) {
         debug_assert!(!self.connected(x, y), "link inside one tree");
         link(&mut self.t, &mut self.stack, x, y);
     }
 
     /// Removes the edge `x`–`y`, which must exist.
-    pub(crate) fn cut(&mut self, x: u32, y: u32) {
+    pub fn cut(&mut self, x: u32, y: u32) {
         cut(&mut self.t, &mut self.stack, x, y);
         self.pull(y);
         // Leave x's own value exact (its subtree tags are pushed on the next splay).
@@ -370,7 +370,7 @@ impl Lct {
     /// single-node tree before, gets the value of `copy_from`, one of those interior
     /// nodes. The interior nodes must have no tree neighbours off the path (they would
     /// be cut off with it). O(log n) amortised plus the path length.
-    pub(crate) fn replace_path(&mut self, y: u32, z: u32, k: u32, copy_from: u32) {
+    pub fn replace_path(&mut self, y: u32, z: u32, k: u32, copy_from: u32) {
         self.make_root(y);
         self.access(z);
         // z's splay tree now holds exactly the path y…z, and y is the tree root, so the
@@ -421,13 +421,13 @@ impl Lct {
     }
 
     /// Adds `d` to the value of every node on the `x`–`y` path (both included).
-    pub(crate) fn path_add(&mut self, x: u32, y: u32, d: i32) {
+    pub fn path_add(&mut self, x: u32, y: u32, d: i32) {
         self.expose(x, y);
         self.apply_add(y, d);
     }
 
     /// Minimum value on the `x`–`y` path (both included).
-    pub(crate) fn path_min(&mut self, x: u32, y: u32) -> i32 {
+    pub fn path_min(&mut self, x: u32, y: u32) -> i32 {
         self.expose(x, y);
         self.t[y as usize].min
     }
@@ -466,7 +466,7 @@ impl SplayNode for PlainNode {
 /// aggregate to keep up (tested against the same naive forest); in DS it replaced
 /// [`Lct`], whose values DS never read.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct PlainLct {
+pub struct PlainLct {
     t: Vec<PlainNode>,
     stack: Vec<u32>,
 }
@@ -474,7 +474,7 @@ pub(crate) struct PlainLct {
 impl PlainLct {
     /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root); `parent`
     /// must describe a forest. O(n): every node starts as its own preferred path.
-    pub(crate) fn with_parents(parent: &[u32]) -> Self {
+    pub fn with_parents(parent: &[u32]) -> Self {
         PlainLct {
             t: parent
                 .iter()
@@ -497,22 +497,22 @@ impl PlainLct {
     /// The LCA of `x` and the node last passed to `walk_to` (same
     /// tree, same root since; meaningless after any other operation). O(log n)
     /// amortised.
-    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+    pub fn walk_to(&mut self, x: u32) -> u32 {
         self.access(x)
     }
 
     /// Makes `x` the root of its tree.
-    pub(crate) fn make_root(&mut self, x: u32) {
+    pub fn make_root(&mut self, x: u32) {
         make_root(&mut self.t, &mut self.stack, x);
     }
 
     /// Adds the edge `x`–`y`; they must be in different trees.
-    pub(crate) fn link(&mut self, x: u32, y: u32) {
+    pub fn link(&mut self, x: u32, y: u32) {
         link(&mut self.t, &mut self.stack, x, y);
     }
 
     /// Removes the edge `x`–`y`, which must exist.
-    pub(crate) fn cut(&mut self, x: u32, y: u32) {
+    pub fn cut(&mut self, x: u32, y: u32) {
         cut(&mut self.t, &mut self.stack, x, y);
     }
 }
