@@ -10,7 +10,11 @@
 //! | [`PlainLct`] (module `lct`) | [`Lct`] without values: link, cut, re-rooting and the LCAs of a walk | O(log n) per operation | 16 bytes per node |
 //! | [`TwoEdge`] (module `two_edge`): fully dynamic 2-edge-connectivity, HDT Sec. 3's cover idea with exact cover counts and without its levels | exact [`TwoEdge::connected`] and [`TwoEdge::two_edge_connected`] after every update | O(log n) per query, insertion and non-tree deletion; O(s + k log n) per tree-edge deletion (`s` the degree sum of the smaller side of the cut, `k` the edges covering it): **not** polylogarithmic | 21 bytes per edge id, 28 per vertex and per tree edge, plus the incidence lists |
 //!
-//! Each module's documentation gives the algorithm, the sources,
+//! The Euler-tour and link–cut trees share one splay-tree core (module `splay`): the
+//! bottom-up rotation and splay and the sequence operations (join, split at a root,
+//! extreme node, balanced build), generic over the node type, which brings its own
+//! aggregate and lazy tags; two constants of the node type compile path-parents and
+//! lazy tags in only where they are used. Each module's documentation gives the algorithm, the sources,
 //! the departures from them and the measurements; each is tested against a naive
 //! reference (adjacency lists and breadth-first search) after every operation of random
 //! sequences.
@@ -24,6 +28,7 @@
 pub(crate) mod ett;
 pub(crate) mod hdt;
 pub(crate) mod lct;
+mod splay;
 pub(crate) mod two_edge;
 
 pub use hdt::{ForestChange, Hdt, HdtStats};
