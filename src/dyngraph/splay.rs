@@ -6,16 +6,17 @@
 //! # Guarantees
 //! Every operation keeps the in-order sequence of each splay tree as stated (rotations
 //! never change it) and, if the node type's `pull` and `push` are exact, every node's
-//! aggregate exact for its subtree once it is a splay root or a child of one. The owner
+//! aggregate exact for its subtree up to the tags still pending at its ancestors. The owner
 //! decides what the sequence means: an Euler tour (`ett`), a preferred path (`lct`).
 //!
 //! Two node-type constants select, at compile time, what each owner needs and nothing
 //! more: [`SplayNode::PATH_PARENTS`] (a splay root's parent pointer may be a link–cut
 //! tree's path-parent, so being a root is "not a child of one's parent" instead of "no
 //! parent") and [`SplayNode::LAZY`] (tags to push down before a node's children move).
-//! Without them the core is exactly the Euler-tour trees' former own splay; with them,
-//! the link–cut trees' former one, except that `x`'s aggregate is recomputed once at the
-//! end of a splay instead of after every rotation (no rotation reads it).
+//! A splay recomputes the aggregate of each rotated-over node and, once at the end, of
+//! the splayed node (no rotation reads it). The rotation works on a slice and is inlined
+//! into the splay loop: `docs/benchmarks.md` (dynamic graph structures) has the
+//! instruction counts against the two implementations this core replaced.
 //!
 //! # Complexity
 //! O(log n) amortised per splay, and so per operation below but `build`, O(len), and
@@ -85,6 +86,38 @@ impl<N> IndexMut<u32> for Splay<N> {
     }
 }
 
+/// Whether `x` is the root of its splay tree.
+#[inline]
+fn is_root<N: SplayNode>(t: &[N], x: u32) -> bool {
+    let p = t[x as usize].par();
+    p == NIL || (N::PATH_PARENTS && !t[p as usize].ch().contains(&x))
+}
+
+/// One rotation of `x` over its splay parent `p` (whose aggregate is recomputed; `x`'s
+/// is left to the caller). `x` takes over `p`'s parent pointer, a path-parent included.
+#[inline(always)]
+fn rotate<N: SplayNode>(t: &mut [N], x: u32) {
+    let p = t[x as usize].par();
+    let g = t[p as usize].par();
+    // Read before anything moves: with path-parents it looks at `g`'s children.
+    let p_was_root = is_root(t, p);
+    let dir = usize::from(t[p as usize].ch()[1] == x);
+    let b = t[x as usize].ch()[dir ^ 1];
+    t[p as usize].ch_mut()[dir] = b;
+    if b != NIL {
+        *t[b as usize].par_mut() = p;
+    }
+    t[x as usize].ch_mut()[dir ^ 1] = p;
+    *t[p as usize].par_mut() = x;
+    *t[x as usize].par_mut() = g;
+    if !p_was_root {
+        let gc = t[g as usize].ch_mut();
+        let side = usize::from(gc[1] == p);
+        gc[side] = x;
+    }
+    N::pull(t, p);
+}
+
 impl<N: SplayNode> Splay<N> {
     /// The forest of the nodes `t`, as they are linked.
     pub(super) fn from_nodes(t: Vec<N>) -> Self {
@@ -97,8 +130,7 @@ impl<N: SplayNode> Splay<N> {
     /// Whether `x` is the root of its splay tree.
     #[inline]
     pub(super) fn is_root(&self, x: u32) -> bool {
-        let p = self[x].par();
-        p == NIL || (N::PATH_PARENTS && !self[p].ch().contains(&x))
+        is_root(&self.t, x)
     }
 
     /// Recomputes `x`'s aggregate ([`SplayNode::pull`]).
@@ -113,58 +145,36 @@ impl<N: SplayNode> Splay<N> {
         N::push(&mut self.t, x);
     }
 
-    /// One rotation of `x` over its splay parent `p` (whose aggregate is recomputed; `x`'s
-    /// is left to the caller). `x` takes over `p`'s parent pointer, a path-parent
-    /// included.
-    #[inline]
-    fn rotate(&mut self, x: u32) {
-        let p = self[x].par();
-        let g = self[p].par();
-        let dir = usize::from(self[p].ch()[1] == x);
-        let b = self[x].ch()[dir ^ 1];
-        if !self.is_root(p) {
-            let gc = self[g].ch_mut();
-            let side = usize::from(gc[1] == p);
-            gc[side] = x;
-        }
-        *self[x].par_mut() = g;
-        self[x].ch_mut()[dir ^ 1] = p;
-        *self[p].par_mut() = x;
-        self[p].ch_mut()[dir] = b;
-        if b != NIL {
-            *self[b].par_mut() = p;
-        }
-        self.pull(p);
-    }
-
     /// Splays `x` to the root of its splay tree (bottom-up: zig-zig and zig-zag steps),
     /// pushing the pending tags down from that root first when the node type has any;
     /// `x`'s aggregate is exact afterwards.
     pub(super) fn splay(&mut self, x: u32) {
+        // On a slice, whose length the compiler keeps in a register through the
+        // stores (through the vector it would reload it after each).
+        let t = self.t.as_mut_slice();
         if N::LAZY {
-            let mut stack = std::mem::take(&mut self.stack);
+            let stack = &mut self.stack;
             stack.clear();
             let mut y = x;
             stack.push(y);
-            while !self.is_root(y) {
-                y = self[y].par();
+            while !is_root(t, y) {
+                y = t[y as usize].par();
                 stack.push(y);
             }
             while let Some(z) = stack.pop() {
-                self.push(z);
+                N::push(t, z);
             }
-            self.stack = stack;
         }
-        while !self.is_root(x) {
-            let p = self[x].par();
-            if !self.is_root(p) {
-                let g = self[p].par();
-                let zigzig = (self[g].ch()[0] == p) == (self[p].ch()[0] == x);
-                self.rotate(if zigzig { p } else { x });
+        while !is_root(t, x) {
+            let p = t[x as usize].par();
+            if !is_root(t, p) {
+                let g = t[p as usize].par();
+                let zigzig = (t[g as usize].ch()[0] == p) == (t[p as usize].ch()[0] == x);
+                rotate(t, if zigzig { p } else { x });
             }
-            self.rotate(x);
+            rotate(t, x);
         }
-        self.pull(x);
+        N::pull(t, x);
     }
 
     /// The first (`side` 0) or last (`side` 1) node of the sequence of the splay tree
