@@ -165,8 +165,8 @@ pub struct Hdt {
 }
 
 impl Hdt {
-    /// The most vertices for which no id can overflow: at most [`MAX_TREE`] (the
-    /// counts), and few enough that the Euler-tour pool's node ids stay below `NIL`
+    /// The most vertices for which no id can overflow: at most 2²⁷ − 1 (the subtree
+    /// vertex counts have 27 bits), and few enough that the Euler-tour pool's node ids stay below `NIL`
     /// (a vertex has nodes for levels `0..=L`, `L = ⌊log₂ n⌋`, at most, and each of the
     /// at most `n − 1` tree edges `L + 1` arc pairs: fewer than `3n(L + 1)` nodes, free
     /// ones reused first). About 55.06M vertices.
@@ -271,8 +271,8 @@ impl Hdt {
     /// one in this order: the same forest, changes, Euler-tour sequences (in the same
     /// rotation), non-tree lists and node ids, so that every later choice is the same
     /// (tested). A union–find decides which edges link, the tours are spliced as cyclic
-    /// lists as [`Pool::link`] would splice them, and each tree is then built balanced in
-    /// one pass ([`Pool::build`]): O(n + m) besides the union–find, whose path halving
+    /// lists as the Euler-tour link would splice them, and each tree is then built
+    /// balanced in one pass: O(n + m) besides the union–find, whose path halving
     /// with linking by edge order (not by rank: the root decides the tour's rotation) is
     /// O(m log n) in the worst case (Tarjan–van Leeuwen), near-linear on BFS-ordered
     /// edges in practice; one-by-one insertion would be O(m log n) amortised splay work.
