@@ -18,8 +18,8 @@ pub mod quad;
 pub mod rng;
 pub mod simplify;
 pub mod spec;
-pub mod topology;
 
+pub use crate::core::topology;
 pub use crate::core::{
     BuildError, Component, ConedComponent, ConedSurfaces, ContractError, ContractionRecord, Corner,
     Edge, EdgeId, EdgeNumbering, FaceId, FlipError, FlipRecord, History, Journal, LinkTester,

@@ -6,7 +6,8 @@
 //! `link` (the link condition, naive and marked), `contract` (contraction and its exact,
 //! guarded undo), `collapse` (the simplifier's unrecorded operations), `split` (the general vertex split), `flip` (edge flips with exact
 //! undo), `edge` (edge handles and dense edge numbers that survive changes), `journal`
-//! (undo of interleaved contractions and flips), `validate`.
+//! (undo of interleaved contractions and flips), `validate`, [`topology`] (the
+//! topological type of a surface).
 
 mod boundary;
 mod build;
@@ -18,6 +19,7 @@ pub mod ids;
 mod journal;
 mod link;
 mod split;
+pub mod topology;
 mod tri;
 mod validate;
 
@@ -30,5 +32,6 @@ pub use ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES};
 pub use journal::{Journal, Op};
 pub use link::LinkTester;
 pub use split::SplitError;
+pub use topology::{SurfaceKind, SurfaceType};
 pub use tri::{Star, StarStep, StateStamp, Triangulation};
 pub use validate::{GluingProblem, LinkProblem, ValidationError};

@@ -5,9 +5,9 @@
 use super::geometry::{area_normal, dist2, fan_move_ok, midpoint, Point, Quadric};
 use super::nested::{self, Claim, Grow};
 use super::{naive, spec, Mode, Options, Position, SkipCounts};
+use crate::core::SurfaceType;
 use crate::core::{ConedComponent, Corner, FaceId, Triangulation, VertexId};
 use crate::progress::{Progress, Throttle};
-use crate::topology::SurfaceType;
 
 /// The stage of the progress reports inside a pass.
 pub const SCANNED: &str = "faces scanned in this pass";

@@ -13,9 +13,9 @@
 //! input.
 
 use super::pass::Simplifier;
+use crate::core::SurfaceType;
 use crate::core::{FaceId, VertexId};
 pub(super) use crate::spec::ENABLED;
-use crate::topology::SurfaceType;
 
 /// D1: `region` is a closed disc whose boundary is exactly the cycle `[p, q, x]`: every
 /// edge of its faces is in two of them except the three cycle edges (in one each), the
