@@ -7,7 +7,7 @@
 //! guarded undo), `collapse` (the simplifier's unrecorded operations), `split` (the general vertex split), `flip` (edge flips with exact
 //! undo), `edge` (edge handles and dense edge numbers that survive changes), `journal`
 //! (undo of interleaved contractions and flips), `validate`, [`topology`] (the
-//! topological type of a surface).
+//! topological type of a surface), `to_mesh` (surfaces back to plain meshes).
 
 mod boundary;
 mod build;
@@ -19,6 +19,7 @@ pub mod ids;
 mod journal;
 mod link;
 mod split;
+mod to_mesh;
 pub mod topology;
 mod tri;
 mod validate;
