@@ -9,6 +9,12 @@
 //! (undo of interleaved contractions and flips), `validate`, [`topology`] (the
 //! topological type of a surface), `to_mesh` (surfaces back to plain meshes).
 
+/// Whether the executable specification's checks run (under `debug_assertions` or the
+/// cargo feature `invariants`), the core's own self-checks among them. Defined here and
+/// published as [`crate::spec::ENABLED`]: the specification's oracles read
+/// triangulations, so the switch sits below them, in the core.
+pub(crate) const CHECKS: bool = cfg!(any(debug_assertions, feature = "invariants"));
+
 mod boundary;
 mod build;
 mod collapse;
