@@ -19,5 +19,6 @@ mod gen_surfaces;
 mod interleave;
 mod io_formats;
 mod isosurface;
+mod module_graph;
 mod proofs;
 mod properties;
