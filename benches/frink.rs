@@ -32,7 +32,7 @@ fn lct_inputs() -> Vec<&'static str> {
 
 const NAIVE_INPUTS: &[&str] = &["B9", "B8", "B7"];
 
-/// BBDL's 2-edge structure is not polylogarithmic (module `frink::two_edge`): the
+/// BBDL's 2-edge structure is not polylogarithmic (module `dyngraph::two_edge`): the
 /// smaller members only.
 const BBDL_INPUTS: &[&str] = &["B9", "B8", "B7", "B6", "B5"];
 

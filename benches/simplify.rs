@@ -13,7 +13,7 @@
 //! (`simplify_surfaces` from surfaces built outside the timed region: the algorithm
 //! alone, as the command line times it) and `build` (validation and coning alone). Run:
 //! `cargo bench --bench simplify` (about a minute), then divide the input's triangle
-//! count (printed by `cargo run --release --example simplify_profile`) by the median.
+//! count (printed by `cargo run --release -p contractible-tools --bin simplify_profile`) by the median.
 
 use std::collections::HashMap;
 use std::sync::{Mutex, OnceLock};

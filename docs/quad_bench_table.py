@@ -7,10 +7,10 @@ petgraph's `maximum_matching` to each of our totals on the meshes.
 
 (a), (d), (e) are divan medians of the `initial`, `completion` and `total` groups; (b)
 and (c) are counters (deterministic for the input and seed), read from the output of
-`cargo run --release --example quad_profile -- INPUTS...` when given.
+`cargo run --release -p contractible-tools --bin quad_profile -- INPUTS...` when given.
 
 Usage: cargo bench --bench quad > quad.txt
-       cargo run --release --example quad_profile -- B0 B2 B4 C0 C2 C4 mesh:botijo ... > counters.txt
+       cargo run --release -p contractible-tools --bin quad_profile -- B0 B2 B4 C0 C2 C4 mesh:botijo ... > counters.txt
        python3 docs/quad_bench_table.py quad.txt [counters.txt]
 """
 import re

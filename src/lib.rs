@@ -68,6 +68,7 @@
 
 pub mod core;
 pub mod diagnose;
+pub mod dyngraph;
 pub mod gen;
 pub mod io;
 pub mod irreducible;
@@ -79,8 +80,8 @@ pub mod rng;
 pub mod simplify;
 pub mod spec;
 pub mod task;
-pub mod topology;
 
+pub use crate::core::topology;
 pub use crate::core::{
     BuildError, Component, ConedComponent, ConedSurfaces, ContractError, ContractionRecord, Corner,
     Edge, EdgeId, EdgeNumbering, FaceId, FlipError, FlipRecord, History, Journal, LinkTester,

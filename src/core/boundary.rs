@@ -64,9 +64,9 @@ use super::build::{
     Checked, Component, OpenCheck, Surfaces,
 };
 use super::ids::{Corner, FaceId, VertexId, NONE};
+use super::topology::SurfaceType;
 use super::tri::Triangulation;
 use crate::mesh::TriMesh;
-use crate::topology::SurfaceType;
 
 /// One connected compact surface, possibly with boundary, closed by coning.
 ///

@@ -460,7 +460,7 @@ impl Triangulation {
             state_before,
             state_after: self.state,
         };
-        if crate::spec::ENABLED {
+        if super::CHECKS {
             // The compact record must give back exactly what was saved.
             assert_eq!(rec.saved_vertex(), saved_vertex, "record of [{u}, {v}]");
             assert_eq!(rec.saved_opposite(), saved_opposite, "record of [{u}, {v}]");

@@ -164,7 +164,7 @@ impl Triangulation {
     /// release builds such a call would leave a duplicate edge.
     pub(crate) fn flip_at_proved(&mut self, c: Corner) -> ([Corner; 2], [Corner; 2]) {
         let k2 = self.opposite(c);
-        if crate::spec::ENABLED {
+        if super::CHECKS {
             assert!(
                 self.is_face(c.face()) && !self.has_edge(self.vertex(c), self.vertex(k2)),
                 "flip_at_proved: the edge opposite {c} is not flippable (Prop. 3.3 violated)"

@@ -6,7 +6,14 @@
 //! `link` (the link condition, naive and marked), `contract` (contraction and its exact,
 //! guarded undo), `collapse` (the simplifier's unrecorded operations), `split` (the general vertex split), `flip` (edge flips with exact
 //! undo), `edge` (edge handles and dense edge numbers that survive changes), `journal`
-//! (undo of interleaved contractions and flips), `validate`.
+//! (undo of interleaved contractions and flips), `validate`, [`topology`] (the
+//! topological type of a surface), `to_mesh` (surfaces back to plain meshes).
+
+/// Whether the executable specification's checks run (under `debug_assertions` or the
+/// cargo feature `invariants`), the core's own self-checks among them. Defined here and
+/// published as [`crate::spec::ENABLED`]: the specification's oracles read
+/// triangulations, so the switch sits below them, in the core.
+pub(crate) const CHECKS: bool = cfg!(any(debug_assertions, feature = "invariants"));
 
 mod boundary;
 mod build;
@@ -18,6 +25,8 @@ pub mod ids;
 mod journal;
 mod link;
 mod split;
+mod to_mesh;
+pub mod topology;
 mod tri;
 mod validate;
 
@@ -30,5 +39,6 @@ pub use ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES};
 pub use journal::{Journal, Op};
 pub use link::LinkTester;
 pub use split::SplitError;
+pub use topology::{SurfaceKind, SurfaceType};
 pub use tri::{Star, StarStep, StateStamp, Triangulation};
 pub use validate::{GluingProblem, LinkProblem, ValidationError};

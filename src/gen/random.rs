@@ -4,31 +4,7 @@ use super::GenError;
 use crate::core::{Triangulation, VertexId, MAX_FACES, MAX_VERTICES};
 use crate::rng::Rng;
 
-/// Which closed surface to triangulate.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
-pub enum SurfaceKind {
-    /// The orientable surface of genus `g` (sphere for 0, torus for 1, ...).
-    Orientable(u32),
-    /// The non-orientable surface of Euler genus `h >= 1` (connected sum of `h`
-    /// projective planes: 1 = projective plane, 2 = Klein bottle).
-    NonOrientable(u32),
-}
-
-impl SurfaceKind {
-    /// Euler characteristic of the surface.
-    pub fn euler_characteristic(self) -> i64 {
-        match self {
-            SurfaceKind::Orientable(g) => 2 - 2 * g as i64,
-            SurfaceKind::NonOrientable(h) => 2 - h as i64,
-        }
-    }
-
-    /// Whether the surface is orientable.
-    pub fn is_orientable(self) -> bool {
-        matches!(self, SurfaceKind::Orientable(_))
-    }
-}
+pub use crate::core::topology::SurfaceKind;
 
 /// Parameters of [`random`].
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]

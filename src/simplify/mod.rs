@@ -43,6 +43,7 @@ pub mod naive;
 pub mod nested;
 mod pass;
 mod spec;
+mod state;
 
 use std::time::Instant;
 
@@ -452,7 +453,7 @@ pub fn simplify_surfaces_observed(
     let mut out_positions = Vec::new();
     let mut out_faces = Vec::new();
     for (k, component) in surfaces.components.into_iter().enumerate() {
-        let mut sim = pass::Simplifier::new(component, positions, options);
+        let mut sim = state::Simplifier::new(component, positions, options);
         let run = sim.run(
             &mut |pass, contracted, faces| {
                 on_pass(&PassReport {

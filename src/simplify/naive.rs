@@ -6,7 +6,7 @@
 //! Theorem 3), so the surface's type never changes. O(d_p + d_q) per edge (the common
 //! neighbour walk of the pass machinery).
 
-use super::pass::{EdgeInfo, Simplifier, Skip};
+use super::state::{EdgeInfo, Simplifier, Skip};
 
 /// Accepts the edge iff its endpoints have no common neighbour besides the two opposite
 /// vertices (the walk has already refused an edge joining two boundary loops; the

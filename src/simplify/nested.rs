@@ -31,49 +31,9 @@
 //! twice the part removed when the smaller side is a disc; O(d_p + d_q) on top.
 
 use super::geometry::dist2;
-use super::pass::{EdgeInfo, Simplifier, Skip};
+use super::state::{Claim, EdgeInfo, RegionState, Simplifier, Skip};
 use super::Side;
-use crate::core::{Corner, FaceId, VertexId};
-
-/// A disc claimed by one side: the first `faces` faces of that side's region are the
-/// closed disc bounded by `p q x`; `sides` are its corners opposite `[p, q]`, `[q, x]`,
-/// `[x, p]`.
-#[derive(Copy, Clone, Debug)]
-pub(super) struct Claim {
-    pub(super) x: VertexId,
-    pub(super) faces: usize,
-    pub(super) sides: [Corner; 3],
-}
-
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
-enum State {
-    /// Not started, or stopped at its last claim by the split.
-    #[default]
-    Waiting,
-    /// Growing towards the cycle through `xs[t]`.
-    Active(usize),
-    /// Failed the disc test: claims no more.
-    Dead,
-}
-
-/// One side's region (reused scratch).
-#[derive(Clone, Debug, Default)]
-pub(super) struct Grow {
-    /// The region's faces in discovery order; `queue[head..]` are not expanded yet.
-    pub(super) queue: Vec<FaceId>,
-    head: usize,
-    /// Corners of expanded faces opposite an edge of the current cycle.
-    blocked: Vec<Corner>,
-    state: State,
-    started: bool,
-    claim: Option<Claim>,
-    /// Vertices of the region other than `p`, `q` and the `xs`, and how many of them
-    /// are virtual.
-    verts: usize,
-    virtuals: usize,
-    /// This side's mark in `fmark` and `vmark`.
-    stamp: u32,
-}
+use crate::core::{FaceId, VertexId};
 
 /// The two regions met: the cycles do not separate the sides.
 struct Meet;
@@ -97,7 +57,7 @@ pub(super) fn plan(sim: &mut Simplifier<'_>, e: &EdgeInfo) -> Result<[Option<Cla
         g.queue.clear();
         g.blocked.clear();
         g.head = 0;
-        g.state = State::Waiting;
+        g.state = RegionState::Waiting;
         g.started = false;
         g.claim = None;
         g.verts = 0;
@@ -119,7 +79,7 @@ pub(super) fn plan(sim: &mut Simplifier<'_>, e: &EdgeInfo) -> Result<[Option<Cla
     while lo < hi {
         let mut pick = None;
         for s in 0..2 {
-            if matches!(sim.grow[s].state, State::Active(_))
+            if matches!(sim.grow[s].state, RegionState::Active(_))
                 && pick.is_none_or(|p: usize| sim.grow[s].queue.len() < sim.grow[p].queue.len())
             {
                 pick = Some(s);
@@ -128,7 +88,7 @@ pub(super) fn plan(sim: &mut Simplifier<'_>, e: &EdgeInfo) -> Result<[Option<Cla
         let Some(s) = pick else {
             return Err(Skip::NonDisc);
         };
-        let State::Active(t) = sim.grow[s].state else {
+        let RegionState::Active(t) = sim.grow[s].state else {
             unreachable!("picked an active side")
         };
         if sim.grow[s].head < sim.grow[s].queue.len() {
@@ -153,17 +113,17 @@ pub(super) fn plan(sim: &mut Simplifier<'_>, e: &EdgeInfo) -> Result<[Option<Cla
                 if allowed(s, next, &unlimited) {
                     activate(sim, e, s, next, starts[s]).map_err(|Meet| Skip::NonDisc)?;
                 } else {
-                    sim.grow[s].state = State::Waiting;
+                    sim.grow[s].state = RegionState::Waiting;
                 }
             }
             None => {
-                sim.grow[s].state = State::Dead;
+                sim.grow[s].state = RegionState::Dead;
                 let o = 1 - s;
-                if sim.grow[o].state == State::Dead {
+                if sim.grow[o].state == RegionState::Dead {
                     return Err(Skip::NonDisc);
                 }
                 unlimited[o] = true;
-                if sim.grow[o].state == State::Waiting {
+                if sim.grow[o].state == RegionState::Waiting {
                     let next = if o == 0 { lo } else { hi - 1 };
                     activate(sim, e, o, next, starts[o]).map_err(|Meet| Skip::NonDisc)?;
                 }
@@ -183,7 +143,7 @@ fn activate(
     t: usize,
     start: FaceId,
 ) -> Result<(), Meet> {
-    sim.grow[s].state = State::Active(t);
+    sim.grow[s].state = RegionState::Active(t);
     if !sim.grow[s].started {
         sim.grow[s].started = true;
         return cross(sim, e, s, start);

@@ -12,10 +12,10 @@
 //! checking that it is a disc); the tests below show each check failing on a corrupted
 //! input.
 
-use super::pass::Simplifier;
+use super::state::Simplifier;
+use crate::core::SurfaceType;
 use crate::core::{FaceId, VertexId};
 pub(super) use crate::spec::ENABLED;
-use crate::topology::SurfaceType;
 
 /// D1: `region` is a closed disc whose boundary is exactly the cycle `[p, q, x]`: every
 /// edge of its faces is in two of them except the three cycle edges (in one each), the
@@ -153,7 +153,7 @@ pub(super) fn unaccounted(_sim: &Simplifier<'_>, p: VertexId, q: VertexId) {
 #[cfg(all(test, any(debug_assertions, feature = "invariants")))]
 mod tests {
     use super::*;
-    use crate::simplify::{pass::Simplifier, Options};
+    use crate::simplify::{state::Simplifier, Options};
     use crate::spec::testing::assert_fails;
     use crate::{gen, ConedSurfaces};
 

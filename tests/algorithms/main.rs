@@ -5,8 +5,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-// CPU time of the calling thread, shared with the profiling examples.
-#[path = "../../examples/common/cpu.rs"]
+// CPU time of the calling thread, shared with the profiling tools (tools/).
+#[path = "../common/cpu.rs"]
 mod cpu;
 
 // The fuzz harness (`fuzz/src/lib.rs`): the quad tests reuse its checks.

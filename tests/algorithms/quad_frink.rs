@@ -506,7 +506,7 @@ mod corpus {
 
     /// Biedl–Bose–Demaine–Lubiw on every component of every closed corpus mesh up to
     /// [`BBDL_MAX_FACES`] faces (its 2-edge structure is not polylogarithmic: module
-    /// `frink::two_edge`) and random surfaces of every kind at two sizes.
+    /// `dyngraph::two_edge`) and random surfaces of every kind at two sizes.
     #[test]
     fn bbdl_on_shared_closed_meshes_and_random_surfaces() {
         let (mut runs, mut skipped, mut h2, mut digons, mut swaps) = (0, 0, 0, 0, 0);

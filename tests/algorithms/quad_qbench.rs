@@ -1,7 +1,7 @@
 //! Output pins of the tri-quad conversion, so that an optimisation cannot change its
 //! results: every algorithm's initial pairing and final output (`K`'s face lists and the
 //! pairs) on a few inputs, as 64-bit FNV-1a fingerprints recorded from the implementation
-//! *before* any optimisation (commit b70e3ef, by `examples/quad_profile.rs`). A speed-up that changes
+//! *before* any optimisation (commit b70e3ef, by `tools/src/bin/quad_profile.rs`). A speed-up that changes
 //! a single pair, flip or face slot changes a fingerprint and fails here. The
 //! fingerprints are computed by this file's own code from the public results only.
 //! One deliberate change since: LRS's `K` on the non-orientable input (`rand:n5`), whose

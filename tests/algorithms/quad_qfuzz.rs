@@ -5,7 +5,7 @@
 //!
 //! 1. **Vectors, exactly**: the library reproduces every stored run (`K`'s faces for
 //!    LRS, the pairs before and after the completion, the counters). Regenerate with
-//!    `cargo run --release --example make_quad_vectors` only for an intended change.
+//!    `cargo run --release -p contractible-tools --bin make_quad_vectors` only for an intended change.
 //! 2. **Vectors, independently**: from the stored data alone, the initial pairs are a
 //!    pairing and the final pairs a perfect pairing of `K` (pairs share exactly two
 //!    vertices), their quads (built here) form a closed quadrangulation of the input's χ

@@ -139,7 +139,7 @@ fn retest_counter_sees_the_retests_of_schipper_and_brute_force() {
 }
 
 /// RS on small surfaces under many vertex orders (the space in which erratum E4 showed:
-/// `examples/errata_search.rs`): every output irreducible by the naive test, same χ and
+/// `tools/src/bin/errata_search.rs`): every output irreducible by the naive test, same χ and
 /// orientability, ε = 0, with the specification checks on (Definition 4 included).
 #[test]
 fn small_surfaces_under_many_vertex_orders() {

@@ -372,7 +372,7 @@ fn erratum_e4_printed_loop_exit_returns_a_reducible_triangulation() {
 }
 
 /// Erratum E1 witness with a wrong *output*: a 16-vertex surface of Euler genus 4 (found
-/// by `examples/errata_search.rs` (`e1`, checks compiled out),
+/// by `tools/src/bin/errata_search.rs` (`e1`, checks compiled out),
 /// and shrunk). The printed strict stamp of Alg. 4.3 l.13 leaves a counter one too
 /// high, the edge never reaches the front of `lte`, and the output keeps it contractible.
 const E1_EULER_GENUS_4: [[u32; 3]; 36] = [

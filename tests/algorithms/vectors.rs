@@ -2,7 +2,7 @@
 //!
 //! 1. The current library reproduces every vector exactly (RS, Schipper and the brute
 //!    force with the vector's seed: output faces, history, counters), so any behaviour
-//!    change shows up here (regenerate with `cargo run --example make_vectors` only if the
+//!    change shows up here (regenerate with `cargo run -p contractible-tools --bin make_vectors` only if the
 //!    change is intended, and say so in the commit).
 //! 2. Independently of the algorithms, each stored output is irreducible by the naive
 //!    link test, with the input's χ and orientability (computed from the face lists), and

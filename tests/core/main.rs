@@ -19,6 +19,7 @@ mod gen_surfaces;
 mod interleave;
 mod io_formats;
 mod isosurface;
+mod module_graph;
 mod no_panic;
 mod proofs;
 mod properties;

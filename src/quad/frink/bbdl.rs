@@ -2,7 +2,7 @@
 //! describe it ("Efficient algorithms for Petersen's matching theorem", J. Algorithms
 //! 38(1), 2001): a travelling forbidden edge, so that Appendix A's case (iv) never
 //! arises, and the choice between the two reconnections decided by querying a fully
-//! dynamic 2-edge-connectivity structure (module `two_edge`).
+//! dynamic 2-edge-connectivity structure ([`crate::dyngraph::TwoEdge`]).
 //!
 //! # Guarantee
 //! Every reconnection this strategy returns is connected and bridgeless (proof below;
@@ -49,7 +49,7 @@
 //! three queries when `H1` passes, or six updates (`H1`'s two edges inserted and deleted
 //! again, both non-tree edges then, and `H2`'s two inserted) and four to six queries
 //! (one to three for `H1`, three for `H2`) when it fails; O(1) for the choice. With HDT Sec. 3 that would be
-//! O(log⁴ n) amortised per step as BBDL state. The structure here (module `two_edge`) is
+//! O(log⁴ n) amortised per step as BBDL state. The structure here ([`crate::dyngraph::TwoEdge`]) is
 //! weaker: O(log n) amortised per query and per non-tree update, but O(s + k log n) per
 //! tree-edge deletion (`s`: degree sum of the smaller side of the cut, `k`: edges
 //! covering it), so O(n² log n) in the worst case in all; measured on the B family in
@@ -66,8 +66,8 @@
 
 use super::graph::max_nodes_for_edge_ids;
 use super::shared::{bfs_edge_order, non_tree_first, ForbiddenEdge};
-use super::two_edge::{TwoEdge, TwoEdgeCounters, MAX_ID};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
+use crate::dyngraph::two_edge::{TwoEdge, TwoEdgeCounters, MAX_ID};
 
 /// What the steps of one run did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -35,8 +35,8 @@
 //! No randomness; the worklist order is a function of the graph.
 
 use super::graph::{Dfs, NONE};
-use super::lct::Lct;
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
+use crate::dyngraph::Lct;
 
 /// Value of the vertex nodes of the link–cut tree: never the minimum of a path that has
 /// an edge (path additions move it by at most the number of operations, far below this).

@@ -89,10 +89,10 @@
 //! reconnections pass) take `H1`.
 
 use super::graph::{max_nodes_for_edge_ids, NONE};
-use super::hdt::{ForestChange, Hdt, MAX_EDGE_ID};
-use super::lct::PlainLct;
 use super::shared::{bfs_edge_order, non_tree_first, removed, ForbiddenEdge};
 use super::{Candidate, Cubic, Reconnection, Reduction, Strategy};
+use crate::dyngraph::hdt::{ForestChange, Hdt, MAX_EDGE_ID};
+use crate::dyngraph::PlainLct;
 
 /// A spanning forest kept under edge insertions and deletions, reporting every change of
 /// the forest (the connectivity structure behind [`DiksStanczyk`]; also implemented

@@ -45,18 +45,18 @@
 //! [`CoverTree`] (module `cover`, this crate's own design in the spirit of
 //! Gawrychowski–Wasylkiewicz, ESA 2024, whose case analysis could not be read here; it is
 //! not their algorithm) keeps a spanning tree of the current graph in a link–cut tree
-//! (module `lct`) with a cover count per tree edge, picks reductions for which the tree
+//! ([`crate::dyngraph::Lct`]) with a cover count per tree edge, picks reductions for which the tree
 //! changes only locally and decides them exactly in O(log n) amortised; it falls back to
 //! a tree rebuild and a naive step when no such reduction is found (never observed on
 //! the B family or the shared meshes). [`DiksStanczyk`] (module `ds`) reduces next to a
 //! travelling forbidden edge (Biedl–Bose–Demaine–Lubiw), so case (iv) never occurs, and
 //! decides each step from the shape of a spanning forest of `H − {u, v}` kept by
-//! Holm–de Lichtenberg–Thorup dynamic connectivity (module `hdt`) and mirrored in the
+//! Holm–de Lichtenberg–Thorup dynamic connectivity ([`crate::dyngraph::Hdt`]) and mirrored in the
 //! link–cut tree for LCA queries: O(log² n) amortised per step; the decision is derived
 //! and proved in module `ds` (the DS paper's own case analysis could not be read;
 //! errata T13). [`BiedlBoseDemaineLubiw`] (module `bbdl`) reduces next to the same
 //! travelling forbidden edge and decides each step as BBDL do, by querying a fully
-//! dynamic 2-edge-connectivity structure ([`TwoEdge`], module `two_edge`): `H1` is
+//! dynamic 2-edge-connectivity structure ([`TwoEdge`], from [`crate::dyngraph`]): `H1` is
 //! applied and kept iff `x1` is 2-edge-connected to `x2`, `x3`, `x4` in it (sound and
 //! complete, proved in module `bbdl`), else `H2`. BBDL's O(log⁴ n) per step assumes
 //! HDT Sec. 3; [`TwoEdge`] keeps HDT's cover idea with exact cover counts but without
@@ -109,19 +109,15 @@ mod bbdl;
 mod cover;
 mod cycle;
 mod ds;
-mod ett;
 mod graph;
-mod hdt;
-mod lct;
 mod shared;
 mod spec;
-mod two_edge;
 
+pub use crate::dyngraph::{TwoEdge, TwoEdgeCounters};
 pub use bbdl::{BbdlCounters, BiedlBoseDemaineLubiw};
 pub use cover::{CoverCounters, CoverTree};
 pub use ds::{DiksStanczyk, DsCounters};
 pub use graph::{Candidate, Cubic, Reconnection, Reduction};
-pub use two_edge::{TwoEdge, TwoEdgeCounters};
 
 use super::Pairing;
 use crate::core::{FaceId, Triangulation};

@@ -20,7 +20,7 @@
 //! matching once.
 
 use super::graph::{Candidate, Cubic, Reduction, NONE};
-use super::two_edge::TwoEdge;
+use crate::dyngraph::TwoEdge;
 use crate::spec::ENABLED;
 
 /// Node count up to which F1 runs the independent edge-removal test.

@@ -5,6 +5,7 @@
 
 use super::graph::{Cubic, Dfs, NONE};
 use super::*;
+use crate::dyngraph::{ett, hdt, two_edge};
 use crate::rng::Rng;
 #[cfg(any(debug_assertions, feature = "invariants"))]
 use crate::spec::testing::assert_fails;

@@ -1,9 +1,10 @@
 //! Regenerates the conformance vectors in `spec/vectors/` (format: `spec/vectors/README.md`).
 //!
-//! `cargo run --example make_vectors [OUT_DIR]` (default `spec/vectors` of this checkout).
-//! Reads the published small surfaces from `tests/data/irreducible/*.txt`, generates the
-//! rest, runs RS, Schipper and the brute force (seed 0) on each and writes one JSON-lines
-//! file per group. `tests/algorithms/vectors.rs` checks that the library still reproduces them.
+//! `cargo run -p contractible-tools --bin make_vectors [OUT_DIR]` (default `spec/vectors`
+//! of this checkout). Reads the published small surfaces from
+//! `tests/data/irreducible/*.txt`, generates the rest, runs RS, Schipper and the brute
+//! force (seed 0) on each and writes one JSON-lines file per group.
+//! `tests/algorithms/vectors.rs` checks that the library still reproduces them.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -158,7 +159,7 @@ fn vector(input: &Input, group: &str) -> Value {
 }
 
 fn main() {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = contractible_tools::repo_root();
     let out_dir = std::env::args()
         .nth(1)
         .map_or_else(|| root.join("spec/vectors"), PathBuf::from);

@@ -1,5 +1,5 @@
-//! CPU time of the calling thread, shared by the profiling examples
-//! (`#[path = "common/cpu.rs"] mod cpu;`) and the algorithm tests that report it.
+//! CPU time of the calling thread, shared by the algorithm tests that report it and the
+//! profiling tools (`tools/src/lib.rs` includes this file).
 
 /// CPU seconds of the calling thread (from `/proc/thread-self/stat`, 10 ms ticks; 0
 /// where that file does not exist).

@@ -3,7 +3,7 @@
 //! beside ours, as Markdown on stdout. Timing ratios come from `cargo bench --bench
 //! irreducible` (medians), not from here.
 //!
-//! Usage: `cargo run --release --example paper_tables -- [GROUPS] [BF_RUNS]`
+//! Usage: `cargo run --release -p contractible-tools --bin paper_tables -- [GROUPS] [BF_RUNS]`
 //! e.g. `-- BCD 3` (the paper averaged BF over 10 shuffles; default here 3).
 
 use contractible::gen::paper_family;

@@ -18,12 +18,15 @@
 //!
 //! # Complexity
 //! O(log n) amortised per operation, n the number of nodes of the trees involved (splay
-//! trees, access lemma; re-rooting is a rotation of the sequence: one split and one
-//! concatenation). No lazy tags (no reversal is ever needed), no recursion. Memory: 24
+//! trees, access lemma, on the shared core of module `splay`; re-rooting is a rotation
+//! of the sequence: one split and one concatenation). No lazy tags (no reversal is ever
+//! needed) and no path-parents, both compiled out of the core; no recursion. Memory: 24
 //! bytes per node, freed nodes reused (two free lists, single vertex nodes and arc pairs).
 
+use super::splay::{Splay, SplayNode};
+
 /// No node / no item.
-pub(crate) const NIL: u32 = u32::MAX;
+pub(super) use super::splay::NIL;
 
 /// Bits of [`Node::w`]: the low 27 bits count the vertex nodes of the splay subtree.
 const CNT_MASK: u32 = (1 << 27) - 1;
@@ -78,10 +81,49 @@ struct Node {
     b: u32,
 }
 
+impl SplayNode for Node {
+    const PATH_PARENTS: bool = false;
+    const LAZY: bool = false;
+    fn ch(&self) -> [u32; 2] {
+        self.ch
+    }
+    fn ch_mut(&mut self) -> &mut [u32; 2] {
+        &mut self.ch
+    }
+    fn par(&self) -> u32 {
+        self.par
+    }
+    fn par_mut(&mut self) -> &mut u32 {
+        &mut self.par
+    }
+    fn push(_: &mut [Node], _: u32) {}
+    /// The count and the aggregate flags of `x` from its own bits and its children.
+    fn pull(t: &mut [Node], x: u32) {
+        t[x as usize].w = recount(t, x);
+    }
+}
+
+/// The packed word `x` should hold: its own bits, its vertex count (1 for a vertex node)
+/// plus its children's counts, its own flags OR its children's aggregates.
+#[inline]
+fn recount(t: &[Node], x: u32) -> u32 {
+    let n = t[x as usize];
+    let own = n.w & (VERTEX | OWN0 | OWN1);
+    let mut w = own | (own >> 31) | ((own & (OWN0 | OWN1)) << 2);
+    for c in n.ch {
+        if c != NIL {
+            let cw = t[c as usize].w;
+            w += cw & CNT_MASK;
+            w |= cw & (AGG0 | AGG1);
+        }
+    }
+    w
+}
+
 /// The node pool: all Euler-tour forests of one owner.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Pool {
-    t: Vec<Node>,
+    s: Splay<Node>,
     free_vertex: u32,
     free_pair: u32,
 }
@@ -90,7 +132,7 @@ impl Pool {
     /// An empty pool with room for `cap` nodes before it grows.
     pub(crate) fn with_capacity(cap: usize) -> Self {
         Pool {
-            t: Vec::with_capacity(cap),
+            s: Splay::from_nodes(Vec::with_capacity(cap)),
             free_vertex: NIL,
             free_pair: NIL,
         }
@@ -98,29 +140,29 @@ impl Pool {
 
     /// Nodes ever allocated (live and free).
     pub(crate) fn len(&self) -> usize {
-        self.t.len()
+        self.s.t.len()
     }
 
     /// Bytes of the nodes ever allocated (live or free).
     pub(crate) fn bytes(&self) -> usize {
-        self.t.len() * std::mem::size_of::<Node>()
+        self.s.t.len() * std::mem::size_of::<Node>()
     }
 
     /// Appends `k` nodes, growing by a quarter rather than doubling: the pool is the
     /// largest array of `hdt` (about three nodes per vertex) and doubling it would
     /// reserve up to twice what is used.
     fn push_nodes(&mut self, k: usize, node: Node) -> u32 {
-        if self.t.len() + k > self.t.capacity() {
-            let extra = (self.t.capacity() / 4).max(k).max(64);
-            self.t.reserve_exact(extra);
+        if self.s.t.len() + k > self.s.t.capacity() {
+            let extra = (self.s.t.capacity() / 4).max(k).max(64);
+            self.s.t.reserve_exact(extra);
         }
-        let id = self.t.len();
+        let id = self.s.t.len();
         assert!(
             id + k <= NIL as usize,
             "Euler-tour node pool exceeds u32 ids"
         );
         for _ in 0..k {
-            self.t.push(node);
+            self.s.t.push(node);
         }
         id as u32
     }
@@ -136,8 +178,8 @@ impl Pool {
         };
         if self.free_vertex != NIL {
             let x = self.free_vertex;
-            self.free_vertex = self.t[x as usize].a;
-            self.t[x as usize] = node;
+            self.free_vertex = self.s[x].a;
+            self.s[x] = node;
             x
         } else {
             self.push_nodes(1, node)
@@ -156,9 +198,9 @@ impl Pool {
         };
         if self.free_pair != NIL {
             let p = self.free_pair;
-            self.free_pair = self.t[p as usize].a;
-            self.t[p as usize] = node;
-            self.t[p as usize + 1] = node;
+            self.free_pair = self.s[p].a;
+            self.s[p] = node;
+            self.s[p + 1] = node;
             p
         } else {
             self.push_nodes(2, node)
@@ -168,46 +210,46 @@ impl Pool {
     /// Frees a vertex node that is a single-vertex tree.
     pub(crate) fn free_vertex(&mut self, x: u32) {
         debug_assert!(self.is_singleton(x) && self.is_vertex(x));
-        self.t[x as usize].a = self.free_vertex;
+        self.s[x].a = self.free_vertex;
         self.free_vertex = x;
     }
 
     /// Frees an arc pair that [`Pool::cut`] has detached.
     pub(crate) fn free_pair(&mut self, p: u32) {
         debug_assert!(self.is_singleton(p) && self.is_singleton(p + 1));
-        self.t[p as usize].a = self.free_pair;
+        self.s[p].a = self.free_pair;
         self.free_pair = p;
     }
 
     /// Caller word `a` of `x`.
     pub(crate) fn a(&self, x: u32) -> u32 {
-        self.t[x as usize].a
+        self.s[x].a
     }
     /// Caller word `b` of `x`.
     pub(crate) fn b(&self, x: u32) -> u32 {
-        self.t[x as usize].b
+        self.s[x].b
     }
     pub(crate) fn set_a(&mut self, x: u32, v: u32) {
-        self.t[x as usize].a = v;
+        self.s[x].a = v;
     }
     pub(crate) fn set_b(&mut self, x: u32, v: u32) {
-        self.t[x as usize].b = v;
+        self.s[x].b = v;
     }
 
     /// Whether `x` is a vertex node.
     pub(crate) fn is_vertex(&self, x: u32) -> bool {
-        self.t[x as usize].w & VERTEX != 0
+        self.s[x].w & VERTEX != 0
     }
 
     /// Whether `x` is alone in its tree (no splay parent, no children).
     pub(crate) fn is_singleton(&self, x: u32) -> bool {
-        let n = &self.t[x as usize];
+        let n = &self.s[x];
         n.par == NIL && n.ch == [NIL; 2]
     }
 
     /// Whether own flag `f` of `x` is set.
     pub(crate) fn has(&self, x: u32, f: Flag) -> bool {
-        self.t[x as usize].w & f.own() != 0
+        self.s[x].w & f.own() != 0
     }
 
     /// Sets own flag `f` of `x` to `on`, keeping the aggregates of its tree exact.
@@ -215,15 +257,15 @@ impl Pool {
         if self.has(x, f) == on {
             return;
         }
-        self.splay(x);
-        self.t[x as usize].w ^= f.own();
-        self.update(x);
+        self.s.splay(x);
+        self.s[x].w ^= f.own();
+        self.s.pull(x);
     }
 
     /// Number of vertex nodes in the tree of `x`.
     pub(crate) fn tree_size(&mut self, x: u32) -> u32 {
-        self.splay(x);
-        self.t[x as usize].w & CNT_MASK
+        self.s.splay(x);
+        self.s[x].w & CNT_MASK
     }
 
     /// Whether `x` and `y` are in the same tree.
@@ -233,23 +275,23 @@ impl Pool {
         }
         // After splaying y, x (the previous root) has a parent exactly if y's splay
         // tree is x's.
-        self.splay(x);
-        self.splay(y);
-        self.t[x as usize].par != NIL
+        self.s.splay(x);
+        self.s.splay(y);
+        self.s[x].par != NIL
     }
 
     /// The first node (in sequence order) of `x`'s tree whose own flag `f` is set, if
     /// any; splayed, which pays for the descent.
     pub(crate) fn first_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
-        self.splay(x);
+        self.s.splay(x);
         self.leftmost_flagged(x, f)
     }
 
     /// The first node after `x` in its tree's sequence whose own flag `f` is set, if any;
     /// splayed.
     pub(crate) fn next_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
-        self.splay(x);
-        let r = self.t[x as usize].ch[1];
+        self.s.splay(x);
+        let r = self.s[x].ch[1];
         if r == NIL {
             return None;
         }
@@ -259,15 +301,15 @@ impl Pool {
     /// The last node (in sequence order) of `x`'s tree whose own flag `f` is set, if any;
     /// splayed.
     pub(crate) fn last_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
-        self.splay(x);
+        self.s.splay(x);
         self.extreme_flagged(x, f, 1)
     }
 
     /// The last node before `x` in its tree's sequence whose own flag `f` is set, if any;
     /// splayed.
     pub(crate) fn prev_flagged(&mut self, x: u32, f: Flag) -> Option<u32> {
-        self.splay(x);
-        let l = self.t[x as usize].ch[0];
+        self.s.splay(x);
+        let l = self.s[x].ch[0];
         if l == NIL {
             return None;
         }
@@ -282,13 +324,13 @@ impl Pool {
     /// The leftmost (`side` 0) or rightmost (`side` 1) flagged node of the splay
     /// subtree of `y`, splayed to the root.
     fn extreme_flagged(&mut self, mut y: u32, f: Flag, side: usize) -> Option<u32> {
-        if self.t[y as usize].w & f.agg() == 0 {
+        if self.s[y].w & f.agg() == 0 {
             return None;
         }
         loop {
-            let n = self.t[y as usize];
+            let n = self.s[y];
             let near = n.ch[side];
-            if near != NIL && self.t[near as usize].w & f.agg() != 0 {
+            if near != NIL && self.s[near].w & f.agg() != 0 {
                 y = near;
             } else if n.w & f.own() != 0 {
                 break;
@@ -297,7 +339,7 @@ impl Pool {
                 debug_assert!(y != NIL, "aggregate flag without a flagged node");
             }
         }
-        self.splay(y);
+        self.s.splay(y);
         Some(y)
     }
 
@@ -309,18 +351,18 @@ impl Pool {
         debug_assert_ne!(self.root_of(x), self.root_of(y), "link: same tree");
         debug_assert!(self.is_singleton(p) && self.is_singleton(p + 1));
         let q = p + 1;
-        self.splay(y);
-        let [l, r] = self.detach(y);
-        let c = self.concat(r, l);
-        self.attach(y, [p, c]);
-        self.splay(x);
-        let b = self.t[x as usize].ch[1];
-        self.t[x as usize].ch[1] = NIL;
+        self.s.splay(y);
+        let [l, r] = self.s.detach(y);
+        let c = self.s.concat(r, l);
+        self.s.attach(y, [p, c]);
+        self.s.splay(x);
+        let b = self.s[x].ch[1];
+        self.s[x].ch[1] = NIL;
         if b != NIL {
-            self.t[b as usize].par = NIL;
+            self.s[b].par = NIL;
         }
-        self.attach(q, [y, b]);
-        self.attach(x, [self.t[x as usize].ch[0], q]);
+        self.s.attach(q, [y, b]);
+        self.s.attach(x, [self.s[x].ch[0], q]);
     }
 
     /// Makes the detached nodes `seq` (each a single-node tree, own flags already set)
@@ -329,38 +371,7 @@ impl Pool {
     /// makes `seq` a valid Euler tour (`hdt`'s bulk load).
     pub(crate) fn build(&mut self, seq: &[u32]) {
         debug_assert!(seq.iter().all(|&x| self.is_singleton(x)));
-        // Midpoints top-down by an explicit stack (no recursion), then the counts and
-        // aggregates bottom-up: reverse pre-order has every child before its parent.
-        let mut order = Vec::with_capacity(seq.len());
-        let mut stack = vec![(0usize, seq.len(), NIL, 0usize)];
-        while let Some((lo, hi, par, side)) = stack.pop() {
-            if lo >= hi {
-                continue;
-            }
-            let mid = lo + (hi - lo) / 2;
-            let x = seq[mid];
-            self.t[x as usize].par = par;
-            if par != NIL {
-                self.t[par as usize].ch[side] = x;
-            }
-            order.push(x);
-            stack.push((lo, mid, x, 0));
-            stack.push((mid + 1, hi, x, 1));
-        }
-        for &x in order.iter().rev() {
-            self.update(x);
-        }
-    }
-
-    /// Makes the splay roots `ch` (or `NIL`) the children of `x` and updates `x`.
-    fn attach(&mut self, x: u32, ch: [u32; 2]) {
-        for c in ch {
-            if c != NIL {
-                self.t[c as usize].par = x;
-            }
-        }
-        self.t[x as usize].ch = ch;
-        self.update(x);
+        self.s.build(seq);
     }
 
     /// Removes the edge whose linked arc pair is `p`: with the sequence `A p B (p+1) C`
@@ -372,176 +383,57 @@ impl Pool {
         } else {
             (p + 1, p)
         };
-        self.splay(first);
-        let [a, rest] = self.detach(first);
+        self.s.splay(first);
+        let [a, rest] = self.s.detach(first);
         debug_assert!(rest != NIL);
         // `second` lies in `rest`, whose root is now a splay root.
-        self.splay(second);
-        let [b, c] = self.detach(second);
+        self.s.splay(second);
+        let [b, c] = self.s.detach(second);
         debug_assert!(b != NIL, "each side of a tree edge has a vertex");
-        self.concat(c, a);
+        self.s.concat(c, a);
     }
 
     /// Whether `x` comes before `y` in their (common) sequence.
     fn precedes(&mut self, x: u32, y: u32) -> bool {
-        self.splay(y);
-        self.splay(x);
+        self.s.splay(y);
+        self.s.splay(x);
         // Splaying x moves the previous root y down by at most two levels (y only takes
         // part in the last zig, zig-zig or zig-zag step), so this walk is O(1).
         let mut c = y;
         loop {
-            let p = self.t[c as usize].par;
+            let p = self.s[c].par;
             debug_assert!(p != NIL, "precedes: different trees");
             if p == x {
-                return self.t[x as usize].ch[1] == c;
+                return self.s[x].ch[1] == c;
             }
             c = p;
         }
     }
 
-    /// Detaches both children of the splay root `x` (returned as roots `[left, right]`),
-    /// leaving `x` alone.
-    fn detach(&mut self, x: u32) -> [u32; 2] {
-        debug_assert_eq!(self.t[x as usize].par, NIL);
-        let ch = self.t[x as usize].ch;
-        for c in ch {
-            if c != NIL {
-                self.t[c as usize].par = NIL;
-            }
-        }
-        self.t[x as usize].ch = [NIL; 2];
-        self.update(x);
-        ch
-    }
-
-    /// Concatenates the sequences of splay roots `a` and `b` (either may be `NIL`);
-    /// returns the new root.
-    fn concat(&mut self, a: u32, b: u32) -> u32 {
-        if a == NIL {
-            return b;
-        }
-        if b == NIL {
-            return a;
-        }
-        let mut m = a;
-        loop {
-            let r = self.t[m as usize].ch[1];
-            if r == NIL {
-                break;
-            }
-            m = r;
-        }
-        self.splay(m);
-        self.t[m as usize].ch[1] = b;
-        self.t[b as usize].par = m;
-        self.update(m);
-        m
-    }
-
-    /// Recomputes the count and the aggregate flags of `x` from its children.
-    fn update(&mut self, x: u32) {
-        let n = self.t[x as usize];
-        let own = n.w & (VERTEX | OWN0 | OWN1);
-        let mut w = own | (own >> 31) | ((own & (OWN0 | OWN1)) << 2);
-        for c in n.ch {
-            if c != NIL {
-                let cw = self.t[c as usize].w;
-                w += cw & CNT_MASK;
-                w |= cw & (AGG0 | AGG1);
-            }
-        }
-        self.t[x as usize].w = w;
-    }
-
-    /// One rotation of `x` over its parent; updates the parent (not `x`).
-    fn rotate(&mut self, x: u32) {
-        let p = self.t[x as usize].par;
-        let g = self.t[p as usize].par;
-        let dir = usize::from(self.t[p as usize].ch[1] == x);
-        let b = self.t[x as usize].ch[dir ^ 1];
-        self.t[p as usize].ch[dir] = b;
-        if b != NIL {
-            self.t[b as usize].par = p;
-        }
-        self.t[x as usize].ch[dir ^ 1] = p;
-        self.t[p as usize].par = x;
-        self.t[x as usize].par = g;
-        if g != NIL {
-            let gi = usize::from(self.t[g as usize].ch[1] == p);
-            self.t[g as usize].ch[gi] = x;
-        }
-        self.update(p);
-    }
-
-    /// Splays `x` to the root of its splay tree (bottom-up, no recursion).
-    fn splay(&mut self, x: u32) {
-        loop {
-            let p = self.t[x as usize].par;
-            if p == NIL {
-                break;
-            }
-            let g = self.t[p as usize].par;
-            if g != NIL {
-                let zigzig = (self.t[g as usize].ch[0] == p) == (self.t[p as usize].ch[0] == x);
-                self.rotate(if zigzig { p } else { x });
-            }
-            self.rotate(x);
-        }
-        self.update(x);
-    }
-
     /// The splay root of `x`'s tree, without restructuring (for checks).
     pub(crate) fn root_of(&self, x: u32) -> u32 {
-        let mut r = x;
-        while self.t[r as usize].par != NIL {
-            r = self.t[r as usize].par;
-        }
-        r
+        self.s.root_of(x)
     }
 
-    /// The in-order sequence of the tree with splay root `r` (for checks), by an explicit
-    /// stack; also checks that the stored counts and aggregates are exact.
+    /// The in-order sequence of the tree with splay root `r` (for checks).
     pub(crate) fn sequence(&self, r: u32) -> Vec<u32> {
-        let mut out = Vec::new();
-        let mut stack = Vec::new();
-        let mut c = r;
-        while c != NIL || !stack.is_empty() {
-            while c != NIL {
-                stack.push(c);
-                c = self.t[c as usize].ch[0];
-            }
-            let Some(x) = stack.pop() else { break };
-            out.push(x);
-            c = self.t[x as usize].ch[1];
-        }
-        out
+        self.s.in_order(r)
     }
 
     /// Every node's caller words and own bits (for tests comparing two pools).
     #[cfg(test)]
     pub(crate) fn words(&self) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
-        self.t
+        self.s
+            .t
             .iter()
             .map(|n| (n.a, n.b, n.w & (VERTEX | OWN0 | OWN1)))
     }
 
     /// Whether the stored count and aggregate flags of `x` are those recomputed from its
-    /// children (for checks).
+    /// children, and its children's parent is `x` (for checks).
     pub(crate) fn node_consistent(&self, x: u32) -> bool {
-        let n = self.t[x as usize];
-        let own = n.w & (VERTEX | OWN0 | OWN1);
-        let mut w = own | (own >> 31) | ((own & (OWN0 | OWN1)) << 2);
-        for c in n.ch {
-            if c != NIL {
-                if self.t[c as usize].par != x {
-                    return false;
-                }
-                let cw = self.t[c as usize].w;
-                w += cw & CNT_MASK;
-                w |= cw & (AGG0 | AGG1);
-            }
-        }
-        w == n.w
+        let n = self.s[x];
+        n.ch.iter().all(|&c| c == NIL || self.s[c].par == x) && recount(&self.s.t, x) == n.w
     }
 }
 

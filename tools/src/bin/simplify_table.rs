@@ -4,8 +4,8 @@
 //! discs removed, short edges left by reason (link condition / non-disc / fold-over) and
 //! the median time of 5 runs.
 //!
-//! `cargo run --release --example simplify_table` prints rows at ε = 1 % and 3 % of the
-//! bounding-box diagonal and at the ε (found by bisection on the nested mode) whose output
+//! `cargo run --release -p contractible-tools --bin simplify_table` prints rows at ε = 1 %
+//! and 3 % of the bounding-box diagonal and at the ε (found by bisection on the nested mode) whose output
 //! has the paper's vertex count (torus 4,985, hyperboloid 18,106; the paper does not
 //! state its ε).
 

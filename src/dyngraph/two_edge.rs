@@ -1,6 +1,6 @@
 //! [`TwoEdge`]: fully dynamic 2-edge-connectivity on a multigraph with stable edge ids
 //! (insert, delete, "are `a` and `b` connected / 2-edge-connected"), the structure behind
-//! [`super::BiedlBoseDemaineLubiw`].
+//! [`crate::quad::frink::BiedlBoseDemaineLubiw`].
 //!
 //! # Guarantee
 //! After every operation, [`TwoEdge::connected`] and [`TwoEdge::two_edge_connected`]
@@ -52,8 +52,10 @@
 //! tree edge one more link–cut node (at most `n − 1`); per edge id 21 bytes.
 //! [`TwoEdge::check`] takes O(n·m).
 
-use super::graph::NONE;
 use super::lct::{Lct, NODE_BYTES};
+
+/// No node / no position / no link–cut node.
+const NONE: u32 = u32::MAX;
 
 /// The value of a vertex's link–cut node: above any cover count (counts stay below
 /// 2^29 because edge ids are below 2^29, checked on insertion), so that a path minimum
@@ -117,7 +119,7 @@ pub struct TwoEdge {
     /// Broken variant for the tests: after a swap, the other crossing edges are not
     /// covered again.
     #[cfg(test)]
-    pub(super) skip_recover: bool,
+    skip_recover: bool,
 }
 
 impl TwoEdge {
@@ -609,7 +611,7 @@ impl TwoEdge {
 
     /// Test hook: adds `d` to the cover count of tree edge `e` (corrupting the state).
     #[cfg(test)]
-    pub(super) fn corrupt_cover(&mut self, e: u32, d: i32) {
+    fn corrupt_cover(&mut self, e: u32, d: i32) {
         let k = self.lnode[e as usize];
         self.lct.path_add(k, k, d);
     }

@@ -1,8 +1,7 @@
 //! Output fingerprints of `simplify`, for checking that a change to the simplifier's
-//! speed leaves its outputs unchanged: `cargo run --release --example
-//! simplify_fingerprint > new.txt` prints one line per run, and `... --
-//! --check FILE` compares with a saved file (exit 1 and the differing lines if any
-//! differ). The saved reference is `benches/simplify_fingerprints.txt` (regenerate it
+//! speed leaves its outputs unchanged: `cargo run --release -p contractible-tools --bin
+//! simplify_fingerprint > new.txt` prints one line per run, and `... -- --check FILE`
+//! compares with a saved file (exit 1 and the differing lines if any differ). The saved reference is `benches/simplify_fingerprints.txt` (regenerate it
 //! only for a deliberate change of the output, and say so in the commit).
 //!
 //! Runs: the three ≥ 1M-triangle marching-tetrahedra surfaces of `benches/simplify.rs`
@@ -138,7 +137,7 @@ fn jittered(mesh: &TriMesh, seed: u64) -> TriMesh {
 
 fn shared_dir() -> PathBuf {
     std::env::var_os("CONTRACTIBLE_SHARED").map_or_else(
-        || PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared")),
+        || contractible_tools::repo_root().join("../shared"),
         PathBuf::from,
     )
 }

@@ -1,6 +1,7 @@
 //! One run of the simplifier on a ≥ 1M-triangle marching-tetrahedra surface, with the
-//! time of each phase and the throughput: `cargo run --release --example
-//! simplify_profile [torus|hyperboloid|paper_torus|paper_hyperboloid] [six|bcc] [eps_rel] [naive|nested]` (defaults:
+//! time of each phase and the throughput: `cargo run --release -p contractible-tools
+//! --bin simplify_profile [torus|hyperboloid|paper_torus|paper_hyperboloid] [six|bcc]
+//! [eps_rel] [naive|nested]` (defaults:
 //! torus, bcc, 0.01, nested). For the peak memory of the command line, write the input
 //! with `contractible gen isosurface --preset large-torus --tessellation bcc -o IN.ply`
 //! and run `contractible simplify` on it under `/usr/bin/time -v`.

@@ -5,7 +5,7 @@
 //! is printed, so that an optimisation can be shown not to change any output (the
 //! fingerprints are pinned by `tests/algorithms/quad_qbench.rs`).
 //!
-//! Run: `cargo run --release --example quad_profile -- B0 C0 mesh:botijo rand:o3:2000`
+//! Run: `cargo run --release -p contractible-tools --bin quad_profile -- B0 C0 mesh:botijo rand:o3:2000`
 //! (inputs: a paper family member `B0`…`C7`; `mesh:NAME` for the biggest component of
 //! `../shared/meshes/closed/NAME.off.gz`; `rand:oG:F` / `rand:nH:F` for a random
 //! orientable genus-G / non-orientable genus-H surface with at least F faces, seed 1).
@@ -13,9 +13,7 @@
 //! `--seed N` sets the seed of SG and PS (default 1, as the benches; the CLI's default
 //! is 0).
 
-#[path = "common/cpu.rs"]
-mod cpu;
-use cpu::cpu;
+use contractible_tools::cpu;
 use std::time::Instant;
 
 use contractible::gen::{paper_family, random, RandomParams, SurfaceKind};
@@ -102,10 +100,8 @@ fn build(name: &str) -> Triangulation {
         .expect("a random surface within the limits");
     }
     let mesh = if let Some(file) = name.strip_prefix("mesh:") {
-        let path = format!(
-            "{}/../shared/meshes/closed/{file}.off.gz",
-            env!("CARGO_MANIFEST_DIR")
-        );
+        let path =
+            contractible_tools::repo_root().join(format!("../shared/meshes/closed/{file}.off.gz"));
         contractible::io::read_tri_mesh(path.as_ref()).expect("mesh reads")
     } else {
         let mut c = name.chars();

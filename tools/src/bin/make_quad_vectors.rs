@@ -1,9 +1,10 @@
 //! Regenerates the tri-quad conformance vectors `spec/vectors/quad-*.jsonl` (format:
 //! `spec/vectors/README.md`, section "Tri-quad vectors").
 //!
-//! `cargo run --example make_quad_vectors [OUT_DIR]` (default `spec/vectors` of this
-//! checkout). Reads `tests/data/irreducible/surfaces-upto-8-vertices.txt`, generates seven
-//! small random surfaces, and runs every tri-quad algorithm with seeds 0 and 1 on each:
+//! `cargo run -p contractible-tools --bin make_quad_vectors [OUT_DIR]` (default
+//! `spec/vectors` of this checkout). Reads
+//! `tests/data/irreducible/surfaces-upto-8-vertices.txt`, generates seven small random
+//! surfaces, and runs every tri-quad algorithm with seeds 0 and 1 on each:
 //! the initial pairing (`quad::{lrs, pulli_segal, greedy, matching}::initial_pairing`),
 //! then the completion (`quad::augment::complete`), and checks that `quad::convert` gives
 //! the same `K`, pairs and counters. `tests/algorithms/quad_qfuzz.rs` checks that the
@@ -167,7 +168,7 @@ fn generated() -> Vec<Input> {
 }
 
 fn main() {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let root = contractible_tools::repo_root();
     let out_dir = std::env::args()
         .nth(1)
         .map_or_else(|| root.join("spec/vectors"), PathBuf::from);

@@ -10,15 +10,15 @@
 //! nodes in different trees; an existing edge) and check them with `debug_assert!`.
 //!
 //! # Complexity
-//! O(log n) amortised per operation (splay trees with the access lemma); memory 28 bytes
-//! per node (25 bytes of fields, padded to 4-byte alignment; 16 for [`PlainLct`]). No
-//! recursion: push-downs along a splay path use an explicit stack.
+//! O(log n) amortised per operation (splay trees with the access lemma, on the shared
+//! core of module `splay`, with path-parents and lazy tags); memory 28 bytes per node (25
+//! bytes of fields, padded to 4-byte alignment; 16 for [`PlainLct`]). No recursion:
+//! push-downs along a splay path use an explicit stack.
 
-/// No node.
-const NIL: u32 = u32::MAX;
+use super::splay::{Splay, SplayNode, NIL};
 
 /// One node: splay children, splay parent or path-parent (told apart by
-/// [`is_root`]), its value, the minimum over its splay subtree (its part of the
+/// [`Splay::is_root`]), its value, the minimum over its splay subtree (its part of the
 /// preferred path), and the pending addition / reversal of that subtree (already applied
 /// to this node). Packed in one record so that a node costs one cache line.
 #[derive(Clone, Copy, Debug)]
@@ -31,136 +31,72 @@ struct Node {
     rev: bool,
 }
 
-/// A node of a link–cut forest as the splay core below sees it: splay children, splay
-/// parent or path-parent, a pending reversal, and the node type's own tags and aggregate
-/// ([`SplayNode::push`], [`SplayNode::pull`]). The core (rotation, splay, access) is
-/// shared by [`Lct`] and [`PlainLct`] and monomorphised for each.
-trait SplayNode: Copy {
-    fn ch(&self) -> [u32; 2];
-    fn ch_mut(&mut self) -> &mut [u32; 2];
-    fn par(&self) -> u32;
-    fn par_mut(&mut self) -> &mut u32;
+/// A node of a link–cut forest: a splay node ([`SplayNode`], with path-parents and lazy
+/// tags) whose subtree can be reversed. The link–cut operations below (access,
+/// re-rooting, link, cut) are shared by [`Lct`] and [`PlainLct`] and monomorphised for
+/// each.
+trait LinkCutNode: SplayNode {
     /// Swaps the children and toggles the pending reversal of the subtree.
     fn reverse(&mut self);
-    /// Applies `t[x]`'s pending tags to its children (already applied to `x` itself).
-    fn push(t: &mut [Self], x: u32);
-    /// Recomputes `t[x]`'s aggregate from its own value and its children.
-    fn pull(t: &mut [Self], x: u32);
-}
-
-/// Whether `x` is the root of its splay tree (its parent pointer, if any, is a
-/// path-parent).
-#[inline]
-fn is_root<N: SplayNode>(t: &[N], x: u32) -> bool {
-    let p = t[x as usize].par();
-    p == NIL || !t[p as usize].ch().contains(&x)
 }
 
 /// Reverses the subtree of `x` (none for `NIL`).
 #[inline]
-fn apply_rev<N: SplayNode>(t: &mut [N], x: u32) {
+fn apply_rev<N: LinkCutNode>(t: &mut [N], x: u32) {
     if x != NIL {
         t[x as usize].reverse();
-    }
-}
-
-/// One rotation of `x` over its splay parent, aggregates recomputed.
-#[inline]
-fn rotate<N: SplayNode>(t: &mut [N], x: u32) {
-    let p = t[x as usize].par();
-    let g = t[p as usize].par();
-    let dir = usize::from(t[p as usize].ch()[1] == x);
-    let b = t[x as usize].ch()[dir ^ 1];
-    if !is_root(t, p) {
-        let gc = t[g as usize].ch_mut();
-        if gc[0] == p {
-            gc[0] = x;
-        } else {
-            gc[1] = x;
-        }
-    }
-    *t[x as usize].par_mut() = g;
-    t[x as usize].ch_mut()[dir ^ 1] = p;
-    *t[p as usize].par_mut() = x;
-    t[p as usize].ch_mut()[dir] = b;
-    if b != NIL {
-        *t[b as usize].par_mut() = p;
-    }
-    N::pull(t, p);
-    N::pull(t, x);
-}
-
-/// Splays `x` to the root of its splay tree, pushing pending tags down from that root
-/// first (iteratively, on `stack`).
-fn splay<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32) {
-    stack.clear();
-    let mut y = x;
-    stack.push(y);
-    while !is_root(t, y) {
-        y = t[y as usize].par();
-        stack.push(y);
-    }
-    while let Some(z) = stack.pop() {
-        N::push(t, z);
-    }
-    while !is_root(t, x) {
-        let p = t[x as usize].par();
-        if !is_root(t, p) {
-            let g = t[p as usize].par();
-            let zigzig = (t[g as usize].ch()[0] == p) == (t[p as usize].ch()[0] == x);
-            rotate(t, if zigzig { p } else { x });
-        }
-        rotate(t, x);
     }
 }
 
 /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay tree,
 /// which holds exactly that path. Returns the last node at which the walk joined the
 /// previously preferred root path (the LCA of a walk's step).
-fn access<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32) -> u32 {
+fn access<N: LinkCutNode>(s: &mut Splay<N>, x: u32) -> u32 {
     let mut last = NIL;
     let mut y = x;
     while y != NIL {
-        splay(t, stack, y);
-        t[y as usize].ch_mut()[1] = last;
-        N::pull(t, y);
+        s.splay(y);
+        s[y].ch_mut()[1] = last;
+        s.pull(y);
         last = y;
-        y = t[y as usize].par();
+        y = s[y].par();
     }
-    splay(t, stack, x);
+    s.splay(x);
     last
 }
 
 /// Makes `x` the root of its tree.
-fn make_root<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32) {
-    access(t, stack, x);
-    apply_rev(t, x);
+fn make_root<N: LinkCutNode>(s: &mut Splay<N>, x: u32) {
+    access(s, x);
+    apply_rev(&mut s.t, x);
 }
 
 /// Adds the edge `x`–`y` (`x` made its tree's root, then hung below `y`); they must be
 /// in different trees.
-fn link<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32, y: u32) {
-    make_root(t, stack, x);
-    *t[x as usize].par_mut() = y;
+fn link<N: LinkCutNode>(s: &mut Splay<N>, x: u32, y: u32) {
+    make_root(s, x);
+    *s[x].par_mut() = y;
 }
 
 /// Removes the edge `x`–`y`, which must exist; `y`'s aggregate is left for the caller
 /// to recompute ([`SplayNode::pull`]).
-fn cut<N: SplayNode>(t: &mut [N], stack: &mut Vec<u32>, x: u32, y: u32) {
-    make_root(t, stack, x);
-    access(t, stack, y);
+fn cut<N: LinkCutNode>(s: &mut Splay<N>, x: u32, y: u32) {
+    make_root(s, x);
+    access(s, y);
     debug_assert!(
-        t[y as usize].ch()[0] == x && t[x as usize].ch()[1] == NIL,
+        s[y].ch()[0] == x && s[x].ch()[1] == NIL,
         "cut of a non-edge"
     );
-    t[y as usize].ch_mut()[0] = NIL;
-    *t[x as usize].par_mut() = NIL;
+    s[y].ch_mut()[0] = NIL;
+    *s[x].par_mut() = NIL;
 }
 
-/// The [`SplayNode`] methods over a node type's `ch`, `par` and `rev` fields (both node
-/// types name them alike).
+/// The [`SplayNode`] constants and accessors of a link–cut node type over its `ch` and
+/// `par` fields (both node types name them alike).
 macro_rules! splay_fields {
     () => {
+        const PATH_PARENTS: bool = true;
+        const LAZY: bool = true;
         fn ch(&self) -> [u32; 2] {
             self.ch
         }
@@ -172,10 +108,6 @@ macro_rules! splay_fields {
         }
         fn par_mut(&mut self) -> &mut u32 {
             &mut self.par
-        }
-        fn reverse(&mut self) {
-            self.ch.swap(0, 1);
-            self.rev ^= true;
         }
     };
 }
@@ -214,6 +146,13 @@ impl SplayNode for Node {
     }
 }
 
+impl LinkCutNode for Node {
+    fn reverse(&mut self) {
+        self.ch.swap(0, 1);
+        self.rev ^= true;
+    }
+}
+
 /// Adds `d` to the values of the subtree of `x` (none for `NIL`): to `x`'s value and
 /// minimum now, to its descendants' when pushed.
 #[inline]
@@ -244,61 +183,47 @@ impl Node {
 
 /// Link–cut forest over nodes `0..n` with an `i32` value per node.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Lct {
-    t: Vec<Node>,
-    stack: Vec<u32>,
+pub struct Lct {
+    s: Splay<Node>,
 }
 
 impl Lct {
     /// `n` single-node trees, node `i` with value `vals[i]`.
-    pub(crate) fn new(vals: &[i32]) -> Self {
+    pub fn new(vals: &[i32]) -> Self {
         Lct {
-            t: vals.iter().map(|&v| Node::single(v, NIL)).collect(),
-            stack: Vec::new(),
+            s: Splay::from_nodes(vals.iter().map(|&v| Node::single(v, NIL)).collect()),
         }
     }
 
     /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root), node `i`
     /// with value `vals[i]`; `parent` must describe a forest. O(n): every node starts as
     /// its own preferred path, with its tree parent as path-parent.
-    pub(crate) fn with_parents(vals: &[i32], parent: &[u32]) -> Self {
+    pub fn with_parents(vals: &[i32], parent: &[u32]) -> Self {
         debug_assert_eq!(parent.len(), vals.len());
         Lct {
-            t: vals
-                .iter()
-                .zip(parent)
-                .map(|(&v, &p)| Node::single(v, p))
-                .collect(),
-            stack: Vec::new(),
+            s: Splay::from_nodes(
+                vals.iter()
+                    .zip(parent)
+                    .map(|(&v, &p)| Node::single(v, p))
+                    .collect(),
+            ),
         }
     }
 
     /// The value of `x` once it is cut off (a single-node tree).
-    pub(crate) fn isolated_value(&self, x: u32) -> i32 {
-        self.t[x as usize].val
+    pub fn isolated_value(&self, x: u32) -> i32 {
+        self.s[x].val
     }
 
     fn apply_add(&mut self, x: u32, d: i32) {
-        apply_add(&mut self.t, x, d);
-    }
-
-    fn push(&mut self, x: u32) {
-        Node::push(&mut self.t, x);
-    }
-
-    fn pull(&mut self, x: u32) {
-        Node::pull(&mut self.t, x);
-    }
-
-    fn splay(&mut self, x: u32) {
-        splay(&mut self.t, &mut self.stack, x);
+        apply_add(&mut self.s.t, x, d);
     }
 
     /// Makes the root-to-`x` path preferred; afterwards `x` is the root of its splay
     /// tree, which holds exactly that path. Returns the last node at which the walk
     /// joined the previously preferred root path (the LCA of a walk's step).
     fn access(&mut self, x: u32) -> u32 {
-        access(&mut self.t, &mut self.stack, x)
+        access(&mut self.s, x)
     }
 
     /// The lowest common ancestor of `x` and `y` for the current root of their tree (set
@@ -306,7 +231,7 @@ impl Lct {
     /// `access(x)` the root–`x` path is one preferred path, and the last node at which
     /// `access(y)` joins it is where the root–`y` path leaves the root–`x` path.
     #[cfg(test)]
-    pub(crate) fn lca(&mut self, x: u32, y: u32) -> u32 {
+    fn lca(&mut self, x: u32, y: u32) -> u32 {
         debug_assert!(self.connected(x, y), "lca of two trees");
         self.access(x);
         self.access(y)
@@ -320,49 +245,39 @@ impl Lct {
     /// LCAs along a walk over several nodes cost one access each. (Used in the tests;
     /// DS walks a [`PlainLct`].)
     #[cfg(test)]
-    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+    fn walk_to(&mut self, x: u32) -> u32 {
         self.access(x)
     }
 
     /// Makes `x` the root of its tree.
-    pub(crate) fn make_root(&mut self, x: u32) {
-        make_root(&mut self.t, &mut self.stack, x);
+    pub fn make_root(&mut self, x: u32) {
+        make_root(&mut self.s, x);
     }
 
     /// The root of `x`'s tree (its current root: re-rooting moves it). O(log n)
     /// amortised.
-    pub(crate) fn find_root(&mut self, x: u32) -> u32 {
+    pub fn find_root(&mut self, x: u32) -> u32 {
         self.access(x);
-        let mut y = x;
-        loop {
-            self.push(y);
-            let l = self.t[y as usize].ch[0];
-            if l == NIL {
-                break;
-            }
-            y = l;
-        }
-        self.splay(y);
-        y
+        self.s.extreme(x, 0)
     }
 
     /// Whether `x` and `y` are in the same tree.
-    pub(crate) fn connected(&mut self, x: u32, y: u32) -> bool {
+    pub fn connected(&mut self, x: u32, y: u32) -> bool {
         x == y || self.find_root(x) == self.find_root(y)
     }
 
     /// Adds the edge `x`–`y`; they must be in different trees.
-    pub(crate) fn link(&mut self, x: u32, y: u32) {
+    pub fn link(&mut self, x: u32, y: u32) {
         debug_assert!(!self.connected(x, y), "link inside one tree");
-        link(&mut self.t, &mut self.stack, x, y);
+        link(&mut self.s, x, y);
     }
 
     /// Removes the edge `x`–`y`, which must exist.
-    pub(crate) fn cut(&mut self, x: u32, y: u32) {
-        cut(&mut self.t, &mut self.stack, x, y);
-        self.pull(y);
+    pub fn cut(&mut self, x: u32, y: u32) {
+        cut(&mut self.s, x, y);
+        self.s.pull(y);
         // Leave x's own value exact (its subtree tags are pushed on the next splay).
-        self.push(x);
+        self.s.push(x);
     }
 
     /// Replaces the tree path `y`…`z` (`y ≠ z`, not adjacent) by `y`–`k`–`z`: every node
@@ -370,18 +285,18 @@ impl Lct {
     /// single-node tree before, gets the value of `copy_from`, one of those interior
     /// nodes. The interior nodes must have no tree neighbours off the path (they would
     /// be cut off with it). O(log n) amortised plus the path length.
-    pub(crate) fn replace_path(&mut self, y: u32, z: u32, k: u32, copy_from: u32) {
+    pub fn replace_path(&mut self, y: u32, z: u32, k: u32, copy_from: u32) {
         self.make_root(y);
         self.access(z);
         // z's splay tree now holds exactly the path y…z, and y is the tree root, so the
         // splay root z has no path-parent. Push every tag down, collect the interior.
-        let mut todo = std::mem::take(&mut self.stack);
+        let mut todo = std::mem::take(&mut self.s.stack);
         let mut interior: Vec<u32> = Vec::new();
         todo.clear();
         todo.push(z);
         while let Some(a) = todo.pop() {
-            self.push(a);
-            for c in self.t[a as usize].ch {
+            self.s.push(a);
+            for c in self.s[a].ch {
                 if c != NIL {
                     todo.push(c);
                 }
@@ -390,28 +305,28 @@ impl Lct {
                 interior.push(a);
             }
         }
-        self.stack = todo;
+        self.s.stack = todo;
         debug_assert!(
             interior.contains(&copy_from),
             "copy_from not inside the path"
         );
-        let v = self.t[copy_from as usize].val;
+        let v = self.s[copy_from].val;
         for a in interior {
-            let val = self.t[a as usize].val;
-            self.t[a as usize] = Node::single(val, NIL);
+            let val = self.s[a].val;
+            self.s[a] = Node::single(val, NIL);
         }
-        debug_assert!(self.t[k as usize].par == NIL && self.t[k as usize].ch == [NIL; 2]);
+        debug_assert!(self.s[k].par == NIL && self.s[k].ch == [NIL; 2]);
         for end in [y, z] {
-            let n = &mut self.t[end as usize];
+            let n = &mut self.s[end];
             n.ch = [NIL; 2];
             n.par = k;
             n.min = n.val;
         }
-        self.t[k as usize] = Node {
+        self.s[k] = Node {
             ch: [y, z],
             ..Node::single(v, NIL)
         };
-        self.pull(k);
+        self.s.pull(k);
     }
 
     /// Exposes the `x`–`y` path as one splay tree rooted at `y`; they must be connected.
@@ -421,15 +336,15 @@ impl Lct {
     }
 
     /// Adds `d` to the value of every node on the `x`–`y` path (both included).
-    pub(crate) fn path_add(&mut self, x: u32, y: u32, d: i32) {
+    pub fn path_add(&mut self, x: u32, y: u32, d: i32) {
         self.expose(x, y);
         self.apply_add(y, d);
     }
 
     /// Minimum value on the `x`–`y` path (both included).
-    pub(crate) fn path_min(&mut self, x: u32, y: u32) -> i32 {
+    pub fn path_min(&mut self, x: u32, y: u32) -> i32 {
         self.expose(x, y);
-        self.t[y as usize].min
+        self.s[y].min
     }
 }
 
@@ -460,60 +375,67 @@ impl SplayNode for PlainNode {
     fn pull(_: &mut [PlainNode], _: u32) {}
 }
 
+impl LinkCutNode for PlainNode {
+    fn reverse(&mut self) {
+        self.ch.swap(0, 1);
+        self.rev ^= true;
+    }
+}
+
 /// A link–cut forest without node values: link, cut, re-rooting and the LCAs of a walk
 /// ([`PlainLct::walk_to`]), which is all the Diks–Stańczyk strategy asks. Same
 /// guarantees and O(log n) amortised bounds as [`Lct`], in 16-byte nodes with no
 /// aggregate to keep up (tested against the same naive forest); in DS it replaced
 /// [`Lct`], whose values DS never read.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct PlainLct {
-    t: Vec<PlainNode>,
-    stack: Vec<u32>,
+pub struct PlainLct {
+    s: Splay<PlainNode>,
 }
 
 impl PlainLct {
     /// The forest whose tree edges are `x`–`parent[x]` (`u32::MAX`: a root); `parent`
     /// must describe a forest. O(n): every node starts as its own preferred path.
-    pub(crate) fn with_parents(parent: &[u32]) -> Self {
+    pub fn with_parents(parent: &[u32]) -> Self {
         PlainLct {
-            t: parent
-                .iter()
-                .map(|&p| PlainNode {
-                    ch: [NIL; 2],
-                    par: p,
-                    rev: false,
-                })
-                .collect(),
-            stack: Vec::new(),
+            s: Splay::from_nodes(
+                parent
+                    .iter()
+                    .map(|&p| PlainNode {
+                        ch: [NIL; 2],
+                        par: p,
+                        rev: false,
+                    })
+                    .collect(),
+            ),
         }
     }
 
     /// As [`Lct`]'s access: the root–`x` path preferred, `x` its splay root; returns
     /// the node at which the walk joined the previously preferred root path.
     fn access(&mut self, x: u32) -> u32 {
-        access(&mut self.t, &mut self.stack, x)
+        access(&mut self.s, x)
     }
 
     /// The LCA of `x` and the node last passed to `walk_to` (same
     /// tree, same root since; meaningless after any other operation). O(log n)
     /// amortised.
-    pub(crate) fn walk_to(&mut self, x: u32) -> u32 {
+    pub fn walk_to(&mut self, x: u32) -> u32 {
         self.access(x)
     }
 
     /// Makes `x` the root of its tree.
-    pub(crate) fn make_root(&mut self, x: u32) {
-        make_root(&mut self.t, &mut self.stack, x);
+    pub fn make_root(&mut self, x: u32) {
+        make_root(&mut self.s, x);
     }
 
     /// Adds the edge `x`–`y`; they must be in different trees.
-    pub(crate) fn link(&mut self, x: u32, y: u32) {
-        link(&mut self.t, &mut self.stack, x, y);
+    pub fn link(&mut self, x: u32, y: u32) {
+        link(&mut self.s, x, y);
     }
 
     /// Removes the edge `x`–`y`, which must exist.
-    pub(crate) fn cut(&mut self, x: u32, y: u32) {
-        cut(&mut self.t, &mut self.stack, x, y);
+    pub fn cut(&mut self, x: u32, y: u32) {
+        cut(&mut self.s, x, y);
     }
 }
 

@@ -1,11 +1,12 @@
 //! The topological type of a connected compact surface, closed or with boundary: one
 //! description (χ, orientability, genus, boundary loops, name) shared by every report,
-//! so that they all name surfaces the same way.
+//! so that they all name surfaces the same way; and [`SurfaceKind`], the closed surfaces
+//! as the generators are asked for them. Part of the core (it reads a [`Triangulation`]);
+//! re-exported as `contractible::topology` and `contractible::SurfaceType`.
 
 use std::fmt;
 
-use crate::core::Triangulation;
-use crate::gen::SurfaceKind;
+use super::Triangulation;
 
 /// The topological type of a connected compact surface, closed or with boundary.
 ///
@@ -180,6 +181,34 @@ impl fmt::Display for SurfaceType {
             (false, 2) => f.write_str("non-orientable genus 2 (Klein bottle)"),
             (false, h) => write!(f, "non-orientable genus {h}"),
         }
+    }
+}
+
+/// A closed surface named by its orientability and genus: what the generators are asked
+/// for ([`crate::gen::random()`], [`crate::gen::seed_surface`]); [`SurfaceType::kind`] and
+/// `From` convert between it and [`SurfaceType`].
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+pub enum SurfaceKind {
+    /// The orientable surface of genus `g` (sphere for 0, torus for 1, ...).
+    Orientable(u32),
+    /// The non-orientable surface of Euler genus `h >= 1` (connected sum of `h`
+    /// projective planes: 1 = projective plane, 2 = Klein bottle).
+    NonOrientable(u32),
+}
+
+impl SurfaceKind {
+    /// Euler characteristic of the surface.
+    pub fn euler_characteristic(self) -> i64 {
+        match self {
+            SurfaceKind::Orientable(g) => 2 - 2 * g as i64,
+            SurfaceKind::NonOrientable(h) => 2 - h as i64,
+        }
+    }
+
+    /// Whether the surface is orientable.
+    pub fn is_orientable(self) -> bool {
+        matches!(self, SurfaceKind::Orientable(_))
     }
 }
 

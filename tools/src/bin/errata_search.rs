@@ -10,10 +10,10 @@
 //! Deterministic: the inputs come from the documented RNG stream of seed 12345.
 //!
 //! ```text
-//! cargo run --release --features invariants --example errata_search -- e4 180
-//! cargo run --release --example errata_search -- e4 600
-//! cargo run --release --example errata_search -- e1 240
-//! cargo run --release --example errata_search -- e1 240 orientable
+//! cargo run --release -p contractible-tools --features invariants --bin errata_search -- e4 180
+//! cargo run --release -p contractible-tools --bin errata_search -- e4 600
+//! cargo run --release -p contractible-tools --bin errata_search -- e1 240
+//! cargo run --release -p contractible-tools --bin errata_search -- e1 240 orientable
 //! ```
 use std::panic::{catch_unwind, AssertUnwindSafe};
 

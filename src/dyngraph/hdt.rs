@@ -90,22 +90,36 @@ use super::ett::{Flag, Pool, MAX_TREE, NIL};
 
 /// A change of the maintained spanning forest, reported in the order it happened.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
-pub(crate) enum ForestChange {
+pub enum ForestChange {
     /// Edge `e = ab` became a tree edge.
-    Link { e: u32, a: u32, b: u32 },
+    Link {
+        /// The edge id.
+        e: u32,
+        /// Its first end, as inserted.
+        a: u32,
+        /// Its second end, as inserted.
+        b: u32,
+    },
     /// Tree edge `e = ab` left the forest (it was deleted).
-    Cut { e: u32, a: u32, b: u32 },
+    Cut {
+        /// The edge id.
+        e: u32,
+        /// Its first end, as inserted.
+        a: u32,
+        /// Its second end, as inserted.
+        b: u32,
+    },
 }
 
 /// Counters of an [`Hdt`] since its creation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct HdtStats {
+pub struct HdtStats {
     /// Edge level increments (tree and non-tree edges).
-    pub(crate) promotions: u64,
+    pub promotions: u64,
     /// Replacement searches: deletions of tree edges (each searches levels `ℓ..=0`).
-    pub(crate) searches: u64,
+    pub searches: u64,
     /// The highest level any edge has had.
-    pub(crate) max_level: u32,
+    pub max_level: u32,
 }
 
 /// Edge ids must be below this: half-edge `2e + 1` must not reach `NIL`.
@@ -132,7 +146,7 @@ const TE: Flag = Flag::F1;
 /// node); word `b` of both arcs is the edge id. Half-edge `2e + s` is edge `e` seen from
 /// `ends[e][s]`.
 #[derive(Clone, Debug)]
-pub(crate) struct Hdt {
+pub struct Hdt {
     n: u32,
     pool: Pool,
     ends: Vec<[u32; 2]>,
@@ -151,12 +165,12 @@ pub(crate) struct Hdt {
 }
 
 impl Hdt {
-    /// The most vertices for which no id can overflow: at most [`MAX_TREE`] (the
-    /// counts), and few enough that the Euler-tour pool's node ids stay below `NIL`
+    /// The most vertices for which no id can overflow: at most 2²⁷ − 1 (the subtree
+    /// vertex counts have 27 bits), and few enough that the Euler-tour pool's node ids stay below `NIL`
     /// (a vertex has nodes for levels `0..=L`, `L = ⌊log₂ n⌋`, at most, and each of the
     /// at most `n − 1` tree edges `L + 1` arc pairs: fewer than `3n(L + 1)` nodes, free
     /// ones reused first). About 55.06M vertices.
-    pub(crate) fn max_vertices() -> usize {
+    pub fn max_vertices() -> usize {
         let fits =
             |n: usize| n <= MAX_TREE && 3 * n * (n.max(1).ilog2() as usize + 1) < NIL as usize;
         // `fits` holds for 0 and, growing with `n`, up to some bound: bisect for it.
@@ -175,7 +189,7 @@ impl Hdt {
     /// `n` vertices `0..n`, no edges. O(n). Panics if `n` exceeds 2²⁷ − 1 (the subtree
     /// vertex counts have 27 bits), a limit of the structure, not of the input data;
     /// below [`Hdt::max_vertices`] no later operation can overflow an id either.
-    pub(crate) fn new(n: usize) -> Self {
+    pub fn new(n: usize) -> Self {
         assert!(
             n <= MAX_TREE,
             "Hdt supports at most {MAX_TREE} vertices, got {n}"
@@ -217,7 +231,7 @@ impl Hdt {
     /// A call breaking the preconditions (live `e`, `e ≥ MAX_EDGE_ID` = 2³¹ − 1 as
     /// half-edges are `2e + s`, a loop, a vertex `≥ n`) fails a `debug_assert!` and is
     /// ignored in release builds.
-    pub(crate) fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
+    pub fn insert(&mut self, e: u32, a: u32, b: u32, changes: &mut Vec<ForestChange>) {
         if !self.admit(e, a, b) {
             return;
         }
@@ -257,13 +271,13 @@ impl Hdt {
     /// one in this order: the same forest, changes, Euler-tour sequences (in the same
     /// rotation), non-tree lists and node ids, so that every later choice is the same
     /// (tested). A union–find decides which edges link, the tours are spliced as cyclic
-    /// lists as [`Pool::link`] would splice them, and each tree is then built balanced in
-    /// one pass ([`Pool::build`]): O(n + m) besides the union–find, whose path halving
+    /// lists as the Euler-tour link would splice them, and each tree is then built
+    /// balanced in one pass: O(n + m) besides the union–find, whose path halving
     /// with linking by edge order (not by rank: the root decides the tour's rotation) is
     /// O(m log n) in the worst case (Tarjan–van Leeuwen), near-linear on BFS-ordered
     /// edges in practice; one-by-one insertion would be O(m log n) amortised splay work.
     /// Falls back on one-by-one insertion if an edge already exists.
-    pub(crate) fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
+    pub fn load(&mut self, edges: &[[u32; 3]], changes: &mut Vec<ForestChange>) {
         if self.state.iter().any(|&s| s != DEAD) {
             for &[e, a, b] in edges {
                 self.insert(e, a, b, changes);
@@ -342,7 +356,7 @@ impl Hdt {
     ///
     /// Deleting an id that is not live fails a `debug_assert!` and is ignored in release
     /// builds.
-    pub(crate) fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>) {
+    pub fn delete(&mut self, e: u32, changes: &mut Vec<ForestChange>) {
         debug_assert!(self.live(e), "delete: edge {e} is not live");
         if !self.live(e) {
             return;
@@ -385,7 +399,7 @@ impl Hdt {
     }
 
     /// Whether `a` and `b` are connected. Amortised O(log n).
-    pub(crate) fn connected(&mut self, a: u32, b: u32) -> bool {
+    pub fn connected(&mut self, a: u32, b: u32) -> bool {
         debug_assert!(a < self.n && b < self.n, "connected: vertex out of range");
         if a >= self.n || b >= self.n {
             return a == b;
@@ -395,18 +409,18 @@ impl Hdt {
 
     /// Whether live edge `e` is currently a tree edge of the spanning forest (false for
     /// an id that is not live). O(1).
-    pub(crate) fn is_tree_edge(&self, e: u32) -> bool {
+    pub fn is_tree_edge(&self, e: u32) -> bool {
         self.live(e) && self.state[e as usize] & TREE != 0
     }
 
     /// Counters: edge level promotions, replacement searches, the highest level used.
-    pub(crate) fn stats(&self) -> HdtStats {
+    pub fn stats(&self) -> HdtStats {
         self.stats
     }
 
     /// Bytes of the nodes and edge slots ever allocated (live or free); the arrays'
     /// untouched reserved capacity is not counted (it costs no memory).
-    pub(crate) fn bytes(&self) -> usize {
+    pub fn bytes(&self) -> usize {
         self.pool.bytes() + self.ends.len() * (8 + 1 + 16) + self.chain.capacity() * 4
     }
 
@@ -704,7 +718,7 @@ impl Hdt {
     /// entering it, counts and flags exact), a tree of `F_i` has at most `n / 2^i`
     /// vertices, a non-tree edge's ends are connected in `F_{level}`, the half-edge lists
     /// hold exactly the non-tree edges of their level, and no level exceeds ⌊log₂ n⌋.
-    pub(crate) fn check(&self) -> Result<(), String> {
+    pub fn check(&self) -> Result<(), String> {
         #[derive(Clone, Copy, PartialEq)]
         enum Kind {
             Free,

@@ -7,11 +7,9 @@
 //!
 //! Wall and CPU time of the thread (which means more on a shared machine).
 //!
-//! Run: `cargo run --release --example frink_profile -- B4 B2 B0 [--naive] [--only ds|bbdl|lct]`
+//! Run: `cargo run --release -p contractible-tools --bin frink_profile -- B4 B2 B0 [--naive] [--only ds|bbdl|lct]`
 
-#[path = "common/cpu.rs"]
-mod cpu;
-use cpu::cpu;
+use contractible_tools::cpu;
 use std::time::Instant;
 
 use contractible::gen::paper_family;
