@@ -367,7 +367,7 @@ fn example(p: &Problem, names: &Names, vertex_count: usize) -> ExampleJson {
             add_face(first_face);
             (
                 format!(
-                    "edge {} is shared by {k} faces (first: {})",
+                    "edge {} is non-manifold, shared by {k} faces (first: {})",
                     names.edge(a, b),
                     names.face(first_face)
                 ),

@@ -154,21 +154,14 @@ fn describe_build_error(names: &Names, e: &BuildError) -> String {
             names.edge(*a, *b),
             f(*face)
         ),
-        BuildError::NonManifoldEdge { a, b, faces, face } => format!(
-            "edge {} is non-manifold: it lies in {faces} faces (first: {})",
-            names.edge(*a, *b),
-            f(*face)
-        ),
-        BuildError::MultipleEdges {
-            a,
-            b,
-            edges,
-            faces,
-            face,
+        // One wording for both (an odd and an even number of faces at an edge), the
+        // one `info` uses for every such edge.
+        BuildError::NonManifoldEdge { a, b, faces, face }
+        | BuildError::MultipleEdges {
+            a, b, faces, face, ..
         } => format!(
-            "vertices {} and {} are joined by {edges} edges ({faces} faces, first: {})",
-            v(*a),
-            v(*b),
+            "edge {} is non-manifold, shared by {faces} faces (first: {})",
+            names.edge(*a, *b),
             f(*face)
         ),
         BuildError::VertexLinkNotCycle {

@@ -61,7 +61,7 @@ pub enum BuildError {
         face: usize,
     },
     /// An edge lies in an odd number (at least 3) of faces.
-    #[error("edge [{a}, {b}] is non-manifold: it lies in {faces} faces (first: face {face})")]
+    #[error("edge [{a}, {b}] is non-manifold, shared by {faces} faces (first: face {face})")]
     NonManifoldEdge {
         /// Edge endpoint (the smaller id).
         a: u32,
@@ -74,9 +74,7 @@ pub enum BuildError {
     },
     /// An even number (at least 4) of faces contain the same endpoints: two or more
     /// distinct edges with the same endpoints, which a triangulation does not allow.
-    #[error(
-        "vertices {a} and {b} are joined by {edges} edges ({faces} faces, first: face {face})"
-    )]
+    #[error("edge [{a}, {b}] is non-manifold, shared by {faces} faces (first: face {face})")]
     MultipleEdges {
         /// Endpoint (the smaller id).
         a: u32,

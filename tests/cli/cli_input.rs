@@ -141,7 +141,10 @@ fn lists_every_duplicate_face_and_non_manifold_edge(file: &std::path::Path) {
         )),
         "{text}"
     );
-    assert!(text.contains("is shared by 4 faces"), "{text}");
+    assert!(
+        text.contains("is non-manifold, shared by 4 faces"),
+        "{text}"
+    );
     assert!(text.contains(&format!("… and {} more", dups - 5)), "{text}");
     let err = stderr(&out);
     assert_eq!(err.lines().count(), 1, "{err}");

@@ -13,7 +13,7 @@ use std::path::Path;
 
 use cli_common::{
     cube_mesh, data_closed, data_invalid, genus_two_file, grid_torus, int, load, mid_surface_file,
-    read_mesh, run, run_json, with_holes, Scratch,
+    read_mesh, run, run_json, run_ok, stderr, with_holes, Scratch,
 };
 
 const ALGOS: [&str; 8] = [
@@ -340,7 +340,7 @@ fn open_and_non_manifold_meshes_are_refused_with_their_location() {
         (
             &non_manifold,
             "invalid/shared_edge_stl.off.gz",
-            "joined by 2 edges",
+            "is non-manifold, shared by 4 faces",
         ),
     ] {
         let out_path = dir.path("out.off");
@@ -399,4 +399,38 @@ fn a_closed_stdout_ends_the_run_without_a_panic() {
             out.status
         );
     }
+}
+
+/// `convert` passes the quad meshes `quad` writes through (to OBJ and PLY, read back
+/// with the same quads and positions) and refuses STL, which holds triangles only.
+#[test]
+fn convert_passes_quad_meshes_through() {
+    let dir = Scratch::new("quad-convert");
+    let quads = dir.path("q.off");
+    let input = data_closed("bunny_npm");
+    run_ok(&[
+        OsStr::new("quad"),
+        input.as_os_str(),
+        OsStr::new("-o"),
+        quads.as_os_str(),
+    ]);
+    let (positions, faces) = read_quad_off(&quads);
+    for ext in ["obj", "ply"] {
+        let out = dir.path(&format!("q.{ext}"));
+        run_ok(&[OsStr::new("convert"), quads.as_os_str(), out.as_os_str()]);
+        let back = contractible::io::read_poly_mesh(&out, None).expect("readable");
+        let got: Vec<Vec<u32>> = back.mesh.faces().map(<[u32]>::to_vec).collect();
+        let want: Vec<Vec<u32>> = faces.iter().map(|q| q.to_vec()).collect();
+        assert_eq!(got, want, "{ext}");
+        assert_eq!(
+            back.mesh.positions.as_deref(),
+            Some(&positions[..]),
+            "{ext}"
+        );
+    }
+    let stl = dir.path("q.stl");
+    let out = run(&[OsStr::new("convert"), quads.as_os_str(), stl.as_os_str()]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("STL holds triangles only"));
+    assert!(!stl.exists());
 }

@@ -795,7 +795,7 @@ fn non_manifold_and_unreadable_inputs_are_refused() {
         &two_cubes,
         &["--eps-rel", "0.01"],
         &format!(
-            "{}: vertices {a} and {b} are joined by 2 edges (4 faces, first: face {} (line {}))",
+            "{}: edge [{a}, {b}] is non-manifold, shared by 4 faces (first: face {} (line {}))",
             two_cubes.display(),
             faces[0],
             line

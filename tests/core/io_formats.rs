@@ -1290,3 +1290,40 @@ fn corrupted_inputs_never_panic() {
         }
     }
 }
+
+/// `write_mesh` leaves nothing behind when it fails: not the file, not its temporary
+/// twin (quads to STL, a NaN position, a missing directory), and replaces an existing
+/// file only when the new one is complete.
+#[test]
+fn a_failed_write_leaves_no_file() {
+    let dir = std::env::temp_dir().join(format!("contractible-write-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let listing = || {
+        let mut v: Vec<_> = std::fs::read_dir(&dir)
+            .expect("listable")
+            .map(|e| e.expect("entry").file_name())
+            .collect();
+        v.sort();
+        v
+    };
+    let quads = QuadMesh::with_positions(
+        vec![[0.0; 3], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]],
+        vec![[0, 1, 2, 3]],
+    );
+    assert!(write_mesh(&dir.join("q.stl"), &quads).is_err());
+    let mut nan = contractible::gen::tetrahedron();
+    nan.positions = Some(vec![[f64::NAN; 3]; 4]);
+    assert!(write_mesh(&dir.join("t.off"), &nan).is_err());
+    assert!(write_mesh(
+        &dir.join("missing/t.off"),
+        &contractible::gen::tetrahedron()
+    )
+    .is_err());
+    assert!(listing().is_empty(), "{:?}", listing());
+    // A good write replaces the file whole, through a temporary file that is gone after.
+    let good = dir.join("q.obj");
+    write_mesh(&good, &quads).expect("writable");
+    write_mesh(&good, &quads).expect("replaceable");
+    assert_eq!(listing(), vec![std::ffi::OsString::from("q.obj")]);
+    std::fs::remove_dir_all(&dir).ok();
+}
