@@ -12,7 +12,7 @@
 //!   Lemos–Ramaswami–Siqueira, the greedy heuristics completed by augmenting paths,
 //!   Edmonds, and Frink's reduction with the Diks–Stańczyk or
 //!   Biedl–Bose–Demaine–Lubiw strategies);
-//! - [`simplify`]: every edge shorter than ε contracted without changing the topology
+//! - [`simplify()`]: every edge shorter than ε contracted without changing the topology
 //!   (Pepko–Borisenko, [`simplify`](mod@simplify)).
 //!
 //! and [`describe`], which says what a mesh is (each component's surface type) or lists

@@ -24,7 +24,7 @@ impl Default for Eps {
     }
 }
 
-/// Options of [`simplify`]. The default: ε 1 % of the bounding-box diagonal, the nested
+/// Options of [`simplify()`]. The default: ε 1 % of the bounding-box diagonal, the nested
 /// mode, the count heuristic, midpoints, the fold-over guard on, output verified.
 #[derive(Clone, Debug, Default)]
 pub struct SimplifyOptions {
@@ -64,7 +64,7 @@ impl SimplifyOptions {
     }
 }
 
-/// What [`simplify`] returns.
+/// What [`simplify()`] returns.
 #[derive(Clone, Debug)]
 pub struct SimplifyResult {
     /// The output: the live vertices of every component with their positions, component
@@ -205,7 +205,7 @@ fn checked_positions(mesh: &TriMesh) -> Result<(&[[f64; 3]], Vec<usize>), Error>
 }
 
 /// Contracts every edge of `mesh` shorter than ε without changing its topology
-/// (Pepko–Borisenko; see [`crate::simplify`] for the guarantee and the method): every
+/// (Pepko–Borisenko; see [`crate::simplify`](mod@crate::simplify) for the guarantee and the method): every
 /// component keeps its Euler characteristic, orientability and boundary loops. `mesh` is
 /// a union of surfaces, closed or with boundary, with finite positions. The output is
 /// rebuilt from its faces and checked to have the input's components unless
