@@ -150,9 +150,9 @@ macro_rules! group {
 
 // The graph route's initial step is the empty pairing and its completion is its total,
 // so it appears in `total` only.
-group!(total, total, 3, [lrs => Lrs, ps => Ps, sg => Sg, matching => Matching]);
-group!(initial, init, 3, [lrs => Lrs, ps => Ps, sg => Sg]);
-group!(completion, completion, 3, [lrs => Lrs, ps => Ps, sg => Sg]);
+group!(total, total, 3, [lrs => Lrs, ps => PulliSegal, sg => SimpleGreedy, matching => Matching]);
+group!(initial, init, 3, [lrs => Lrs, ps => PulliSegal, sg => SimpleGreedy]);
+group!(completion, completion, 3, [lrs => Lrs, ps => PulliSegal, sg => SimpleGreedy]);
 
 /// The dual graph as a petgraph `UnGraph` (copied from `tests/common/mod.rs`).
 fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::FaceId, ()> {

@@ -576,11 +576,11 @@ fn closed_surface_invariants(faces: &[[u32; 3]]) -> (i64, bool) {
 /// The quad algorithms run by [`check_quads`], in this order.
 pub const QUAD_ALGORITHMS: [contractible::quad::Algorithm; 6] = [
     contractible::quad::Algorithm::Lrs,
-    contractible::quad::Algorithm::Ps,
-    contractible::quad::Algorithm::Sg,
+    contractible::quad::Algorithm::PulliSegal,
+    contractible::quad::Algorithm::SimpleGreedy,
     contractible::quad::Algorithm::Matching,
-    contractible::quad::Algorithm::Ds,
-    contractible::quad::Algorithm::Bbdl,
+    contractible::quad::Algorithm::DiksStanczyk,
+    contractible::quad::Algorithm::BiedlBoseDemaineLubiw,
 ];
 
 /// `quad_ops`: the surface of `input` (as `surface_ops` builds it) converted by every

@@ -293,11 +293,11 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
         let mut quads = Vec::new();
         for algo in [
             quad::Algorithm::Lrs,
-            quad::Algorithm::Ps,
-            quad::Algorithm::Sg,
+            quad::Algorithm::PulliSegal,
+            quad::Algorithm::SimpleGreedy,
             quad::Algorithm::Matching,
-            quad::Algorithm::Ds,
-            quad::Algorithm::Bbdl,
+            quad::Algorithm::DiksStanczyk,
+            quad::Algorithm::BiedlBoseDemaineLubiw,
         ] {
             let s = quadrangulate_with_bars(&mesh, algo, a.seed, ui)
                 .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?

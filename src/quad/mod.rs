@@ -33,9 +33,9 @@ pub enum Algorithm {
     #[default]
     Lrs,
     /// Pulli–Segal greedy ([`pulli_segal`]).
-    Ps,
+    PulliSegal,
     /// Simple greedy ([`greedy`]).
-    Sg,
+    SimpleGreedy,
     /// Edmonds on the whole dual graph ([`matching`]).
     Matching,
     /// Frink's reduction with the naive DFS strategy ([`frink::Naive`], O(F²); the
@@ -47,24 +47,24 @@ pub enum Algorithm {
     /// Frink's reduction with the Diks–Stańczyk strategy ([`frink::DiksStanczyk`]: a
     /// travelling forbidden edge, dynamic connectivity and link–cut LCA; O(F log² F)).
     /// Perfect directly: no completion.
-    Ds,
+    DiksStanczyk,
     /// Frink's reduction with the Biedl–Bose–Demaine–Lubiw strategy
     /// ([`frink::BiedlBoseDemaineLubiw`]: the travelling forbidden edge, the choice by
     /// fully dynamic 2-edge-connectivity queries; this crate's structure is not
     /// polylogarithmic, O(F² log F) in the worst case, see [`frink::TwoEdge`]). Perfect
     /// directly: no completion.
-    Bbdl,
+    BiedlBoseDemaineLubiw,
 }
 
 impl Algorithm {
     /// Every algorithm, in the order the documentation lists them.
     pub const ALL: [Algorithm; 8] = [
         Algorithm::Lrs,
-        Algorithm::Ps,
-        Algorithm::Sg,
+        Algorithm::PulliSegal,
+        Algorithm::SimpleGreedy,
         Algorithm::Matching,
-        Algorithm::Ds,
-        Algorithm::Bbdl,
+        Algorithm::DiksStanczyk,
+        Algorithm::BiedlBoseDemaineLubiw,
         Algorithm::FrinkLct,
         Algorithm::DsNaive,
     ];
@@ -75,13 +75,13 @@ impl Algorithm {
     pub fn name(self) -> &'static str {
         match self {
             Algorithm::Lrs => "lrs",
-            Algorithm::Ps => "ps",
-            Algorithm::Sg => "sg",
+            Algorithm::PulliSegal => "ps",
+            Algorithm::SimpleGreedy => "sg",
             Algorithm::Matching => "matching",
             Algorithm::DsNaive => "ds-naive",
             Algorithm::FrinkLct => "frink-lct",
-            Algorithm::Ds => "ds",
-            Algorithm::Bbdl => "bbdl",
+            Algorithm::DiksStanczyk => "ds",
+            Algorithm::BiedlBoseDemaineLubiw => "bbdl",
         }
     }
 
@@ -91,19 +91,19 @@ impl Algorithm {
             Algorithm::Lrs => {
                 "Lemos–Ramaswami–Siqueira: RS contraction, expansion with flips, completion"
             }
-            Algorithm::Ps => "Pulli–Segal greedy, then completion",
-            Algorithm::Sg => "Simple greedy, then completion",
+            Algorithm::PulliSegal => "Pulli–Segal greedy, then completion",
+            Algorithm::SimpleGreedy => "Simple greedy, then completion",
             Algorithm::Matching => "Edmonds' matching on the whole dual graph",
             Algorithm::DsNaive => {
                 "Frink's reduction, naive DFS strategy (quadratic: refused above 100,000 \
                  faces per component)"
             }
             Algorithm::FrinkLct => "Frink's reduction, link–cut cover-count strategy",
-            Algorithm::Ds => {
+            Algorithm::DiksStanczyk => {
                 "Frink's reduction, Diks–Stańczyk strategy (dynamic connectivity, \
                  O(F log² F))"
             }
-            Algorithm::Bbdl => {
+            Algorithm::BiedlBoseDemaineLubiw => {
                 "Frink's reduction, Biedl–Bose–Demaine–Lubiw strategy (dynamic \
                  2-edge-connectivity; this crate's structure is O(F² log F) in the worst case)"
             }
@@ -115,7 +115,10 @@ impl Algorithm {
     pub fn is_perfect_directly(self) -> bool {
         matches!(
             self,
-            Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds | Algorithm::Bbdl
+            Algorithm::DsNaive
+                | Algorithm::FrinkLct
+                | Algorithm::DiksStanczyk
+                | Algorithm::BiedlBoseDemaineLubiw
         )
     }
 }
@@ -249,7 +252,7 @@ pub fn initial_stats(tri: &Triangulation, initial: &Pairing, seconds: f64) -> St
 /// corner slots included), the algorithm and `options.seed`.
 ///
 /// # Errors
-/// [`ConvertError::TooLarge`] for [`Algorithm::Ds`] and [`Algorithm::Bbdl`] above their
+/// [`ConvertError::TooLarge`] for [`Algorithm::DiksStanczyk`] and [`Algorithm::BiedlBoseDemaineLubiw`] above their
 /// structures' node limits; the other errors only on a triangulation that broke its
 /// invariants.
 pub fn convert(
@@ -346,11 +349,11 @@ pub fn initial_pairing(
             let e = lrs::initial_pairing(tri);
             (e.tri, e.pairing, e.flips)
         }
-        Algorithm::Ps => {
+        Algorithm::PulliSegal => {
             let p = pulli_segal::initial_pairing(&tri, options);
             (tri, p, 0)
         }
-        Algorithm::Sg => {
+        Algorithm::SimpleGreedy => {
             let p = greedy::initial_pairing(&tri, options);
             (tri, p, 0)
         }
@@ -372,14 +375,14 @@ pub fn initial_pairing(
                 frink::perfect_matching_with(&tri, &mut s).map_err(|e| frink_error(e, limit))?;
             (tri, p, 0)
         }
-        Algorithm::Ds => {
+        Algorithm::DiksStanczyk => {
             let mut s = frink::DiksStanczyk::new();
             let limit = s.max_nodes();
             let (p, _) =
                 frink::perfect_matching_with(&tri, &mut s).map_err(|e| frink_error(e, limit))?;
             (tri, p, 0)
         }
-        Algorithm::Bbdl => {
+        Algorithm::BiedlBoseDemaineLubiw => {
             let mut s = frink::BiedlBoseDemaineLubiw::new();
             let limit = s.max_nodes();
             let (p, _) =

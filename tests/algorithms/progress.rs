@@ -96,8 +96,8 @@ fn tri_quad_reports_the_initial_step_and_the_completion() {
     let faces = t.face_count() as u64;
     for algo in [
         quad::Algorithm::Lrs,
-        quad::Algorithm::Ps,
-        quad::Algorithm::Sg,
+        quad::Algorithm::PulliSegal,
+        quad::Algorithm::SimpleGreedy,
         quad::Algorithm::Matching,
     ] {
         let label = algo.name();

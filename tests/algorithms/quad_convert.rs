@@ -15,8 +15,8 @@ use std::path::Path;
 
 const ALGORITHMS: [Algorithm; 4] = [
     Algorithm::Lrs,
-    Algorithm::Ps,
-    Algorithm::Sg,
+    Algorithm::PulliSegal,
+    Algorithm::SimpleGreedy,
     Algorithm::Matching,
 ];
 

@@ -295,7 +295,7 @@ fn run_cover(t: &Triangulation, label: &str) -> frink::CoverCounters {
 /// Runs the Diks–Stańczyk strategy on `t` (checked by [`run_strategy`]); its travelling
 /// forbidden edge must have kept every lift out of case (iv).
 fn run_ds(t: &Triangulation, label: &str) -> frink::DsCounters {
-    let (s, stats) = run_strategy(t, label, Algorithm::Ds, DiksStanczyk::new);
+    let (s, stats) = run_strategy(t, label, Algorithm::DiksStanczyk, DiksStanczyk::new);
     let c = s.counters();
     assert_eq!((stats.case_iv, c.restarts), (0, 0), "{label}: {c:?}");
     c
@@ -305,7 +305,12 @@ fn run_ds(t: &Triangulation, label: &str) -> frink::DsCounters {
 /// its travelling forbidden edge must have kept every lift out of case (iv), and every
 /// step was decided by the 2-edge structure.
 fn run_bbdl(t: &Triangulation, label: &str) -> frink::BbdlCounters {
-    let (s, stats) = run_strategy(t, label, Algorithm::Bbdl, BiedlBoseDemaineLubiw::new);
+    let (s, stats) = run_strategy(
+        t,
+        label,
+        Algorithm::BiedlBoseDemaineLubiw,
+        BiedlBoseDemaineLubiw::new,
+    );
     let c = s.counters();
     assert_eq!((stats.case_iv, c.restarts), (0, 0), "{label}: {c:?}");
     assert_eq!(c.took_h1 + c.took_h2, stats.reductions as u64, "{label}");

@@ -120,7 +120,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "rand:o3",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         48,
         24,
         2,
@@ -129,7 +129,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "rand:o3",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         396,
         198,
         2,
@@ -159,7 +159,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "rand:n5",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         48,
         24,
         2,
@@ -168,7 +168,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "rand:n5",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         404,
         202,
         3,
@@ -195,7 +195,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "B6",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         6,
         3,
         2,
@@ -204,7 +204,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "B6",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         8128,
         4064,
         3,
@@ -231,7 +231,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "C5",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         206,
         103,
         1,
@@ -240,7 +240,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "C5",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         23892,
         11946,
         2,
@@ -267,7 +267,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:bunny_npm",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         4,
         2,
         1,
@@ -276,7 +276,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:bunny_npm",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         436,
         218,
         2,
@@ -303,7 +303,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:letter",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         6,
         3,
         1,
@@ -312,7 +312,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:letter",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         1072,
         536,
         2,
@@ -339,7 +339,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:adis16480_stl",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         12,
         6,
         1,
@@ -348,7 +348,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:adis16480_stl",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         922,
         461,
         2,
@@ -375,7 +375,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:box_stl",
-        Algorithm::Ps,
+        Algorithm::PulliSegal,
         22,
         11,
         1,
@@ -384,7 +384,7 @@ const PINS: &[Pin] = &[
     ),
     (
         "data:box_stl",
-        Algorithm::Sg,
+        Algorithm::SimpleGreedy,
         188,
         94,
         3,
@@ -418,10 +418,13 @@ fn check_pins(pins: &[Pin], build: impl Fn(&str) -> Triangulation) {
                 let e = lrs::initial_pairing(t.clone());
                 (e.tri, e.pairing)
             }
-            Algorithm::Ps => (t.clone(), pulli_segal::initial_pairing(t, &OPTIONS)),
-            Algorithm::Sg => (t.clone(), greedy::initial_pairing(t, &OPTIONS)),
+            Algorithm::PulliSegal => (t.clone(), pulli_segal::initial_pairing(t, &OPTIONS)),
+            Algorithm::SimpleGreedy => (t.clone(), greedy::initial_pairing(t, &OPTIONS)),
             Algorithm::Matching => (t.clone(), matching::initial_pairing(t)),
-            Algorithm::DsNaive | Algorithm::FrinkLct | Algorithm::Ds | Algorithm::Bbdl => {
+            Algorithm::DsNaive
+            | Algorithm::FrinkLct
+            | Algorithm::DiksStanczyk
+            | Algorithm::BiedlBoseDemaineLubiw => {
                 unreachable!("not in PINS")
             }
         };
@@ -479,7 +482,7 @@ mod corpus {
         ),
         (
             "botijo",
-            Algorithm::Ps,
+            Algorithm::PulliSegal,
             6,
             3,
             1,
@@ -488,7 +491,7 @@ mod corpus {
         ),
         (
             "botijo",
-            Algorithm::Sg,
+            Algorithm::SimpleGreedy,
             10314,
             5157,
             2,

@@ -126,8 +126,8 @@ fn pairs_json(p: &Pairing) -> Vec<[u32; 2]> {
 fn algorithm(name: &str) -> Algorithm {
     match name {
         "lrs" => Algorithm::Lrs,
-        "ps" => Algorithm::Ps,
-        "sg" => Algorithm::Sg,
+        "ps" => Algorithm::PulliSegal,
+        "sg" => Algorithm::SimpleGreedy,
         "matching" => Algorithm::Matching,
         other => panic!("unknown algorithm {other}"),
     }
@@ -179,8 +179,8 @@ fn library_reproduces_every_quad_vector_exactly() {
             let opts = Options { seed };
             let initial = match alg {
                 Algorithm::Lrs => quad::lrs::initial_pairing(tri.clone()).pairing,
-                Algorithm::Ps => quad::pulli_segal::initial_pairing(&tri, &opts),
-                Algorithm::Sg => quad::greedy::initial_pairing(&tri, &opts),
+                Algorithm::PulliSegal => quad::pulli_segal::initial_pairing(&tri, &opts),
+                Algorithm::SimpleGreedy => quad::greedy::initial_pairing(&tri, &opts),
                 Algorithm::Matching => quad::matching::initial_pairing(&tri),
                 Algorithm::DsNaive => {
                     quad::frink::perfect_matching(&tri).expect("a closed triangulation")
@@ -191,13 +191,13 @@ fn library_reproduces_every_quad_vector_exactly() {
                         .expect("a closed triangulation");
                     p
                 }
-                Algorithm::Ds => {
+                Algorithm::DiksStanczyk => {
                     let mut s = quad::frink::DiksStanczyk::new();
                     let (p, _) = quad::frink::perfect_matching_with(&tri, &mut s)
                         .expect("a closed triangulation");
                     p
                 }
-                Algorithm::Bbdl => {
+                Algorithm::BiedlBoseDemaineLubiw => {
                     let mut s = quad::frink::BiedlBoseDemaineLubiw::new();
                     let (p, _) = quad::frink::perfect_matching_with(&tri, &mut s)
                         .expect("a closed triangulation");

@@ -24,8 +24,8 @@ const SEEDS: [u64; 2] = [0, 1];
 /// The algorithms, in the order of a vector's `runs`.
 const ALGORITHMS: [Algorithm; 4] = [
     Algorithm::Lrs,
-    Algorithm::Ps,
-    Algorithm::Sg,
+    Algorithm::PulliSegal,
+    Algorithm::SimpleGreedy,
     Algorithm::Matching,
 ];
 
@@ -59,19 +59,19 @@ fn run_json(tri: &Triangulation, alg: Algorithm, seed: u64, name: &str) -> Value
             let e = quad::lrs::initial_pairing(tri.clone());
             (e.tri, e.pairing)
         }
-        Algorithm::Ps => (tri.clone(), quad::pulli_segal::initial_pairing(tri, &opts)),
-        Algorithm::Sg => (tri.clone(), quad::greedy::initial_pairing(tri, &opts)),
+        Algorithm::PulliSegal => (tri.clone(), quad::pulli_segal::initial_pairing(tri, &opts)),
+        Algorithm::SimpleGreedy => (tri.clone(), quad::greedy::initial_pairing(tri, &opts)),
         Algorithm::Matching => (tri.clone(), quad::matching::initial_pairing(tri)),
         Algorithm::DsNaive => (
             tri.clone(),
             quad::frink::perfect_matching(tri).expect("a closed triangulation"),
         ),
         Algorithm::FrinkLct => (tri.clone(), frink(tri, &mut quad::frink::CoverTree::new())),
-        Algorithm::Ds => (
+        Algorithm::DiksStanczyk => (
             tri.clone(),
             frink(tri, &mut quad::frink::DiksStanczyk::new()),
         ),
-        Algorithm::Bbdl => (
+        Algorithm::BiedlBoseDemaineLubiw => (
             tri.clone(),
             frink(tri, &mut quad::frink::BiedlBoseDemaineLubiw::new()),
         ),

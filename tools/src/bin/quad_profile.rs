@@ -34,8 +34,8 @@ fn main() {
             let v = args.next().expect("--algo needs a value");
             algos.push(match v.as_str() {
                 "lrs" => Algorithm::Lrs,
-                "ps" => Algorithm::Ps,
-                "sg" => Algorithm::Sg,
+                "ps" => Algorithm::PulliSegal,
+                "sg" => Algorithm::SimpleGreedy,
                 "matching" => Algorithm::Matching,
                 _ => panic!("unknown algorithm {v}"),
             });
@@ -46,8 +46,8 @@ fn main() {
     if algos.is_empty() {
         algos = vec![
             Algorithm::Lrs,
-            Algorithm::Ps,
-            Algorithm::Sg,
+            Algorithm::PulliSegal,
+            Algorithm::SimpleGreedy,
             Algorithm::Matching,
         ];
     }
