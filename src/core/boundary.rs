@@ -80,8 +80,10 @@ use crate::mesh::TriMesh;
 /// [`Surfaces::from_mesh`] gives.
 #[derive(Clone, Debug)]
 pub struct ConedComponent {
-    /// The coned, closed surface.
-    pub tri: Triangulation,
+    /// The coned, closed surface. Private to the crate: its virtual vertices must never
+    /// be contracted, split or written, which only this crate's code guarantees; users
+    /// read it through [`Self::tri`].
+    pub(crate) tri: Triangulation,
     /// `vertex_origin[v]` is the mesh vertex index of real local vertex `v` (virtual
     /// vertices have none; see [`Self::vertex_origin_of`]).
     pub vertex_origin: Vec<u32>,
@@ -93,6 +95,11 @@ pub struct ConedComponent {
 }
 
 impl ConedComponent {
+    /// The coned, closed surface (read-only: see the type's documentation).
+    pub fn tri(&self) -> &Triangulation {
+        &self.tri
+    }
+
     /// Number of real (non-virtual) vertex ids: the real vertices are exactly the ids
     /// below it.
     pub fn real_vertex_count(&self) -> usize {

@@ -252,7 +252,9 @@ fn check_mesh(mesh: &TriMesh, label: &str) -> (usize, usize) {
             recovered[f as usize] = Some(*g);
         }
         // The coned triangulation is a valid closed surface with χ = χ(open) + loops.
-        c.tri.validate().unwrap_or_else(|e| panic!("{label}: {e}"));
+        c.tri()
+            .validate()
+            .unwrap_or_else(|e| panic!("{label}: {e}"));
         let expected_loops = walk_loops(&faces);
         assert_eq!(library_loops(c), expected_loops, "{label}: loops");
         let b = expected_loops.len();
@@ -266,12 +268,12 @@ fn check_mesh(mesh: &TriMesh, label: &str) -> (usize, usize) {
         }
         let x = chi(&faces);
         assert_eq!(
-            c.tri.euler_characteristic(),
+            c.tri().euler_characteristic(),
             x + b as i64,
             "{label}: coned χ"
         );
         let o = orientable(&faces);
-        assert_eq!(c.tri.is_orientable(), o, "{label}: orientability");
+        assert_eq!(c.tri().is_orientable(), o, "{label}: orientability");
         let st = c.surface_type();
         assert_eq!(
             (
@@ -401,7 +403,7 @@ fn named_small_surfaces_with_boundary() {
     let t = TriMesh::combinatorial(3, vec![[0, 1, 2]]);
     check_mesh(&t, "triangle");
     let s = Surfaces::from_mesh_with_boundary(&t).unwrap();
-    assert!(s.components[0].tri.is_tetrahedron());
+    assert!(s.components[0].tri().is_tetrahedron());
     assert_eq!(
         s.components[0].surface_type().name(),
         "disc (genus 0, 1 boundary loop)"
@@ -448,7 +450,7 @@ fn closed_meshes_build_as_before() {
         assert_eq!(coned.loop_count(), 0);
         assert_eq!(closed.components.len(), coned.components.len());
         for (a, b) in closed.components.iter().zip(&coned.components) {
-            assert_eq!(a.tri.face_list(), b.tri.face_list(), "{name}");
+            assert_eq!(a.tri.face_list(), b.tri().face_list(), "{name}");
             assert_eq!(a.vertex_origin, b.vertex_origin, "{name}");
             assert_eq!(a.face_origin, b.face_origin, "{name}");
             assert_eq!(b.surface_type(), contractible::SurfaceType::of(&a.tri));
@@ -728,7 +730,7 @@ fn boundary_link_condition_matches_the_oracle() {
                         expected,
                         "{kind:?} seed {seed}: edge [{a}, {b}]"
                     );
-                    if c.tri.is_contractible(la, lb) != expected {
+                    if c.tri().is_contractible(la, lb) != expected {
                         // Only an edge joining two different loops can fool the cone.
                         let on = |x: u32| loops.iter().position(|l| l.contains(&x));
                         let (pa, pb) = (on(a), on(b));
@@ -741,7 +743,7 @@ fn boundary_link_condition_matches_the_oracle() {
                     checked += 1;
                 }
                 for w in c.virtual_vertices() {
-                    for x in c.tri.link(w) {
+                    for x in c.tri().link(w) {
                         assert!(
                             !c.is_contractible(w, x),
                             "virtual edges are never contractible"

@@ -516,13 +516,13 @@ fn marching_tetrahedra_output_satisfies_theorem_3() {
             let surfaces = Surfaces::from_mesh_with_boundary(&mesh).expect("a surface");
             let mut real_edges = 0;
             for c in &surfaces.components {
-                for (u, v, _) in c.tri.edges() {
+                for (u, v, _) in c.tri().edges() {
                     if c.is_virtual(u) || c.is_virtual(v) {
                         continue;
                     }
                     real_edges += 1;
                     assert!(
-                        c.tri.link_condition_naive(u, v),
+                        c.tri().link_condition_naive(u, v),
                         "{params:?}: [{u}, {v}] fails the link condition"
                     );
                 }
