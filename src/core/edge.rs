@@ -1,6 +1,9 @@
-//! Edges as first-class handles: [`Edge`] (an edge of the current state, named by its
-//! canonical corner) and [`EdgeNumbering`] (dense edge numbers that survive contractions
-//! and flips).
+//! Edge identities: [`Edge`] (an edge of the current state, named by its canonical
+//! corner, [`Triangulation::edge_at`]) and [`EdgeNumbering`] (dense edge numbers that
+//! survive contractions and flips). Everything else about an edge is asked by its
+//! endpoints or an opposite corner: [`Triangulation::edges`], [`Triangulation::find_edge`],
+//! [`Triangulation::edge_corners`], [`Triangulation::edge_endpoints`],
+//! [`Triangulation::edge_link`].
 //!
 //! The core has no edge array: an edge is the pair of corners opposite it, one in each of
 //! its two faces. [`Edge`] picks the smaller of the two, so equal handles mean equal
@@ -10,7 +13,7 @@
 
 use super::contract::ContractionRecord;
 use super::flip::FlipRecord;
-use super::ids::{Corner, FaceId, VertexId, NONE};
+use super::ids::{Corner, NONE};
 use super::tri::Triangulation;
 use std::fmt;
 
@@ -39,47 +42,6 @@ impl Triangulation {
     #[inline]
     pub fn edge_at(&self, c: Corner) -> Edge {
         Edge(c.min(self.opposite(c)))
-    }
-
-    /// The edge `[u, v]`, or `None` if it is not an edge. O(min(d_u, d_v)).
-    pub fn edge_between(&self, u: VertexId, v: VertexId) -> Option<Edge> {
-        let (s, l) = if self.is_vertex(u) && self.is_vertex(v) && self.degree(u) > self.degree(v) {
-            (v, u)
-        } else {
-            (u, v)
-        };
-        let c = self.find_edge(s, l)?;
-        Some(self.edge_at(self.corner_facing(c, l)))
-    }
-
-    /// Both corners opposite `e`, the canonical one first. O(1).
-    #[inline]
-    pub fn edge_corners_of(&self, e: Edge) -> [Corner; 2] {
-        [e.0, self.opposite(e.0)]
-    }
-
-    /// The endpoints of `e`, as [`Self::edge_endpoints`] of its canonical corner. O(1).
-    #[inline]
-    pub fn endpoints(&self, e: Edge) -> [VertexId; 2] {
-        self.edge_endpoints(e.0)
-    }
-
-    /// The two faces of `e`, the canonical corner's first. O(1).
-    #[inline]
-    pub fn edge_faces(&self, e: Edge) -> [FaceId; 2] {
-        [e.0.face(), self.opposite(e.0).face()]
-    }
-
-    /// The link `{x, y}` of `e`: the vertices at its two opposite corners. O(1).
-    #[inline]
-    pub fn edge_link_of(&self, e: Edge) -> [VertexId; 2] {
-        [self.vertex(e.0), self.vertex(self.opposite(e.0))]
-    }
-
-    /// Every edge once, in increasing canonical-corner order (the order of
-    /// [`Self::edges`]). O(F).
-    pub fn edge_handles(&self) -> impl Iterator<Item = Edge> + '_ {
-        self.edges().map(|(_, _, c)| Edge(c))
     }
 }
 

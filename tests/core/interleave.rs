@@ -303,26 +303,31 @@ fn corner_helpers_agree_with_the_face_vertices() {
                 }
             }
         }
-        for e in t.edge_handles() {
-            let [c1, c2] = t.edge_corners_of(e);
-            assert!(c1 < c2 && t.opposite(c1) == c2);
-            let [a, b] = t.endpoints(e);
-            assert_eq!(t.edge_between(a, b), Some(e));
-            assert_eq!(t.edge_between(b, a), Some(e));
-            assert_eq!(t.edge_at(c2), e);
-            let [f1, f2] = t.edge_faces(e);
-            assert!(t.face_vertices(f1).contains(&a) && t.face_vertices(f2).contains(&b));
-            let [x, y] = t.edge_link_of(e);
+        for (a, b, c) in t.edges() {
+            let [c1, c2] = t.edge_corners(a, b).expect("an edge");
+            assert_eq!(t.opposite(c1), c2);
+            assert!(c == c1 || c == c2);
+            let mut ends = t.edge_endpoints(c);
+            ends.sort();
+            assert_eq!(ends, [a, b]);
+            // One canonical handle per edge, whichever opposite corner names it.
+            assert_eq!(t.edge_at(c1), t.edge_at(c2));
+            assert_eq!(t.edge_at(c).corner(), c1.min(c2));
+            for k in [c1, c2] {
+                let f = t.face_vertices(k.face());
+                assert!(f.contains(&a) && f.contains(&b));
+            }
+            let mut link = t.edge_link(a, b).expect("an edge");
+            link.sort();
+            let mut want = [t.vertex(c1), t.vertex(c2)];
+            want.sort();
+            assert_eq!(link, want);
             assert_eq!(
-                t.edge_link(a, b).map(|mut l| {
+                t.edge_link(b, a).map(|mut l| {
                     l.sort();
                     l
                 }),
-                Some({
-                    let mut l = [x, y];
-                    l.sort();
-                    l
-                })
+                Some(want)
             );
         }
     }
