@@ -4,12 +4,12 @@
 //! The checks themselves live beside the algorithm they check (for RS:
 //! `irreducible::rs::spec`, a child module that reads the algorithm's private state).
 //! Every hook begins with `if !ENABLED { return }`, so the checks are type-checked in
-//! every build and cost nothing when [`ENABLED`] is false. A failing check panics with
+//! every build and cost nothing when `ENABLED` is false. A failing check panics with
 //! the statement's name, the vertices involved and the time stamp `ts`.
 //!
 //! Cost policy: checks are local to the operation (the processed vertex and its
 //! neighbourhood). Where a check would be quadratic in a degree, it runs in full when the
-//! degree is at most [`FULL_CHECK_DEGREE`] and on a bounded prefix otherwise; the
+//! degree is at most `FULL_CHECK_DEGREE` and on a bounded prefix otherwise; the
 //! full-graph oracles (petgraph critical cycles, naive irreducibility) run in the tests.
 //!
 //! # Catalogue
@@ -39,13 +39,13 @@
 //! independent definitions the checks and the tests compare against.
 
 /// Degree (or list length) up to which a local check runs in full.
-pub const FULL_CHECK_DEGREE: usize = 64;
+pub(crate) const FULL_CHECK_DEGREE: usize = 64;
 
 /// Whether the checks run: under `debug_assertions` or the cargo feature `invariants`.
 /// A `const`, so a hook's `if !ENABLED { return }` is resolved at compile time. (Defined by
 /// the core, whose own self-checks it switches too: the oracles here read triangulations,
 /// so the core sits below this module.)
-pub const ENABLED: bool = crate::core::CHECKS;
+pub(crate) const ENABLED: bool = crate::core::CHECKS;
 
 pub mod oracle;
 

@@ -87,8 +87,8 @@
 //! [`Triangulation::edges`], in that order).
 //!
 //! # Specification
-//! Under [`crate::spec::ENABLED`], module `spec` checks F1 (the chosen reduced graph is
-//! loop-free, and on small graphs connected and bridgeless by an independent edge-removal
+//! In debug builds and with the `invariants` feature, module `spec` checks F1 (the
+//! chosen reduced graph is loop-free, and on small graphs connected and bridgeless by an independent edge-removal
 //! test) after every reduction and F2 (the matching is perfect on the current graph)
 //! after every lift and at the end.
 //!
