@@ -88,8 +88,8 @@
 //!
 //! # Specification
 //! In debug builds and with the `invariants` feature, module `spec` checks F1 (the
-//! chosen reduced graph is loop-free, and on small graphs connected and bridgeless by an independent edge-removal
-//! test) after every reduction and F2 (the matching is perfect on the current graph)
+//! chosen reduced graph is loop-free, and on small graphs connected and bridgeless by an
+//! independent edge-removal test) after every reduction and F2 (the matching is perfect on the current graph)
 //! after every lift and at the end.
 //!
 //! # Where the sources are loose
