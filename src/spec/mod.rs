@@ -76,6 +76,9 @@ macro_rules! mutation_switches {
 
         #[cfg(feature = "mutation-tests")]
         impl Variant {
+            /// The algorithm as specified: every switch off.
+            pub(crate) const SPECIFIED: Self = Self { $( $field: false, )* };
+
             $(
                 $(#[$field_attr])*
                 #[inline]
@@ -88,11 +91,14 @@ macro_rules! mutation_switches {
         /// The algorithm as specified: built without the cargo feature `mutation-tests`,
         /// no switch can be on.
         #[cfg(not(feature = "mutation-tests"))]
-        #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+        #[derive(Copy, Clone, Debug)]
         struct Variant;
 
         #[cfg(not(feature = "mutation-tests"))]
         impl Variant {
+            /// The algorithm as specified.
+            const SPECIFIED: Self = Self;
+
             $(
                 #[inline(always)]
                 const fn $field(self) -> bool {

@@ -323,7 +323,7 @@ pub fn reduce_observed(
     options: &Options,
     observer: &mut dyn FnMut(Progress),
 ) -> Reduction {
-    reduce_variant_observed(tri, options, Variant::default(), observer, None).0
+    reduce_variant_observed(tri, options, Variant::SPECIFIED, observer, None).0
 }
 
 /// [`reduce`], also keeping `numbers` (edge numbers of `tri`, e.g. [`EdgeIds::new`]) in
@@ -338,7 +338,7 @@ pub fn reduce_numbered(
     let (red, _, numbers) = reduce_variant_observed(
         tri,
         options,
-        Variant::default(),
+        Variant::SPECIFIED,
         &mut progress::ignore,
         Some(numbers),
     );

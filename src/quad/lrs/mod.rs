@@ -158,7 +158,7 @@ pub struct Variant {
 /// (consumed) and returns `K` with the pairing `M*`; see the module documentation for
 /// the guarantee.
 pub fn initial_pairing(tri: Triangulation) -> Expansion {
-    initial_pairing_with(tri, Variant::default())
+    initial_pairing_with(tri, Variant::SPECIFIED)
 }
 
 /// [`initial_pairing`] with a deliberate [`Variant`] (mutation tests).
