@@ -49,6 +49,67 @@ pub(crate) const ENABLED: bool = crate::core::CHECKS;
 
 pub mod oracle;
 
+/// Defines `Variant`, an algorithm's deliberate deviations (printed pseudo-code, errata,
+/// mutations) for the tests that show its checks or the printed errata can fail, from one
+/// list of `bool` switches.
+///
+/// With the cargo feature `mutation-tests` (which the project's own tests and the errata
+/// search turn on, never a program) it is a public struct of those fields with a `const`
+/// method of each name returning it. Without it, it is a private zero-sized type whose
+/// methods return `false`: the algorithm reads every switch through the methods, so each
+/// branch on one is compiled out and the library's users build the algorithm as
+/// specified, with nothing of the variants in its API.
+macro_rules! mutation_switches {
+    (
+        $(#[$attr:meta])*
+        pub struct Variant {
+            $( $(#[$field_attr:meta])* pub $field:ident: bool, )*
+        }
+    ) => {
+        $(#[$attr])*
+        #[cfg(feature = "mutation-tests")]
+        #[doc(hidden)]
+        #[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+        pub struct Variant {
+            $( $(#[$field_attr])* pub $field: bool, )*
+        }
+
+        #[cfg(feature = "mutation-tests")]
+        impl Variant {
+            /// The algorithm as specified: every switch off.
+            pub(crate) const SPECIFIED: Self = Self { $( $field: false, )* };
+
+            $(
+                $(#[$field_attr])*
+                #[inline]
+                pub const fn $field(self) -> bool {
+                    self.$field
+                }
+            )*
+        }
+
+        /// The algorithm as specified: built without the cargo feature `mutation-tests`,
+        /// no switch can be on.
+        #[cfg(not(feature = "mutation-tests"))]
+        #[derive(Copy, Clone, Debug)]
+        struct Variant;
+
+        #[cfg(not(feature = "mutation-tests"))]
+        impl Variant {
+            /// The algorithm as specified.
+            const SPECIFIED: Self = Self;
+
+            $(
+                #[inline(always)]
+                const fn $field(self) -> bool {
+                    false
+                }
+            )*
+        }
+    };
+}
+pub(crate) use mutation_switches;
+
 /// Shared code of the corrupted-state tests that show each check able to fail.
 ///
 /// Tests that show a gated check (one that starts with `if !ENABLED { return }`) firing are

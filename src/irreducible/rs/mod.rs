@@ -245,9 +245,8 @@ impl Lists {
     }
 }
 
+crate::spec::mutation_switches! {
 /// Deliberate deviations, for tests that show a check or an erratum can fail.
-#[doc(hidden)]
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct Variant {
     /// Use the printed `until lue = ∅` loop exit of Alg. 4.2 l.34.
     pub printed_loop_exit: bool,
@@ -269,6 +268,7 @@ pub struct Variant {
     pub single_pass: bool,
     /// Mutation: an edge whose counter leaves 0 stays where it is in `lte`.
     pub no_move_on_increment: bool,
+}
 }
 
 /// The state of Alg. 4.2: the triangulation K, the stack S, the vertex attributes of
@@ -323,7 +323,7 @@ pub fn reduce_observed(
     options: &Options,
     observer: &mut dyn FnMut(Progress),
 ) -> Reduction {
-    reduce_variant_observed(tri, options, Variant::default(), observer, None).0
+    reduce_variant_observed(tri, options, Variant::SPECIFIED, observer, None).0
 }
 
 /// [`reduce`], also keeping `numbers` (edge numbers of `tri`, e.g. [`EdgeIds::new`]) in
@@ -338,7 +338,7 @@ pub fn reduce_numbered(
     let (red, _, numbers) = reduce_variant_observed(
         tri,
         options,
-        Variant::default(),
+        Variant::SPECIFIED,
         &mut progress::ignore,
         Some(numbers),
     );
@@ -347,6 +347,7 @@ pub fn reduce_numbered(
 
 /// RS with a deliberate [`Variant`]; also returns how many contractions happened while
 /// the first vertex was processed (Sec. 4.6).
+#[cfg(feature = "mutation-tests")]
 #[doc(hidden)]
 pub fn reduce_variant(tri: Triangulation, options: &Options, variant: Variant) -> (Reduction, u64) {
     let (red, first, _) =
@@ -450,7 +451,8 @@ impl Rs {
                 }
                 spec::leaving_lue(self, v);
                 self.t[v.index()] = Stamp::at(self.ts);
-                if self.degree(v) == 3 || (self.variant.degree3_path_up_to_4 && self.degree(v) == 4)
+                if self.degree(v) == 3
+                    || (self.variant.degree3_path_up_to_4() && self.degree(v) == 4)
                 {
                     self.degree3(u, v);
                 } else {
@@ -460,7 +462,7 @@ impl Rs {
             }
             // l.31–33 (Prop. 11 holds here).
             spec::at_line_32(self);
-            if self.lists.is_empty(LTE) || self.variant.single_pass {
+            if self.lists.is_empty(LTE) || self.variant.single_pass() {
                 break;
             }
             self.process_edge_list(u);
@@ -469,7 +471,7 @@ impl Rs {
                     Some(v) => self.degree(v) == 3 || self.count[v.index()] == 0,
                     None => false,
                 };
-                if !more || self.variant.printed_loop_exit {
+                if !more || self.variant.printed_loop_exit() {
                     break;
                 }
             }
@@ -495,7 +497,7 @@ impl Rs {
             self.nbr[vi] = NeighbourOf::of(u);
             self.o[vi] = Stamp::at(self.ts);
             self.t[vi] = Stamp::UNSET;
-            if !self.variant.printed_no_counter_reset {
+            if !self.variant.printed_no_counter_reset() {
                 self.count[vi] = 0;
             }
             if !self.processed[vi] {
@@ -539,7 +541,7 @@ impl Rs {
         spec::degree3(self, u, v);
         let [x, y] = self.contract(u, v);
         spec::degree3_untested(self, x, y);
-        if self.variant.skip_degree3_decrement {
+        if self.variant.skip_degree3_decrement() {
             return;
         }
         // The critical cycle lk(v) = (u, x, y) is gone (Prop. 7). c(x) counted it iff
@@ -550,7 +552,7 @@ impl Rs {
             o_b.get()
                 .is_some_and(|o_b| if strict { t_a > o_b } else { t_a >= o_b })
         };
-        let strict = self.variant.printed_strict_stamp;
+        let strict = self.variant.printed_strict_stamp();
         match (self.t[x.index()].get(), self.t[y.index()].get()) {
             (Some(_), Some(_)) => {
                 self.decrement(x);
@@ -578,7 +580,7 @@ impl Rs {
     fn increment(&mut self, w: VertexId) {
         let c = &mut self.count[w.index()];
         *c += 1;
-        if *c == 1 && self.lists.contains(LTE, w) && !self.variant.no_move_on_increment {
+        if *c == 1 && self.lists.contains(LTE, w) && !self.variant.no_move_on_increment() {
             self.lists.remove(w);
             self.lists.push_back(LTE, w);
         }
@@ -624,7 +626,7 @@ impl Rs {
         let ov = self.o[v.index()].get().expect("o(v) is set");
         let mut cv = 0u32;
         // lk(v) minus u and the link {x, y} of [u, v] (its cyclic neighbours of u) is Π_uv.
-        let window = if self.variant.count_link_vertices {
+        let window = if self.variant.count_link_vertices() {
             1..d
         } else {
             2..d - 1
@@ -682,7 +684,7 @@ impl Rs {
         }
         spec::before_contraction(self, u, v);
         self.processed[v.index()] = true;
-        if self.variant.mark_link_vertex_processed {
+        if self.variant.mark_link_vertex_processed() {
             // `scratch` is still lk(v) with u at i: its cyclic successor is a link vertex.
             let x = self.scratch[(i + 1) % d];
             self.processed[x.index()] = true;

@@ -466,7 +466,7 @@ mod tests {
         assert_eq!(faces.len(), 7, "octahedron face [0, 2, 4] present");
         faces.extend([[0, 2, 6], [2, 4, 6], [4, 0, 6]]);
         let tri = Triangulation::from_faces(7, &faces).expect("a sphere");
-        let mut rs = Rs::new(tri, &Options::default(), Variant::default());
+        let mut rs = Rs::new(tri, &Options::default(), Variant::SPECIFIED);
         rs.begin(v(0));
         assert_eq!(rs.lists.front(LUE), Some(v(6)), "degree-3 neighbour first");
         rs

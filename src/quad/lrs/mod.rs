@@ -140,10 +140,9 @@ pub struct Cases {
     pub flags_set: usize,
 }
 
+crate::spec::mutation_switches! {
 /// Deliberate deviations from Alg. 3.1–3.4, to show that the specification catches
 /// them (mutation tests). The default is the algorithm as specified.
-#[doc(hidden)]
-#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
 pub struct Variant {
     /// Mutation: Alg. 3.2 skips the unflip of `[x, y]` (l.2–4).
     pub skip_unflip: bool,
@@ -153,17 +152,23 @@ pub struct Variant {
     /// order the flags were set (as if "T plus the flags" determined `K`).
     pub materialise_reversed: bool,
 }
+}
 
 /// Runs the contraction step (RS) and the expansion step (Alg. 3.1–3.4) on `tri`
 /// (consumed) and returns `K` with the pairing `M*`; see the module documentation for
 /// the guarantee.
 pub fn initial_pairing(tri: Triangulation) -> Expansion {
-    initial_pairing_variant(tri, Variant::default())
+    initial_pairing_with(tri, Variant::SPECIFIED)
 }
 
 /// [`initial_pairing`] with a deliberate [`Variant`] (mutation tests).
+#[cfg(feature = "mutation-tests")]
 #[doc(hidden)]
 pub fn initial_pairing_variant(tri: Triangulation, variant: Variant) -> Expansion {
+    initial_pairing_with(tri, variant)
+}
+
+fn initial_pairing_with(tri: Triangulation, variant: Variant) -> Expansion {
     let mut ex = Expander::new(tri, variant);
     while ex.step().is_some() {}
     ex.finish()
@@ -432,7 +437,7 @@ impl Expander {
             // The proof of Prop. 3.3 (Case 2.1) says both split edges are in M only if
             // [x, y] is flipped in K_{i(j-1)}; the specification checks it.
             self.case21_both_unflipped = ux_in && uy_in && !self.flipped[xy.index()];
-            if self.flipped[xy.index()] && !self.variant.skip_unflip {
+            if self.flipped[xy.index()] && !self.variant.skip_unflip() {
                 self.unflag(xy); // l.2–4
             }
             let e = if ux_in && uy_in {
@@ -448,7 +453,7 @@ impl Expander {
         if a.degree == 4 {
             // l.11–12: `x_far` is [x, z], `y_far` is [y, z].
             let flagged = self.flipped[a.x_far.index()] || self.flipped[a.y_far.index()];
-            if !flagged || self.variant.degree4_ignores_flags {
+            if !flagged || self.variant.degree4_ignores_flags() {
                 // Alg. 3.3.
                 self.cases.degree4 += 1;
                 if ux_in && uy_in {
@@ -483,7 +488,7 @@ impl Expander {
             .filter(|&(k, e)| self.flipped[e.index()] && self.flag_time[e.index()] == k as u32)
             .map(|(_, &e)| e)
             .collect();
-        if self.variant.materialise_reversed {
+        if self.variant.materialise_reversed() {
             order.reverse();
         }
         order

@@ -294,7 +294,7 @@ mod tests {
             seed: 0,
         })
         .expect("a random surface within the limits");
-        let mut ex = Expander::new(t, Variant::default());
+        let mut ex = Expander::new(t, Variant::SPECIFIED);
         let first = ex.history.records().last().expect("a reducible input").u;
         let mut last = None;
         while ex.history.records().last().map(|r| r.u) == Some(first) {

@@ -10,11 +10,14 @@
 //! Deterministic: the inputs come from the documented RNG stream of seed 12345.
 //!
 //! ```text
-//! cargo run --release -p contractible-tools --features invariants --bin errata_search -- e4 180
-//! cargo run --release -p contractible-tools --bin errata_search -- e4 600
-//! cargo run --release -p contractible-tools --bin errata_search -- e1 240
-//! cargo run --release -p contractible-tools --bin errata_search -- e1 240 orientable
+//! cargo run --release -p contractible-tools --features invariants,mutation-tests --bin errata_search -- e4 180
+//! cargo run --release -p contractible-tools --features mutation-tests --bin errata_search -- e4 600
+//! cargo run --release -p contractible-tools --features mutation-tests --bin errata_search -- e1 240
+//! cargo run --release -p contractible-tools --features mutation-tests --bin errata_search -- e1 240 orientable
 //! ```
+//!
+//! The feature `mutation-tests` makes the library's printed variants public; only this
+//! tool requires it, so the package's other tools build the library as its users do.
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use contractible::gen::{random, RandomParams, SurfaceKind};
