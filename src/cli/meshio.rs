@@ -3,7 +3,9 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use contractible::io::{self, Location, PolyMesh, ReadError, ReadErrorKind, WriteError};
+// `temp_path`: the temporary file the library's writer uses beside an output, registered
+// here so that SIGINT and SIGTERM remove it too.
+use contractible::io::{self, temp_path, Location, PolyMesh, ReadError, ReadErrorKind, WriteError};
 use contractible::{BuildError, ConedSurfaces, Mesh, Surfaces, TriMesh};
 
 use super::args::InputOpts;
@@ -569,19 +571,6 @@ fn read_bytes(path: &Path, ui: Ui) -> Result<Vec<u8>, ReadError> {
     pb.finish_and_clear();
     r.map_err(io_error)?;
     Ok(bytes)
-}
-
-/// A temporary path beside `out` that keeps its file name (hence its extension).
-fn temp_path(out: &Path) -> PathBuf {
-    let name = out
-        .file_name()
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_default();
-    let tmp = format!(".contractible-{}-{name}", std::process::id());
-    match out.parent() {
-        Some(p) if !p.as_os_str().is_empty() => p.join(tmp),
-        _ => PathBuf::from(tmp),
-    }
 }
 
 /// Why an output cannot be written, found before any work (exit code 2).
