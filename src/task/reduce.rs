@@ -406,4 +406,80 @@ mod tests {
         ));
         assert_eq!(e.kind(), "boundary_edge");
     }
+
+    /// The monitor hears the steps in order (build, each component's run, each
+    /// component's check) with the algorithm's progress inside the runs; a flag set while
+    /// the first component runs cancels the call before the second.
+    #[test]
+    fn the_monitor_hears_every_step_and_cancels_between_components() {
+        use crate::task::{Event, Monitor, Step};
+        use std::sync::atomic::{AtomicBool, Ordering};
+        use std::sync::{Arc, Mutex};
+        let sphere = gen::subdivide(&gen::icosahedron(), 3).expect("small");
+        let n = sphere.vertex_count;
+        let mut faces = sphere.faces;
+        faces.extend(
+            gen::octahedron()
+                .faces
+                .iter()
+                .map(|f| f.map(|v| v + n as u32)),
+        );
+        let mesh = TriMesh::combinatorial(n + 6, faces);
+        let steps = Arc::new(Mutex::new(Vec::new()));
+        let progress = Arc::new(Mutex::new(0usize));
+        let (s, p) = (Arc::clone(&steps), Arc::clone(&progress));
+        let monitor = Monitor::new().observe(move |e| match e {
+            Event::Step {
+                step, component, ..
+            } => s.lock().expect("not poisoned").push((*step, *component)),
+            Event::Progress(_) => *p.lock().expect("not poisoned") += 1,
+            Event::Pass(_) => {}
+        });
+        let r = reduce(
+            &mesh,
+            &ReduceOptions {
+                monitor,
+                ..ReduceOptions::default()
+            },
+        )
+        .expect("closed surfaces");
+        assert_eq!(r.components.len(), 2);
+        assert_eq!(
+            *steps.lock().expect("not poisoned"),
+            vec![
+                (Step::Build, 0),
+                (Step::Run, 0),
+                (Step::Run, 1),
+                (Step::Verify, 0),
+                (Step::Verify, 1)
+            ]
+        );
+        assert!(
+            *progress.lock().expect("not poisoned") >= 4,
+            "start and end of each run"
+        );
+
+        let flag = Arc::new(AtomicBool::new(false));
+        let f = Arc::clone(&flag);
+        let monitor = Monitor::new()
+            .observe(move |e| {
+                if let Event::Step {
+                    step: Step::Run, ..
+                } = e
+                {
+                    f.store(true, Ordering::Relaxed);
+                }
+            })
+            .cancel_on(flag);
+        let e = reduce(
+            &mesh,
+            &ReduceOptions {
+                monitor,
+                ..ReduceOptions::default()
+            },
+        )
+        .unwrap_err();
+        assert!(matches!(e, Error::Cancelled), "{e}");
+        assert!(!e.is_input());
+    }
 }
