@@ -186,3 +186,37 @@ impl LinkTester {
         self.test_marked(tri, u, v)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::History;
+
+    /// The fast tests (with and without a kept tester) answer `false`, as the definition
+    /// does, for a vertex paired with itself and for a vertex a contraction removed, on either side, with a live
+    /// neighbour whose edge would otherwise pass.
+    #[test]
+    fn the_fast_test_refuses_a_vertex_with_itself_and_removed_vertices() {
+        let m = crate::gen::icosahedron();
+        let mut t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("icosahedron");
+        let (a, b, _) = t.edges().next().expect("an edge");
+        assert!(t.is_contractible(a, b) && t.link_condition_naive(a, b));
+        assert!(!t.is_contractible(a, a));
+        t.contract(a, b, &mut History::new()).expect("contractible");
+        // One of the two is gone; its former neighbours are still live.
+        let (gone, kept) = if t.is_vertex(a) { (b, a) } else { (a, b) };
+        assert!(!t.is_vertex(gone));
+        let w = t.link(kept).next().expect("a neighbour");
+        assert!(
+            t.is_contractible(kept, w),
+            "the icosahedron minus one edge still has contractible edges"
+        );
+        let mut tester = LinkTester::new(t.vertex_capacity());
+        assert!(t.is_contractible_with(kept, w, &mut tester));
+        for (x, y) in [(gone, w), (w, gone), (gone, kept), (kept, gone)] {
+            assert!(!t.is_contractible(x, y), "{x} {y}");
+            assert!(!t.is_contractible_with(x, y, &mut tester), "{x} {y}");
+            assert!(!t.link_condition_naive(x, y), "{x} {y}");
+        }
+    }
+}
