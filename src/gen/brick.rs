@@ -51,7 +51,7 @@
 //! per site in index order its walls row by row from the top and its floor.
 
 use super::GenError;
-use crate::core::{MAX_FACES, MAX_VERTICES};
+use crate::core::MAX_FACES;
 use crate::mesh::TriMesh;
 
 /// Parameters of a brick with one uniform resolution (see [`BrickShape::uniform`]).
@@ -303,16 +303,7 @@ pub fn brick(params: &BrickParams) -> Result<TriMesh, GenError> {
 /// holds (checked by formula before anything is allocated).
 pub fn brick_shaped(cavities: u32, holes: u32, shape: &BrickShape) -> Result<TriMesh, GenError> {
     let (vc, _, fc) = brick_shape_counts(cavities, holes, shape)?;
-    for (unit, count, max) in [("vertices", vc, MAX_VERTICES), ("faces", fc, MAX_FACES)] {
-        if count > max as u64 {
-            return Err(GenError::TooLarge {
-                what: "brick",
-                unit,
-                count: u128::from(count),
-                max,
-            });
-        }
-    }
+    GenError::check_size("brick", u128::from(fc), u128::from(vc))?;
     let l = Layout::new(cavities, holes, shape);
     let mut b = Builder {
         pos: Vec::with_capacity(vc as usize),

@@ -79,3 +79,26 @@ pub enum GenError {
         positions: usize,
     },
 }
+
+impl GenError {
+    /// `Ok` when `faces` and `vertices` fit the core's limits, else the
+    /// [`GenError::TooLarge`] of `what` naming the first count that does not (faces
+    /// first). Every generator checks its output's size with it before allocating.
+    pub(crate) fn check_size(what: &'static str, faces: u128, vertices: u128) -> Result<(), Self> {
+        use crate::core::{MAX_FACES, MAX_VERTICES};
+        for (unit, count, max) in [
+            ("faces", faces, MAX_FACES),
+            ("vertices", vertices, MAX_VERTICES),
+        ] {
+            if count > max as u128 {
+                return Err(GenError::TooLarge {
+                    what,
+                    unit,
+                    count,
+                    max,
+                });
+            }
+        }
+        Ok(())
+    }
+}

@@ -1,7 +1,7 @@
 //! Random closed triangulations of any surface, grown by random vertex splits.
 
 use super::GenError;
-use crate::core::{Triangulation, VertexId, MAX_FACES, MAX_VERTICES};
+use crate::core::{Triangulation, VertexId, MAX_FACES};
 use crate::rng::Rng;
 
 pub use crate::core::topology::SurfaceKind;
@@ -72,22 +72,7 @@ fn consistently_oriented(faces: &[[u32; 3]], vertices: u32) -> Vec<[u32; 3]> {
 /// [`GenError::TooLarge`] if those counts exceed what the core holds.
 pub fn seed_surface(surface: SurfaceKind) -> Result<Triangulation, GenError> {
     let (faces, vertices) = seed_counts(surface);
-    if faces > MAX_FACES as u128 {
-        return Err(GenError::TooLarge {
-            what: "seed surface",
-            unit: "faces",
-            count: faces,
-            max: MAX_FACES,
-        });
-    }
-    if vertices > MAX_VERTICES as u128 {
-        return Err(GenError::TooLarge {
-            what: "seed surface",
-            unit: "vertices",
-            count: vertices,
-            max: MAX_VERTICES,
-        });
-    }
+    GenError::check_size("seed surface", faces, vertices)?;
     let (mesh, count) = match surface {
         SurfaceKind::Orientable(0) => (super::tetrahedron(), 1),
         SurfaceKind::Orientable(g) => (super::torus7(), g),

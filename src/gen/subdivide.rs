@@ -1,7 +1,6 @@
 //! Loop-style 1-to-4 midpoint subdivision (topology only; no smoothing).
 
 use super::GenError;
-use crate::core::{MAX_FACES, MAX_VERTICES};
 use crate::mesh::TriMesh;
 
 /// Numbers the undirected edges of `faces` in order of first appearance.
@@ -102,22 +101,7 @@ pub fn subdivide(mesh: &TriMesh, levels: u32) -> Result<TriMesh, GenError> {
     let growth = 4u128.checked_pow(levels).unwrap_or(u128::MAX);
     let faces = (mesh.faces.len() as u128).saturating_mul(growth);
     let vertices = (mesh.vertex_count as u128).saturating_add(faces);
-    if faces > MAX_FACES as u128 && !mesh.faces.is_empty() {
-        return Err(GenError::TooLarge {
-            what: "subdivide",
-            unit: "faces",
-            count: faces,
-            max: MAX_FACES,
-        });
-    }
-    if vertices > MAX_VERTICES as u128 {
-        return Err(GenError::TooLarge {
-            what: "subdivide",
-            unit: "vertices",
-            count: vertices,
-            max: MAX_VERTICES,
-        });
-    }
+    GenError::check_size("subdivide", faces, vertices)?;
     let mut cur = mesh.clone();
     for _ in 0..levels {
         cur = subdivide_once(&cur);
