@@ -3,14 +3,16 @@
 //! reads only face lists, pairs and quads), and the conformance vectors
 //! `spec/vectors/quad-*.jsonl`:
 //!
-//! 1. **Vectors, exactly**: the library reproduces every stored run (`K`'s faces for
-//!    LRS, the pairs before and after the completion, the counters). Regenerate with
+//! 1. **Vectors, exactly**: the library reproduces every stored run of every algorithm
+//!    (`K`'s faces for LRS, the pairs before and after the completion, the counters);
+//!    the algorithms without randomness give the same run with both seeds. Regenerate with
 //!    `cargo run --release -p contractible-tools --bin make_quad_vectors` only for an intended change.
 //! 2. **Vectors, independently**: from the stored data alone, the initial pairs are a
 //!    pairing and the final pairs a perfect pairing of `K` (pairs share exactly two
 //!    vertices), their quads (built here) form a closed quadrangulation of the input's χ
 //!    and orientability, the counters agree with the pairs, LRS leaves exactly the face
-//!    count of RS's irreducible output unpaired.
+//!    count of RS's irreducible output unpaired, only LRS flips, and Frink's reduction
+//!    (ds, bbdl, frink-lct, ds-naive) pairs every face in its initial step.
 //! 3. **Exhaustive twins** of the `quad_ops` fuzz target: every algorithm with seeds
 //!    0..4 on every surface of the small published lists and on random vertex splits of
 //!    them ([`check_every_algorithm`], called from
@@ -123,14 +125,28 @@ fn pairs_json(p: &Pairing) -> Vec<[u32; 2]> {
     p.pairs().map(|(f, g)| [f.0, g.0]).collect()
 }
 
+/// The run names of a vector, in order (`spec/vectors/README.md`): every algorithm, each
+/// with seed 0 then seed 1.
+const RUN_ALGORITHMS: [&str; 8] = [
+    "lrs",
+    "ps",
+    "sg",
+    "matching",
+    "ds",
+    "bbdl",
+    "frink-lct",
+    "ds-naive",
+];
+
+/// The runs whose algorithm takes no randomness: seed 0 and seed 1 must agree.
+const SEEDLESS: [&str; 6] = ["lrs", "matching", "ds", "bbdl", "frink-lct", "ds-naive"];
+
+/// Frink's reduction: the initial step pairs every face, no completion runs.
+const PERFECT_DIRECTLY: [&str; 4] = ["ds", "bbdl", "frink-lct", "ds-naive"];
+
 fn algorithm(name: &str) -> Algorithm {
-    match name {
-        "lrs" => Algorithm::Lrs,
-        "ps" => Algorithm::PulliSegal,
-        "sg" => Algorithm::SimpleGreedy,
-        "matching" => Algorithm::Matching,
-        other => panic!("unknown algorithm {other}"),
-    }
+    name.parse()
+        .unwrap_or_else(|e| panic!("unknown algorithm {name}: {e}"))
 }
 
 fn input(v: &Value) -> (String, Triangulation) {
@@ -160,11 +176,25 @@ fn quad_vector_files_cover_every_algorithm_and_both_seeds() {
                 )
             })
             .collect();
-        let expected: Vec<(String, u64)> = ["lrs", "ps", "sg", "matching"]
+        let expected: Vec<(String, u64)> = RUN_ALGORITHMS
             .iter()
             .flat_map(|a| [0, 1].map(|s| (a.to_string(), s)))
             .collect();
         assert_eq!(runs, expected, "{}", v["name"]);
+        // An algorithm without randomness gives the same run with either seed.
+        for pair in v["runs"].as_array().expect("runs").chunks(2) {
+            let alg = pair[0]["algorithm"].as_str().expect("algorithm");
+            if SEEDLESS.contains(&alg) {
+                for key in ["k_faces", "initial_pairs", "pairs", "stats"] {
+                    assert_eq!(
+                        pair[0].get(key),
+                        pair[1].get(key),
+                        "{} {alg}: {key} depends on the seed",
+                        v["name"]
+                    );
+                }
+            }
+        }
     }
 }
 
@@ -338,7 +368,20 @@ fn stored_quad_vectors_are_valid_independently() {
                 (full - initial) / 2,
                 "{label}: one augmenting path per added pair"
             );
-            if r["algorithm"] == "lrs" {
+            let alg = r["algorithm"].as_str().expect("algorithm");
+            if alg != "lrs" {
+                assert_eq!(num(s, "flips"), 0, "{label}: flips without LRS");
+            }
+            if PERFECT_DIRECTLY.contains(&alg) {
+                // Frink's reduction pairs every face itself: nothing left to complete.
+                assert_eq!(initial, k.len(), "{label}: initial step not perfect");
+                assert_eq!(
+                    [num(s, "augmenting_paths"), num(s, "phases")],
+                    [0, 0],
+                    "{label}: a completion ran"
+                );
+            }
+            if alg == "lrs" {
                 if let Some(&reduced) = rs_outputs.get(name) {
                     assert_eq!(k.len() - initial, reduced, "{label}: n'_f");
                     cross_checked += 1;

@@ -4,10 +4,11 @@
 //! `cargo run -p contractible-tools --bin make_quad_vectors [OUT_DIR]` (default
 //! `spec/vectors` of this checkout). Reads
 //! `tests/data/irreducible/surfaces-upto-8-vertices.txt`, generates seven small random
-//! surfaces, and runs every tri-quad algorithm with seeds 0 and 1 on each:
-//! the initial pairing (`quad::{lrs, pulli_segal, greedy, matching}::initial_pairing`),
-//! then the completion (`quad::augment::complete`), and checks that `quad::convert` gives
-//! the same `K`, pairs and counters. `tests/algorithms/quad_qfuzz.rs` checks that the
+//! surfaces, and runs every tri-quad algorithm (`quad::Algorithm::ALL`) with seeds 0 and
+//! 1 on each: the initial pairing (`quad::{lrs, pulli_segal, greedy, matching}::
+//! initial_pairing`, or Frink's perfect matching with the algorithm's strategy), then the
+//! completion (`quad::augment::complete`, which finds nothing to do after Frink's), and
+//! checks that `quad::convert` gives the same `K`, pairs and counters. `tests/algorithms/quad_qfuzz.rs` checks that the
 //! library still reproduces them.
 
 use std::fmt::Write as _;
@@ -21,13 +22,9 @@ use serde_json::{json, Value};
 /// The seeds of every algorithm in the vectors.
 const SEEDS: [u64; 2] = [0, 1];
 
-/// The algorithms, in the order of a vector's `runs`.
-const ALGORITHMS: [Algorithm; 4] = [
-    Algorithm::Lrs,
-    Algorithm::PulliSegal,
-    Algorithm::SimpleGreedy,
-    Algorithm::Matching,
-];
+/// The algorithms, in the order of a vector's `runs`: every one of them, in the order of
+/// `Algorithm::ALL` (lrs, ps, sg, matching, ds, bbdl, frink-lct, ds-naive).
+const ALGORITHMS: [Algorithm; 8] = Algorithm::ALL;
 
 /// The generated random surfaces: (surface, min_faces, flip_percent, seed).
 const RANDOM: [(SurfaceKind, usize, u32, u64); 7] = [
