@@ -17,6 +17,7 @@ mod harness;
 mod closed_inputs;
 mod irreducible_algorithms;
 mod irreducible_meshes;
+mod iso_vectors;
 mod oracles;
 mod progress;
 mod quad_augment;
