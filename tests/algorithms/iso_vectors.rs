@@ -381,6 +381,13 @@ fn stored_iso_vectors_are_valid_independently() {
             (n, n),
             "{name}: one entry per vertex"
         );
+        // The README's premise: a grid step of a power of two on every axis, so sample
+        // positions and the product of `t` with an edge's extent are exact.
+        for a in 0..3 {
+            let step = 2.0 * g.half(a);
+            let m = step.log2().round();
+            assert!(2f64.powf(m) == step, "{name}: step {step} on axis {a}");
+        }
         // Topology, from the face list.
         let topo = surface_topology(&fs).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!(topo.vertices, n, "{name}: an unused vertex");

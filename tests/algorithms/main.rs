@@ -30,5 +30,6 @@ mod quad_qfuzz;
 mod rs_algorithm;
 mod rs_variants;
 mod simplify;
+mod simplify_vectors;
 mod tasks;
 mod vectors;

@@ -141,6 +141,16 @@ fn vector_files_have_the_expected_groups_and_sizes() {
         })
         .sum();
     assert!(total < 2_000_000, "vectors take {total} bytes");
+    // Every group of spec/vectors together (tri-quad, simplification and marching
+    // tetrahedra too) stays a few MB.
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("spec/vectors");
+    let all: u64 = std::fs::read_dir(&dir)
+        .expect("spec/vectors")
+        .map(|e| e.expect("entry").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "jsonl"))
+        .map(|p| std::fs::metadata(p).expect("file").len())
+        .sum();
+    assert!(all < 3_000_000, "spec/vectors takes {all} bytes");
 }
 
 #[test]

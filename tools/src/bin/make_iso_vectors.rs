@@ -198,8 +198,9 @@ fn cases() -> Vec<Case> {
             true,
             vec![disc(); 2],
         ),
-        // The rounded group: grids of step 1/2 or 3/8 (exact sample positions), level 0
-        // or a dyadic one.
+        // The rounded group: grids of step 1/2 (exact sample positions, and an exact
+        // product of the interpolation parameter with an edge's extent), level 0 or a
+        // dyadic one.
         case(
             "iso_sphere_six",
             UNIT_SPHERE,
@@ -224,12 +225,12 @@ fn cases() -> Vec<Case> {
             name: "iso_torus_six",
             implicit: Implicit::Torus {
                 major: 1.0,
-                minor: 0.4375,
+                minor: 0.5,
             },
             tessellation: SIX,
             cells: [8, 8, 4],
-            min: [-1.5, -1.5, -0.75],
-            max: [1.5, 1.5, 0.75],
+            min: [-2.0, -2.0, -1.0],
+            max: [2.0, 2.0, 1.0],
             level: 0.0,
             exact: false,
             components: vec![(0, true, 0)],
@@ -238,12 +239,12 @@ fn cases() -> Vec<Case> {
             name: "iso_torus_bcc",
             implicit: Implicit::Torus {
                 major: 1.0,
-                minor: 0.4375,
+                minor: 0.5,
             },
             tessellation: BCC,
             cells: [8, 8, 4],
-            min: [-1.5, -1.5, -0.75],
-            max: [1.5, 1.5, 0.75],
+            min: [-2.0, -2.0, -1.0],
+            max: [2.0, 2.0, 1.0],
             level: 0.0,
             exact: false,
             components: vec![(0, true, 0)],
@@ -253,9 +254,9 @@ fn cases() -> Vec<Case> {
             name: "iso_hyperboloid_annulus_six",
             implicit: HYPERBOLOID,
             tessellation: SIX,
-            cells: [8, 8, 6],
-            min: [-1.5, -1.5, -1.125],
-            max: [1.5, 1.5, 1.125],
+            cells: [8, 8, 4],
+            min: [-2.0, -2.0, -1.0],
+            max: [2.0, 2.0, 1.0],
             level: 0.75,
             exact: false,
             components: vec![(0, true, 2)],
