@@ -104,4 +104,53 @@ mod tests {
         let e = "dsn".parse::<quad::Algorithm>().unwrap_err();
         assert_eq!(e.expected.len(), 8);
     }
+
+    /// The names are the documented ones, and every choice has its own non-empty summary
+    /// (the command line's help would otherwise list blank or repeated lines).
+    #[test]
+    fn names_are_the_documented_ones_and_summaries_are_distinct() {
+        fn distinct(what: &str, mut lines: Vec<&'static str>) {
+            assert!(
+                lines.iter().all(|l| !l.trim().is_empty()),
+                "{what}: {lines:?}"
+            );
+            let n = lines.len();
+            lines.sort_unstable();
+            lines.dedup();
+            assert_eq!(lines.len(), n, "{what}: repeated line");
+        }
+        let names: Vec<_> = irreducible::Algorithm::ALL.map(|a| a.name()).into();
+        assert_eq!(names, ["rs", "schipper", "brute"]);
+        let names: Vec<_> = quad::Algorithm::ALL.map(|a| a.name()).into();
+        assert_eq!(
+            names,
+            [
+                "lrs",
+                "ps",
+                "sg",
+                "matching",
+                "ds",
+                "bbdl",
+                "frink-lct",
+                "ds-naive"
+            ]
+        );
+        let names: Vec<_> = simplify::Mode::ALL.map(|a| a.name()).into();
+        assert_eq!(names, ["nested", "naive"]);
+        let names: Vec<_> = simplify::Side::ALL.map(|a| a.name()).into();
+        assert_eq!(names, ["count", "path", "euclidean"]);
+        let names: Vec<_> = simplify::Position::ALL.map(|a| a.name()).into();
+        assert_eq!(names, ["midpoint", "quadric"]);
+        distinct(
+            "irreducible",
+            irreducible::Algorithm::ALL.map(|a| a.summary()).into(),
+        );
+        distinct("quad", quad::Algorithm::ALL.map(|a| a.summary()).into());
+        distinct("mode", simplify::Mode::ALL.map(|a| a.summary()).into());
+        distinct("side", simplify::Side::ALL.map(|a| a.summary()).into());
+        distinct(
+            "position",
+            simplify::Position::ALL.map(|a| a.summary()).into(),
+        );
+    }
 }

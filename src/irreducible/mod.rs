@@ -239,3 +239,39 @@ pub(crate) fn start_stats(tri: &Triangulation) -> Stats {
         ..Stats::default()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::RetestCounter;
+    use crate::core::{Triangulation, VertexId};
+
+    /// The counter counts only when enabled, and counts an edge once however often it is
+    /// retested (ε is a number of edges, not of tests).
+    #[test]
+    fn the_retest_counter_counts_retested_edges_only_when_enabled() {
+        let faces = [[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]];
+        let tri = Triangulation::from_faces(4, &faces).expect("the tetrahedron");
+        let c = tri.corner_of(VertexId(0));
+        let d = c.next();
+
+        let mut off = RetestCounter::new(&tri, false);
+        assert!(!off.is_enabled());
+        for _ in 0..3 {
+            off.tested(c);
+        }
+        assert_eq!(off.more_than_once(), 0);
+
+        let mut on = RetestCounter::new(&tri, true);
+        assert!(on.is_enabled());
+        on.tested(c);
+        on.tested(d);
+        assert_eq!(on.more_than_once(), 0, "two different edges, once each");
+        on.tested(c);
+        assert_eq!(on.more_than_once(), 1);
+        on.tested(c);
+        on.tested(c);
+        assert_eq!(on.more_than_once(), 1, "the same edge counts once");
+        on.tested(d);
+        assert_eq!(on.more_than_once(), 2);
+    }
+}

@@ -732,3 +732,62 @@ impl Rs {
         [x, y]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{Lists, Stamp, Time, LTE, LUE};
+    use crate::core::VertexId;
+
+    /// The two lists of Alg. 4.1 keep their order under pushes at both ends and removals
+    /// from anywhere, and membership names the list a vertex is in (or none).
+    #[test]
+    fn the_lists_keep_order_and_membership() {
+        let mut lists = Lists::new(6);
+        let v = VertexId;
+        lists.push_back(LUE, v(1));
+        lists.push_back(LUE, v(2));
+        lists.push_front(LUE, v(0));
+        lists.push_back(LTE, v(4));
+        lists.push_front(LTE, v(3));
+        let members = |lists: &Lists, l| lists.iter(l).map(|z: VertexId| z.0).collect::<Vec<_>>();
+        assert_eq!(members(&lists, LUE), [0, 1, 2]);
+        assert_eq!(members(&lists, LTE), [3, 4]);
+        assert!(lists.contains(LUE, v(1)) && !lists.contains(LTE, v(1)));
+        assert!(lists.contains(LTE, v(4)) && !lists.contains(LUE, v(4)));
+        assert!(!lists.contains(LUE, v(5)) && !lists.contains(LTE, v(5)));
+
+        lists.remove(v(1));
+        lists.remove(v(5)); // in no list: nothing happens
+        assert_eq!(members(&lists, LUE), [0, 2]);
+        assert!(!lists.contains(LUE, v(1)));
+        lists.remove(v(2));
+        lists.push_back(LUE, v(1));
+        assert_eq!(
+            members(&lists, LUE),
+            [0, 1],
+            "the tail follows a removal at the end"
+        );
+        lists.remove(v(0));
+        assert_eq!(
+            lists.front(LUE),
+            Some(v(1)),
+            "the head follows a removal at the front"
+        );
+        assert_eq!(lists.pop_front(LTE), Some(v(3)));
+        assert_eq!(members(&lists, LTE), [4]);
+        lists.clear(LTE);
+        assert!(lists.is_empty(LTE) && lists.front(LTE).is_none());
+        assert!(!lists.is_empty(LUE));
+    }
+
+    /// Stamps print as the paper writes them: a time, or −1 when unset.
+    #[test]
+    fn stamps_print_as_in_the_paper() {
+        assert_eq!(Time(7).to_string(), "7");
+        assert_eq!(Stamp::at(Time(3)).to_string(), "3");
+        assert_eq!(Stamp::UNSET.to_string(), "-1");
+        assert!(Stamp::at(Time(2)).is_before(Time(3)));
+        assert!(!Stamp::at(Time(3)).is_before(Time(3)));
+        assert!(!Stamp::UNSET.is_before(Time(u32::MAX - 1)));
+    }
+}
