@@ -142,7 +142,6 @@ struct Lists {
     tag: Vec<u8>,
     head: [u32; 2],
     tail: [u32; 2],
-    len: [usize; 2],
 }
 
 impl Lists {
@@ -153,7 +152,6 @@ impl Lists {
             tag: vec![0; n],
             head: [NIL; 2],
             tail: [NIL; 2],
-            len: [0; 2],
         }
     }
     #[inline]
@@ -182,7 +180,6 @@ impl Lists {
         }
         self.head[l] = z;
         self.tag[zi] = l as u8 + 1;
-        self.len[l] += 1;
     }
     #[inline]
     fn push_back(&mut self, l: usize, z: VertexId) {
@@ -198,7 +195,6 @@ impl Lists {
         }
         self.tail[l] = z;
         self.tag[zi] = l as u8 + 1;
-        self.len[l] += 1;
     }
     #[inline]
     fn remove(&mut self, z: VertexId) {
@@ -219,7 +215,6 @@ impl Lists {
             self.prev[n as usize] = p;
         }
         self.tag[zi] = 0;
-        self.len[l] -= 1;
     }
     #[inline]
     fn pop_front(&mut self, l: usize) -> Option<VertexId> {
