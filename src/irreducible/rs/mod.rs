@@ -433,7 +433,6 @@ impl Rs {
 
     /// Alg. 4.2 l.6–36: processes `u` until it is trapped.
     fn process(&mut self, u: VertexId, throttle: &mut Throttle, report: &mut dyn FnMut(u64)) {
-        let before = self.history.len();
         self.begin(u);
         loop {
             // l.22–30
@@ -474,7 +473,8 @@ impl Rs {
         self.lists.clear(LTE);
         self.processed[u.index()] = true;
         if self.processed_count == 0 {
-            self.contractions_first_vertex = (self.history.len() - before) as u64;
+            // The history starts empty: all of it was made while processing `u`.
+            self.contractions_first_vertex = self.history.len() as u64;
         }
         self.processed_count += 1;
         spec::vertex_trapped(self, u);
