@@ -189,10 +189,14 @@ pub struct WeldMap {
 ///   (so `0.0` and `-0.0` stay apart). O(V) expected (hashing).
 /// - `tolerance > 0`: the groups are the connected components of the graph joining two
 ///   vertices at Euclidean distance `<= tolerance` (union–find, so merging is
-///   transitive). Vertices are hashed into a grid of cells of side `tolerance`; each
-///   vertex is compared with the earlier vertices of its own and the 26 neighbouring
-///   cells, which contain every vertex within `tolerance`. O(V + number of pairs in
-///   neighbouring cells), expected O(V) when few vertices share a cell.
+///   transitive), the distance compared as `Σ (pᵢ − qᵢ)² <= tolerance²` in `f64`.
+///   Vertices are hashed into a grid of cells of side `2 · tolerance`; each vertex is
+///   compared with the earlier vertices of its own and the 26 neighbouring cells. Twice
+///   the tolerance, so that the rounding of the cell coordinates never puts two vertices
+///   that pass the comparison two cells apart (with cells of side `tolerance`, a pair
+///   exactly `tolerance` apart by the rounded comparison could straddle two cell
+///   boundaries and not be compared at all). O(V + number of pairs in neighbouring
+///   cells), expected O(V) when few vertices share a cell.
 ///
 /// Deterministic whatever the order of the work: a group's representative is its lowest
 /// index, and the kept vertices keep their relative order.
@@ -222,7 +226,8 @@ pub fn weld_map(positions: &[[f64; 3]], tolerance: f64) -> Option<WeldMap> {
             parent[v] = r;
         }
     } else {
-        let cell = |p: &[f64; 3]| p.map(|x| (x / tolerance).floor() as i64);
+        let side = 2.0 * tolerance;
+        let cell = |p: &[f64; 3]| p.map(|x| (x / side).floor() as i64);
         let t2 = tolerance * tolerance;
         let mut grid: std::collections::HashMap<[i64; 3], Vec<u32>> =
             std::collections::HashMap::with_capacity(positions.len());
@@ -369,6 +374,34 @@ mod tests {
                 w.kept.len() < p.len(),
                 "tol {tol}: nothing merged, weak test"
             );
+        }
+    }
+
+    /// Pairs whose rounded squared distance is exactly `tolerance²` are merged wherever
+    /// they sit on the grid: `-3.06e-32` and `1.0` (tolerance 1) are 1 apart by the
+    /// comparison, but lay in cells -1 and 1 when the cells had side `tolerance`, so
+    /// they were never compared (found by fuzzing an STL file); the same pair shifted
+    /// to `3.06e-32` was merged.
+    #[test]
+    fn pairs_at_exactly_the_tolerance_are_merged_wherever_they_sit() {
+        for (y, z) in [(-3.062228611575705e-32, 1.0), (3.062228611575705e-32, 1.0)] {
+            let p: Vec<[f64; 3]> = vec![[1.0, y, 1.0], [5.0, 5.0, 5.0], [1.0, z, 1.0]];
+            let d2: f64 = (0..3).map(|k| (p[0][k] - p[2][k]).powi(2)).sum();
+            assert_eq!(d2, 1.0, "the comparison rounds to the tolerance");
+            let w = weld_map(&p, 1.0).unwrap();
+            assert_eq!(w.new_id, vec![0, 1, 0], "y = {y}");
+        }
+        // Far from the origin and at small tolerances alike.
+        for (base, tol) in [(1e15, 0.75), (-3e10, 1e-3), (2.0f64.powi(60), 4096.0f64)] {
+            let p = vec![
+                [base, 0.0, 0.0],
+                [base + tol, 0.0, 0.0],
+                [base + 3.0 * tol, 0.0, 0.0],
+            ];
+            let close = |a: usize, b: usize| (p[a][0] - p[b][0]).powi(2) <= tol * tol;
+            let w = weld_map(&p, tol).unwrap();
+            assert_eq!(w.new_id[0] == w.new_id[1], close(0, 1), "{base} {tol}");
+            assert_eq!(w.new_id[1] == w.new_id[2], close(1, 2), "{base} {tol}");
         }
     }
 

@@ -573,19 +573,29 @@ fn closed_surface_invariants(faces: &[[u32; 3]]) -> (i64, bool) {
     contractible::spec::oracle::euler_and_orientability(faces).expect("a closed surface")
 }
 
-/// The quad algorithms run by [`check_quads`], in this order.
-pub const QUAD_ALGORITHMS: [contractible::quad::Algorithm; 6] = [
-    contractible::quad::Algorithm::Lrs,
-    contractible::quad::Algorithm::PulliSegal,
-    contractible::quad::Algorithm::SimpleGreedy,
-    contractible::quad::Algorithm::Matching,
-    contractible::quad::Algorithm::DiksStanczyk,
-    contractible::quad::Algorithm::BiedlBoseDemaineLubiw,
-];
+/// The quad algorithms run by [`check_quads`]: every one, in the order of
+/// [`contractible::quad::Algorithm::ALL`] (so an algorithm added to the library is fuzzed
+/// without a change here).
+pub const QUAD_ALGORITHMS: [contractible::quad::Algorithm; 8] = contractible::quad::Algorithm::ALL;
+
+/// The most faces `alg`'s structures hold: the node limit of its Frink strategy
+/// ([`contractible::quad::frink::Strategy::max_nodes`]; the dual graph has one node per
+/// face), `None` for the algorithms without one (LRS, PS, SG, matching).
+pub fn frink_limit(alg: contractible::quad::Algorithm) -> Option<usize> {
+    use contractible::quad::frink::{self, Strategy as _};
+    use contractible::quad::Algorithm as QAlg;
+    match alg {
+        QAlg::DsNaive => Some(frink::Naive::new().max_nodes()),
+        QAlg::FrinkLct => Some(frink::CoverTree::new().max_nodes()),
+        QAlg::DiksStanczyk => Some(frink::DiksStanczyk::new().max_nodes()),
+        QAlg::BiedlBoseDemaineLubiw => Some(frink::BiedlBoseDemaineLubiw::new().max_nodes()),
+        _ => None,
+    }
+}
 
 /// `quad_ops`: the surface of `input` (as `surface_ops` builds it) converted by every
 /// tri-quad algorithm with `Options { seed: input.seed }`, each result checked by
-/// [`check_quadrangulation`]; LRS must leave exactly the face count of RS's irreducible
+/// [`convert_checked`]; LRS must leave exactly the face count of RS's irreducible
 /// output unpaired before the completion (`irreducible::rs::reduce` on the same input).
 pub fn check_quads(input: &SurfaceInput) {
     let tri = build_surface(input);
@@ -593,23 +603,69 @@ pub fn check_quads(input: &SurfaceInput) {
         .tri
         .face_count();
     for alg in QUAD_ALGORITHMS {
-        check_quad_algorithm(&tri, alg, input.seed, reduced);
+        convert_checked(&tri, alg, input.seed, reduced);
     }
 }
 
 /// One algorithm of [`check_quads`] on `tri` (also used by the exhaustive twins):
-/// `reduced` is the face count of RS's irreducible output of `tri` (checked against
-/// LRS's `initial_unpaired`).
+/// [`convert_checked`], which must convert (`tri` is within every strategy's limit).
 pub fn check_quad_algorithm(
     tri: &Triangulation,
     alg: contractible::quad::Algorithm,
     seed: u64,
     reduced: usize,
 ) -> contractible::quad::Quadrangulation {
-    use contractible::quad::{convert, Algorithm as QAlg, Options as QOptions};
+    convert_checked(tri, alg, seed, reduced).unwrap_or_else(|| {
+        panic!(
+            "{}: {} faces refused as too large",
+            alg.name(),
+            tri.face_count()
+        )
+    })
+}
+
+/// Converts `tri` by `alg` and checks the outcome: [`ConvertError::TooLarge`] exactly
+/// when the face count exceeds [`frink_limit`] (with the algorithm, the face count and
+/// that limit in the error; then `None`), no other error; a conversion is checked by
+/// [`check_quadrangulation`]; `reduced` is the face count of RS's irreducible output of
+/// `tri`, which LRS must leave unpaired before its completion; every other algorithm
+/// pairs the input itself (`K == tri`, no flips); the Frink algorithms are perfect
+/// without a completion (nothing left unpaired, no augmenting path, no search).
+///
+/// [`ConvertError::TooLarge`]: contractible::quad::ConvertError::TooLarge
+pub fn convert_checked(
+    tri: &Triangulation,
+    alg: contractible::quad::Algorithm,
+    seed: u64,
+    reduced: usize,
+) -> Option<contractible::quad::Quadrangulation> {
+    use contractible::quad::{convert, Algorithm as QAlg, ConvertError, Options as QOptions};
     let label = format!("{}(seed {seed})", alg.name());
-    let q = convert(tri.clone(), alg, &QOptions { seed }).expect("a closed triangulation");
+    let faces = tri.face_count();
+    let limit = frink_limit(alg);
+    let q = match convert(tri.clone(), alg, &QOptions { seed }) {
+        Ok(q) => q,
+        Err(ConvertError::TooLarge {
+            algorithm,
+            faces: f,
+            limit: l,
+        }) => {
+            assert_eq!(algorithm, alg, "{label}: TooLarge names another algorithm");
+            assert_eq!(f, faces, "{label}: TooLarge face count");
+            assert_eq!(Some(l), limit, "{label}: TooLarge limit");
+            assert!(f > l, "{label}: {f} faces refused, the limit is {l}");
+            return None;
+        }
+        Err(e) => panic!("{label}: a closed triangulation refused: {e}"),
+    };
+    if let Some(l) = limit {
+        assert!(
+            faces <= l,
+            "{label}: {faces} faces converted, the limit is {l}"
+        );
+    }
     check_quadrangulation(tri, &q, &label);
+    assert_eq!(q.algorithm, alg, "{label}: algorithm of the result");
     if alg == QAlg::Lrs {
         assert_eq!(
             q.stats.initial_unpaired, reduced,
@@ -620,7 +676,18 @@ pub fn check_quad_algorithm(
         assert_eq!(q.stats.flips, 0, "{label}: flips without LRS");
         assert!(q.tri == *tri, "{label}: K is not the input");
     }
-    q
+    if alg.is_perfect_directly() {
+        assert_eq!(
+            (
+                q.stats.initial_unpaired,
+                q.stats.augmenting_paths,
+                q.stats.phases
+            ),
+            (0, 0, 0),
+            "{label}: Frink's reduction left work for a completion"
+        );
+    }
+    Some(q)
 }
 
 /// Checks a conversion of `input` by code that shares nothing with the algorithms (only
@@ -1188,30 +1255,77 @@ pub fn surface_topology(faces: &[[u32; 3]]) -> Result<Topology, String> {
     })
 }
 
-/// The distinct edges of `faces` and the squared length of each.
-fn edge_lengths2(faces: &[[u32; 3]], positions: &[[f64; 3]]) -> Vec<f64> {
-    let mut edges: Vec<(u32, u32)> = faces
-        .iter()
-        .flat_map(|f| (0..3).map(move |k| (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]))))
-        .collect();
-    edges.sort_unstable();
-    edges.dedup();
-    edges
-        .iter()
-        .map(|&(a, b)| {
-            let (p, q) = (positions[a as usize], positions[b as usize]);
-            let d = [p[0] - q[0], p[1] - q[1], p[2] - q[2]];
-            d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
-        })
-        .collect()
+/// A power of two that brings `largest` (a magnitude) to `[1, 2)`, from its exponent
+/// bits, the exponent clamped to ±1000 so that the scale is a normal number (so a
+/// subnormal value gets `2^1000`); 1 for 0 and for a non-finite value.
+pub fn unit_scale(largest: f64) -> f64 {
+    let biased = ((largest.to_bits() >> 52) & 0x7ff) as i32;
+    if largest == 0.0 || biased == 0x7ff {
+        return 1.0;
+    }
+    let exponent = if biased == 0 { -1000 } else { biased - 1023 };
+    f64::from_bits(((1023 - exponent.clamp(-1000, 1000)) as u64) << 52)
 }
 
-/// The number of distinct edges of `faces` strictly shorter than `eps`.
+/// Squared edge lengths of `faces`, robust to the ends of the `f64` range: the positions
+/// multiplied by [`unit_scale`] of their largest coordinate (exact: a power of two), so
+/// that nothing overflows. Their lengths are `sqrt(l2) / scale`.
+pub struct EdgeLengths {
+    /// The scale.
+    pub scale: f64,
+    /// The squared length of every distinct edge, scaled.
+    pub l2: Vec<f64>,
+}
+
+impl EdgeLengths {
+    /// The edges of `faces` over `positions`.
+    pub fn of(faces: &[[u32; 3]], positions: &[[f64; 3]]) -> Self {
+        let mut edges: Vec<(u32, u32)> = faces
+            .iter()
+            .flat_map(|f| (0..3).map(move |k| (f[k].min(f[(k + 1) % 3]), f[k].max(f[(k + 1) % 3]))))
+            .collect();
+        edges.sort_unstable();
+        edges.dedup();
+        let largest = edges
+            .iter()
+            .flat_map(|&(a, b)| {
+                positions[a as usize]
+                    .into_iter()
+                    .chain(positions[b as usize])
+            })
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        let scale = unit_scale(largest);
+        let l2 = edges
+            .iter()
+            .map(|&(a, b)| {
+                let (p, q) = (positions[a as usize], positions[b as usize]);
+                let d = [0, 1, 2].map(|i| p[i] * scale - q[i] * scale);
+                d[0] * d[0] + d[1] * d[1] + d[2] * d[2]
+            })
+            .collect();
+        EdgeLengths { scale, l2 }
+    }
+
+    /// The shortest length (`None` without edges).
+    pub fn shortest(&self) -> Option<f64> {
+        let m = self.l2.iter().copied().fold(f64::INFINITY, f64::min);
+        (!self.l2.is_empty()).then(|| m.sqrt() / self.scale)
+    }
+
+    /// How many are strictly shorter than `eps` (compared squared in the scaled
+    /// coordinates; ε² at least the smallest positive number, so that an edge of length
+    /// 0 is shorter than every ε > 0).
+    pub fn shorter_than(&self, eps: f64) -> usize {
+        let e = eps * self.scale;
+        let e2 = (e * e).max(f64::from_bits(1));
+        self.l2.iter().filter(|&&l2| l2 < e2).count()
+    }
+}
+
+/// The number of distinct edges of `faces` strictly shorter than `eps`
+/// ([`EdgeLengths::shorter_than`]).
 pub fn short_edge_count(faces: &[[u32; 3]], positions: &[[f64; 3]], eps: f64) -> usize {
-    edge_lengths2(faces, positions)
-        .into_iter()
-        .filter(|&l2| l2 < eps * eps)
-        .count()
+    EdgeLengths::of(faces, positions).shorter_than(eps)
 }
 
 /// Simplifies `mesh` with `opts` and checks the result by code independent of the
@@ -1242,15 +1356,29 @@ pub fn check_simplify_with(
     opts: &contractible::simplify::Options,
     label: &str,
 ) -> contractible::simplify::Simplified {
-    use contractible::simplify::{simplify, Mode};
+    let out = contractible::simplify::simplify(mesh, opts)
+        .unwrap_or_else(|e| panic!("{label}: simplify: {e}"));
+    check_simplified(mesh, before, opts, &out.mesh, &out.stats, label);
+    out
+}
+
+/// The checks of [`check_simplify_with`] on an output `m` with statistics `s` that a
+/// run with `opts` made from `mesh` (by the lower-level call or by the task call
+/// [`contractible::simplify()`](fn@contractible::simplify)).
+pub fn check_simplified(
+    mesh: &contractible::TriMesh,
+    before: &Topology,
+    opts: &contractible::simplify::Options,
+    m: &contractible::TriMesh,
+    s: &contractible::simplify::Stats,
+    label: &str,
+) {
+    use contractible::simplify::Mode;
     assert_eq!(
         before.faces,
         mesh.faces.len(),
         "{label}: `before` is another mesh's"
     );
-    let out = simplify(mesh, opts).unwrap_or_else(|e| panic!("{label}: simplify: {e}"));
-    let s = &out.stats;
-    let m = &out.mesh;
     let after = surface_topology(&m.faces)
         .unwrap_or_else(|e| panic!("{label}: the output is not a surface: {e}"));
     assert_eq!(
@@ -1301,21 +1429,19 @@ pub fn check_simplify_with(
     if !m.faces.is_empty() {
         assert!(s.passes >= 1, "{label}: no pass");
     }
-    let lengths = edge_lengths2(&m.faces, positions);
-    let shortest = lengths.iter().copied().fold(f64::INFINITY, f64::min);
-    match s.shortest_remaining_edge {
-        None => assert!(lengths.is_empty(), "{label}: shortest edge missing"),
-        Some(l) => assert!(
-            (l - shortest.sqrt()).abs() <= 1e-12 * l.max(1e-300),
-            "{label}: shortest_remaining_edge {l} but the output's is {}",
-            shortest.sqrt()
+    let lengths = EdgeLengths::of(&m.faces, positions);
+    match (s.shortest_remaining_edge, lengths.shortest()) {
+        (None, None) => {}
+        (Some(l), Some(shortest)) => assert!(
+            l == shortest || (l - shortest).abs() <= 1e-12 * l,
+            "{label}: shortest_remaining_edge {l} but the output's is {shortest}"
         ),
+        (l, shortest) => {
+            panic!("{label}: shortest_remaining_edge {l:?} but the output's is {shortest:?}")
+        }
     }
     // Every short edge accounted for, recounted from the output.
-    let short = lengths
-        .iter()
-        .filter(|&&l2| l2 < opts.eps * opts.eps)
-        .count();
+    let short = lengths.shorter_than(opts.eps);
     assert_eq!(
         short, s.short_edges_remaining,
         "{label}: the output has {short} edges shorter than ε, stats say {}",
@@ -1345,7 +1471,6 @@ pub fn check_simplify_with(
             "{label}: guard off"
         );
     }
-    out
 }
 
 /// [`check_simplify_with`] in both modes with the other options of `opts`; also checks that
@@ -1388,54 +1513,290 @@ pub fn check_simplify_modes(
     (naive, nested)
 }
 
+// ---- Positions for the simplifier and the task calls: degenerate and near-degenerate
+// layouts, integer grids, wildly different scales.
+
+/// How [`layout`] places the vertices (then scaled by `10^`[`scale_exponent`]).
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Geometry {
+    /// Uniform in the unit cube, then `smoothing % 4` rounds halfway to the neighbours'
+    /// mean (a crumpled surface with many short edges).
+    Random {
+        /// Rounds of smoothing (`% 4`).
+        smoothing: u8,
+    },
+    /// Integer coordinates in `0..=range % 16`: coincident vertices, collinear and
+    /// coplanar triples, zero-area faces (range 0 puts every vertex at the origin).
+    Grid {
+        /// The largest coordinate (`% 16`).
+        range: u8,
+    },
+    /// Every vertex on one of `1 + points % 4` random points: coincident vertices
+    /// everywhere (one point: no coordinates at all).
+    Clusters {
+        /// The number of points (`1 + points % 4`).
+        points: u8,
+    },
+    /// On one random line (every face has zero area) or on one random plane.
+    Flat {
+        /// A plane instead of a line.
+        plane: bool,
+    },
+    /// Integer coordinates in `0..=1 + range % 4`, every other vertex moved by a relative
+    /// `10^-(12 + digits % 4)` on each axis: near-coincident vertices, near-collinear
+    /// slivers beside exact ones.
+    Perturbed {
+        /// The largest coordinate (`1 + range % 4`).
+        range: u8,
+        /// The perturbation's exponent (`12 + digits % 4`).
+        digits: u8,
+    },
+    /// Unit-cube positions, each vertex scaled by `10^k` for its own `k`, uniform in
+    /// `-(spread % 64)..=spread % 64`: edge lengths of wildly different scales.
+    Scales {
+        /// The largest exponent (`% 64`).
+        spread: u8,
+    },
+    /// Unit-cube positions shifted by `10^(digits % 18)` on every axis: the shape keeps
+    /// only the last few digits of each coordinate (quantised, with coincident vertices
+    /// and degenerate faces for large shifts).
+    Shifted {
+        /// The shift's exponent (`% 18`).
+        digits: u8,
+    },
+}
+
+/// A uniform sample of `[0, 1)`.
+fn unit(rng: &mut Rng) -> f64 {
+    (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+}
+
+/// The sorted, distinct in-range neighbours of every vertex `0..n` in `faces` (indices
+/// `>= n` are skipped).
+pub fn neighbours(n: usize, faces: &[[u32; 3]]) -> Vec<Vec<u32>> {
+    let mut adj = vec![Vec::new(); n];
+    for f in faces {
+        for k in 0..3 {
+            let (a, b) = (f[k] as usize, f[(k + 1) % 3] as usize);
+            if a < n && b < n && a != b {
+                adj[a].push(b as u32);
+                adj[b].push(a as u32);
+            }
+        }
+    }
+    for a in &mut adj {
+        a.sort_unstable();
+        a.dedup();
+    }
+    adj
+}
+
+/// The exponent of a fuzzed scale: `scale · |scale| / 64` (0 for `|scale| < 8`, ±252 at
+/// the ends: unit scale and extreme ones both common).
+pub fn scale_exponent(scale: i8) -> i32 {
+    let s = i32::from(scale);
+    s * s.abs() / 64
+}
+
+/// Positions for the `neighbours.len()` vertices: `geometry` drawn from the stream of
+/// `seed`, then every coordinate times `10^`[`scale_exponent`]`(scale)`; each vertex's total exponent is
+/// clamped so that every coordinate stays below `1e300` in magnitude (finite, as the
+/// simplifier requires; squared lengths and areas may still overflow, which the checks
+/// must survive). Every coordinate is finite.
+pub fn layout(geometry: Geometry, scale: i8, seed: u64, neighbours: &[Vec<u32>]) -> Vec<[f64; 3]> {
+    let n = neighbours.len();
+    let mut rng = Rng::new(seed);
+    let point = |rng: &mut Rng| [unit(rng), unit(rng), unit(rng)];
+    let mut exponent = vec![0i32; n];
+    let mut pos: Vec<[f64; 3]> = match geometry {
+        Geometry::Random { smoothing } => {
+            let mut pos: Vec<[f64; 3]> = (0..n).map(|_| point(&mut rng)).collect();
+            for _ in 0..smoothing % 4 {
+                let old = pos.clone();
+                for (v, near) in neighbours.iter().enumerate() {
+                    if near.is_empty() {
+                        continue;
+                    }
+                    let k = near.len() as f64;
+                    let mean = [0, 1, 2]
+                        .map(|i| near.iter().map(|&w| old[w as usize][i]).sum::<f64>() / k);
+                    pos[v] = [0, 1, 2].map(|i| 0.5 * old[v][i] + 0.5 * mean[i]);
+                }
+            }
+            pos
+        }
+        Geometry::Grid { range } => {
+            let k = u64::from(range % 16) + 1;
+            (0..n)
+                .map(|_| [0; 3].map(|_: i32| rng.below(k) as f64))
+                .collect()
+        }
+        Geometry::Clusters { points } => {
+            let centres: Vec<[f64; 3]> = (0..1 + points % 4).map(|_| point(&mut rng)).collect();
+            (0..n).map(|_| centres[rng.index(centres.len())]).collect()
+        }
+        Geometry::Flat { plane } => {
+            let (origin, u, w) = (point(&mut rng), point(&mut rng), point(&mut rng));
+            (0..n)
+                .map(|_| {
+                    let (s, t) = (unit(&mut rng), if plane { unit(&mut rng) } else { 0.0 });
+                    [0, 1, 2].map(|i| origin[i] + s * u[i] + t * w[i])
+                })
+                .collect()
+        }
+        Geometry::Perturbed { range, digits } => {
+            let k = u64::from(range % 4) + 2;
+            let delta = 10f64.powi(-(12 + i32::from(digits % 4)));
+            (0..n)
+                .map(|v| {
+                    let p = [0; 3].map(|_: i32| rng.below(k) as f64);
+                    if v % 2 == 0 {
+                        return p;
+                    }
+                    p.map(|x| x + x.abs().max(1.0) * delta * (2.0 * unit(&mut rng) - 1.0))
+                })
+                .collect()
+        }
+        Geometry::Scales { spread } => {
+            let s = u64::from(spread % 64);
+            (0..n)
+                .map(|v| {
+                    exponent[v] = rng.below(2 * s + 1) as i32 - s as i32;
+                    point(&mut rng)
+                })
+                .collect()
+        }
+        Geometry::Shifted { digits } => {
+            let shift = 10f64.powi(i32::from(digits % 18));
+            (0..n).map(|_| point(&mut rng).map(|x| x + shift)).collect()
+        }
+    };
+    for (p, e) in pos.iter_mut().zip(&exponent) {
+        let largest = p.iter().fold(1.0f64, |m, x| m.max(x.abs()));
+        // `largest · 10^top < 1e300`: `largest` is below 10^18.
+        let top = 299 - largest.log10().ceil() as i32;
+        let e = (e + scale_exponent(scale)).clamp(-300, top);
+        let f = 10f64.powi(e);
+        *p = p.map(|x| x * f);
+    }
+    assert!(
+        pos.iter().flatten().all(|x| x.is_finite()),
+        "layout made a non-finite coordinate"
+    );
+    pos
+}
+
+/// The diagonal of the axis-aligned bounding box of `points`, computed here (not by the
+/// library's `bbox_diagonal`): 0 without points, infinite only when the diagonal itself
+/// exceeds the `f64` range (the sides are scaled by [`unit_scale`] before squaring, so
+/// that the squares neither overflow nor underflow).
+pub fn diagonal<'a>(points: impl IntoIterator<Item = &'a [f64; 3]>) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let mut any = false;
+    for p in points {
+        any = true;
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !any {
+        return 0.0;
+    }
+    let d = [hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]];
+    let s = unit_scale(d[0].max(d[1]).max(d[2]));
+    let d = d.map(|x| x * s);
+    (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() / s
+}
+
+/// ε as a fraction of the bounding-box diagonal, from a fuzz byte pair: `(eps / 65535)² ·
+/// 0.6` (0 for `eps = 0`, which a relative ε must refuse).
+pub fn eps_fraction(eps: u16) -> f64 {
+    let r = f64::from(eps) / 65535.0;
+    r * r * 0.6
+}
+
+/// An absolute ε for the lower-level simplifier: `fraction · diagonal` when that is a
+/// finite number > 0; otherwise `10⁻⁹ · diagonal`, `f64::MAX` for an infinite diagonal,
+/// `1e-150` for a zero one (still > 0 when squared, so zero-length edges count as short).
+pub fn absolute_eps(fraction: f64, diagonal: f64) -> f64 {
+    let usable = |e: f64| e.is_finite() && e > 0.0;
+    if usable(fraction * diagonal) {
+        fraction * diagonal
+    } else if usable(1e-9 * diagonal) {
+        1e-9 * diagonal
+    } else if diagonal.is_infinite() {
+        f64::MAX
+    } else {
+        1e-150
+    }
+}
+
 /// At most this many operations of a [`SimplifyInput`]'s surface are applied (the
-/// simplifier runs twice per input and the checker is O(F log F): keep inputs small).
+/// simplifier runs three times per input and the checker is O(F log F): keep inputs
+/// small).
 pub const SIMPLIFY_OPS: usize = 400;
 /// At most this many faces are removed to make boundary.
 pub const SIMPLIFY_HOLES: usize = 8;
 
 /// The input of `simplify`: a random closed surface (as `surface_ops` grows it, at most
-/// [`SIMPLIFY_OPS`] operations), random positions, faces removed to open it, a random ε
-/// and random options.
+/// [`SIMPLIFY_OPS`] operations), positions laid out by [`layout`] (degenerate ones
+/// included), faces removed to open it, a random ε and random options.
 #[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
 pub struct SimplifyInput {
     /// The surface (its `seed` is unused).
     pub base: SurfaceInput,
     /// Seed of the positions ([`Rng`]).
     pub positions: u64,
-    /// Rounds of neighbour averaging applied to the random positions (`% 4`): 0 leaves
-    /// them scattered in the unit cube, more rounds make a crumpled surface with many
-    /// short edges.
-    pub smoothing: u8,
-    /// ε as a fraction of the bounding-box diagonal: `(eps / 65535)² · 0.6`.
+    /// The layout of the positions.
+    pub geometry: Geometry,
+    /// Every coordinate times `10^`[`scale_exponent`]`(scale)` ([`layout`]).
+    pub scale: i8,
+    /// ε as a fraction of the bounding-box diagonal ([`eps_fraction`]).
     pub eps: u16,
+    /// The task call's ε: [`contractible::Eps::Relative`] with the fraction, or
+    /// [`contractible::Eps::Absolute`] with the lower-level runs' ε.
+    pub relative: bool,
     /// Faces to remove (ids mod F, in order); a face sharing a vertex with one already
     /// removed is kept, so the result stays a surface with boundary.
     pub holes: Vec<u16>,
-    /// Options of [`contractible::simplify::Options`]: `side % 3` (count, path,
-    /// Euclidean), the quadric position, the guard.
+    /// `side % 3`: count, path, Euclidean.
     pub side: u8,
     /// Quadric positions instead of midpoints.
     pub quadric: bool,
-    /// The geometry guard.
+    /// The geometry guard (the task call's `allow_foldover` is its negation).
     pub guard: bool,
+    /// The task call's mode: nested, or naive.
+    pub nested: bool,
+}
+
+/// The mesh a [`SimplifyInput`] describes, with its ε.
+#[derive(Clone, Debug)]
+pub struct SimplifyCase {
+    /// The surface with its holes and positions.
+    pub mesh: contractible::TriMesh,
+    /// ε as a fraction of the bounding-box diagonal ([`eps_fraction`]).
+    pub fraction: f64,
+    /// The absolute ε of the lower-level runs ([`absolute_eps`]).
+    pub eps: f64,
 }
 
 /// The mesh and ε a [`SimplifyInput`] describes.
-pub fn simplify_mesh(input: &SimplifyInput) -> (contractible::TriMesh, f64) {
+pub fn simplify_mesh(input: &SimplifyInput) -> SimplifyCase {
     let base = SurfaceInput {
         ops: input.base.ops.iter().take(SIMPLIFY_OPS).copied().collect(),
         ..input.base.clone()
     };
     let tri = build_surface(&base);
     let n = tri.vertex_capacity();
-    let mut rng = Rng::new(input.positions);
-    let unit = |rng: &mut Rng| (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
-    let mut pos: Vec<[f64; 3]> = (0..n)
-        .map(|_| [unit(&mut rng), unit(&mut rng), unit(&mut rng)])
-        .collect();
-    smooth_positions(&tri, &mut pos, usize::from(input.smoothing % 4));
     let mut faces = tri.face_list();
+    let pos = layout(
+        input.geometry,
+        input.scale,
+        input.positions,
+        &neighbours(n, &faces),
+    );
     let mut holed = vec![false; n];
     for &h in input.holes.iter().take(SIMPLIFY_HOLES) {
         if faces.len() <= 1 {
@@ -1450,20 +1811,20 @@ pub fn simplify_mesh(input: &SimplifyInput) -> (contractible::TriMesh, f64) {
         }
         faces.swap_remove(i);
     }
-    let diag = contractible::simplify::bbox_diagonal(pos.iter().copied());
-    let r = f64::from(input.eps) / 65535.0;
-    let eps = (r * r * 0.6 * diag).max(1e-9);
-    (contractible::TriMesh::with_positions(pos, faces), eps)
+    let fraction = eps_fraction(input.eps);
+    let eps = absolute_eps(fraction, diagonal(&pos));
+    SimplifyCase {
+        mesh: contractible::TriMesh::with_positions(pos, faces),
+        fraction,
+        eps,
+    }
 }
 
-/// `simplify`: the mesh of `input` simplified in both modes with its options, each run
-/// checked by [`check_simplify`] (independent topology and accounting), nested ≥ naive
-/// contractions.
-pub fn check_simplify_input(input: &SimplifyInput) {
+/// The options of the `simplify` target's runs (lower level, ε given).
+fn simplify_options(input: &SimplifyInput, eps: f64) -> contractible::simplify::Options {
     use contractible::simplify::{Options as SOptions, Position, Side};
-    let (mesh, eps) = simplify_mesh(input);
-    let opts = SOptions {
-        side: [Side::Count, Side::Path, Side::Euclidean][usize::from(input.side % 3)],
+    SOptions {
+        side: Side::ALL[usize::from(input.side % 3)],
         position: if input.quadric {
             Position::Quadric
         } else {
@@ -1471,9 +1832,238 @@ pub fn check_simplify_input(input: &SimplifyInput) {
         },
         guard: input.guard,
         ..SOptions::new(eps)
+    }
+}
+
+/// `simplify`: the mesh of `input` through the task call
+/// [`contractible::simplify()`](fn@contractible::simplify) with its options (ε relative or
+/// absolute, checked by [`check_simplify_task`]), then through the lower-level
+/// [`contractible::simplify::simplify`] in both modes with the task's ε (each run
+/// checked by [`check_simplify_with`]: independent topology and accounting, finite
+/// positions; nested ≥ naive contractions); the task's result must be the lower-level
+/// result of its mode (the task call is a layer over it).
+pub fn check_simplify_input(input: &SimplifyInput) {
+    use contractible::simplify::Mode;
+    let case = simplify_mesh(input);
+    let before = surface_topology(&case.mesh.faces).expect("a random surface with holes");
+    let mode = if input.nested {
+        Mode::Nested
+    } else {
+        Mode::Naive
     };
-    let before = surface_topology(&mesh.faces).expect("a random surface with holes");
-    check_simplify_modes(&mesh, &before, &opts, "simplify input");
+    let lower = simplify_options(input, case.eps);
+    let task_opts = contractible::SimplifyOptions {
+        eps: if input.relative {
+            contractible::Eps::Relative(case.fraction)
+        } else {
+            contractible::Eps::Absolute(case.eps)
+        },
+        mode,
+        side: lower.side,
+        position: lower.position,
+        allow_foldover: !input.guard,
+        ..contractible::SimplifyOptions::default()
+    };
+    let task = check_simplify_task(&case.mesh, &task_opts, "simplify task").ok();
+    let eps = task.as_ref().map_or(case.eps, |t| t.eps);
+    let (naive, nested) = check_simplify_modes(
+        &case.mesh,
+        &before,
+        &simplify_options(input, eps),
+        "simplify input",
+    );
+    if let Some(t) = task {
+        let low = if mode == Mode::Naive { naive } else { nested };
+        assert_same_simplification(&t, &low, "simplify task");
+    }
+}
+
+/// The task call's result is the lower-level one: the same mesh (positions compared bit
+/// for bit) and the same statistics but the timing.
+pub fn assert_same_simplification(
+    task: &contractible::SimplifyResult,
+    lower: &contractible::simplify::Simplified,
+    label: &str,
+) {
+    assert_eq!(
+        task.mesh.faces, lower.mesh.faces,
+        "{label}: faces differ from the lower-level call"
+    );
+    assert_eq!(
+        task.mesh.vertex_count, lower.mesh.vertex_count,
+        "{label}: vertex count"
+    );
+    let bits = |m: &contractible::TriMesh| {
+        m.positions
+            .as_ref()
+            .map(|p| p.iter().map(|q| q.map(f64::to_bits)).collect::<Vec<_>>())
+    };
+    assert_eq!(
+        bits(&task.mesh),
+        bits(&lower.mesh),
+        "{label}: positions differ from the lower-level call"
+    );
+    let mut a = task.stats.clone();
+    let mut b = lower.stats.clone();
+    a.seconds = 0.0;
+    b.seconds = 0.0;
+    assert_eq!(a, b, "{label}: statistics differ from the lower-level call");
+}
+
+/// Why the task call [`contractible::simplify()`](fn@contractible::simplify) may refuse
+/// `mesh` with `eps`, decided here from the documented rules without the library: the
+/// kinds ([`contractible::Error::kind`], `"mesh"` for any [`contractible::Error::Mesh`])
+/// of every refusal that applies. Empty exactly when the call must succeed.
+///
+/// - `bad_option`: ε not a finite number > 0; for a relative ε, also the fraction times
+///   the diagonal of the used vertices' bounding box not a finite number > 0 (only once
+///   positions and faces are accepted: it is computed from them);
+/// - `missing_positions`, `position_count`, `non_finite_coordinate`;
+/// - `no_coordinates`: every used vertex (two at least) at one point (`==`);
+/// - `mesh`: the faces are not a union of surfaces ([`oracle_surface`]).
+pub fn simplify_refusals(
+    mesh: &contractible::TriMesh,
+    eps: &contractible::Eps,
+) -> Vec<&'static str> {
+    use contractible::Eps;
+    let usable = |e: f64| e.is_finite() && e > 0.0;
+    let mut out = Vec::new();
+    let (Eps::Absolute(e) | Eps::Relative(e)) = *eps;
+    if !usable(e) {
+        out.push("bad_option");
+    }
+    let positions = match &mesh.positions {
+        None => {
+            out.push("missing_positions");
+            None
+        }
+        Some(p) if p.len() != mesh.vertex_count => {
+            out.push("position_count");
+            None
+        }
+        Some(p) if p.iter().flatten().any(|x| !x.is_finite()) => {
+            out.push("non_finite_coordinate");
+            None
+        }
+        Some(p) => Some(p),
+    };
+    let surface = oracle_surface(mesh).is_ok();
+    if !surface {
+        out.push("mesh");
+    }
+    if let Some(p) = positions {
+        let used = used_vertices(mesh);
+        let mut at = used.iter().map(|&v| p[v as usize]);
+        if let Some(first) = at.next() {
+            if used.len() > 1 && at.all(|q| q == first) {
+                out.push("no_coordinates");
+            }
+        }
+        if let (Eps::Relative(r), true, true) = (*eps, surface, out.is_empty()) {
+            if !usable(r * diagonal(used.iter().map(|&v| &p[v as usize]))) {
+                out.push("bad_option");
+            }
+        }
+    }
+    out
+}
+
+/// The in-range vertices the faces of `mesh` use, increasing.
+pub fn used_vertices(mesh: &contractible::TriMesh) -> Vec<u32> {
+    let mut used: Vec<u32> = mesh
+        .faces
+        .iter()
+        .flatten()
+        .copied()
+        .filter(|&v| (v as usize) < mesh.vertex_count)
+        .collect();
+    used.sort_unstable();
+    used.dedup();
+    used
+}
+
+/// The task call [`contractible::simplify()`](fn@contractible::simplify) on `mesh` with
+/// `opts`, checked: it refuses exactly when [`simplify_refusals`] lists a reason, with
+/// one of those (an input error, the first non-finite coordinate located exactly);
+/// otherwise its result passes [`check_simplified`] against the input's topology
+/// ([`surface_topology`]), was verified, has the ε asked for (absolute; or the fraction
+/// times its diagonal, which matches the one computed here), drops exactly the unused
+/// vertices. Returns the result (for the caller to compare with the lower-level call,
+/// [`assert_same_simplification`]), or the refusal.
+pub fn check_simplify_task(
+    mesh: &contractible::TriMesh,
+    opts: &contractible::SimplifyOptions,
+    label: &str,
+) -> Result<contractible::SimplifyResult, contractible::Error> {
+    use contractible::{Eps, Error};
+    let refusals = simplify_refusals(mesh, &opts.eps);
+    let r = match contractible::simplify(mesh, opts) {
+        Err(e) => {
+            let kind = if matches!(e, Error::Mesh(_)) {
+                "mesh"
+            } else {
+                e.kind()
+            };
+            assert!(
+                refusals.contains(&kind),
+                "{label}: refused ({e}), expected one of {refusals:?}"
+            );
+            assert!(e.is_input(), "{label}: {e} is not the input's fault");
+            if let Error::NonFiniteCoordinate {
+                vertex,
+                axis,
+                value,
+            } = e
+            {
+                let p = mesh.positions.as_deref().expect("positions");
+                let v = p
+                    .iter()
+                    .position(|q| q.iter().any(|x| !x.is_finite()))
+                    .expect("a non-finite coordinate");
+                let k = p[v].iter().position(|x| !x.is_finite()).expect("an axis");
+                assert_eq!((vertex, axis), (v, ['x', 'y', 'z'][k]), "{label}: located");
+                assert_eq!(value.to_bits(), p[v][k].to_bits(), "{label}: value");
+            }
+            return Err(e);
+        }
+        Ok(r) => r,
+    };
+    assert!(
+        refusals.is_empty(),
+        "{label}: accepted, expected a refusal: {refusals:?}"
+    );
+    let before = oracle_surface(mesh).expect("accepted only for surfaces");
+    assert!(r.verified, "{label}: not verified");
+    let used = used_vertices(mesh);
+    assert_eq!(
+        r.dropped_vertices,
+        mesh.vertex_count - used.len(),
+        "{label}: dropped vertices"
+    );
+    let p = mesh.positions.as_deref().expect("positions");
+    let diag = diagonal(used.iter().map(|&v| &p[v as usize]));
+    assert!(
+        r.bbox_diagonal == diag || (r.bbox_diagonal - diag).abs() <= 1e-12 * diag,
+        "{label}: bbox_diagonal {} but the used vertices' is {diag}",
+        r.bbox_diagonal
+    );
+    match opts.eps {
+        Eps::Absolute(e) => assert_eq!((r.eps, r.eps_rel), (e, None), "{label}: ε"),
+        Eps::Relative(f) => assert_eq!(
+            (r.eps, r.eps_rel),
+            (f * r.bbox_diagonal, Some(f)),
+            "{label}: relative ε"
+        ),
+    }
+    let lower_opts = contractible::simplify::Options {
+        eps: r.eps,
+        mode: opts.mode,
+        side: opts.side,
+        position: opts.position,
+        guard: !opts.allow_foldover,
+    };
+    check_simplified(mesh, &before, &lower_opts, &r.mesh, &r.stats, label);
+    Ok(r)
 }
 
 /// `rounds` rounds of Laplacian smoothing of `pos` (indexed by vertex id) over `tri`:
@@ -1494,5 +2084,1802 @@ pub fn smooth_positions(tri: &Triangulation, pos: &mut [[f64; 3]], rounds: usize
             let o = old[v.index()];
             pos[v.index()] = [0, 1, 2].map(|i| 0.5 * o[i] + 0.5 * sum[i] / k);
         }
+    }
+}
+
+// ---- The per-task library calls on arbitrary face lists (`tasks`).
+
+/// At most this many parts make a [`TaskInput`]'s mesh.
+pub const TASK_PARTS: usize = 4;
+/// At most this many operations grow a [`Part::Surface`].
+pub const TASK_OPS: usize = 48;
+/// At most this many triples of a [`Part::Raw`] are used.
+pub const TASK_RAW_FACES: usize = 64;
+/// At most this many edits of a [`TaskInput`] are applied.
+pub const TASK_EDITS: usize = 24;
+
+/// One part of a [`TaskInput`]'s mesh, on vertices of its own (parts are disjoint until
+/// edits join them).
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// A closed surface: the start surface with at most [`TASK_OPS`] operations (as
+    /// `surface_ops` builds it).
+    Surface {
+        /// The start surface.
+        surface: Surface,
+        /// Splits, flips and relabellings.
+        ops: Vec<Op>,
+    },
+    /// A standard mesh (`which % 6`): tetrahedron, octahedron, icosahedron, 7-vertex
+    /// torus, 6-vertex projective plane, Klein bottle.
+    Standard {
+        /// Which one.
+        which: u8,
+    },
+    /// Arbitrary triples on `1 + vertices % 32` vertices (at most [`TASK_RAW_FACES`]):
+    /// degenerate, repeated, non-manifold, open.
+    Raw {
+        /// The part's vertex count (`1 + vertices % 32`).
+        vertices: u8,
+        /// The triples (each index modulo the vertex count).
+        faces: Vec<[u8; 3]>,
+    },
+}
+
+/// An edit of the assembled face list (faces modulo the face count, vertices modulo the
+/// parts' vertex count unless said otherwise).
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Edit {
+    /// Remove a face (boundary, or an isolated edge's loss).
+    Remove {
+        /// The face.
+        face: u16,
+    },
+    /// Add a face on arbitrary vertices (modulo the vertex count plus 2: sometimes out of
+    /// range, sometimes degenerate).
+    Add {
+        /// Its corners.
+        corners: [u16; 3],
+    },
+    /// Add a copy of a face, rotated by `turn % 3` and reversed when `turn >= 128`.
+    Duplicate {
+        /// The face copied.
+        face: u16,
+        /// Rotation and reversal.
+        turn: u8,
+    },
+    /// Reverse a face's orientation.
+    Reverse {
+        /// The face.
+        face: u16,
+    },
+    /// Identify two vertices (every corner at `gone` moved to `keep`): pinched vertices,
+    /// degenerate faces, non-manifold edges, joined components.
+    Merge {
+        /// The vertex kept.
+        keep: u16,
+        /// The vertex replaced.
+        gone: u16,
+    },
+    /// Set one corner to an arbitrary index (out of range when large).
+    Corner {
+        /// The face.
+        face: u16,
+        /// The corner (`% 3`).
+        slot: u8,
+        /// The index.
+        vertex: u32,
+    },
+    /// Exchange two faces (which problem is met first depends on the order).
+    Swap {
+        /// One face.
+        a: u16,
+        /// The other.
+        b: u16,
+    },
+}
+
+/// The vertex count declared by a [`TaskInput`]'s mesh.
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum VertexCount {
+    /// The parts' vertices.
+    Parts,
+    /// The parts' vertices and `unused` more that no face uses.
+    Extra {
+        /// How many more.
+        unused: u8,
+    },
+    /// One more than the core can index ([`contractible::core::MAX_VERTICES`]` + 1`):
+    /// refused by every call before anything is allocated for it.
+    Huge,
+}
+
+/// The positions of a [`TaskInput`]'s mesh.
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Positions {
+    /// None (what `simplify` refuses).
+    None,
+    /// Laid out by [`layout`], one per declared vertex (one per part vertex for
+    /// [`VertexCount::Huge`], which then has the wrong count).
+    Laid {
+        /// The layout.
+        geometry: Geometry,
+        /// Its scale ([`layout`]).
+        scale: i8,
+        /// Its random stream.
+        seed: u64,
+    },
+    /// As `Laid` (unit scale), with one coordinate replaced by NaN, +∞ or −∞
+    /// (`value % 3`).
+    NonFinite {
+        /// The layout.
+        geometry: Geometry,
+        /// Its random stream.
+        seed: u64,
+        /// The vertex (modulo the count).
+        vertex: u16,
+        /// The axis (`% 3`).
+        axis: u8,
+        /// NaN, +∞ or −∞ (`% 3`).
+        value: u8,
+    },
+    /// Random positions, `delta` more or fewer than the declared vertices (at least one
+    /// off).
+    Miscounted {
+        /// Their random stream.
+        seed: u64,
+        /// How many more (or fewer).
+        delta: i8,
+    },
+}
+
+/// The input of `tasks`: a face list assembled from parts and edited, a declared vertex
+/// count, positions, and the options of the four task calls.
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct TaskInput {
+    /// The parts, on disjoint vertices (at most [`TASK_PARTS`]).
+    pub parts: Vec<Part>,
+    /// Edits of the assembled faces (at most [`TASK_EDITS`]).
+    pub edits: Vec<Edit>,
+    /// The declared vertex count.
+    pub vertices: VertexCount,
+    /// The positions.
+    pub positions: Positions,
+    /// The reduction algorithm (`% 3` of [`contractible::irreducible::Algorithm::ALL`]).
+    pub reduce: u8,
+    /// The tri-quad algorithm (`% 8` of [`contractible::quad::Algorithm::ALL`]).
+    pub quad: u8,
+    /// The seed of both.
+    pub seed: u64,
+    /// `simplify`'s ε ([`eps_fraction`]; relative, or absolute times the harness's
+    /// diagonal of the positions).
+    pub eps: u16,
+    /// A relative ε.
+    pub relative: bool,
+    /// `simplify`'s mode: nested, or naive.
+    pub nested: bool,
+    /// `simplify`'s side heuristic (`% 3`).
+    pub side: u8,
+    /// Quadric positions.
+    pub quadric: bool,
+    /// `allow_foldover`.
+    pub foldover: bool,
+}
+
+/// The mesh a [`TaskInput`] describes: the parts side by side (vertex ids offset), the
+/// edits applied in order, the declared vertex count and the positions.
+pub fn task_mesh(input: &TaskInput) -> contractible::TriMesh {
+    use contractible::gen;
+    let standard: [fn() -> contractible::TriMesh; 6] = [
+        gen::tetrahedron,
+        gen::octahedron,
+        gen::icosahedron,
+        gen::torus7,
+        gen::projective_plane6,
+        gen::klein_bottle,
+    ];
+    let mut faces: Vec<[u32; 3]> = Vec::new();
+    let mut total = 0usize;
+    for part in input.parts.iter().take(TASK_PARTS) {
+        let (n, part_faces) = match part {
+            Part::Surface { surface, ops } => {
+                let t = build_surface(&SurfaceInput {
+                    surface: *surface,
+                    ops: ops.iter().take(TASK_OPS).copied().collect(),
+                    seed: 0,
+                });
+                (t.vertex_capacity(), t.face_list())
+            }
+            Part::Standard { which } => {
+                let m = standard[usize::from(which % 6)]();
+                (m.vertex_count, m.faces)
+            }
+            Part::Raw { vertices, faces } => {
+                let n = 1 + u32::from(vertices % 32);
+                let fs = faces
+                    .iter()
+                    .take(TASK_RAW_FACES)
+                    .map(|f| f.map(|v| u32::from(v) % n))
+                    .collect();
+                (n as usize, fs)
+            }
+        };
+        let offset = total as u32;
+        faces.extend(part_faces.iter().map(|f| f.map(|v| v + offset)));
+        total += n;
+    }
+    let nv = total.max(1) as u32;
+    for &edit in input.edits.iter().take(TASK_EDITS) {
+        let nf = faces.len();
+        let face = |i: u16| usize::from(i) % nf.max(1);
+        match edit {
+            _ if nf == 0 && !matches!(edit, Edit::Add { .. }) => {}
+            Edit::Remove { face: i } => {
+                faces.remove(face(i));
+            }
+            Edit::Add { corners } => faces.push(corners.map(|c| u32::from(c) % (nv + 2))),
+            Edit::Duplicate { face: i, turn } => {
+                let f = faces[face(i)];
+                let r = usize::from(turn % 3);
+                let mut g = [f[r], f[(r + 1) % 3], f[(r + 2) % 3]];
+                if turn >= 128 {
+                    g.swap(1, 2);
+                }
+                faces.push(g);
+            }
+            Edit::Reverse { face: i } => faces[face(i)].swap(1, 2),
+            Edit::Merge { keep, gone } => {
+                let (k, g) = (u32::from(keep) % nv, u32::from(gone) % nv);
+                for v in faces.iter_mut().flatten() {
+                    if *v == g {
+                        *v = k;
+                    }
+                }
+            }
+            Edit::Corner {
+                face: i,
+                slot,
+                vertex,
+            } => faces[face(i)][usize::from(slot % 3)] = vertex,
+            Edit::Swap { a, b } => faces.swap(face(a), face(b)),
+        }
+    }
+    let vertex_count = match input.vertices {
+        VertexCount::Parts => total,
+        VertexCount::Extra { unused } => total + usize::from(unused),
+        VertexCount::Huge => contractible::core::MAX_VERTICES + 1,
+    };
+    // Positions for the declared vertices (the parts' only when that count is huge).
+    let n = if vertex_count > contractible::core::MAX_VERTICES {
+        total
+    } else {
+        vertex_count
+    };
+    let positions = match input.positions {
+        Positions::None => None,
+        Positions::Laid {
+            geometry,
+            scale,
+            seed,
+        } => Some(layout(geometry, scale, seed, &neighbours(n, &faces))),
+        Positions::NonFinite {
+            geometry,
+            seed,
+            vertex,
+            axis,
+            value,
+        } => {
+            let mut p = layout(geometry, 0, seed, &neighbours(n, &faces));
+            if n > 0 {
+                p[usize::from(vertex) % n][usize::from(axis % 3)] =
+                    [f64::NAN, f64::INFINITY, f64::NEG_INFINITY][usize::from(value % 3)];
+            }
+            Some(p)
+        }
+        Positions::Miscounted { seed, delta } => {
+            let delta = if delta == 0 { 1 } else { i64::from(delta) };
+            let m = (n as i64 + delta).max(0) as usize;
+            let geometry = Geometry::Random { smoothing: 0 };
+            Some(layout(geometry, 0, seed, &vec![Vec::new(); m]))
+        }
+    };
+    contractible::TriMesh {
+        vertex_count,
+        positions,
+        faces,
+    }
+}
+
+/// Whether `faces` over `0..vertex_count` form a union of surfaces (closed or with
+/// boundary), decided without the library: faces present, counts within the core's
+/// limits, every index in range, then [`surface_topology`]. `Err` says why not.
+pub fn oracle_surface(mesh: &contractible::TriMesh) -> Result<Topology, String> {
+    use contractible::core::{MAX_FACES, MAX_VERTICES};
+    if mesh.faces.is_empty() {
+        return Err("no faces".into());
+    }
+    if mesh.vertex_count > MAX_VERTICES || mesh.faces.len() > MAX_FACES {
+        return Err("more vertices or faces than 32-bit ids hold".into());
+    }
+    if let Some((i, f)) = mesh
+        .faces
+        .iter()
+        .enumerate()
+        .find(|(_, f)| f.iter().any(|&v| v as usize >= mesh.vertex_count))
+    {
+        return Err(format!("face {i} {f:?}: an index out of range"));
+    }
+    surface_topology(&mesh.faces)
+}
+
+/// The connected components of the surface `faces` (faces sharing a vertex: on a
+/// surface, where every vertex has one fan, the same as sharing an edge), each as its
+/// face indices, in the order of their smallest face.
+pub fn component_faces(faces: &[[u32; 3]]) -> Vec<Vec<usize>> {
+    let n = faces
+        .iter()
+        .flatten()
+        .map(|&v| v as usize + 1)
+        .max()
+        .unwrap_or(0);
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    for f in faces {
+        uf_union(&mut parent, f[0], f[1]);
+        uf_union(&mut parent, f[0], f[2]);
+    }
+    let mut slot = vec![usize::MAX; n];
+    let mut out: Vec<Vec<usize>> = Vec::new();
+    for (i, f) in faces.iter().enumerate() {
+        let r = uf_find(&mut parent, f[0]) as usize;
+        if slot[r] == usize::MAX {
+            slot[r] = out.len();
+            out.push(Vec::new());
+        }
+        out[slot[r]].push(i);
+    }
+    out
+}
+
+/// The topology of one component (the faces `which` of `faces`), by [`surface_topology`].
+fn component_topology(faces: &[[u32; 3]], which: &[usize]) -> Topology {
+    let sub: Vec<[u32; 3]> = which.iter().map(|&i| faces[i]).collect();
+    let t = surface_topology(&sub).unwrap_or_else(|e| panic!("a component is not a surface: {e}"));
+    assert_eq!(t.components.len(), 1, "a component splits");
+    t
+}
+
+/// The first edge of the closed surface `faces` that passes the link condition, by its
+/// definition on the face lists alone: `[a, b]` with opposite vertices `c`, `d` is
+/// contractible iff the common neighbours of `a` and `b` are exactly `c` and `d` and the
+/// faces `acd` and `bcd` are not both present (the links of `a` and `b` then share no
+/// edge). `None`: the surface is irreducible.
+pub fn contractible_edge(faces: &[[u32; 3]]) -> Option<(u32, u32)> {
+    use std::collections::{BTreeMap, BTreeSet};
+    let mut near: BTreeMap<u32, BTreeSet<u32>> = BTreeMap::new();
+    let mut opposite: BTreeMap<(u32, u32), Vec<u32>> = BTreeMap::new();
+    let key = |f: [u32; 3]| {
+        let mut s = f;
+        s.sort_unstable();
+        s
+    };
+    let present: BTreeSet<[u32; 3]> = faces.iter().map(|&f| key(f)).collect();
+    for f in faces {
+        for k in 0..3 {
+            let (a, b, c) = (f[k], f[(k + 1) % 3], f[(k + 2) % 3]);
+            near.entry(a).or_default().insert(b);
+            near.entry(b).or_default().insert(a);
+            opposite.entry((a.min(b), a.max(b))).or_default().push(c);
+        }
+    }
+    for (&(a, b), opp) in &opposite {
+        let mut opp = opp.clone();
+        opp.sort_unstable();
+        let common: Vec<u32> = near[&a].intersection(&near[&b]).copied().collect();
+        if common == opp
+            && opp.len() == 2
+            && !(present.contains(&key([a, opp[0], opp[1]]))
+                && present.contains(&key([b, opp[0], opp[1]])))
+        {
+            return Some((a, b));
+        }
+    }
+    None
+}
+
+/// Checks that `[a, b]` (`a < b`) is an edge of face `face` of `mesh` and of no other
+/// face: a boundary edge, as a refusal for not being closed names it.
+fn assert_boundary_edge(mesh: &contractible::TriMesh, a: u32, b: u32, face: usize, label: &str) {
+    assert!(a < b, "{label}: boundary edge [{a}, {b}] not ordered");
+    let holds = |f: &[u32; 3]| f.contains(&a) && f.contains(&b);
+    assert!(
+        mesh.faces.get(face).is_some_and(holds),
+        "{label}: face {face} does not hold [{a}, {b}]"
+    );
+    let n = mesh.faces.iter().filter(|f| holds(f)).count();
+    assert_eq!(
+        n, 1,
+        "{label}: [{a}, {b}] is in {n} faces, not a boundary edge"
+    );
+}
+
+/// `describe` against the oracle: problems exactly when [`oracle_surface`] refuses (and
+/// then the diagnosis lists a problem that is not the boundary); for a union of surfaces,
+/// each component (in the order of its smallest face) has the oracle's vertex, edge and
+/// face counts, χ, orientability and boundary loops, loop lengths that add up to its
+/// boundary edges, a degree histogram over its vertices with `Σ d · n_d = 2E`; the
+/// dropped vertices are the unused ones; and `diagnose` finds nothing but the boundary,
+/// with the same totals.
+pub fn check_description(
+    mesh: &contractible::TriMesh,
+    d: &contractible::Description,
+    oracle: &Result<Topology, String>,
+    label: &str,
+) {
+    use contractible::Description;
+    match d {
+        Description::Problems { diagnosis, first } => {
+            if let Ok(t) = oracle {
+                panic!("{label}: describe finds problems ({first}) in a union of surfaces: {t:?}");
+            }
+            assert!(
+                !diagnosis.is_surface(),
+                "{label}: problems ({first}) but the diagnosis lists none: {diagnosis:?}"
+            );
+            assert_eq!(
+                diagnosis.faces,
+                mesh.faces.len(),
+                "{label}: diagnosis faces"
+            );
+        }
+        Description::Surfaces {
+            components,
+            dropped_vertices,
+        } => {
+            let topo = oracle
+                .as_ref()
+                .unwrap_or_else(|e| panic!("{label}: describe accepts what is not a surface: {e}"));
+            let parts = component_faces(&mesh.faces);
+            assert_eq!(components.len(), parts.len(), "{label}: component count");
+            for (i, (c, which)) in components.iter().zip(&parts).enumerate() {
+                let t = component_topology(&mesh.faces, which);
+                let ct = t.components[0];
+                assert_eq!(
+                    (c.vertices, c.edges, c.faces),
+                    (t.vertices, t.edges, t.faces),
+                    "{label}: counts of component {i}"
+                );
+                assert_eq!(
+                    (
+                        c.surface.euler_characteristic(),
+                        c.surface.is_orientable(),
+                        c.surface.boundary_loops()
+                    ),
+                    (ct.euler, ct.orientable, ct.boundary_loops),
+                    "{label}: type of component {i}"
+                );
+                assert_eq!(c.boundary_loop_lengths.len(), ct.boundary_loops);
+                assert!(c.boundary_loop_lengths.iter().all(|&l| l >= 3));
+                assert_eq!(
+                    c.boundary_loop_lengths.iter().sum::<usize>(),
+                    t.boundary_edges,
+                    "{label}: loop lengths of component {i}"
+                );
+                let h = &c.degree_histogram;
+                assert_eq!(h.iter().sum::<usize>(), c.vertices, "{label}: histogram");
+                let degrees: usize = h.iter().enumerate().map(|(d, n)| d * n).sum();
+                assert_eq!(degrees, 2 * c.edges, "{label}: Σ d · n_d");
+                assert_eq!(
+                    h.last().map(|&n| n > 0),
+                    Some(true),
+                    "{label}: histogram end"
+                );
+                assert_eq!(c.degree_max, h.len() - 1, "{label}: degree_max");
+                assert_eq!(
+                    Some(c.degree_min),
+                    h.iter().position(|&n| n > 0),
+                    "{label}: degree_min"
+                );
+            }
+            assert_eq!(
+                *dropped_vertices,
+                mesh.vertex_count - topo.vertices,
+                "{label}: dropped vertices"
+            );
+            let g = contractible::diagnose::diagnose(mesh, 1);
+            assert!(
+                g.is_surface(),
+                "{label}: a surface diagnosed with problems: {g:?}"
+            );
+            let euler: i64 = topo.components.iter().map(|c| c.euler).sum();
+            let orientable = topo.components.iter().all(|c| c.orientable);
+            assert_eq!(
+                (
+                    g.vertices,
+                    g.edges,
+                    g.faces,
+                    g.components,
+                    g.euler_characteristic
+                ),
+                (
+                    topo.vertices,
+                    topo.edges,
+                    topo.faces,
+                    topo.components.len(),
+                    euler
+                ),
+                "{label}: diagnosis counts"
+            );
+            assert_eq!(
+                g.orientable,
+                Some(orientable),
+                "{label}: diagnosis orientability"
+            );
+            assert_eq!(
+                (g.boundary_edges, g.boundary_loops, g.unused_vertices),
+                (topo.boundary_edges, topo.loops(), *dropped_vertices),
+                "{label}: diagnosis boundary"
+            );
+        }
+    }
+}
+
+/// A refusal (or not) of `reduce` or `quadrangulate` (`task`: the name their
+/// [`contractible::Error::NotClosed`] carries), against `describe`'s verdict `d`:
+///
+/// - problems: refused for the input, with `describe`'s first problem
+///   ([`contractible::Description::Problems::first`]); except that the closed-surface
+///   validation meets a boundary edge before the checks that come after the edge
+///   classification (pinched boundary vertex, vertex links and degrees, the coned
+///   counts), so for those it may report a boundary edge instead (as `NotClosed` without
+///   loops, the mesh not being a surface);
+/// - surfaces, one with boundary: `NotClosed` naming a boundary edge and the mesh's
+///   boundary loops;
+/// - closed surfaces: accepted (`too_large` aside, checked by the caller).
+fn check_closed_refusal(
+    task: &str,
+    mesh: &contractible::TriMesh,
+    d: &contractible::Description,
+    e: Option<&contractible::Error>,
+    label: &str,
+) {
+    use contractible::{BuildError, Description, Error};
+    match d {
+        Description::Problems { first, .. } => {
+            let e = e.unwrap_or_else(|| panic!("{label}: accepted, describe: {first}"));
+            assert!(e.is_input(), "{label}: {e} is not the input's fault");
+            match e {
+                Error::Mesh(b) => assert_eq!(b, first, "{label}: not describe's first problem"),
+                Error::NotClosed {
+                    task: t,
+                    a,
+                    b,
+                    face,
+                    boundary_loops,
+                } => {
+                    assert_eq!(*t, task, "{label}: task name");
+                    assert_eq!(*boundary_loops, None, "{label}: loops of a non-surface");
+                    assert!(
+                        matches!(
+                            first,
+                            BuildError::PinchedBoundaryVertex { .. }
+                                | BuildError::VertexLinkNotCycle { .. }
+                                | BuildError::VertexDegreeTooLow { .. }
+                                | BuildError::TooLarge { .. }
+                        ),
+                        "{label}: a boundary edge reported before {first}"
+                    );
+                    assert_boundary_edge(mesh, *a, *b, *face, label);
+                }
+                e => panic!("{label}: refused with {e}, describe: {first}"),
+            }
+        }
+        Description::Surfaces { components, .. } => {
+            let loops: usize = components.iter().map(|c| c.surface.boundary_loops()).sum();
+            if loops == 0 {
+                if let Some(e) = e {
+                    assert!(
+                        matches!(e, Error::TooLarge { .. }),
+                        "{label}: closed surfaces refused: {e}"
+                    );
+                }
+                return;
+            }
+            match e {
+                Some(Error::NotClosed {
+                    task: t,
+                    a,
+                    b,
+                    face,
+                    boundary_loops,
+                }) => {
+                    assert_eq!(*t, task, "{label}: task name");
+                    assert_eq!(*boundary_loops, Some(loops), "{label}: loops");
+                    assert_boundary_edge(mesh, *a, *b, *face, label);
+                }
+                other => panic!("{label}: a surface with boundary gave {other:?}"),
+            }
+        }
+    }
+}
+
+/// Checks a `reduce` result on `mesh` (closed surfaces of topology `topo`) from the face
+/// lists alone: the output vertices are input vertices (`vertex_map` increasing), with
+/// the input's positions bit for bit; the output is a union of closed surfaces using
+/// every vertex, one per input component (its vertices all in that component) with the
+/// same χ and orientability; each is irreducible ([`contractible_edge`]) within the
+/// bounds (Euler genus `h > 0`: `V ≤ 13h − 4`; `h = 0`: the tetrahedron); every
+/// component's history expands back to its input faces; counts, the dropped vertices and
+/// the verdict agree.
+pub fn check_reduce_result(
+    mesh: &contractible::TriMesh,
+    topo: &Topology,
+    r: &contractible::ReduceResult,
+    label: &str,
+) {
+    let out = &r.mesh;
+    assert_eq!(
+        r.vertex_map.len(),
+        out.vertex_count,
+        "{label}: vertex_map length"
+    );
+    assert!(
+        r.vertex_map.windows(2).all(|w| w[0] < w[1])
+            && r.vertex_map
+                .last()
+                .is_none_or(|&v| (v as usize) < mesh.vertex_count),
+        "{label}: vertex_map not increasing input vertices"
+    );
+    let bits = |p: &[f64; 3]| p.map(f64::to_bits);
+    match (&mesh.positions, &out.positions) {
+        (None, None) => {}
+        (Some(p), Some(q)) => {
+            assert_eq!(q.len(), out.vertex_count, "{label}: positions");
+            for (i, &v) in r.vertex_map.iter().enumerate() {
+                assert_eq!(
+                    bits(&q[i]),
+                    bits(&p[v as usize]),
+                    "{label}: position of {v}"
+                );
+            }
+        }
+        _ => panic!("{label}: positions appeared or vanished"),
+    }
+    assert!(
+        out.faces
+            .iter()
+            .flatten()
+            .all(|&v| (v as usize) < out.vertex_count),
+        "{label}: an output index out of range"
+    );
+    let after = surface_topology(&out.faces)
+        .unwrap_or_else(|e| panic!("{label}: the output is not a surface: {e}"));
+    assert_eq!(
+        after.vertices, out.vertex_count,
+        "{label}: an unused output vertex"
+    );
+    assert_eq!(
+        after.components, topo.components,
+        "{label}: the surfaces changed"
+    );
+    // Pair every output component with the input component holding its vertices.
+    let inputs = component_faces(&mesh.faces);
+    let mut home = vec![usize::MAX; mesh.vertex_count];
+    for (k, which) in inputs.iter().enumerate() {
+        for &i in which {
+            for &v in &mesh.faces[i] {
+                home[v as usize] = k;
+            }
+        }
+    }
+    let mut seen = vec![false; inputs.len()];
+    for which in component_faces(&out.faces) {
+        let sub: Vec<[u32; 3]> = which.iter().map(|&i| out.faces[i]).collect();
+        let k = home[r.vertex_map[sub[0][0] as usize] as usize];
+        assert!(
+            sub.iter()
+                .flatten()
+                .all(|&v| home[r.vertex_map[v as usize] as usize] == k),
+            "{label}: an output component spans input components"
+        );
+        assert!(
+            !std::mem::replace(&mut seen[k], true),
+            "{label}: two outputs of one component"
+        );
+        let t_out = component_topology(&out.faces, &which);
+        let t_in = component_topology(&mesh.faces, &inputs[k]);
+        let (a, b) = (t_out.components[0], t_in.components[0]);
+        assert_eq!(
+            (a.euler, a.orientable),
+            (b.euler, b.orientable),
+            "{label}: component {k}"
+        );
+        if let Some((x, y)) = contractible_edge(&sub) {
+            panic!("{label}: output edge [{x}, {y}] of component {k} is contractible");
+        }
+        let h = 2 - a.euler;
+        if h > 0 {
+            assert!(
+                t_out.vertices as i64 <= 13 * h - 4,
+                "{label}: {} vertices > 13h − 4 = {}",
+                t_out.vertices,
+                13 * h - 4
+            );
+        } else {
+            assert_eq!(
+                (t_out.vertices, t_out.faces),
+                (4, 4),
+                "{label}: not the tetrahedron"
+            );
+        }
+    }
+    assert!(
+        seen.iter().all(|&s| s),
+        "{label}: an input component has no output"
+    );
+    let rot = |f: [u32; 3]| {
+        let k = (0..3).min_by_key(|&k| f[k]).unwrap_or(0);
+        [f[k], f[(k + 1) % 3], f[(k + 2) % 3]]
+    };
+    for (k, c) in r.components.iter().enumerate() {
+        let back = c.reduction.expand().face_list();
+        assert_eq!(
+            back.len(),
+            c.face_origin.len(),
+            "{label}: expanded faces of {k}"
+        );
+        for (f, &o) in back.iter().zip(&c.face_origin) {
+            let got = f.map(|v| c.vertex_origin[v as usize]);
+            assert_eq!(
+                rot(got),
+                rot(mesh.faces[o as usize]),
+                "{label}: component {k} expands to another face {o}"
+            );
+        }
+    }
+    let t = &r.totals;
+    assert_eq!(r.components.len(), inputs.len(), "{label}: components");
+    assert_eq!(t.irreducible, Some(true), "{label}: verdict");
+    assert_eq!(
+        (t.vertices_out, t.faces_out, t.faces_in),
+        (out.vertex_count, out.faces.len(), mesh.faces.len()),
+        "{label}: totals"
+    );
+    assert_eq!(
+        r.dropped_vertices,
+        mesh.vertex_count - topo.vertices,
+        "{label}: dropped vertices"
+    );
+}
+
+/// Checks a `quadrangulate` result on `mesh` (closed surfaces of topology `topo`) by
+/// `algorithm` from the face lists alone: the quad mesh keeps the vertex count and the
+/// positions; `triangles` (the paired `K`) is the input for every algorithm but LRS, and
+/// for LRS a surface of the same topology on the same vertices; `pairs` is a perfect
+/// pairing of its rows, each pair sharing exactly two vertices; quad `i` is pair `i`'s
+/// union with the shared edge as its diagonal; the quads of each component form a closed
+/// 2-manifold ([`check_closed_quad_surface`]) with the input's χ and orientability
+/// (multisets compared), each directed quad edge used once when `K` is consistently
+/// oriented; the totals agree.
+pub fn check_quad_result(
+    mesh: &contractible::TriMesh,
+    topo: &Topology,
+    q: &contractible::QuadResult,
+    algorithm: contractible::quad::Algorithm,
+    label: &str,
+) {
+    use contractible::quad::Algorithm as QAlg;
+    let k = &q.triangles;
+    assert_eq!(
+        q.mesh.vertex_count, mesh.vertex_count,
+        "{label}: vertex count"
+    );
+    let bits = |m: &Option<Vec<[f64; 3]>>| {
+        m.as_ref()
+            .map(|p| p.iter().map(|x| x.map(f64::to_bits)).collect::<Vec<_>>())
+    };
+    assert_eq!(
+        bits(&q.mesh.positions),
+        bits(&mesh.positions),
+        "{label}: positions"
+    );
+    assert_eq!(k.len(), mesh.faces.len(), "{label}: rows of K");
+    if algorithm == QAlg::Lrs {
+        let t = surface_topology(k).unwrap_or_else(|e| panic!("{label}: K not a surface: {e}"));
+        assert_eq!(t.components, topo.components, "{label}: K's surfaces");
+        assert_eq!(t.vertices, topo.vertices, "{label}: K's vertices");
+        assert_eq!(used_vertices(mesh), {
+            let m = contractible::TriMesh::combinatorial(mesh.vertex_count, k.clone());
+            used_vertices(&m)
+        });
+    } else {
+        assert_eq!(*k, mesh.faces, "{label}: K is not the input");
+        assert_eq!(q.totals.flips, 0, "{label}: flips");
+    }
+    let mut seen = vec![0u8; k.len()];
+    for &[f, g] in &q.pairs {
+        for h in [f, g] {
+            let slot = seen
+                .get_mut(h as usize)
+                .unwrap_or_else(|| panic!("{label}: pair row {h} out of range"));
+            *slot += 1;
+        }
+    }
+    assert!(
+        seen.iter().all(|&n| n == 1),
+        "{label}: not a perfect pairing"
+    );
+    assert_eq!(
+        q.mesh.faces.len(),
+        q.pairs.len(),
+        "{label}: one quad per pair"
+    );
+    for (quad, &[f, g]) in q.mesh.faces.iter().zip(&q.pairs) {
+        let (a, b) = (k[f as usize], k[g as usize]);
+        let mut shared: Vec<u32> = a.iter().filter(|v| b.contains(v)).copied().collect();
+        shared.sort_unstable();
+        assert_eq!(shared.len(), 2, "{label}: rows {f}, {g} share {shared:?}");
+        let mut union: Vec<u32> = a.iter().chain(&b).copied().collect();
+        union.sort_unstable();
+        union.dedup();
+        let mut qs = quad.to_vec();
+        qs.sort_unstable();
+        assert_eq!(qs, union, "{label}: quad {quad:?} of rows {f}, {g}");
+        let mut diagonal = [quad[1], quad[3]];
+        diagonal.sort_unstable();
+        assert_eq!(diagonal.to_vec(), shared, "{label}: diagonal of {quad:?}");
+    }
+    // The quads per component (quads sharing a vertex).
+    let n = mesh.vertex_count;
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    for quad in &q.mesh.faces {
+        for j in 1..4 {
+            uf_union(&mut parent, quad[0], quad[j]);
+        }
+    }
+    let mut groups: std::collections::BTreeMap<u32, Vec<[u32; 4]>> = Default::default();
+    for quad in &q.mesh.faces {
+        groups
+            .entry(uf_find(&mut parent, quad[0]))
+            .or_default()
+            .push(*quad);
+    }
+    let mut types: Vec<(i64, bool)> = groups
+        .values()
+        .map(|quads| check_closed_quad_surface(quads, label))
+        .collect();
+    types.sort_unstable();
+    let mut want: Vec<(i64, bool)> = topo
+        .components
+        .iter()
+        .map(|c| (c.euler, c.orientable))
+        .collect();
+    want.sort_unstable();
+    assert_eq!(types, want, "{label}: the quads' surfaces");
+    if is_consistently_oriented(k) {
+        let mut directed = std::collections::BTreeSet::new();
+        for quad in &q.mesh.faces {
+            for i in 0..4 {
+                assert!(
+                    directed.insert((quad[i], quad[(i + 1) % 4])),
+                    "{label}: consistently oriented K, quad edge used twice in one direction"
+                );
+            }
+        }
+    }
+    let t = &q.totals;
+    assert_eq!(
+        (t.faces, t.quads, t.algorithm),
+        (k.len(), q.pairs.len(), algorithm),
+        "{label}: totals"
+    );
+    assert!(t.verified, "{label}: not verified");
+    assert_eq!(
+        q.components.len(),
+        topo.components.len(),
+        "{label}: components"
+    );
+    assert_eq!(
+        q.dropped_vertices,
+        mesh.vertex_count - topo.vertices,
+        "{label}: dropped vertices"
+    );
+}
+
+/// `tasks`: the four task calls on the mesh of `input`, none of which may panic; each
+/// refusal is a typed input error, and the calls agree with each other and with the
+/// oracles:
+///
+/// - above the core's size limits every call refuses by the count (`describe`, `reduce`
+///   and `quadrangulate` with `too_large`, or `empty` for no faces; `simplify` for its
+///   positions);
+/// - `describe` ([`check_description`]): problems exactly when [`oracle_surface`]
+///   refuses;
+/// - `reduce` and `quadrangulate`: positions present but not one per vertex refused
+///   first (`position_count`); otherwise ([`check_closed_refusal`]) refused exactly when
+///   `describe` finds problems or boundary, with `describe`'s first problem or a
+///   boundary edge; `quadrangulate` by `ds-naive` also exactly when a component has more
+///   than [`contractible::quad::DS_NAIVE_MAX_FACES`] faces; outputs by
+///   [`check_reduce_result`] and [`check_quad_result`];
+/// - `simplify` ([`check_simplify_task`]): refused exactly for the documented reasons
+///   (with `describe`'s first problem when only the faces are at fault); an output is
+///   the lower-level call's with the same options.
+pub fn check_tasks(input: &TaskInput) {
+    use contractible::quad::Algorithm as QAlg;
+    let mesh = task_mesh(input);
+    let reduce_opts = contractible::ReduceOptions {
+        algorithm: contractible::irreducible::Algorithm::ALL[usize::from(input.reduce % 3)],
+        seed: input.seed,
+        count_retests: true,
+        ..contractible::ReduceOptions::default()
+    };
+    let qalg = QAlg::ALL[usize::from(input.quad % 8)];
+    let quad_opts = contractible::QuadOptions {
+        algorithm: qalg,
+        seed: input.seed,
+        ..contractible::QuadOptions::default()
+    };
+    let fraction = eps_fraction(input.eps);
+    let simplify_opts = contractible::SimplifyOptions {
+        eps: if input.relative {
+            contractible::Eps::Relative(fraction)
+        } else {
+            let used = used_vertices(&mesh);
+            let d = match &mesh.positions {
+                Some(p) if p.len() == mesh.vertex_count => {
+                    diagonal(used.iter().map(|&v| &p[v as usize]))
+                }
+                _ => 1.0,
+            };
+            contractible::Eps::Absolute(if d.is_finite() {
+                absolute_eps(fraction, d)
+            } else {
+                // Non-finite coordinates: any ε, the call refuses the positions.
+                fraction
+            })
+        },
+        mode: if input.nested {
+            contractible::simplify::Mode::Nested
+        } else {
+            contractible::simplify::Mode::Naive
+        },
+        side: contractible::simplify::Side::ALL[usize::from(input.side % 3)],
+        position: if input.quadric {
+            contractible::simplify::Position::Quadric
+        } else {
+            contractible::simplify::Position::Midpoint
+        },
+        allow_foldover: input.foldover,
+        ..contractible::SimplifyOptions::default()
+    };
+    check_task_calls(&mesh, &reduce_opts, &quad_opts, &simplify_opts);
+}
+
+/// [`check_tasks`] on a given mesh with given options.
+pub fn check_task_calls(
+    mesh: &contractible::TriMesh,
+    reduce_opts: &contractible::ReduceOptions,
+    quad_opts: &contractible::QuadOptions,
+    simplify_opts: &contractible::SimplifyOptions,
+) {
+    use contractible::{BuildError, Error};
+    let qalg = quad_opts.algorithm;
+    // Positions that are not one per vertex: `reduce` and `quadrangulate` (which carry
+    // them over) refuse them before anything else.
+    let miscounted = mesh
+        .positions
+        .as_ref()
+        .map(|p| p.len())
+        .filter(|&n| n != mesh.vertex_count);
+    let position_count = |task: &str, e: Option<&Error>| match e {
+        Some(&Error::PositionCount {
+            vertices,
+            positions,
+        }) => assert_eq!(
+            (vertices, Some(positions)),
+            (mesh.vertex_count, miscounted),
+            "tasks: {task}: position count"
+        ),
+        e => panic!(
+            "tasks: {task} with {miscounted:?} positions for {} vertices: {e:?}",
+            mesh.vertex_count
+        ),
+    };
+    let described = contractible::describe(mesh);
+    if mesh.vertex_count > contractible::core::MAX_VERTICES {
+        assert!(
+            matches!(described, Err(Error::Mesh(BuildError::TooLarge { .. }))),
+            "tasks: describe of a huge vertex count: {described:?}"
+        );
+        for (task, e) in [
+            ("reduce", contractible::reduce(mesh, reduce_opts).err()),
+            ("quad", contractible::quadrangulate(mesh, quad_opts).err()),
+        ] {
+            if miscounted.is_some() {
+                position_count(task, e.as_ref());
+            } else {
+                assert!(
+                    matches!(
+                        e,
+                        Some(Error::Mesh(BuildError::TooLarge { .. } | BuildError::Empty))
+                    ),
+                    "tasks: {task} of a huge vertex count: {e:?}"
+                );
+            }
+        }
+        assert!(
+            check_simplify_task(mesh, simplify_opts, "tasks: simplify").is_err(),
+            "tasks: simplify of a huge vertex count"
+        );
+        return;
+    }
+    let d = described.unwrap_or_else(|e| panic!("tasks: describe refused: {e}"));
+    let oracle = oracle_surface(mesh);
+    check_description(mesh, &d, &oracle, "tasks: describe");
+
+    let reduced = contractible::reduce(mesh, reduce_opts);
+    if miscounted.is_some() {
+        position_count("reduce", reduced.as_ref().err());
+    } else {
+        check_closed_refusal("reduce", mesh, &d, reduced.as_ref().err(), "tasks: reduce");
+    }
+    if let Ok(r) = &reduced {
+        let topo = oracle.as_ref().expect("accepted only for surfaces");
+        check_reduce_result(mesh, topo, r, "tasks: reduce");
+    }
+
+    let quads = contractible::quadrangulate(mesh, quad_opts);
+    if miscounted.is_some() {
+        position_count("quad", quads.as_ref().err());
+    } else {
+        check_quad_outcome(mesh, &d, &oracle, &quads, qalg);
+    }
+    check_tasks_simplify(mesh, &d, simplify_opts);
+}
+
+/// The `quadrangulate` part of [`check_tasks`] (positions one per vertex, or none):
+/// [`check_closed_refusal`]; `ds-naive` refuses exactly the meshes with a component above
+/// [`contractible::quad::DS_NAIVE_MAX_FACES`], naming the first; outputs by
+/// [`check_quad_result`].
+fn check_quad_outcome(
+    mesh: &contractible::TriMesh,
+    d: &contractible::Description,
+    oracle: &Result<Topology, String>,
+    quads: &Result<contractible::QuadResult, contractible::Error>,
+    qalg: contractible::quad::Algorithm,
+) {
+    use contractible::quad::{Algorithm as QAlg, DS_NAIVE_MAX_FACES};
+    use contractible::Error;
+    check_closed_refusal("quad", mesh, d, quads.as_ref().err(), "tasks: quad");
+    let big = d
+        .components()
+        .iter()
+        .position(|c| qalg == QAlg::DsNaive && c.faces > DS_NAIVE_MAX_FACES);
+    match quads {
+        Err(Error::TooLarge {
+            algorithm,
+            component,
+            faces,
+            limit,
+        }) => {
+            assert!(d.is_closed(), "tasks: too large before closed");
+            assert_eq!(*algorithm, qalg, "tasks: too large, algorithm");
+            assert_eq!(Some(*component), big, "tasks: too large, component");
+            assert_eq!(
+                (*faces, *limit),
+                (d.components()[*component].faces, DS_NAIVE_MAX_FACES),
+                "tasks: too large, counts"
+            );
+        }
+        Err(_) => assert!(!d.is_closed(), "tasks: closed surfaces refused"),
+        Ok(q) => {
+            assert_eq!(
+                big, None,
+                "tasks: ds-naive ran on a component above its limit"
+            );
+            let topo = oracle.as_ref().expect("accepted only for surfaces");
+            check_quad_result(mesh, topo, q, qalg, "tasks: quad");
+        }
+    }
+}
+
+/// The `simplify` part of [`check_tasks`]: [`check_simplify_task`]; an output is the
+/// lower-level call's with the same options; a refusal for the faces alone is
+/// `describe`'s first problem.
+fn check_tasks_simplify(
+    mesh: &contractible::TriMesh,
+    d: &contractible::Description,
+    simplify_opts: &contractible::SimplifyOptions,
+) {
+    use contractible::{Description, Error};
+    let simplified = check_simplify_task(mesh, simplify_opts, "tasks: simplify");
+    match (&simplified, d) {
+        (Ok(s), _) => {
+            let lower = contractible::simplify::simplify(
+                mesh,
+                &contractible::simplify::Options {
+                    eps: s.eps,
+                    mode: simplify_opts.mode,
+                    side: simplify_opts.side,
+                    position: simplify_opts.position,
+                    guard: !simplify_opts.allow_foldover,
+                },
+            )
+            .unwrap_or_else(|e| panic!("tasks: the lower-level call refused: {e}"));
+            assert_same_simplification(s, &lower, "tasks: simplify");
+        }
+        (Err(e), Description::Problems { first, .. }) => {
+            if simplify_refusals(mesh, &simplify_opts.eps) == ["mesh"] {
+                assert!(
+                    matches!(e, Error::Mesh(b) if b == first),
+                    "tasks: simplify refused with {e}, describe's first problem is {first}"
+                );
+            }
+        }
+        (Err(_), Description::Surfaces { .. }) => {}
+    }
+}
+
+// ---- The polygon reader, polygon triangulation and welding (`poly_weld`).
+
+/// What `poly_weld` declares to the readers: nothing (the content decides), then each
+/// format.
+pub const DECLARED: [Option<Format>; 5] = [
+    None,
+    Some(Format::Off),
+    Some(Format::Obj),
+    Some(Format::Ply),
+    Some(Format::Stl),
+];
+
+/// Meshes with at most this many vertices get their welds compared with the quadratic
+/// oracle (all pairs).
+pub const WELD_NAIVE_MAX: usize = 300;
+
+/// The gzip magic: such input is decompressed by the reader, so the checks that need the
+/// parsed bytes themselves (line numbers, the STL payload) skip it.
+const GZIP: [u8; 2] = [0x1f, 0x8b];
+
+/// `poly_weld`: raw bytes through the polygon reader and everything built on it, each
+/// call declaring no format and then each format ([`DECLARED`]). Nothing may panic;
+/// every refusal is a typed [`contractible::io::ReadError`] located within the input
+/// ([`check_read_error`]). The entry points agree: [`read_tri_mesh_bytes`] is
+/// [`contractible::io::read_poly_mesh_bytes`] then `into_tri_mesh`, and
+/// [`contractible::io::decode`] parses as the sniffed format, else the declared one.
+/// Each parsed mesh passes [`check_poly_mesh`] (the reader's guarantees),
+/// [`check_triangulated`] (the documented cut of every polygon) and [`check_welds`]
+/// (welding against a quadratic oracle); a triangle mesh is written in every format and
+/// read back ([`check_round_trip`]); STL gets [`check_stl`] (binary payloads decoded
+/// independently, welding by bitwise-equal position).
+pub fn check_poly_bytes(bytes: &[u8]) {
+    use contractible::io::{decode, read_poly_mesh_bytes};
+    let plain = (!bytes.starts_with(&GZIP)).then_some(bytes);
+    let hash = bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x100_0000_01b3)
+    });
+    for declared in DECLARED {
+        let poly = read_poly_mesh_bytes(bytes, declared);
+        let tri = read_tri_mesh_bytes(bytes, declared);
+        match (&poly, &tri) {
+            (Ok(p), Ok(t)) => assert_eq!(
+                p.clone().into_tri_mesh().ok().as_ref(),
+                Some(t),
+                "{declared:?}: the triangle reader differs"
+            ),
+            (Ok(p), Err(e)) => {
+                assert!(
+                    !p.is_triangle_mesh(),
+                    "{declared:?}: triangles refused: {e}"
+                );
+                check_read_error(e, plain);
+            }
+            (Err(a), Err(b)) => assert_eq!(a.to_string(), b.to_string(), "{declared:?}"),
+            (Err(e), Ok(_)) => panic!("{declared:?}: polygons refused, triangles read: {e}"),
+        }
+        // The format parsed: declared, else sniffed (known here for plain bytes only).
+        let sniffed = plain.and_then(Format::sniff);
+        let format = declared.or(sniffed);
+        match decode(bytes, declared) {
+            Ok(d) => {
+                assert_eq!(d.declared, declared, "decode: declared");
+                if let Some(data) = plain {
+                    assert_eq!(
+                        Some(d.format),
+                        Format::sniff(data).or(declared),
+                        "decode: the sniffed format, else the declared one"
+                    );
+                }
+                assert_eq!(d.disagreement(), declared.filter(|&f| f != d.format));
+                let again = read_poly_mesh_bytes(bytes, Some(d.format));
+                assert_eq!(
+                    again.as_ref().ok(),
+                    Some(&d.mesh),
+                    "decode differs from the reader"
+                );
+            }
+            Err(e) => {
+                check_read_error(&e, plain);
+                if plain.is_some() {
+                    match sniffed.or(declared) {
+                        None => assert!(
+                            matches!(e.kind, contractible::io::ReadErrorKind::UnknownFormat),
+                            "decode: {e}"
+                        ),
+                        Some(f) => {
+                            let again = read_poly_mesh_bytes(bytes, Some(f));
+                            assert_eq!(
+                                again.as_ref().err().map(|a| a.to_string()),
+                                Some(e.to_string()),
+                                "decode refused, the reader as {f}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        match &poly {
+            Err(e) => check_read_error(e, plain),
+            Ok(p) => {
+                check_poly_mesh(p, format, plain);
+                check_triangulated(p);
+                check_welds(p, hash);
+                if let Ok(t) = &tri {
+                    check_round_trip(t);
+                }
+            }
+        }
+        if declared == Some(Format::Stl) {
+            check_stl(bytes, plain, poly.as_ref().ok());
+        }
+    }
+}
+
+/// A refusal of the readers on in-memory bytes: a typed kind (never an I/O error: there
+/// is no I/O), no path, and, for bytes read as they are (`plain`), a location within
+/// them (a byte offset at most their length, a line at most their line count).
+pub fn check_read_error(e: &contractible::io::ReadError, plain: Option<&[u8]>) {
+    use contractible::io::{Location, ReadErrorKind};
+    assert!(
+        !matches!(e.kind, ReadErrorKind::Io(_)),
+        "an I/O error without I/O: {e}"
+    );
+    assert!(e.path.is_none(), "a path without a file: {e}");
+    let Some(data) = plain else {
+        return;
+    };
+    match e.location {
+        Location::ByteOffset(o) => {
+            assert!(o <= data.len() as u64, "{e}: beyond {} bytes", data.len())
+        }
+        Location::Line(n) => {
+            let lines = data.iter().filter(|&&b| b == b'\n').count() + 1;
+            assert!((1..=lines).contains(&n), "{e}: not one of {lines} lines");
+        }
+        Location::Face(_) | Location::Unknown => {}
+    }
+}
+
+/// The guarantees of a mesh from the readers (`format`: the one parsed, when known;
+/// `plain`: the bytes, when not compressed): positions one per vertex and finite; every
+/// corner in range, at least 3 per face; `face` past the end is empty; the file lines of
+/// the faces (text formats; none for STL) at least 1, non-decreasing, within the input;
+/// OBJ numbers from 1, the others from 0, and only OBJ skips statements; the corner range
+/// and `is_triangle_mesh` agree with the faces; `into_tri_mesh` gives the triangles, or
+/// refuses naming the first polygon; the diagnosis counts every face, and is the same
+/// for the triangle mesh.
+pub fn check_poly_mesh(
+    p: &contractible::io::PolyMesh,
+    format: Option<Format>,
+    plain: Option<&[u8]>,
+) {
+    use contractible::io::{ReadErrorKind, SkippedStatements};
+    if let Some(pos) = &p.positions {
+        assert_eq!(pos.len(), p.vertex_count, "positions vs vertex_count");
+        assert!(
+            pos.iter().flatten().all(|x| x.is_finite()),
+            "a non-finite coordinate read"
+        );
+    }
+    let n = p.face_count();
+    let mut range: Option<(usize, usize)> = None;
+    let mut first_polygon = None;
+    for (i, f) in p.faces().enumerate() {
+        assert!(f.len() >= 3, "face {i} has {} corners", f.len());
+        assert!(
+            f.iter().all(|&v| (v as usize) < p.vertex_count),
+            "face {i} {f:?}: index out of range ({} vertices)",
+            p.vertex_count
+        );
+        let k = f.len();
+        range = Some(range.map_or((k, k), |(a, b)| (a.min(k), b.max(k))));
+        if k > 3 && first_polygon.is_none() {
+            first_polygon = Some((i, k));
+        }
+    }
+    assert!(p.face(n).is_empty(), "a face past the end");
+    assert_eq!(p.corner_range(), range.unwrap_or((0, 0)), "corner range");
+    assert_eq!(
+        p.is_triangle_mesh(),
+        first_polygon.is_none(),
+        "is_triangle_mesh"
+    );
+    if let Some(lines) = p.lines() {
+        assert_eq!(lines.len(), n, "one line per face");
+        assert!(lines.iter().all(|&l| l >= 1), "line 0");
+        assert!(
+            lines.windows(2).all(|w| w[0] <= w[1]),
+            "face lines decrease"
+        );
+        for (i, &l) in lines.iter().enumerate() {
+            assert_eq!(p.face_line(i), Some(l as usize));
+        }
+        if let (Some(data), Some(&last)) = (plain, lines.last()) {
+            let count = data.iter().filter(|&&b| b == b'\n').count() + 1;
+            assert!(last as usize <= count, "face line {last} of {count} lines");
+        }
+    }
+    let one_based = format == Some(Format::Obj);
+    if format.is_some() {
+        assert_eq!(p.one_based(), one_based, "{format:?}: numbering");
+    }
+    assert_eq!(p.number(0), usize::from(p.one_based()), "number");
+    match format {
+        Some(Format::Stl) => assert!(p.lines().is_none(), "STL face lines"),
+        Some(Format::Off | Format::Obj) => {
+            assert!(p.lines().is_some(), "{format:?}: no face lines")
+        }
+        _ => {}
+    }
+    let skipped = p.skipped_statements();
+    assert!(
+        skipped.kinds.len() <= SkippedStatements::MAX_KINDS,
+        "skipped kinds kept"
+    );
+    assert_eq!(
+        skipped.total(),
+        skipped.kinds.iter().map(|k| k.1).sum::<usize>() + skipped.others
+    );
+    if format.is_some() && !one_based {
+        assert_eq!(skipped.total(), 0, "{format:?}: skipped statements");
+    }
+    match (p.clone().into_tri_mesh(), first_polygon) {
+        (Ok(t), None) => {
+            assert_eq!(t.vertex_count, p.vertex_count);
+            assert_eq!(t.positions, p.positions);
+            assert!(
+                t.faces.iter().map(|f| &f[..]).eq(p.faces()),
+                "into_tri_mesh faces"
+            );
+            let (a, b) = (
+                contractible::diagnose::diagnose(&t, 2),
+                contractible::diagnose::diagnose(p, 2),
+            );
+            assert_eq!(a, b, "diagnosis of the triangles and of the polygons");
+        }
+        (Err(e), Some((i, k))) => {
+            assert!(
+                matches!(
+                    e.kind,
+                    ReadErrorKind::NonTriangleFace { face, corners }
+                        if face == p.number(i) && corners == k as u64
+                ),
+                "into_tri_mesh: {e}, the first polygon is face {i} of {k} corners"
+            );
+        }
+        (r, first) => panic!("into_tri_mesh {r:?} with first polygon {first:?}"),
+    }
+    let g = contractible::diagnose::diagnose(p, 2);
+    assert_eq!(g.faces, n, "diagnosis faces");
+    assert_eq!(
+        g.vertices + g.unused_vertices,
+        p.vertex_count,
+        "diagnosis vertices"
+    );
+}
+
+/// [`contractible::io::PolyMesh::triangulated`] against its documented rule, re-derived
+/// here with an ordered set of the vertex pairs that are edges (every polygon side, and
+/// the diagonals cut so far): each polygon of `k` corners becomes `k − 2` triangles in
+/// fan order from one start corner, in polygon order, with its origin; the start is the
+/// preferred one (a quad's shorter diagonal, corners 1–3 only when strictly shorter than
+/// 0–2 and positions exist; corner 0 otherwise) when its diagonals are all new, else the
+/// first other start among the first 8 (the reader's `MAX_FAN_STARTS`) whose diagonals
+/// are all new, else the preferred one; positions and vertex count kept; the
+/// number of polygons (more than 3 corners) counted.
+pub fn check_triangulated(p: &contractible::io::PolyMesh) {
+    use std::collections::BTreeSet;
+    const MAX_FAN_STARTS: usize = 8;
+    let t = p.triangulated();
+    assert_eq!(
+        t.mesh.vertex_count, p.vertex_count,
+        "triangulated vertex count"
+    );
+    assert_eq!(t.mesh.positions, p.positions, "triangulated positions");
+    let pair = |a: u32, b: u32| (a.min(b), a.max(b));
+    let mut edges: BTreeSet<(u32, u32)> = p
+        .faces()
+        .flat_map(|f| (0..f.len()).map(move |j| pair(f[j], f[(j + 1) % f.len()])))
+        .collect();
+    let shorter_13 = |f: &[u32]| {
+        let Some(pos) = &p.positions else {
+            return false;
+        };
+        let d2 = |x: u32, y: u32| {
+            let (a, b) = (pos[x as usize], pos[y as usize]);
+            (0..3).map(|i| (a[i] - b[i]) * (a[i] - b[i])).sum::<f64>()
+        };
+        d2(f[1], f[3]) < d2(f[0], f[2])
+    };
+    let mut at = 0usize;
+    let mut polygons = 0usize;
+    for (i, f) in p.faces().enumerate() {
+        let k = f.len();
+        polygons += usize::from(k > 3);
+        let preferred = usize::from(k == 4 && shorter_13(f));
+        let new = |s: usize| {
+            (2..k - 1).all(|j| {
+                let (a, b) = (f[s], f[(s + j) % k]);
+                a != b && !edges.contains(&pair(a, b))
+            })
+        };
+        let start = if k <= 3 || new(preferred) {
+            preferred
+        } else {
+            (0..k.min(MAX_FAN_STARTS))
+                .find(|&s| s != preferred && new(s))
+                .unwrap_or(preferred)
+        };
+        let fan: Vec<[u32; 3]> = (1..k - 1)
+            .map(|j| [f[start], f[(start + j) % k], f[(start + j + 1) % k]])
+            .collect();
+        assert_eq!(
+            t.mesh.faces.get(at..at + k - 2),
+            Some(&fan[..]),
+            "polygon {i} {f:?}: not the fan from corner {start}"
+        );
+        assert!(
+            t.origin[at..at + k - 2].iter().all(|&o| o as usize == i),
+            "polygon {i}: origins"
+        );
+        for j in 2..k - 1 {
+            edges.insert(pair(f[start], f[(start + j) % k]));
+        }
+        at += k - 2;
+    }
+    assert_eq!(t.mesh.faces.len(), at, "triangle count");
+    assert_eq!(t.origin.len(), at, "origin count");
+    assert_eq!(t.polygons, polygons, "polygon count");
+}
+
+/// Welding the positions of `p` with several tolerances (0: bitwise-equal positions;
+/// fractions of the bounding-box diagonal; absolute ones; one drawn from `hash`):
+/// [`contractible::mesh::weld_map`] refuses a negative or non-finite tolerance, and
+/// otherwise groups the vertices into classes represented by their lowest index, kept in
+/// increasing order; with at most [`WELD_NAIVE_MAX`] vertices the classes are exactly
+/// the connected components of "bitwise equal" (tolerance 0) or "squared distance ≤
+/// tolerance²" (all pairs compared here); `PolyMesh::welded_within` and `welded_by` give
+/// the mesh renamed by the map (faces, their lines and count kept, positions of the kept
+/// vertices), the merged count, and for a triangle mesh what `TriMesh::welded_within`
+/// gives; `coincident_vertex_count` is what tolerance 0 merges. Without positions,
+/// welding changes nothing.
+pub fn check_welds(p: &contractible::io::PolyMesh, hash: u64) {
+    use contractible::mesh::weld_map;
+    let Some(pos) = &p.positions else {
+        assert_eq!(
+            p.welded_within(0.0),
+            Some((p.clone(), 0)),
+            "welding without positions"
+        );
+        assert_eq!(
+            p.welded_within(1.0),
+            Some((p.clone(), 0)),
+            "welding without positions"
+        );
+        return;
+    };
+    for bad in [-1.0, f64::NAN, f64::INFINITY] {
+        assert!(
+            weld_map(pos, bad).is_none(),
+            "weld_map accepted tolerance {bad}"
+        );
+        assert!(
+            p.welded_within(bad).is_none(),
+            "welded_within accepted tolerance {bad}"
+        );
+    }
+    let d = diagonal(pos);
+    let base = if d.is_finite() && d > 0.0 { d } else { 1.0 };
+    let mut tolerances = vec![0.0, 1.0, base * 1e-12, base * 1e-6, base * 0.25];
+    tolerances.push(base * 10f64.powi(-((hash % 16) as i32)));
+    for tol in tolerances {
+        check_weld(p, pos, tol);
+    }
+}
+
+fn check_weld(p: &contractible::io::PolyMesh, pos: &[[f64; 3]], tol: f64) {
+    use contractible::mesh::weld_map;
+    let label = format!("weld within {tol:e}");
+    let n = pos.len();
+    let w = weld_map(pos, tol).unwrap_or_else(|| panic!("{label}: refused"));
+    assert_eq!(w.new_id.len(), n, "{label}: new_id");
+    assert!(
+        w.kept.windows(2).all(|x| x[0] < x[1]),
+        "{label}: kept not increasing"
+    );
+    for (k, &v) in w.kept.iter().enumerate() {
+        assert_eq!(w.new_id[v as usize] as usize, k, "{label}: kept vertex {v}");
+    }
+    for (v, &id) in w.new_id.iter().enumerate() {
+        let r = *w
+            .kept
+            .get(id as usize)
+            .unwrap_or_else(|| panic!("{label}: new id {id} of {v}"));
+        assert!(r as usize <= v, "{label}: {v} represented by the later {r}");
+        if tol == 0.0 {
+            assert_eq!(
+                pos[v].map(f64::to_bits),
+                pos[r as usize].map(f64::to_bits),
+                "{label}: {v} welded to {r} at another position"
+            );
+        }
+    }
+    if n <= WELD_NAIVE_MAX {
+        let mut parent: Vec<u32> = (0..n as u32).collect();
+        let t2 = tol * tol;
+        for a in 0..n {
+            for b in a + 1..n {
+                let (x, y) = (pos[a], pos[b]);
+                let close = if tol == 0.0 {
+                    x.map(f64::to_bits) == y.map(f64::to_bits)
+                } else {
+                    (0..3).map(|i| (x[i] - y[i]) * (x[i] - y[i])).sum::<f64>() <= t2
+                };
+                if close {
+                    uf_union(&mut parent, a as u32, b as u32);
+                }
+            }
+        }
+        let mut low = vec![u32::MAX; n];
+        for v in 0..n {
+            let r = uf_find(&mut parent, v as u32) as usize;
+            low[r] = low[r].min(v as u32);
+        }
+        for (v, p) in pos.iter().enumerate() {
+            let r = uf_find(&mut parent, v as u32) as usize;
+            let got = w.kept[w.new_id[v] as usize];
+            assert_eq!(
+                got, low[r],
+                "{label}: vertex {v} {p:?} represented by {got}, the oracle's class by {}",
+                low[r]
+            );
+        }
+    }
+    let (m, merged) = p
+        .welded_within(tol)
+        .unwrap_or_else(|| panic!("{label}: welded_within refused"));
+    assert_eq!(merged, n - w.kept.len(), "{label}: merged");
+    assert_eq!(
+        p.welded_by(&w).as_ref(),
+        Some(&m),
+        "{label}: welded_by differs"
+    );
+    assert_eq!(m.vertex_count, w.kept.len(), "{label}: vertex count");
+    let kept: Vec<[u64; 3]> = w
+        .kept
+        .iter()
+        .map(|&v| pos[v as usize].map(f64::to_bits))
+        .collect();
+    let got: Option<Vec<[u64; 3]>> = m
+        .positions
+        .as_ref()
+        .map(|q| q.iter().map(|x| x.map(f64::to_bits)).collect());
+    assert_eq!(got, Some(kept), "{label}: positions of the kept vertices");
+    assert_eq!(m.face_count(), p.face_count(), "{label}: faces");
+    assert_eq!(m.lines(), p.lines(), "{label}: face lines");
+    for (f, g) in p.faces().zip(m.faces()) {
+        let renamed: Vec<u32> = f.iter().map(|&v| w.new_id[v as usize]).collect();
+        assert_eq!(g, &renamed[..], "{label}: face {f:?} renamed");
+    }
+    if tol == 0.0 {
+        let t = contractible::TriMesh::with_positions(pos.to_vec(), Vec::new());
+        assert_eq!(
+            t.coincident_vertex_count(),
+            merged,
+            "{label}: coincident vertices"
+        );
+    }
+    if p.is_triangle_mesh() {
+        let t = p.clone().into_tri_mesh().expect("triangles");
+        let expect = m.clone().into_tri_mesh().expect("triangles");
+        assert_eq!(
+            t.welded_within(tol),
+            Some((expect, merged)),
+            "{label}: TriMesh::welded_within differs"
+        );
+    }
+}
+
+/// The triangle soup of `t`: three new vertices per face, at its corners' positions (a
+/// mesh without positions gives none).
+fn soup(t: &contractible::TriMesh) -> contractible::TriMesh {
+    let p = t.positions.as_deref().unwrap_or_default();
+    let positions = t.faces.iter().flatten().map(|&v| p[v as usize]).collect();
+    let faces = (0..t.faces.len() as u32)
+        .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+        .collect();
+    contractible::TriMesh::with_positions(positions, faces)
+}
+
+/// `read_poly_mesh_bytes(bytes, Some(Format::Stl))` (`poly`; `plain`: the bytes when
+/// not compressed) against what the STL module documents:
+///
+/// - a binary payload (length `84 + 50 n` for the count `n` at bytes 80..84) is decoded
+///   here independently: a non-finite coordinate is refused at its byte offset,
+///   otherwise the mesh is that triangle soup welded by [`contractible::Mesh::welded`];
+/// - input that is neither binary of a consistent size nor starts with `solid` is
+///   refused;
+/// - any mesh read is a welded soup: triangles, positions, every vertex used, numbered
+///   in order of first appearance, no two at bitwise-equal positions, equal to its own
+///   soup welded; written as binary STL it reads back as its soup with positions rounded
+///   to `f32` and welded (itself when every coordinate is an `f32`), unless a
+///   coordinate is beyond the `f32` range, which the writer refuses before writing.
+pub fn check_stl(bytes: &[u8], plain: Option<&[u8]>, poly: Option<&contractible::io::PolyMesh>) {
+    use contractible::io::{write_mesh_to, Location, ReadErrorKind};
+    let read = contractible::io::read_tri_mesh_bytes(bytes, Some(Format::Stl));
+    assert_eq!(
+        read.is_ok(),
+        poly.is_some(),
+        "STL: the triangle and polygon readers disagree"
+    );
+    if let Some(data) = plain {
+        let count = data
+            .get(80..84)
+            .map(|c| u64::from(u32::from_le_bytes([c[0], c[1], c[2], c[3]])));
+        let binary = count.is_some_and(|n| (data.len() - 84) as u64 == 50 * n);
+        if binary {
+            let mut corners = Vec::new();
+            let mut bad = None;
+            for (i, t) in data[84..].chunks_exact(50).enumerate() {
+                for k in 0..9 {
+                    let at = 12 + 4 * k;
+                    let x = f32::from_le_bytes([t[at], t[at + 1], t[at + 2], t[at + 3]]);
+                    if !x.is_finite() && bad.is_none() {
+                        bad = Some((84 + 50 * i + at) as u64);
+                    }
+                    corners.push(f64::from(x));
+                }
+            }
+            match (&read, bad) {
+                (Err(e), Some(at)) => {
+                    assert!(
+                        matches!(e.kind, ReadErrorKind::BadNumber { .. }),
+                        "STL: {e}"
+                    );
+                    assert_eq!(e.location, Location::ByteOffset(at), "STL: {e}");
+                }
+                (Ok(m), None) => {
+                    let positions: Vec<[f64; 3]> = corners
+                        .chunks_exact(3)
+                        .map(|c| [c[0], c[1], c[2]])
+                        .collect();
+                    let faces = (0..positions.len() as u32 / 3)
+                        .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+                        .collect();
+                    let expect = contractible::TriMesh::with_positions(positions, faces)
+                        .welded()
+                        .expect("a soup welds")
+                        .0;
+                    assert_eq!(*m, expect, "STL: binary payload read otherwise");
+                }
+                (r, bad) => panic!("STL: binary payload, non-finite at {bad:?}, read {r:?}"),
+            }
+        } else {
+            let text = data.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(data);
+            let start = text
+                .iter()
+                .position(|&b| !matches!(b, b' ' | b'\t' | b'\r' | b'\n' | 0x0b | 0x0c))
+                .map_or(&text[text.len()..], |i| &text[i..]);
+            let solid = start.len() >= 5 && start[..5].eq_ignore_ascii_case(b"solid");
+            if !solid {
+                assert!(read.is_err(), "STL: neither binary nor ASCII, yet read");
+            }
+        }
+    }
+    let Ok(m) = read else {
+        return;
+    };
+    let p = m.positions.as_deref().expect("STL has positions");
+    assert_eq!(p.len(), m.vertex_count);
+    let mut next = 0u32;
+    for &v in m.faces.iter().flatten() {
+        assert!(v <= next, "STL: vertex {v} before {next}");
+        if v == next {
+            next += 1;
+        }
+    }
+    assert_eq!(next as usize, m.vertex_count, "STL: an unused vertex");
+    let distinct: std::collections::HashSet<[u64; 3]> =
+        p.iter().map(|q| q.map(f64::to_bits)).collect();
+    assert_eq!(distinct.len(), p.len(), "STL: two vertices at one position");
+    let s = soup(&m);
+    assert_eq!(
+        s.welded(),
+        Some((m.clone(), 3 * m.faces.len() - m.vertex_count)),
+        "STL: not its own soup welded"
+    );
+    let mut out = Vec::new();
+    let written = write_mesh_to(&mut out, &m, Format::Stl, true);
+    if p.iter().flatten().any(|&x| !(x as f32).is_finite()) {
+        assert!(
+            written.is_err() && out.is_empty(),
+            "STL: beyond f32 written"
+        );
+        return;
+    }
+    written.unwrap_or_else(|e| panic!("STL: writing refused: {e}"));
+    let back = contractible::io::read_tri_mesh_bytes(&out, Some(Format::Stl))
+        .unwrap_or_else(|e| panic!("STL: written file refused: {e}"));
+    let mut rounded = s;
+    if let Some(q) = &mut rounded.positions {
+        for x in q.iter_mut().flatten() {
+            *x = f64::from(*x as f32);
+        }
+    }
+    assert_eq!(
+        Some(back.clone()),
+        rounded.welded().map(|w| w.0),
+        "STL: written and read back"
+    );
+    if p.iter().flatten().all(|&x| f64::from(x as f32) == x) {
+        assert_eq!(back, m, "STL: f32 positions not read back exactly");
+    }
+}
+
+/// A triangle mesh with at least one face written in every format (OFF, OBJ, ASCII and
+/// binary little-endian PLY, big-endian PLY; STL in [`check_stl`]) and read back as that
+/// format: the same mesh, positions bit for bit (`0 0 0` for a mesh without positions).
+pub fn check_round_trip(t: &contractible::TriMesh) {
+    use contractible::io::{write_mesh_to, write_ply_to, PlyEncoding};
+    if t.faces.is_empty() {
+        return;
+    }
+    let mut expect = t.clone();
+    if expect.positions.is_none() {
+        expect.positions = Some(vec![[0.0; 3]; t.vertex_count]);
+    }
+    let bits = |m: &contractible::TriMesh| {
+        m.positions
+            .as_ref()
+            .map(|p| p.iter().map(|x| x.map(f64::to_bits)).collect::<Vec<_>>())
+    };
+    let cases = [
+        ("OFF", Format::Off, None),
+        ("OBJ", Format::Obj, None),
+        ("PLY ascii", Format::Ply, Some(PlyEncoding::Ascii)),
+        (
+            "PLY binary",
+            Format::Ply,
+            Some(PlyEncoding::BinaryLittleEndian),
+        ),
+        (
+            "PLY big-endian",
+            Format::Ply,
+            Some(PlyEncoding::BinaryBigEndian),
+        ),
+    ];
+    for (name, format, encoding) in cases {
+        let mut out = Vec::new();
+        match encoding {
+            None => write_mesh_to(&mut out, t, format, false),
+            Some(e) => write_ply_to(&mut out, t, e),
+        }
+        .unwrap_or_else(|e| panic!("{name}: writing a read mesh refused: {e}"));
+        let back = read_tri_mesh_bytes(&out, Some(format))
+            .unwrap_or_else(|e| panic!("{name}: the written file refused: {e}"));
+        assert_eq!(
+            back.vertex_count, expect.vertex_count,
+            "{name}: vertex count"
+        );
+        assert_eq!(back.faces, expect.faces, "{name}: faces");
+        assert_eq!(bits(&back), bits(&expect), "{name}: positions");
     }
 }

@@ -47,7 +47,22 @@ pub(crate) fn area_normal(a: Point, b: Point, c: Point) -> Point {
     cross(sub(b, a), sub(c, a))
 }
 
-/// The diagonal of the axis-aligned bounding box of `points` (0 for no point).
+/// A power of two `2^-e` with `largest · 2^-e` in `[1, 2)` roughly (`largest` a finite
+/// coordinate magnitude; 1 for 0), `e` kept within ±1000 so that the scale and its
+/// inverse are normal numbers.
+pub(crate) fn power_of_two_scale(largest: f64) -> f64 {
+    if largest == 0.0 || !largest.is_finite() {
+        return 1.0;
+    }
+    // `floor(log2)` may be off by one next to a power of two: any nearby power will do.
+    let e = (largest.log2().floor() as i32).clamp(-1000, 1000);
+    2f64.powi(-e)
+}
+
+/// The diagonal of the axis-aligned bounding box of `points` (0 for no point; infinite
+/// only when it exceeds the `f64` range). Computed on the box's sides scaled by a power
+/// of two, so that their squares neither overflow nor underflow: exactly the plain
+/// formula's value wherever that one stays in the normal range.
 pub fn bbox_diagonal(points: impl IntoIterator<Item = Point>) -> f64 {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
@@ -62,7 +77,10 @@ pub fn bbox_diagonal(points: impl IntoIterator<Item = Point>) -> f64 {
     if !any {
         return 0.0;
     }
-    dist2(lo, hi).sqrt()
+    let sides = sub(hi, lo);
+    let s = power_of_two_scale(sides.iter().fold(0.0f64, |m, x| m.max(x.abs())));
+    let scaled = sides.map(|x| x * s);
+    dot(scaled, scaled).sqrt() / s
 }
 
 /// Relative size below which a triangle counts as having zero area: `|n| ≤ ZERO_AREA ·
@@ -189,7 +207,16 @@ impl Quadric {
     /// minimiser when it exists, otherwise the best of `p`, `q` and their midpoint
     /// (ties: midpoint, then `p`).
     pub fn best_position(&self, p: Point, q: Point) -> Point {
-        if let Some(x) = self.minimiser() {
+        self.best_position_within(p, q, f64::MAX)
+    }
+
+    /// [`Self::best_position`], the minimiser used only when none of its coordinates
+    /// exceeds `bound` in magnitude.
+    pub fn best_position_within(&self, p: Point, q: Point, bound: f64) -> Point {
+        if let Some(x) = self
+            .minimiser()
+            .filter(|x| x.iter().all(|c| c.abs() <= bound))
+        {
             return x;
         }
         let m = midpoint(p, q);

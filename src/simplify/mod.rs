@@ -142,7 +142,8 @@ pub enum Position {
     Midpoint,
     /// The minimiser of the summed Garland–Heckbert quadrics of both endpoints (planes
     /// of the input faces, area-weighted, plus perpendicular planes along boundary
-    /// edges); the best of the endpoints and the midpoint when it is ill-conditioned.
+    /// edges); the best of the endpoints and the midpoint when it is ill-conditioned or
+    /// beyond the `f64` range.
     Quadric,
 }
 

@@ -331,7 +331,7 @@ impl<'o> Simplifier<'o> {
             Position::Quadric => {
                 let mut q = self.quadric[e.p.index()];
                 q.add(&self.quadric[e.q.index()]);
-                q.best_position(pp, pq)
+                q.best_position_within(pp, pq, self.max_coordinate)
             }
         }
     }
@@ -482,7 +482,8 @@ impl<'o> Simplifier<'o> {
                 Err(s) => self.run.remaining.count(s),
             }
         }
-        self.run.shortest = shortest.is_finite().then(|| shortest.sqrt());
+        // Unscaled (exact: a power of two); `shortest` is infinite only without edges.
+        self.run.shortest = shortest.is_finite().then(|| shortest.sqrt() / self.scale);
     }
 
     /// The real vertices (all live after the final compaction) with their positions,
@@ -501,7 +502,10 @@ impl<'o> Simplifier<'o> {
             .filter(|vs| vs.iter().all(|v| v.0 < first))
             .map(|vs| vs.map(|v| v.0))
             .collect();
-        let points = self.vert[..first as usize].iter().map(|v| v.pos).collect();
+        let points = self.vert[..first as usize]
+            .iter()
+            .map(|v| v.pos.map(|x| x / self.scale))
+            .collect();
         (faces, points)
     }
 }

@@ -5,7 +5,7 @@
 //! skipped, the nested mode's per-side regions). Apart from them so that those modules
 //! import it and it imports none of them.
 
-use super::geometry::{area_normal, cross, dot, sub, Point, Quadric};
+use super::geometry::{area_normal, cross, dot, power_of_two_scale, sub, Point, Quadric};
 use super::{Options, Position, SkipCounts};
 use crate::core::{ConedComponent, Corner, FaceId, SurfaceType, Triangulation, VertexId};
 use crate::spec::ENABLED;
@@ -64,7 +64,19 @@ pub(crate) struct Simplifier<'o> {
     pub(super) first_virtual: u32,
     pub(super) loops: usize,
     pub(super) opts: &'o Options,
+    /// ε², in the scaled coordinates (see `scale`), at least the smallest positive `f64`.
     pub(super) eps2: f64,
+    /// The power of two the positions are multiplied by while the component is
+    /// simplified: it brings the component's largest coordinate near 1. Scaling by a
+    /// power of two rounds nothing, so every comparison and every computed position is
+    /// the one of the unscaled arithmetic whenever that neither overflows nor underflows;
+    /// but squared lengths, areas and quadrics of meshes near the ends of the `f64` range
+    /// (coordinates beyond about 1e77, or edges below about 1e-77) now stay finite and
+    /// non-zero, so such meshes are simplified as their scaled copies are.
+    pub(super) scale: f64,
+    /// The largest scaled coordinate whose unscaled value is finite (a quadric optimum
+    /// beyond it is not used).
+    pub(super) max_coordinate: f64,
     pub(super) pass: u32,
     /// Scratch marks (compared with `stamp`).
     pub(super) vmark: Vec<u32>,
@@ -140,9 +152,15 @@ impl<'o> Simplifier<'o> {
         let loops = component.virtual_vertices().count();
         let first_virtual = component.real_vertex_count() as u32;
         let nv = component.tri.vertex_capacity();
+        let largest = component
+            .vertex_origin
+            .iter()
+            .flat_map(|&m| positions[m as usize])
+            .fold(0.0f64, |a, x| a.max(x.abs()));
+        let scale = power_of_two_scale(largest);
         let mut vert = Vec::with_capacity(nv);
         vert.extend(component.vertex_origin.iter().map(|&m| Vertex {
-            pos: positions[m as usize],
+            pos: positions[m as usize].map(|x| x * scale),
             touched: 0,
         }));
         let tri = component.tri;
@@ -162,7 +180,11 @@ impl<'o> Simplifier<'o> {
             first_virtual,
             loops,
             opts,
-            eps2: opts.eps * opts.eps,
+            // An ε beyond the scaled range is infinite: every edge is shorter. One whose
+            // square underflows is still above 0: an edge of length 0 is shorter.
+            eps2: ((opts.eps * scale) * (opts.eps * scale)).max(f64::from_bits(1)),
+            scale,
+            max_coordinate: f64::MAX * scale,
             pass: 0,
             vmark: vec![0; nv],
             fmark: vec![0; nf],

@@ -6,7 +6,7 @@ use crate::mesh::{QuadMesh, TriMesh};
 use crate::quad::{self, Algorithm, Quadrangulation, DS_NAIVE_MAX_FACES};
 use crate::topology::SurfaceType;
 
-use super::reduce::closed_surfaces;
+use super::reduce::{closed_surfaces, position_count};
 use super::{Error, Monitor, Step};
 
 /// Options of [`quadrangulate`]. The default: LRS, seed 0, outputs verified.
@@ -196,7 +196,9 @@ pub fn verify_quadrangulation(input: &Triangulation, q: &Quadrangulation) -> boo
 /// Deterministic for a given mesh and options (timings aside).
 ///
 /// # Errors
-/// [`Error::Mesh`] or [`Error::NotClosed`] if `mesh` is not a union of closed surfaces;
+/// [`Error::PositionCount`] if `mesh` has positions but not one per vertex (checked
+/// first); [`Error::Mesh`] or [`Error::NotClosed`] if `mesh` is not a union of closed
+/// surfaces;
 /// [`Error::TooLarge`] for `ds-naive` on a component above [`DS_NAIVE_MAX_FACES`]
 /// faces, and for `ds` and `bbdl` above their structures' limits; [`Error::Cancelled`];
 /// [`Error::Unverified`] if a pairing fails its check (a defect of the library).
@@ -211,6 +213,7 @@ pub fn verify_quadrangulation(input: &Triangulation, q: &Quadrangulation) -> boo
 pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult, Error> {
     let monitor = &options.monitor;
     let algorithm = options.algorithm;
+    position_count(mesh)?;
     let started = std::time::Instant::now();
     let surfaces = closed_surfaces(mesh, "quad", monitor)?;
     let seconds_build = started.elapsed().as_secs_f64();

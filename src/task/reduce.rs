@@ -217,6 +217,19 @@ fn check_irreducible_with(tri: &Triangulation, naive_max_edges: usize) -> Irredu
     }
 }
 
+/// Positions, when `mesh` has them, must be one per vertex: the combinatorial tasks carry
+/// them over to their outputs (reassembled by vertex), so a mesh with too few or too many
+/// is the input's fault ([`Error::PositionCount`]), not an output that fails to map back.
+pub(crate) fn position_count(mesh: &TriMesh) -> Result<(), Error> {
+    match &mesh.positions {
+        Some(p) if p.len() != mesh.vertex_count => Err(Error::PositionCount {
+            vertices: mesh.vertex_count,
+            positions: p.len(),
+        }),
+        _ => Ok(()),
+    }
+}
+
 /// Validates `mesh` as a union of closed surfaces: the error of the first problem,
 /// with a boundary edge reported as [`Error::NotClosed`] (naming the mesh's boundary
 /// loops when it is a surface with boundary).
@@ -249,9 +262,10 @@ pub(crate) fn closed_surfaces(
 /// Deterministic for a given mesh and options (timings aside).
 ///
 /// # Errors
-/// [`Error::Mesh`] or [`Error::NotClosed`] if `mesh` is not a union of closed surfaces
-/// (the first problem, located); [`Error::Cancelled`]; [`Error::Unverified`] if an
-/// output fails its check (a defect of the library, never an expected outcome).
+/// [`Error::PositionCount`] if `mesh` has positions but not one per vertex (checked
+/// first); [`Error::Mesh`] or [`Error::NotClosed`] if `mesh` is not a union of closed
+/// surfaces (the first problem, located); [`Error::Cancelled`]; [`Error::Unverified`] if
+/// an output fails its check (a defect of the library, never an expected outcome).
 ///
 /// # Example
 /// ```
@@ -264,6 +278,7 @@ pub(crate) fn closed_surfaces(
 /// ```
 pub fn reduce(mesh: &TriMesh, options: &ReduceOptions) -> Result<ReduceResult, Error> {
     let monitor = &options.monitor;
+    position_count(mesh)?;
     let started = std::time::Instant::now();
     let surfaces = closed_surfaces(mesh, "reduce", monitor)?;
     let seconds_build = started.elapsed().as_secs_f64();
@@ -405,6 +420,29 @@ mod tests {
             }
         ));
         assert_eq!(e.kind(), "boundary_edge");
+    }
+
+    /// Positions that are not one per vertex are the input's fault, refused before the
+    /// faces are looked at (the output, reassembled with them, could not map back).
+    #[test]
+    fn positions_not_one_per_vertex_are_refused_first() {
+        let mut mesh = gen::octahedron();
+        mesh.positions.as_mut().expect("positions").pop();
+        mesh.faces.push([0, 0, 1]);
+        let e = reduce(&mesh, &ReduceOptions::default()).unwrap_err();
+        assert!(
+            matches!(
+                e,
+                Error::PositionCount {
+                    vertices: 6,
+                    positions: 5
+                }
+            ),
+            "{e}"
+        );
+        assert!(e.is_input());
+        let q = crate::task::quadrangulate(&mesh, &Default::default()).unwrap_err();
+        assert_eq!(q.kind(), "position_count", "{q}");
     }
 
     /// The monitor hears the steps in order (build, each component's run, each

@@ -771,6 +771,106 @@ fn every_option_combination_on_a_genus_2_surface() {
     }
 }
 
+/// The simplifier works on positions scaled by a power of two (exact), so a mesh and its
+/// copy scaled by `2^k` simplify alike for every `k` that keeps the coordinates normal:
+/// the same faces, the positions and the shortest edge scaled by `2^k`, the same counts
+/// (the unit-scale run checked by `check_simplify`, the scaled ones against it).
+/// Near the ends of the `f64` range the plain arithmetic overflows (`2^600`: squared
+/// lengths beyond it, so no edge was short and `shortest_remaining_edge` was `None` with
+/// edges left) or underflows (`2^-1000`: zero areas everywhere, the fold-over guard
+/// refusing every contraction). A genus-2 surface with holes, coordinates in `[1, 2)`
+/// (normal at every scale), every option; and the task call with a relative ε (the
+/// bounding-box diagonal scales too).
+#[test]
+fn results_do_not_depend_on_the_scale_of_the_coordinates() {
+    let base = iso(Implicit::GenusG { g: 2 }, Tessellation::SixTetrahedra, 0.25);
+    let topo = surface_topology(&base.faces).expect("a surface");
+    let far = far_apart(&base, 3, 7);
+    let open = without_stars(&base, &far);
+    for mesh in [base, open] {
+        let p = mesh.positions.as_deref().expect("positions");
+        let lo = [0, 1, 2].map(|i| p.iter().map(|q| q[i]).fold(f64::INFINITY, f64::min));
+        let hi = [0, 1, 2].map(|i| p.iter().map(|q| q[i]).fold(f64::NEG_INFINITY, f64::max));
+        let span = (0..3).map(|i| hi[i] - lo[i]).fold(0.0, f64::max);
+        // Into [1, 2): the same shape, every coordinate a normal number at every scale.
+        let unit_box: Vec<[f64; 3]> = p
+            .iter()
+            .map(|q| [0, 1, 2].map(|i| 1.0 + (q[i] - lo[i]) / span * 0.999))
+            .collect();
+        let reference = TriMesh::with_positions(unit_box, mesh.faces.clone());
+        let eps = 0.04 * diagonal(&reference);
+        for opts in all_options(eps) {
+            let want = check_simplify(&reference, &opts, &format!("unit box {opts:?}"));
+            assert!(
+                want.stats.edges_contracted > 0,
+                "{opts:?}: nothing to compare"
+            );
+            for k in [-1000, -600, -300, 300, 600, 1000] {
+                let f = 2f64.powi(k);
+                let scaled = TriMesh::with_positions(
+                    reference
+                        .positions
+                        .as_deref()
+                        .expect("positions")
+                        .iter()
+                        .map(|q| q.map(|x| x * f))
+                        .collect(),
+                    reference.faces.clone(),
+                );
+                let label = format!("2^{k} {opts:?}");
+                let got = contractible::simplify::simplify(
+                    &scaled,
+                    &Options {
+                        eps: eps * f,
+                        ..opts
+                    },
+                )
+                .unwrap_or_else(|e| panic!("{label}: {e}"));
+                assert_eq!(got.mesh.faces, want.mesh.faces, "{label}: faces");
+                let at_scale: Vec<[f64; 3]> = want
+                    .mesh
+                    .positions
+                    .as_deref()
+                    .expect("positions")
+                    .iter()
+                    .map(|q| q.map(|x| x * f))
+                    .collect();
+                assert_eq!(
+                    got.mesh.positions.as_deref(),
+                    Some(&at_scale[..]),
+                    "{label}"
+                );
+                let mut a = got.stats.clone();
+                let mut b = want.stats.clone();
+                assert_eq!(
+                    a.shortest_remaining_edge,
+                    b.shortest_remaining_edge.map(|l| l * f),
+                    "{label}: shortest edge"
+                );
+                (a.seconds, b.seconds) = (0.0, 0.0);
+                (a.shortest_remaining_edge, b.shortest_remaining_edge) = (None, None);
+                assert_eq!(a, b, "{label}: statistics");
+            }
+        }
+        let task = |m: &TriMesh| {
+            contractible::simplify(m, &contractible::SimplifyOptions::relative(0.04))
+                .expect("simplifies")
+        };
+        let want = task(&reference);
+        for k in [-1000, 600, 1000] {
+            let f = 2f64.powi(k);
+            let mut scaled = reference.clone();
+            for q in scaled.positions.as_mut().expect("positions") {
+                *q = q.map(|x| x * f);
+            }
+            let got = task(&scaled);
+            assert_eq!(got.bbox_diagonal, want.bbox_diagonal * f, "2^{k}: diagonal");
+            assert_eq!(got.mesh.faces, want.mesh.faces, "2^{k}: task faces");
+        }
+    }
+    assert_eq!(topo.components, vec![closed(-2, true)]);
+}
+
 // ---- Deliberate disc removal and refusals.
 
 /// The octahedron (vertices ±x = 0, 1; ±y = 2, 3; ±z = 4, 5) with face [0, 2, 4]

@@ -17,7 +17,10 @@ use std::path::PathBuf;
 
 use contractible::io::Format;
 use contractible::rng::Rng;
-use harness::{ContractInput, JournalInput, JournalStep, Op, Surface, SurfaceInput};
+use harness::{
+    ContractInput, Edit, Geometry, JournalInput, JournalStep, Op, Part, Positions, SimplifyInput,
+    Surface, SurfaceInput, TaskInput, VertexCount,
+};
 
 /// The files of `fuzz/<dir>/<target>/`, sorted. The seed corpora (`corpus`) are part of
 /// the repository, so a missing one fails; `regressions/<target>` exists only once a
@@ -83,6 +86,8 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
     assert!(n >= 5, "quad_ops: {n} inputs decoded");
     let n = replay_decoded("simplify", harness::check_simplify_input);
     assert!(n >= 4, "simplify: {n} inputs decoded");
+    let n = replay_decoded("tasks", harness::check_tasks);
+    assert!(n >= 8, "tasks: {n} inputs decoded");
 }
 
 #[test]
@@ -97,6 +102,8 @@ fn seed_corpora_and_regressions_of_the_parsers() {
         let n = replay(target, |b| harness::check_parse(b, format));
         assert!(n >= 4, "{target} corpus missing");
     }
+    let n = replay("poly_weld", harness::check_poly_bytes);
+    assert!(n >= 20, "poly_weld corpus missing");
 }
 
 /// The seed meshes must actually parse into closed surfaces (otherwise the parser
@@ -262,4 +269,331 @@ fn crash_files_decode_stably() {
             seed: 1_591_200_115_485_380_623,
         }
     );
+}
+
+/// `simplify` on every layout of the positions ([`Geometry`]: coincident, collinear,
+/// coplanar, integer-grid, perturbed by 1e-12, wildly scaled, shifted far from the
+/// origin) at unit and extreme scales, both modes, with an absolute and a relative ε
+/// through the task call and the lower-level call (the `simplify` target's checks).
+#[test]
+fn simplify_on_degenerate_and_extreme_layouts() {
+    let layouts = [
+        Geometry::Random { smoothing: 2 },
+        Geometry::Grid { range: 3 },
+        Geometry::Grid { range: 0 },
+        Geometry::Clusters { points: 0 },
+        Geometry::Clusters { points: 2 },
+        Geometry::Flat { plane: false },
+        Geometry::Flat { plane: true },
+        Geometry::Perturbed {
+            range: 1,
+            digits: 0,
+        },
+        Geometry::Scales { spread: 40 },
+        Geometry::Shifted { digits: 16 },
+    ];
+    for (k, geometry) in layouts.into_iter().enumerate() {
+        for (j, scale) in [0i8, 127, -127, 90].into_iter().enumerate() {
+            let t = k + j;
+            harness::check_simplify_input(&SimplifyInput {
+                base: SurfaceInput {
+                    surface: Surface::Orientable((t % 3) as u8),
+                    ops: ops(500 + t as u64, 60),
+                    seed: 0,
+                },
+                positions: t as u64,
+                geometry,
+                scale,
+                eps: 20_000 + 7_000 * (t % 4) as u16,
+                relative: t % 2 == 0,
+                holes: if t % 3 == 0 { vec![] } else { vec![3, 17, 40] },
+                side: t as u8,
+                quadric: k % 2 == 1,
+                guard: t % 3 != 1,
+                nested: j % 2 == 0,
+            });
+        }
+    }
+}
+
+/// `tasks` on fixed inputs: every part kind, every edit, every declared vertex count and
+/// kind of positions, each through every reduction and tri-quad algorithm (the `tasks`
+/// target's checks: refusals typed and in agreement with `describe` and the surface
+/// oracle, outputs checked from their face lists).
+#[test]
+fn task_calls_on_assembled_and_edited_face_lists() {
+    let surface = |s: Surface, seed: u64| Part::Surface {
+        surface: s,
+        ops: ops(seed, 30),
+    };
+    let laid = |geometry, seed| Positions::Laid {
+        geometry,
+        scale: 0,
+        seed,
+    };
+    let cases: Vec<(Vec<Part>, Vec<Edit>, VertexCount, Positions)> = vec![
+        // Closed surfaces side by side, unused vertices, positions.
+        (
+            vec![
+                surface(Surface::Orientable(1), 1),
+                Part::Standard { which: 5 },
+                Part::Standard { which: 0 },
+            ],
+            vec![],
+            VertexCount::Extra { unused: 3 },
+            laid(Geometry::Random { smoothing: 1 }, 1),
+        ),
+        // Without positions; faces swapped and reversed (still closed surfaces).
+        (
+            vec![
+                surface(Surface::NonOrientable(2), 2),
+                Part::Standard { which: 4 },
+            ],
+            vec![Edit::Swap { a: 0, b: 9 }, Edit::Reverse { face: 4 }],
+            VertexCount::Parts,
+            Positions::None,
+        ),
+        // Boundary: faces removed.
+        (
+            vec![
+                surface(Surface::Orientable(0), 3),
+                Part::Standard { which: 3 },
+            ],
+            vec![Edit::Remove { face: 2 }, Edit::Remove { face: 30 }],
+            VertexCount::Parts,
+            laid(Geometry::Grid { range: 5 }, 3),
+        ),
+        // A duplicate face, a rotated and reversed copy.
+        (
+            vec![Part::Standard { which: 1 }],
+            vec![Edit::Duplicate { face: 3, turn: 130 }],
+            VertexCount::Parts,
+            laid(Geometry::Flat { plane: true }, 4),
+        ),
+        // Two spheres pinched at a vertex; a corner out of range.
+        (
+            vec![Part::Standard { which: 0 }, Part::Standard { which: 1 }],
+            vec![Edit::Merge { keep: 0, gone: 5 }],
+            VertexCount::Parts,
+            laid(Geometry::Clusters { points: 1 }, 5),
+        ),
+        (
+            vec![Part::Standard { which: 2 }],
+            vec![Edit::Corner {
+                face: 7,
+                slot: 1,
+                vertex: u32::MAX,
+            }],
+            VertexCount::Parts,
+            Positions::None,
+        ),
+        // Arbitrary triples and an added face (non-manifold, degenerate).
+        (
+            vec![Part::Raw {
+                vertices: 6,
+                faces: vec![
+                    [0, 1, 2],
+                    [0, 2, 3],
+                    [0, 3, 1],
+                    [1, 2, 3],
+                    [1, 2, 4],
+                    [5, 5, 1],
+                ],
+            }],
+            vec![Edit::Add { corners: [1, 2, 8] }],
+            VertexCount::Extra { unused: 1 },
+            laid(Geometry::Random { smoothing: 0 }, 6),
+        ),
+        // No faces at all.
+        (
+            vec![],
+            vec![],
+            VertexCount::Extra { unused: 4 },
+            Positions::None,
+        ),
+        // A vertex count beyond the core's ids.
+        (
+            vec![Part::Standard { which: 0 }],
+            vec![],
+            VertexCount::Huge,
+            laid(Geometry::Random { smoothing: 0 }, 7),
+        ),
+        // Positions: a non-finite coordinate, one too many.
+        (
+            vec![Part::Standard { which: 1 }],
+            vec![],
+            VertexCount::Parts,
+            Positions::NonFinite {
+                geometry: Geometry::Random { smoothing: 0 },
+                seed: 8,
+                vertex: 2,
+                axis: 1,
+                value: 0,
+            },
+        ),
+        (
+            vec![Part::Standard { which: 3 }],
+            vec![],
+            VertexCount::Parts,
+            Positions::Miscounted { seed: 9, delta: 1 },
+        ),
+    ];
+    for (k, (parts, edits, vertices, positions)) in cases.into_iter().enumerate() {
+        for reduce in 0..3u8 {
+            for quad in 0..8u8 {
+                harness::check_tasks(&TaskInput {
+                    parts: parts.clone(),
+                    edits: edits.clone(),
+                    vertices,
+                    positions,
+                    reduce,
+                    quad,
+                    seed: k as u64,
+                    eps: 30_000,
+                    relative: quad % 2 == 0,
+                    nested: reduce != 1,
+                    side: quad,
+                    quadric: reduce == 2,
+                    foldover: quad % 3 == 0,
+                });
+            }
+        }
+    }
+}
+
+/// `tasks` found: `reduce` of a mesh whose positions are not one per vertex failed with
+/// an internal error (`Unverified`: "the output does not map onto the input's
+/// vertices") instead of refusing the input, and `quadrangulate` returned a quad mesh
+/// with that wrong number of positions. Both now refuse with `PositionCount` first
+/// (the file `fuzz/regressions/tasks/positions-not-one-per-vertex` is the input found).
+#[test]
+fn reduce_and_quadrangulate_refuse_positions_that_are_not_one_per_vertex() {
+    use contractible::{Error, QuadOptions, ReduceOptions, SimplifyOptions};
+    let octahedron = contractible::gen::octahedron();
+    for n in [0, 5, 7] {
+        let mut m = octahedron.clone();
+        m.positions.as_mut().expect("positions").resize(n, [1.0; 3]);
+        for e in [
+            contractible::reduce(&m, &ReduceOptions::default()).err(),
+            contractible::quadrangulate(&m, &QuadOptions::default()).err(),
+        ] {
+            assert!(
+                matches!(e, Some(Error::PositionCount { vertices: 6, positions }) if positions == n),
+                "{n} positions: {e:?}"
+            );
+        }
+        harness::check_task_calls(
+            &m,
+            &ReduceOptions::default(),
+            &QuadOptions::default(),
+            &SimplifyOptions::default(),
+        );
+    }
+}
+
+/// `tasks` found: with coordinates near 1e240 (a wide spread of per-vertex scales) every
+/// squared edge length overflowed, so `simplify` reported `shortest_remaining_edge:
+/// None` for an output with edges (and no edge could count as shorter than ε). The
+/// simplifier now works on positions scaled by a power of two (exact), which keeps
+/// every squared length finite (`fuzz/regressions/tasks/huge-coordinates-shortest-edge`).
+#[test]
+fn huge_coordinates_are_simplified_with_their_shortest_edge() {
+    harness::check_tasks(&TaskInput {
+        parts: vec![
+            Part::Surface {
+                surface: Surface::Orientable(32),
+                ops: vec![
+                    Op::Relabel {
+                        seed: 9_022_979_780_515_220_293,
+                    },
+                    Op::Relabel {
+                        seed: 14_305_965_111_539_402_376,
+                    },
+                    Op::Relabel {
+                        seed: 5_180_219_219_341_647_679,
+                    },
+                    Op::Relabel {
+                        seed: 16_651_039_371_925_406_194,
+                    },
+                ],
+            },
+            Part::Standard { which: 49 },
+            Part::Raw {
+                vertices: 140,
+                faces: vec![],
+            },
+        ],
+        edits: vec![],
+        vertices: VertexCount::Parts,
+        positions: Positions::Laid {
+            geometry: Geometry::Scales { spread: 207 },
+            scale: 120,
+            seed: 1_314_713_215_837_044_058,
+        },
+        reduce: 202,
+        quad: 133,
+        seed: 16_022_286_312_828_509_232,
+        eps: 6922,
+        relative: false,
+        nested: true,
+        side: 165,
+        quadric: false,
+        foldover: false,
+    });
+}
+
+/// `poly_weld` on inline inputs: a quad strip whose shorter diagonals would repeat an
+/// edge (another fan start is taken), polygons of 5 and 6 corners, a triangle soup in
+/// OFF whose corners weld at several tolerances, a binary STL of a soup with `-0.0`
+/// and a repeated corner, and the same as ASCII.
+#[test]
+fn polygon_reading_triangulation_and_welding_inline() {
+    let strip = "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n2 1 0\n1 1 0\n0 1 0\n4 0 1 4 5\n4 1 2 3 4\n";
+    let polygons = "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 2 0\nv -1 1 0\nf 1 2 3 4 5\nf 1 5 6\nf 2 1 6 5 4 3\n";
+    let soup = "OFF\n9 3 0\n0 0 0\n1 0 0\n0 1 0\n1e-13 0 0\n0 1 0\n1 1 0\n1 0 0\n1.0000001 1 0\n2 0 0\n3 0 1 2\n3 3 5 4\n3 6 7 8\n";
+    for text in [strip, polygons, soup] {
+        harness::check_poly_bytes(text.as_bytes());
+    }
+    let tris: [[[f32; 3]; 3]; 3] = [
+        [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        [[-0.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
+        [[0.5, 0.5, 0.0], [0.5, 0.5, 0.0], [1.0, 1.0, 1.0]],
+    ];
+    let mut binary = b"solid but binary".to_vec();
+    binary.resize(80, 0);
+    binary.extend_from_slice(&3u32.to_le_bytes());
+    let mut ascii = String::from("solid s\n");
+    for t in tris {
+        binary.extend_from_slice(&[0; 12]);
+        ascii.push_str("facet normal 0 0 1\nouter loop\n");
+        for c in t {
+            for x in c {
+                binary.extend_from_slice(&x.to_le_bytes());
+            }
+            ascii.push_str(&format!("vertex {} {} {}\n", c[0], c[1], c[2]));
+        }
+        binary.extend_from_slice(&[0, 0]);
+        ascii.push_str("endloop\nendfacet\n");
+    }
+    ascii.push_str("endsolid s\n");
+    harness::check_poly_bytes(&binary);
+    harness::check_poly_bytes(ascii.as_bytes());
+    let m = contractible::io::read_tri_mesh_bytes(&binary, Some(Format::Stl)).expect("STL");
+    // -0.0 and 0.0 stay apart; the repeated corner is kept (for validation to refuse).
+    assert_eq!(m.vertex_count, 6);
+    assert_eq!(m.faces[2][0], m.faces[2][1]);
+}
+
+/// `poly_weld` found: welding with tolerance 1 left apart two vertices whose squared
+/// distance rounds to exactly 1 (y = -3.06e-32 and y = 1: cells -1 and 1 of a grid of
+/// side 1, never compared), while the same pair shifted above 0 merged. The grid's cells
+/// now have twice the tolerance as side
+/// (`fuzz/regressions/poly_weld/pair-at-exactly-the-tolerance.stl`).
+#[test]
+fn welding_merges_a_pair_at_exactly_the_tolerance() {
+    let off = "OFF\n3 1 0\n1 -3.062228611575705e-32 1\n1 1 1\n5 5 5\n3 0 1 2\n";
+    harness::check_poly_bytes(off.as_bytes());
+    let m = contractible::io::read_tri_mesh_bytes(off.as_bytes(), Some(Format::Off)).expect("OFF");
+    let (w, merged) = m.welded_within(1.0).expect("a tolerance");
+    assert_eq!((merged, w.faces[0]), (1, [0, 0, 1]));
 }
