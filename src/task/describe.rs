@@ -111,7 +111,10 @@ pub enum Description {
     Problems {
         /// Every problem ([`crate::diagnose`]).
         diagnosis: Diagnosis,
-        /// The error [`crate::reduce`] and the others would return for this mesh.
+        /// The first problem the validation of surfaces (closed or with boundary)
+        /// meets: the error [`crate::reduce`] and [`crate::quadrangulate`] return, except
+        /// on a mesh that also has a boundary, which those two refuse first
+        /// ([`crate::Error::NotClosed`]) when the boundary is found before this problem.
         first: crate::core::BuildError,
     },
 }
