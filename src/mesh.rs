@@ -183,13 +183,31 @@ pub struct WeldMap {
     pub kept: Vec<u32>,
 }
 
+/// A power of two `s` with `x · s` roughly in `[1, 2)` (`x` a finite magnitude; 1 for 0
+/// or a non-finite `x`), within `2^±1000` so that `s` and `1 / s` are normal numbers:
+/// multiplying by it rounds nothing unless a result is subnormal, so it brings squares
+/// and products of values near `x` away from overflow and underflow without changing
+/// any comparison of them.
+pub(crate) fn power_of_two_scale(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return 1.0;
+    }
+    // `floor(log2)` may be off by one next to a power of two: any nearby power will do.
+    let e = (x.abs().log2().floor() as i32).clamp(-1000, 1000);
+    2f64.powi(-e)
+}
+
 /// Groups the vertices at `positions` for welding.
 ///
 /// - `tolerance == 0`: vertices whose three coordinates are bitwise equal form a group
 ///   (so `0.0` and `-0.0` stay apart). O(V) expected (hashing).
 /// - `tolerance > 0`: the groups are the connected components of the graph joining two
 ///   vertices at Euclidean distance `<= tolerance` (union–find, so merging is
-///   transitive), the distance compared as `Σ (pᵢ − qᵢ)² <= tolerance²` in `f64`.
+///   transitive), the distance compared as `Σ ((pᵢ − qᵢ)·s)² <= (tolerance·s)²` in
+///   `f64`, where `s` is the power of two that brings the tolerance near 1: exactly the
+///   plain `Σ (pᵢ − qᵢ)² <= tolerance²` wherever that neither overflows nor underflows,
+///   and the true comparison where it would (a pair 10²⁶⁰ apart is not within 10²⁴⁸,
+///   though both plain squares overflow to infinity).
 ///   Vertices are hashed into a grid of cells of side `2 · tolerance`; each vertex is
 ///   compared with the earlier vertices of its own and the 26 neighbouring cells. Twice
 ///   the tolerance, so that the rounding of the cell coordinates never puts two vertices
@@ -228,7 +246,8 @@ pub fn weld_map(positions: &[[f64; 3]], tolerance: f64) -> Option<WeldMap> {
     } else {
         let side = 2.0 * tolerance;
         let cell = |p: &[f64; 3]| p.map(|x| (x / side).floor() as i64);
-        let t2 = tolerance * tolerance;
+        let s = power_of_two_scale(tolerance);
+        let t2 = (tolerance * s).powi(2);
         let mut grid: std::collections::HashMap<[i64; 3], Vec<u32>> =
             std::collections::HashMap::with_capacity(positions.len());
         for (v, p) in positions.iter().enumerate() {
@@ -246,9 +265,9 @@ pub fn weld_map(positions: &[[f64; 3]], tolerance: f64) -> Option<WeldMap> {
                         };
                         for &u in others {
                             let q = &positions[u as usize];
-                            let d2 = (p[0] - q[0]).powi(2)
-                                + (p[1] - q[1]).powi(2)
-                                + (p[2] - q[2]).powi(2);
+                            let d2 = ((p[0] - q[0]) * s).powi(2)
+                                + ((p[1] - q[1]) * s).powi(2)
+                                + ((p[2] - q[2]) * s).powi(2);
                             if d2 <= t2 {
                                 let (a, b) = (find(&mut parent, u), find(&mut parent, v as u32));
                                 let (lo, hi) = (a.min(b), a.max(b));
@@ -402,6 +421,27 @@ mod tests {
             let w = weld_map(&p, tol).unwrap();
             assert_eq!(w.new_id[0] == w.new_id[1], close(0, 1), "{base} {tol}");
             assert_eq!(w.new_id[1] == w.new_id[2], close(1, 2), "{base} {tol}");
+        }
+    }
+
+    /// Tolerances whose square overflows or underflows compare true distances: a pair
+    /// 10²⁶⁰ apart is not within 1.1·10²⁴⁸ (both plain squares are infinite, so the
+    /// plain comparison welded them; found by fuzzing), one 10²⁴⁸ apart is; at a
+    /// subnormal tolerance of 2·10⁻³²⁰ a pair 3·10⁻³²⁰ apart stays apart (both plain
+    /// squares are 0) and one 10⁻³²⁰ apart is welded.
+    #[test]
+    fn tolerances_near_the_ends_of_the_range_compare_true_distances() {
+        let cases = [
+            (1.1e248, 1.1e260, false),
+            (1.1e248, 1e248, true),
+            (2e-320, 3e-320, false),
+            (2e-320, 1e-320, true),
+            (f64::MAX, f64::MAX, true),
+        ];
+        for (tol, z, welded) in cases {
+            let p = vec![[0.0, 1.0, 0.0], [0.0, 1.0, z]];
+            let w = weld_map(&p, tol).unwrap();
+            assert_eq!(w.new_id == [0, 0], welded, "{z:e} within {tol:e}");
         }
     }
 

@@ -3624,14 +3624,24 @@ fn check_weld(p: &contractible::io::PolyMesh, pos: &[[f64; 3]], tol: f64) {
     }
     if n <= WELD_NAIVE_MAX {
         let mut parent: Vec<u32> = (0..n as u32).collect();
-        let t2 = tol * tol;
+        // The documented comparison: differences scaled by the power of two `s` that
+        // brings the tolerance near 1, so that neither square overflows nor underflows.
+        let s = if tol > 0.0 {
+            2f64.powi(-(tol.log2().floor() as i32).clamp(-1000, 1000))
+        } else {
+            1.0
+        };
+        let t2 = (tol * s) * (tol * s);
         for a in 0..n {
             for b in a + 1..n {
                 let (x, y) = (pos[a], pos[b]);
                 let close = if tol == 0.0 {
                     x.map(f64::to_bits) == y.map(f64::to_bits)
                 } else {
-                    (0..3).map(|i| (x[i] - y[i]) * (x[i] - y[i])).sum::<f64>() <= t2
+                    (0..3)
+                        .map(|i| ((x[i] - y[i]) * s) * ((x[i] - y[i]) * s))
+                        .sum::<f64>()
+                        <= t2
                 };
                 if close {
                     uf_union(&mut parent, a as u32, b as u32);

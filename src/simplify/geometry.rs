@@ -47,17 +47,7 @@ pub(crate) fn area_normal(a: Point, b: Point, c: Point) -> Point {
     cross(sub(b, a), sub(c, a))
 }
 
-/// A power of two `2^-e` with `largest · 2^-e` in `[1, 2)` roughly (`largest` a finite
-/// coordinate magnitude; 1 for 0), `e` kept within ±1000 so that the scale and its
-/// inverse are normal numbers.
-pub(crate) fn power_of_two_scale(largest: f64) -> f64 {
-    if largest == 0.0 || !largest.is_finite() {
-        return 1.0;
-    }
-    // `floor(log2)` may be off by one next to a power of two: any nearby power will do.
-    let e = (largest.log2().floor() as i32).clamp(-1000, 1000);
-    2f64.powi(-e)
-}
+pub(crate) use crate::mesh::power_of_two_scale;
 
 /// The diagonal of the axis-aligned bounding box of `points` (0 for no point; infinite
 /// only when it exceeds the `f64` range). Computed on the box's sides scaled by a power
