@@ -97,18 +97,6 @@ fn num(v: &Value, key: &str) -> u64 {
         .unwrap_or_else(|| panic!("missing number {key}"))
 }
 
-fn faces_of(v: &Value) -> Vec<[u32; 3]> {
-    v.as_array()
-        .expect("face array")
-        .iter()
-        .map(|f| {
-            let f = f.as_array().expect("triple");
-            assert_eq!(f.len(), 3);
-            [0, 1, 2].map(|k| f[k].as_u64().expect("vertex id") as u32)
-        })
-        .collect()
-}
-
 fn pairs_of(v: &Value) -> Vec<[u32; 2]> {
     v.as_array()
         .expect("pair array")
@@ -151,8 +139,11 @@ fn algorithm(name: &str) -> Algorithm {
 
 fn input(v: &Value) -> (String, Triangulation) {
     let name = v["name"].as_str().expect("name").to_string();
-    let tri = Triangulation::from_faces(num(v, "vertex_count") as usize, &faces_of(&v["faces"]))
-        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let tri = Triangulation::from_faces(
+        num(v, "vertex_count") as usize,
+        &common::json_faces(&v["faces"]),
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"));
     (name, tri)
 }
 
@@ -246,7 +237,11 @@ fn library_reproduces_every_quad_vector_exactly() {
                 "{label}: pairs"
             );
             if alg == Algorithm::Lrs {
-                assert_eq!(q.tri.face_list(), faces_of(&r["k_faces"]), "{label}: K");
+                assert_eq!(
+                    q.tri.face_list(),
+                    common::json_faces(&r["k_faces"]),
+                    "{label}: K"
+                );
             } else {
                 assert!(
                     r.get("k_faces").is_none(),
@@ -327,7 +322,7 @@ fn stored_quad_vectors_are_valid_independently() {
     let mut cross_checked = 0;
     for v in all() {
         let name = v["name"].as_str().expect("name");
-        let faces = faces_of(&v["faces"]);
+        let faces = common::json_faces(&v["faces"]);
         let (chi, orientable) =
             contractible::spec::oracle::euler_and_orientability(&faces).expect("closed surface");
         assert_eq!(v["euler_characteristic"].as_i64(), Some(chi), "{name}");
@@ -336,7 +331,7 @@ fn stored_quad_vectors_are_valid_independently() {
         for r in v["runs"].as_array().expect("runs") {
             let label = format!("{name} {} seed {}", r["algorithm"], r["seed"]);
             let k = if r["algorithm"] == "lrs" {
-                faces_of(&r["k_faces"])
+                common::json_faces(&r["k_faces"])
             } else {
                 faces.clone()
             };

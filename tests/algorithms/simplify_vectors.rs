@@ -62,18 +62,6 @@ fn positions(v: &Value) -> Vec<[f64; 3]> {
         .collect()
 }
 
-fn faces(v: &Value) -> Vec<[u32; 3]> {
-    v.as_array()
-        .expect("faces")
-        .iter()
-        .map(|f| {
-            let f = f.as_array().expect("triple");
-            assert_eq!(f.len(), 3);
-            [0, 1, 2].map(|k| f[k].as_u64().expect("vertex") as u32)
-        })
-        .collect()
-}
-
 fn reports(v: &Value) -> Vec<[usize; 4]> {
     v.as_array()
         .expect("pass_reports")
@@ -98,7 +86,7 @@ fn options(r: &Value) -> Options {
 }
 
 fn input_mesh(v: &Value) -> TriMesh {
-    let mesh = TriMesh::with_positions(positions(&v["positions"]), faces(&v["faces"]));
+    let mesh = TriMesh::with_positions(positions(&v["positions"]), common::json_faces(&v["faces"]));
     assert_eq!(mesh.vertex_count, num(v, "vertex_count"), "{}", v["name"]);
     mesh
 }
@@ -166,7 +154,11 @@ fn library_reproduces_every_simplify_vector_exactly() {
                 .map(|p| p.map(f64::to_bits))
                 .collect();
             assert!(got == want, "{label}: output positions");
-            assert_eq!(out.mesh.faces, faces(&r["output_faces"]), "{label}: faces");
+            assert_eq!(
+                out.mesh.faces,
+                common::json_faces(&r["output_faces"]),
+                "{label}: faces"
+            );
             assert_eq!(got_reports, reports(&r["pass_reports"]), "{label}: passes");
             let s = &out.stats;
             let w = &r["stats"];
@@ -325,7 +317,7 @@ fn stored_simplify_outputs_are_valid_independently() {
     for v in all() {
         let name = v["name"].as_str().expect("name");
         let in_pos = positions(&v["positions"]);
-        let in_faces = faces(&v["faces"]);
+        let in_faces = common::json_faces(&v["faces"]);
         let before = surface_topology(&in_faces).unwrap_or_else(|e| panic!("{name}: {e}"));
         assert_eq!(
             before.vertices,
@@ -369,7 +361,7 @@ fn stored_simplify_outputs_are_valid_independently() {
             );
             let s = &r["stats"];
             let pos = positions(&r["output_positions"]);
-            let out = faces(&r["output_faces"]);
+            let out = common::json_faces(&r["output_faces"]);
             let after = surface_topology(&out).unwrap_or_else(|e| panic!("{label}: {e}"));
             assert_eq!(after.components, before.components, "{label}: topology");
             assert_eq!(

@@ -29,18 +29,6 @@ fn all() -> Vec<Value> {
     common::read_vector_groups(&GROUPS)
 }
 
-fn faces_of(v: &Value) -> Vec<[u32; 3]> {
-    v.as_array()
-        .expect("face array")
-        .iter()
-        .map(|f| {
-            let f = f.as_array().expect("triple");
-            assert_eq!(f.len(), 3);
-            [0, 1, 2].map(|k| f[k].as_u64().expect("vertex id") as u32)
-        })
-        .collect()
-}
-
 fn num(v: &Value, key: &str) -> u64 {
     v[key]
         .as_u64()
@@ -49,8 +37,11 @@ fn num(v: &Value, key: &str) -> u64 {
 
 fn input(v: &Value) -> (String, Triangulation) {
     let name = v["name"].as_str().expect("name").to_string();
-    let tri = Triangulation::from_faces(num(v, "vertex_count") as usize, &faces_of(&v["faces"]))
-        .unwrap_or_else(|e| panic!("{name}: {e}"));
+    let tri = Triangulation::from_faces(
+        num(v, "vertex_count") as usize,
+        &common::json_faces(&v["faces"]),
+    )
+    .unwrap_or_else(|e| panic!("{name}: {e}"));
     (name, tri)
 }
 
@@ -95,7 +86,7 @@ fn history_tuples(h: &History) -> Vec<[u64; 6]> {
 fn assert_reproduces(name: &str, alg: &str, stored: &Value, r: &Reduction) {
     assert_eq!(
         r.tri.face_list(),
-        faces_of(&stored["output_faces"]),
+        common::json_faces(&stored["output_faces"]),
         "{name} {alg}: output_faces"
     );
     assert_eq!(
@@ -175,7 +166,7 @@ fn library_reproduces_every_vector_exactly() {
 fn stored_outputs_are_irreducible_surfaces_of_the_input() {
     for v in all() {
         let name = v["name"].as_str().expect("name");
-        let input_faces = faces_of(&v["faces"]);
+        let input_faces = common::json_faces(&v["faces"]);
         let (chi, orientable) = closed_surface_invariants(&input_faces);
         assert_eq!(
             v["euler_characteristic"].as_i64(),
@@ -188,7 +179,7 @@ fn stored_outputs_are_irreducible_surfaces_of_the_input() {
             ("schipper", &v["schipper"]),
             ("brute", &v["brute"]),
         ] {
-            let out = faces_of(&stored["output_faces"]);
+            let out = common::json_faces(&stored["output_faces"]);
             assert_eq!(
                 closed_surface_invariants(&out),
                 (chi, orientable),
@@ -245,7 +236,7 @@ fn replaying_each_stored_history_gives_the_stored_output() {
             }
             assert_eq!(
                 tri.face_list(),
-                faces_of(&stored["output_faces"]),
+                common::json_faces(&stored["output_faces"]),
                 "{name} {alg}: replayed output"
             );
             h.undo_all(&mut tri);

@@ -456,6 +456,19 @@ pub fn read_vectors(group: &str) -> Vec<serde_json::Value> {
         .collect()
 }
 
+/// A JSON array of vertex-id triples (a vector's `faces`, `output_faces`, `k_faces`...).
+pub fn json_faces(v: &serde_json::Value) -> Vec<[u32; 3]> {
+    v.as_array()
+        .expect("face array")
+        .iter()
+        .map(|f| {
+            let f = f.as_array().expect("triple");
+            assert_eq!(f.len(), 3);
+            [0, 1, 2].map(|k| f[k].as_u64().expect("vertex id") as u32)
+        })
+        .collect()
+}
+
 /// Every vector of `groups`, each group checked to hold its expected count.
 pub fn read_vector_groups(groups: &[(&str, usize)]) -> Vec<serde_json::Value> {
     groups
