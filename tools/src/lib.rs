@@ -1,6 +1,7 @@
 //! What the maintenance tools (`src/bin/`) share: the repository's root, where they read
-//! the test data and write the conformance vectors, and the CPU time of the calling
-//! thread, which means more than wall time on a shared machine.
+//! the test data and write the conformance vectors, the CPU time of the calling thread,
+//! which means more than wall time on a shared machine, and the topology of a mesh's
+//! components as the vectors record it.
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -16,4 +17,25 @@ pub use cpu_time::cpu;
 pub fn repo_root() -> PathBuf {
     let tools = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
     tools.parent().map_or(tools.clone(), PathBuf::from)
+}
+
+/// Per component of `mesh` (closed or with boundary), its Euler characteristic,
+/// orientability and number of boundary loops, sorted; `None` if the faces are not a
+/// union of surfaces.
+pub fn component_topology(mesh: &contractible::TriMesh) -> Option<Vec<(i64, bool, usize)>> {
+    let surfaces = contractible::ConedSurfaces::from_mesh(mesh).ok()?;
+    let mut c: Vec<(i64, bool, usize)> = surfaces
+        .components
+        .iter()
+        .map(|s| {
+            let t = s.surface_type();
+            (
+                t.euler_characteristic(),
+                t.is_orientable(),
+                t.boundary_loops(),
+            )
+        })
+        .collect();
+    c.sort_unstable();
+    Some(c)
 }

@@ -22,7 +22,6 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 use contractible::gen::{isosurface, Implicit, IsoParams, Tessellation, CLAMP};
-use contractible::ConedSurfaces;
 use serde_json::{json, Value};
 
 /// A topological type (χ, orientable, boundary loops) of one component.
@@ -422,20 +421,8 @@ fn implicit_json(i: &Implicit) -> Value {
 fn vector(c: &Case, group: &str) -> Value {
     let mesh = isosurface(&params(c)).unwrap_or_else(|e| panic!("{}: {e}", c.name));
     let positions = mesh.positions.clone().expect("isosurface positions");
-    let surfaces = ConedSurfaces::from_mesh(&mesh).unwrap_or_else(|e| panic!("{}: {e}", c.name));
-    let mut components: Vec<Component> = surfaces
-        .components
-        .iter()
-        .map(|s| {
-            let t = s.surface_type();
-            (
-                t.euler_characteristic(),
-                t.is_orientable(),
-                t.boundary_loops(),
-            )
-        })
-        .collect();
-    components.sort_unstable();
+    let components = contractible_tools::component_topology(&mesh)
+        .unwrap_or_else(|| panic!("{}: not a union of surfaces", c.name));
     let mut expected = c.components.clone();
     expected.sort_unstable();
     assert_eq!(components, expected, "{}: topology", c.name);

@@ -430,20 +430,7 @@ fn depth(reports: &[[usize; 4]]) -> usize {
 }
 
 fn components_json(mesh: &TriMesh) -> Value {
-    let surfaces = ConedSurfaces::from_mesh(mesh).expect("a surface");
-    let mut c: Vec<(i64, bool, usize)> = surfaces
-        .components
-        .iter()
-        .map(|s| {
-            let t = s.surface_type();
-            (
-                t.euler_characteristic(),
-                t.is_orientable(),
-                t.boundary_loops(),
-            )
-        })
-        .collect();
-    c.sort_unstable();
+    let c = contractible_tools::component_topology(mesh).expect("a surface");
     json!(c
         .iter()
         .map(|&(e, o, l)| json!({"euler_characteristic": e, "orientable": o, "boundary_loops": l}))
