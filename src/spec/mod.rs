@@ -31,6 +31,7 @@
 //! | S11 | Definition 4 | `vertex_trapped` | end of the processing of `u` |
 //! | S13 | Sec. 4.3 | `new_neighbour`, `leaving_lue` | Alg. 4.5 l.8, Alg. 4.2 l.24 |
 //! | S14 | Sec. 4.3 | `degree3_untested` | Alg. 4.3, after the contraction |
+//! | S15 | Alg. 4.2, Lemma 5 | `at_end` | end of the run |
 //!
 //! The simplifier's checks D1–D3 live in `simplify::spec` (catalogue: `spec/simplify.md`).
 //!
@@ -40,6 +41,13 @@
 
 /// Degree (or list length) up to which a local check runs in full.
 pub(crate) const FULL_CHECK_DEGREE: usize = 64;
+
+/// Whether a check quadratic in `degree` runs in full: `degree ≤ FULL_CHECK_DEGREE`.
+/// Every check asks here, so the bound is one comparison tested at its edge.
+#[inline]
+pub(crate) fn fully_checked(degree: usize) -> bool {
+    degree <= FULL_CHECK_DEGREE
+}
 
 /// Whether the checks run: under `debug_assertions` or the cargo feature `invariants`.
 /// A `const`, so a hook's `if !ENABLED { return }` is resolved at compile time. (Defined by
@@ -145,5 +153,20 @@ pub(crate) mod testing {
             msg.starts_with("specification violated: ") && msg.contains(statement),
             "expected {statement}, got {msg}"
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{fully_checked, FULL_CHECK_DEGREE};
+
+    #[test]
+    fn the_full_check_bound_includes_its_degree() {
+        for d in [0, 3, FULL_CHECK_DEGREE] {
+            assert!(fully_checked(d), "degree {d}");
+        }
+        for d in [FULL_CHECK_DEGREE + 1, usize::MAX] {
+            assert!(!fully_checked(d), "degree {d}");
+        }
     }
 }

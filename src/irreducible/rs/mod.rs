@@ -424,6 +424,7 @@ impl Rs {
             }
             self.process(u, &mut throttle, report);
         }
+        spec::at_end(self);
     }
 
     /// Vertices settled so far: processed until trapped, or contracted away.

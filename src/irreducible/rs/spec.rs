@@ -10,7 +10,7 @@
 use super::{Rs, LTE, LUE};
 use crate::core::{ContractionRecord, VertexId};
 use crate::spec::oracle::{contractible_by_theorem_3, critical_cycles_through, is_trapped_naive};
-use crate::spec::{ENABLED, FULL_CHECK_DEGREE};
+use crate::spec::{fully_checked, ENABLED, FULL_CHECK_DEGREE};
 
 macro_rules! spec_fail {
     ($rs:expr, $stmt:literal, $($fmt:tt)*) => {
@@ -155,7 +155,7 @@ pub(super) fn vertex_trapped(rs: &Rs, u: VertexId) {
     if !ENABLED {
         return;
     }
-    if rs.tri.degree(u) <= FULL_CHECK_DEGREE && !is_trapped_naive(&rs.tri, u) {
+    if fully_checked(rs.tri.degree(u)) && !is_trapped_naive(&rs.tri, u) {
         let w = rs.tri.link(u).find(|&w| rs.tri.link_condition_naive(u, w));
         spec_fail!(
             rs,
@@ -177,7 +177,7 @@ pub(super) fn after_contraction(rs: &Rs, rec: &ContractionRecord, new_neighbours
         if rs.processed[w.index()]
             && rs.tri.is_vertex(w)
             && Some(w) != rs.current
-            && rs.tri.degree(w) <= FULL_CHECK_DEGREE
+            && fully_checked(rs.tri.degree(w))
             && !is_trapped_naive(&rs.tri, w)
         {
             spec_fail!(
@@ -201,7 +201,10 @@ pub(super) fn after_contraction(rs: &Rs, rec: &ContractionRecord, new_neighbours
 /// `[u, v]` (oracle), and `c(v) = 0` iff the link condition holds by definition.
 #[inline]
 pub(super) fn after_test(rs: &Rs, u: VertexId, v: VertexId, cv: u32) {
-    if !ENABLED || rs.tri.degree(u) > FULL_CHECK_DEGREE {
+    if !ENABLED {
+        return;
+    }
+    if !fully_checked(rs.tri.degree(u)) {
         return;
     }
     let truth = critical_cycles_through(&rs.tri, u, v);
@@ -237,11 +240,12 @@ pub(super) fn degree3(rs: &Rs, u: VertexId, v: VertexId) {
             rs.tri.degree(v)
         );
     }
+    // With d(v) = 3, K is T4 iff d(u) = 3 too (u, v and lk(v) then span a closed
+    // tetrahedron), so `t4` is the statement's condition. The naive test costs
+    // O(d_u · 3): it runs up to the bound (above it, d(u) > 3 and the output tests check
+    // the contraction's consequences).
     let t4 = rs.tri.degree(u) == 3;
-    // The naive test costs O(d_u · 3); above the bound only the T4 half is checked.
-    let naive_disagrees =
-        rs.tri.degree(u) <= FULL_CHECK_DEGREE && rs.tri.link_condition_naive(u, v) == t4;
-    if t4 != rs.tri.is_tetrahedron() || naive_disagrees {
+    if fully_checked(rs.tri.degree(u)) && rs.tri.link_condition_naive(u, v) == t4 {
         spec_fail!(
             rs,
             "Proposition 6",
@@ -265,7 +269,7 @@ pub(super) fn prop7_before(rs: &Rs) -> Prop7Before {
         return Prop7Before::default();
     }
     let u = current(rs);
-    if rs.tri.degree(u) > FULL_CHECK_DEGREE {
+    if !fully_checked(rs.tri.degree(u)) {
         return Prop7Before::default();
     }
     let w = rs
@@ -326,13 +330,33 @@ pub(super) fn before_contraction(rs: &Rs, u: VertexId, v: VertexId) {
         return;
     }
     let cycles = critical_cycles_through(&rs.tri, u, v);
-    let naive_fails = rs.tri.degree(u) <= FULL_CHECK_DEGREE && !rs.tri.link_condition_naive(u, v);
+    let naive_fails = fully_checked(rs.tri.degree(u)) && !rs.tri.link_condition_naive(u, v);
     if cycles != Some(0) || rs.tri.is_tetrahedron() || naive_fails {
         spec_fail!(
             rs,
             "Theorem 3 (contraction of a contractible edge)",
             "contracting [{u}, {v}] on {cycles:?} critical cycles (T4: {})",
             rs.tri.is_tetrahedron()
+        );
+    }
+}
+
+/// Alg. 4.2 when the queue is exhausted: the vertices left are exactly the processed
+/// ones, each processed once. (A processed vertex is trapped, Def. 4, and stays trapped,
+/// Lemma 5, so no contraction removes it; every other vertex the queue reaches is
+/// processed.)
+#[inline]
+pub(super) fn at_end(rs: &Rs) {
+    if !ENABLED {
+        return;
+    }
+    let live = rs.tri.vertex_count() as u64;
+    if rs.processed_count != live {
+        spec_fail!(
+            rs,
+            "Alg. 4.2 (every remaining vertex processed once)",
+            "{} vertices processed, {live} remain",
+            rs.processed_count
         );
     }
 }
@@ -605,6 +629,32 @@ mod tests {
         });
     }
 
+    /// Above the degree bound the naive half is skipped; the critical-cycle count alone
+    /// still refuses a non-contractible edge.
+    #[test]
+    fn theorem_3_contraction_of_a_non_contractible_edge_at_a_high_degree_vertex() {
+        // The bipyramid over the cycle 2, 3, …, k + 1 with apexes 0 and 1, its face
+        // [0, 2, 3] subdivided by x: (0, 2, 3) is a critical cycle.
+        let k = FULL_CHECK_DEGREE as u32 + 2;
+        let ring = |i: u32| 2 + i % k;
+        let mut faces = Vec::new();
+        for i in 0..k {
+            if i != 0 {
+                faces.push([0, ring(i), ring(i + 1)]);
+            }
+            faces.push([1, ring(i + 1), ring(i)]);
+        }
+        let x = k + 2;
+        faces.extend([[0, 2, x], [2, 3, x], [3, 0, x]]);
+        let tri = Triangulation::from_faces(x as usize + 1, &faces).expect("a sphere");
+        let rs = Rs::new(tri, &Options::default(), Variant::SPECIFIED);
+        assert!(!fully_checked(rs.tri.degree(v(0))));
+        before_contraction(&rs, v(0), v(4)); // contractible: passes
+        assert_fails("Theorem 3 (contraction of a contractible edge)", || {
+            before_contraction(&rs, v(0), v(2))
+        });
+    }
+
     #[test]
     fn proposition_11_stale_counter_at_alg_4_6_line_12() {
         let mut rs = state();
@@ -637,6 +687,42 @@ mod tests {
         prop7(&rs, Prop7Before(vec![(v(2), 1)]), &rec); // as Prop. 7 says: passes
         assert_fails("Proposition 7", || {
             prop7(&rs, Prop7Before(vec![(v(2), 2)]), &rec)
+        });
+        // [0, 3] is contractible after the contraction, but 3 is not in lk(6): a
+        // degree-3 contraction cannot have made it so.
+        assert_eq!(critical_cycles_through(&rs.tri, v(0), v(3)), Some(0));
+        assert!(!rec.link.contains(&v(3)));
+        assert_fails("Proposition 7", || {
+            prop7(&rs, Prop7Before(vec![(v(3), 1)]), &rec)
+        });
+    }
+
+    /// The snapshot holds exactly the `lte` edges on a critical cycle, with their counts,
+    /// so a contraction Proposition 7 forbids is seen from the algorithm's own lists.
+    #[test]
+    fn proposition_7_snapshot_of_the_non_contractible_lte_edges() {
+        let mut rs = state();
+        to_lte(&mut rs, 2, 1); // on the critical cycle (0, 2, 4)
+        to_lte(&mut rs, 3, 0); // contractible
+        let before = prop7_before(&rs);
+        assert_eq!(before.0, vec![(v(2), 1)]);
+        let rec = rs.tri.contract_tested(v(0), v(6), &mut rs.history);
+        let mut forged = rec;
+        prop7(&rs, before, &rec); // d(6) = 3, 2 in lk(6): allowed
+                                  // The same change after a contraction that was not at a degree-3 vertex.
+        forged.degree_v = 4;
+        let before = Prop7Before(vec![(v(2), 1)]);
+        assert_fails("Proposition 7", || prop7(&rs, before, &forged));
+    }
+
+    #[test]
+    fn every_remaining_vertex_processed_once_at_the_end() {
+        let mut rs = state();
+        rs.processed_count = rs.tri.vertex_count() as u64;
+        at_end(&rs);
+        rs.processed_count -= 1;
+        assert_fails("Alg. 4.2 (every remaining vertex processed once)", || {
+            at_end(&rs)
         });
     }
 
