@@ -193,8 +193,10 @@ impl EdgeNumbering {
     /// half `ids`, which must number `tri`'s edges: made by [`EdgeIds::new`] on an
     /// earlier state and told every change since. One pass over the corners, O(F): for
     /// a caller that needs [`Self::corner`] only at the end of a long run of changes
-    /// (the tri-quad expansion) and so keeps only `ids` meanwhile. Checked against
-    /// `tri` ([`Self::check`]) in debug builds.
+    /// (the tri-quad expansion) and so keeps only `ids` meanwhile. Each live number
+    /// holds the smaller of its edge's two corners, as [`Self::new`] gives (the
+    /// expansion's flips, and so its output, follow this choice). Checked against `tri`
+    /// ([`Self::check`]) in debug builds.
     pub fn from_ids(ids: EdgeIds, tri: &Triangulation) -> Self {
         let mut corner_of = vec![NONE; ids.capacity()];
         let mut live = 0;
@@ -403,5 +405,71 @@ impl EdgeNumbering {
             }
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::core::History;
+    use crate::core::SurfaceKind;
+    use crate::gen::{self, RandomParams};
+
+    fn surface() -> Triangulation {
+        gen::random(&RandomParams {
+            surface: SurfaceKind::NonOrientable(3),
+            min_faces: 300,
+            flip_percent: 30,
+            seed: 7,
+        })
+        .expect("a small random surface")
+    }
+
+    /// Every live number of `n` holds the smaller corner of its edge, and the count of
+    /// live numbers is the number of edges.
+    fn assert_canonical(n: &EdgeNumbering, tri: &Triangulation) {
+        assert_eq!(n.check(tri), Ok(()));
+        assert_eq!(n.live_count(), tri.edge_count());
+        for (_, _, c) in tri.edges() {
+            let smaller = c.min(tri.opposite(c));
+            assert_eq!(n.corner(n.id(c)), Some(smaller), "edge at {c}");
+        }
+    }
+
+    #[test]
+    fn from_ids_gives_the_numbering_new_gives_and_follows_contractions() {
+        let mut tri = surface();
+        let fresh = EdgeNumbering::from_ids(EdgeIds::new(&tri), &tri);
+        assert_canonical(&fresh, &tri);
+        let new = EdgeNumbering::new(&tri);
+        for e in 0..new.capacity() as u32 {
+            assert_eq!(fresh.corner(EdgeId(e)), new.corner(EdgeId(e)));
+        }
+        // After contractions told to the per-corner half only.
+        let mut ids = EdgeIds::new(&tri);
+        let mut history = History::new();
+        for _ in 0..20 {
+            let Some((u, v, _)) = tri
+                .edges()
+                .find(|&(u, v, _)| tri.link_condition_naive(u, v))
+            else {
+                break;
+            };
+            let rec = tri.contract_tested(u, v, &mut history);
+            ids.contracted(&rec);
+        }
+        assert_eq!(history.len(), 20);
+        let after = EdgeNumbering::from_ids(ids, &tri);
+        assert_canonical(&after, &tri);
+        assert_eq!(after.capacity(), new.capacity());
+    }
+
+    #[test]
+    fn debug_forms_name_the_corner_and_the_number() {
+        let tri = surface();
+        let c = Corner(7);
+        let e = tri.edge_at(c);
+        assert_eq!(format!("{e:?}"), format!("e{}", e.corner().0));
+        assert_eq!(format!("{:?}", EdgeId(12)), "#12");
     }
 }
