@@ -445,8 +445,10 @@ mod tests {
         for e in 0..new.capacity() as u32 {
             assert_eq!(fresh.corner(EdgeId(e)), new.corner(EdgeId(e)));
         }
-        // After contractions told to the per-corner half only.
+        // After contractions told to the per-corner half only, and to a full numbering.
         let mut ids = EdgeIds::new(&tri);
+        let mut full = new;
+        let mut dead = Vec::new();
         let mut history = History::new();
         for _ in 0..20 {
             let Some((u, v, _)) = tri
@@ -456,12 +458,20 @@ mod tests {
                 break;
             };
             let rec = tri.contract_tested(u, v, &mut history);
-            ids.contracted(&rec);
+            let died = full.contracted(&rec);
+            assert_eq!(ids.contracted(&rec), died);
+            dead.extend(died);
         }
         assert_eq!(history.len(), 20);
         let after = EdgeNumbering::from_ids(ids, &tri);
         assert_canonical(&after, &tri);
-        assert_eq!(after.capacity(), new.capacity());
+        assert_eq!(after.capacity(), full.capacity());
+        assert_eq!(full.live_count(), tri.edge_count());
+        for e in (0..full.capacity() as u32).map(EdgeId) {
+            let canonical = full.corner(e).map(|c| c.min(tri.opposite(c)));
+            assert_eq!(after.corner(e), canonical, "{e:?}");
+            assert_eq!(full.is_alive(e), !dead.contains(&e), "{e:?}");
+        }
     }
 
     #[test]
