@@ -55,8 +55,8 @@ mod tests {
     /// The subcommands as docs/cli.md documents them, one `## \`NAME\`` heading each (two
     /// names for `completions`, `man`): a list kept by hand, independent of the grammar.
     fn documented_subcommands() -> BTreeSet<String> {
-        let doc = std::fs::read_to_string(crate::repo_root().join("docs/cli.md"))
-            .expect("docs/cli.md");
+        let doc =
+            std::fs::read_to_string(crate::repo_root().join("docs/cli.md")).expect("docs/cli.md");
         let mut names = BTreeSet::new();
         for line in doc.lines() {
             let Some(title) = line.strip_prefix("## `") else {
@@ -71,10 +71,8 @@ mod tests {
 
     #[test]
     fn shell_files_are_complete_and_well_formed() {
-        let out = std::env::temp_dir().join(format!(
-            "contractible-shell-files-{}",
-            std::process::id()
-        ));
+        let out =
+            std::env::temp_dir().join(format!("contractible-shell-files-{}", std::process::id()));
         let _ = std::fs::remove_dir_all(&out);
         let written = write(&out).expect("write the shell files");
 
@@ -115,17 +113,29 @@ mod tests {
         for entry in std::fs::read_dir(out.join("man")).expect("man/") {
             let path = entry.expect("entry").path();
             let text = std::fs::read_to_string(&path).expect("man page");
-            assert!(text.starts_with(".TH"), "{} does not start with .TH", path.display());
             let stem = path
                 .file_name()
                 .and_then(|n| n.to_str())
                 .and_then(|n| n.strip_suffix(".1"))
                 .expect("NAME.1")
                 .to_string();
+            // After the roff preamble clap_mangen puts first (`.ie`/`.el`: how to print
+            // an apostrophe), the page is titled with its own name, section 1.
+            let title = text
+                .lines()
+                .find(|l| !l.starts_with(".ie ") && !l.starts_with(".el "))
+                .unwrap_or("");
+            assert!(
+                title.starts_with(&format!(".TH {stem} 1 ")),
+                "{}: the page starts with {title:?}, not its .TH title",
+                path.display()
+            );
             if stem == "contractible" {
                 main_page = text.replace('\\', "");
             } else {
-                let sub = stem.strip_prefix("contractible-").expect("contractible-NAME.1");
+                let sub = stem
+                    .strip_prefix("contractible-")
+                    .expect("contractible-NAME.1");
                 // Nested subcommands (`gen random`) have pages `contractible-gen-random.1`.
                 let top = sub.split('-').next().unwrap_or(sub);
                 page_commands.insert(top.to_string());

@@ -26,7 +26,10 @@ fn main() -> ExitCode {
             ExitCode::SUCCESS
         }
         Err(e) => {
-            eprintln!("error: cannot write the shell files under {}: {e}", out.to_string_lossy());
+            eprintln!(
+                "error: cannot write the shell files under {}: {e}",
+                out.to_string_lossy()
+            );
             ExitCode::FAILURE
         }
     }
