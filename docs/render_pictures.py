@@ -255,8 +255,8 @@ def build_cli() -> Path:
     target = Path(os.environ.get("CARGO_TARGET_DIR", REPO / "target"))
     if not target.is_absolute():
         target = REPO / target
-    print("building the command line (cargo build --release --features cli)", flush=True)
-    built = subprocess.run(["cargo", "build", "--release", "--features", "cli"], cwd=REPO)
+    print("building the command line (cargo build --release -p contractible-cli)", flush=True)
+    built = subprocess.run(["cargo", "build", "--release", "-p", "contractible-cli"], cwd=REPO)
     if built.returncode != 0:
         sys.exit("cargo build failed; fix the build or pass --cli PATH")
     exe = target / "release" / ("contractible.exe" if os.name == "nt" else "contractible")

@@ -50,19 +50,6 @@ macro_rules! named_choice {
             }
         }
 
-        /// The command line's choices are the library's: one list of names, with each
-        /// choice's one-line summary as its help.
-        #[cfg(feature = "cli")]
-        impl clap::ValueEnum for $ty {
-            fn value_variants<'a>() -> &'a [Self] {
-                &<$ty>::ALL
-            }
-
-            fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
-                Some(clap::builder::PossibleValue::new(self.name()).help(self.summary()))
-            }
-        }
-
         /// Serialised as its name.
         #[cfg(feature = "serde")]
         impl serde::Serialize for $ty {

@@ -112,8 +112,9 @@ def data_mesh(name, kind="closed"):
 
 
 def cli_binary() -> Path:
-    """The release binary `cargo test --release --features invariants,cli` builds (CI
-    builds it before running pytest); CONTRACTIBLE_BIN overrides."""
+    """The release binary `contractible` that `cargo build --release -p contractible-cli`
+    (or the README's test command) builds in the workspace's target folder (CI builds it
+    before running pytest); CONTRACTIBLE_BIN overrides."""
     env = os.environ.get("CONTRACTIBLE_BIN")
     if env:
         return Path(env)
@@ -125,7 +126,7 @@ def cli_binary() -> Path:
 def cli():
     exe = cli_binary()
     if not exe.exists():
-        pytest.fail(f"{exe} not found: build it with `cargo build --release --features cli` "
+        pytest.fail(f"{exe} not found: build it with `cargo build --release -p contractible-cli` "
                     "or set CONTRACTIBLE_BIN")
 
     def run(*args, check=True):

@@ -2,15 +2,29 @@
 //! (`tests/data/`), the opt-in real-mesh corpus, list parsing and independent checkers.
 #![allow(dead_code)]
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use contractible::irreducible::{Algorithm, Options, Reduction};
 use contractible::Triangulation;
 
+/// The repository's root: the directory of the package whose test target includes this
+/// file, or its parent for the command line's package (cli/), whose tests read the same
+/// data, documents and examples.
+pub fn repo_root() -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
+    if env!("CARGO_PKG_NAME") == "contractible-cli" {
+        dir.parent()
+            .expect("cli/ is inside the repository")
+            .to_path_buf()
+    } else {
+        dir.to_path_buf()
+    }
+}
+
 /// The repository's own test data, `tests/data/` (see its README for what each file tests
 /// and where it comes from).
 pub fn data_dir() -> PathBuf {
-    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/data"))
+    repo_root().join("tests/data")
 }
 
 /// The small real meshes the repository carries, `tests/data/meshes/` (with their
@@ -29,7 +43,7 @@ pub fn data_meshes() -> PathBuf {
 pub fn corpus_dir() -> PathBuf {
     let dir = match std::env::var_os("CONTRACTIBLE_CORPUS") {
         Some(d) => PathBuf::from(d),
-        None => PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared")),
+        None => repo_root().join("../shared"),
     };
     let manifest = dir.join("meshes/manifest.csv");
     assert!(
@@ -447,7 +461,7 @@ pub fn dual_graph(t: &Triangulation) -> petgraph::graph::UnGraph<contractible::F
 /// The conformance vectors of `spec/vectors/<group>.jsonl`, one JSON value per line.
 /// (Only the test targets that depend on `serde_json` call it.)
 pub fn read_vectors(group: &str) -> Vec<serde_json::Value> {
-    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    let path = repo_root()
         .join("spec/vectors")
         .join(format!("{group}.jsonl"));
     let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));

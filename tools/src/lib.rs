@@ -1,7 +1,8 @@
 //! What the maintenance tools (`src/bin/`) share: the repository's root, where they read
 //! the test data and write the conformance vectors, the CPU time of the calling thread,
 //! which means more than wall time on a shared machine, and the topology of a mesh's
-//! components as the vectors record it.
+//! components as the vectors record it; and the command line's shell completions and man
+//! pages as files ([`shell_files`]).
 #![deny(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -12,6 +13,8 @@ use std::path::PathBuf;
 mod cpu_time;
 
 pub use cpu_time::cpu;
+
+pub mod shell_files;
 
 /// The root of the repository this package sits in (the parent of `tools/`).
 pub fn repo_root() -> PathBuf {

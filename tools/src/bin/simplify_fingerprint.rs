@@ -54,7 +54,7 @@ fn mode_name(m: Mode) -> &'static str {
     }
 }
 
-/// [`line`] for `mode` at `rel` times the diagonal `diag`, labelled `NAME MODE REL`.
+/// [`line()`] for `mode` at `rel` times the diagonal `diag`, labelled `NAME MODE REL`.
 fn mode_line(name: &str, mesh: &TriMesh, mode: Mode, rel: f64, diag: f64) -> String {
     let opts = Options {
         mode,

@@ -3,8 +3,10 @@
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use crate::choice;
 // The choices are the library's own enums (one list of names, parsed and printed by
-// them); under these names for the arguments below.
+// them, adapted to clap by `choice`); under these names for the arguments below.
 use contractible::irreducible::Algorithm as Algo;
 use contractible::quad::Algorithm as QuadAlgo;
 use contractible::simplify::{
@@ -350,7 +352,7 @@ pub struct ReduceArgs {
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub output_format: Option<FormatArg>,
     /// Algorithm.
-    #[arg(long, value_enum, default_value_t = Algo::Rs)]
+    #[arg(long, value_parser = choice::parser::<Algo>(), default_value_t = Algo::Rs)]
     pub algo: Algo,
     /// Seed (used by the brute force's shuffle).
     #[arg(long, default_value_t = 0)]
@@ -375,7 +377,7 @@ pub struct QuadArgs {
     #[arg(long, value_enum, value_name = "FORMAT")]
     pub output_format: Option<FormatArg>,
     /// Algorithm.
-    #[arg(long, value_enum, default_value_t = QuadAlgo::Lrs)]
+    #[arg(long, value_parser = choice::parser::<QuadAlgo>(), default_value_t = QuadAlgo::Lrs)]
     pub algo: QuadAlgo,
     /// Seed of the randomised orders of SG and PS.
     #[arg(long, default_value_t = 0)]
@@ -411,13 +413,13 @@ pub struct SimplifyArgs {
     #[arg(long, allow_negative_numbers = true)]
     pub eps_rel: Option<f64>,
     /// What to do with short edges that fail the link condition.
-    #[arg(long, value_enum, default_value_t = SimplifyMode::Nested)]
+    #[arg(long, value_parser = choice::parser::<SimplifyMode>(), default_value_t = SimplifyMode::Nested)]
     pub mode: SimplifyMode,
     /// The nested mode's side heuristic.
-    #[arg(long, value_enum, default_value_t = SimplifySide::Count)]
+    #[arg(long, value_parser = choice::parser::<SimplifySide>(), default_value_t = SimplifySide::Count)]
     pub side: SimplifySide,
     /// Where the new vertex of a contraction goes.
-    #[arg(long, value_enum, default_value_t = SimplifyPosition::Midpoint)]
+    #[arg(long, value_parser = choice::parser::<SimplifyPosition>(), default_value_t = SimplifyPosition::Midpoint)]
     pub position: SimplifyPosition,
     /// Turn off the geometry guard (which skips a contraction that would flip a
     /// triangle's normal by 90° or more or leave a zero-area triangle). The topology is
@@ -434,7 +436,7 @@ pub struct DemoArgs {
     #[arg(long, default_value_t = 0)]
     pub seed: u64,
     /// Algorithms to compare (comma-separated).
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Algo::Rs, Algo::Schipper, Algo::Brute])]
+    #[arg(long, value_parser = choice::parser::<Algo>(), value_delimiter = ',', default_values_t = [Algo::Rs, Algo::Schipper, Algo::Brute])]
     pub algos: Vec<Algo>,
 }
 

@@ -25,7 +25,7 @@ use std::process::{Command, Stdio};
 use crate::cli_common::Scratch;
 
 fn repo() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+    crate::common::repo_root()
 }
 
 fn read_doc(rel: &str) -> String {

@@ -1,4 +1,7 @@
-//! Command-line interface (binary only): argument parsing, dispatch, exit codes.
+//! The `contractible` command-line tool: argument parsing, dispatch, exit codes. The
+//! binary calls [`main`]; [`command`] is its clap grammar, from which the shell
+//! completions and the man pages are generated. Everything else is private: the tool
+//! uses only the public API of the `contractible` library.
 //!
 //! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
 //! a disjoint union of closed surfaces — for `info` and `simplify`, of surfaces possibly
@@ -14,15 +17,16 @@
 /// stderr instead.
 macro_rules! outln {
     () => {
-        $crate::cli::write_stdout_line(format_args!(""))
+        $crate::write_stdout_line(format_args!(""))
     };
     ($($arg:tt)*) => {
-        $crate::cli::write_stdout_line(format_args!($($arg)*))
+        $crate::write_stdout_line(format_args!($($arg)*))
     };
 }
 
 mod args;
 mod batch;
+mod choice;
 mod convert;
 mod demo;
 mod docs;
@@ -39,11 +43,11 @@ use std::process::ExitCode;
 
 use clap::Parser;
 
-pub use args::Cli;
+use args::Cli;
 
 /// A failure of a subcommand, with the exit code it maps to.
 #[derive(Debug)]
-pub enum CliError {
+pub(crate) enum CliError {
     /// Invalid input (exit code 2): one message per problem, each printed as one line.
     Input(String),
     /// Any other failure (exit code 1).
@@ -67,7 +71,7 @@ impl CliError {
 
 /// Global output settings shared by every subcommand.
 #[derive(Clone, Copy, Debug)]
-pub struct Ui {
+pub(crate) struct Ui {
     /// Print the machine-readable result (only it) on stdout.
     pub json: bool,
     /// No progress bars and no human-readable text.
@@ -89,7 +93,7 @@ impl Ui {
 }
 
 /// Prints `value` as pretty JSON on stdout.
-pub fn print_json<T: serde::Serialize>(value: &T) -> Result<(), CliError> {
+pub(crate) fn print_json<T: serde::Serialize>(value: &T) -> Result<(), CliError> {
     let s = serde_json::to_string_pretty(value)
         .map_err(|e| CliError::Failure(format!("cannot encode JSON: {e}")))?;
     outln!("{s}");
@@ -105,7 +109,7 @@ static JSON_PRINTED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBo
 static REPORT_TO_STDERR: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
 
 /// Sends the report to stderr from now on (stdout carries the output mesh).
-pub fn report_to_stderr() {
+pub(crate) fn report_to_stderr() {
     REPORT_TO_STDERR.store(true, std::sync::atomic::Ordering::Relaxed);
 }
 
@@ -113,7 +117,7 @@ pub fn report_to_stderr() {
 /// carries a mesh. A closed pipe ends the process as SIGPIPE does (no message); any
 /// other write error (a full disk: `> /dev/full`) is one line on stderr and exit code 1,
 /// since the output the user asked for cannot be delivered.
-pub fn write_stdout_line(args: std::fmt::Arguments<'_>) {
+pub(crate) fn write_stdout_line(args: std::fmt::Arguments<'_>) {
     use std::io::Write;
     if REPORT_TO_STDERR.load(std::sync::atomic::Ordering::Relaxed) {
         eprintln!("{args}");
@@ -127,6 +131,12 @@ pub fn write_stdout_line(args: std::fmt::Arguments<'_>) {
         eprintln!("error: cannot write to stdout: {e}");
         std::process::exit(1);
     }
+}
+
+/// The command line's clap grammar (subcommands, options, help texts): the one the
+/// parser uses, for generating shell completions and man pages that match the binary.
+pub fn command() -> clap::Command {
+    <Cli as clap::CommandFactory>::command()
 }
 
 /// Parses the command line, runs it and maps the result to an exit code.
