@@ -450,7 +450,7 @@ mod tests {
         let mut full = new;
         let mut dead = Vec::new();
         let mut history = History::new();
-        for _ in 0..20 {
+        for _ in 0..120 {
             let Some((u, v, _)) = tri
                 .edges()
                 .find(|&(u, v, _)| tri.link_condition_naive(u, v))
@@ -462,7 +462,7 @@ mod tests {
             assert_eq!(ids.contracted(&rec), died);
             dead.extend(died);
         }
-        assert_eq!(history.len(), 20);
+        assert_eq!(history.len(), 120);
         let after = EdgeNumbering::from_ids(ids, &tri);
         assert_canonical(&after, &tri);
         assert_eq!(after.capacity(), full.capacity());
@@ -471,6 +471,18 @@ mod tests {
             let canonical = full.corner(e).map(|c| c.min(tri.opposite(c)));
             assert_eq!(after.corner(e), canonical, "{e:?}");
             assert_eq!(full.is_alive(e), !dead.contains(&e), "{e:?}");
+        }
+        // Undoing every contraction gives every number back to its edge.
+        while let Some(rec) = history.undo(&mut tri) {
+            full.uncontracted(&rec);
+        }
+        assert_eq!(full.check(&tri), Ok(()));
+        assert_eq!(full.live_count(), tri.edge_count());
+        let again = EdgeNumbering::new(&tri);
+        for e in (0..full.capacity() as u32).map(EdgeId) {
+            // Any corner of the edge (only new() and from_ids choose the smaller).
+            let held = full.corner(e).map(|c| c.min(tri.opposite(c)));
+            assert_eq!(held, again.corner(e), "{e:?}");
         }
     }
 
