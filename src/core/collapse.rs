@@ -289,15 +289,19 @@ impl Triangulation {
             }
         }
         // The new first corner of every face (NONE for a removed face).
-        let faces = self.corner_vertex.len() / 3;
-        let mut face_base = vec![NONE; faces];
         let mut next_base = 0u32;
-        for (base, face) in face_base.iter_mut().zip(self.corner_vertex.chunks_exact(3)) {
-            if face[0] != NONE {
-                *base = next_base;
+        let face_base: Vec<u32> = self
+            .corner_vertex
+            .chunks_exact(3)
+            .map(|face| {
+                if face[0] == NONE {
+                    return NONE;
+                }
+                let base = next_base;
                 next_base += 3;
-            }
-        }
+                base
+            })
+            .collect();
         let remap_corner = |c: u32| face_base[(c / 3) as usize] + c % 3;
         // Face f moves to a slot at or before its own, so one forward sweep rewrites in
         // place.
@@ -364,6 +368,65 @@ mod tests {
             .collect();
         out.sort_unstable();
         out
+    }
+
+    /// The cyclic order of a face, rotated to start at its smallest vertex (the
+    /// orientation is kept: [0, 2, 4] and [2, 4, 0] agree, [0, 4, 2] does not).
+    fn cyclic(f: [u32; 3]) -> [u32; 3] {
+        let k = (0..3).min_by_key(|&k| f[k]).unwrap_or(0);
+        [f[k], f[(k + 1) % 3], f[(k + 2) % 3]]
+    }
+
+    /// The octahedron with its face [0, 2, 4] subdivided by vertex 6, then the disc of
+    /// the three faces at 6 replaced by one face: the octahedron again, the new face
+    /// running as [0, 2, 4] did, so the surface stays consistently oriented.
+    #[test]
+    fn replace_disc_restores_the_face_with_its_orientation() {
+        use crate::core::{Corner, VertexId};
+        let oct = gen::octahedron();
+        let at = oct.faces.iter().position(|f| cyclic(*f) == [0, 2, 4]);
+        assert!(at.is_some(), "the octahedron lists [0, 2, 4]");
+        let mut faces: Vec<[u32; 3]> = oct.faces.clone();
+        faces.retain(|f| cyclic(*f) != [0, 2, 4]);
+        faces.extend([[0, 2, 6], [2, 4, 6], [4, 0, 6]]);
+        for order in [[0, 2, 4], [2, 0, 4]] {
+            // Both directions of the cycle as [p, q, x]: the new face follows the disc.
+            let mut t = Triangulation::from_faces(7, &faces).expect("a sphere");
+            assert_eq!(t.orientation().map(|f| f.contains(&true)), Some(false));
+            let [p, q, x] = order.map(VertexId);
+            let six = VertexId(6);
+            let disc: Vec<_> = t
+                .faces()
+                .filter(|&f| t.face_vertices(f).contains(&six))
+                .collect();
+            // The corner at 6 in the disc face through a and b faces the edge [a, b].
+            let side = |a: VertexId, b: VertexId| -> Corner {
+                let f = disc
+                    .iter()
+                    .copied()
+                    .find(|&f| {
+                        let vs = t.face_vertices(f);
+                        vs.contains(&a) && vs.contains(&b)
+                    })
+                    .expect("a disc face on the side");
+                f.corners()
+                    .into_iter()
+                    .find(|&c| t.vertex(c) == six)
+                    .expect("the corner at 6")
+            };
+            let sides = [side(p, q), side(q, x), side(x, p)];
+            let mut disc = disc;
+            disc.sort_by_key(|&f| f != sides[0].face());
+            let new = t.replace_disc([p, q, x], &disc, &[six], sides);
+            assert_eq!(t.validate(), Ok(()));
+            assert_eq!(t.vertex_count(), 6);
+            assert_eq!(
+                cyclic(t.face_vertices(new).map(|v| v.0)),
+                [0, 2, 4],
+                "with the cycle given as {order:?}"
+            );
+            assert_eq!(t.orientation().map(|f| f.contains(&true)), Some(false));
+        }
     }
 
     fn sorted_faces(t: &Triangulation) -> Vec<[u32; 3]> {

@@ -112,3 +112,18 @@ macro_rules! show {
 show!(VertexId, "v");
 show!(FaceId, "f");
 show!(Corner, "c");
+
+#[cfg(test)]
+mod tests {
+    use super::{MAX_FACES, MAX_VERTICES, NONE};
+
+    /// The bounds are the largest counts whose ids, and the counts themselves, stay
+    /// below the sentinel: one more vertex or face would reach it.
+    #[test]
+    fn the_largest_counts_leave_the_sentinel_free() {
+        assert!(MAX_VERTICES < NONE as usize);
+        assert!(MAX_VERTICES + 1 >= NONE as usize);
+        assert!(3 * MAX_FACES < NONE as usize);
+        assert!(3 * (MAX_FACES + 1) >= NONE as usize);
+    }
+}
