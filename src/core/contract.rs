@@ -469,3 +469,46 @@ impl Triangulation {
         rec
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `==` tells records apart by every field it compares (each one changed alone makes
+    /// them unequal) and ignores the state stamps.
+    #[test]
+    fn records_are_equal_exactly_when_the_contractions_are() {
+        let oct = crate::gen::octahedron();
+        let contract = || {
+            let mut t = Triangulation::from_faces(6, &oct.faces).expect("the octahedron");
+            let (u, v, _) = t.edges().next().expect("an edge");
+            t.contract_tested(u, v, &mut History::new())
+        };
+        let rec = contract();
+        let mut again = contract();
+        assert_eq!(rec, again);
+        again.state_before = rec.state_after;
+        again.state_after = rec.state_before;
+        assert_ne!(rec.state_before, again.state_before);
+        assert_eq!(rec, again, "the stamps are not compared");
+
+        let changes: [(&str, fn(&mut ContractionRecord)); 9] = [
+            ("u", |r| r.u = VertexId(r.u.0 + 1)),
+            ("v", |r| r.v = VertexId(r.v.0 + 1)),
+            ("link", |r| r.link[1] = VertexId(r.link[1].0 + 1)),
+            ("faces", |r| r.faces[1] = FaceId(r.faces[1].0 + 1)),
+            ("degree_v", |r| r.degree_v += 1),
+            ("slots", |r| r.slots ^= 1),
+            ("outer", |r| r.outer[3] = r.outer[3].wrapping_add(1)),
+            ("saved_vertex_corner", |r| {
+                r.saved_vertex_corner[3] = r.saved_vertex_corner[3].wrapping_add(1)
+            }),
+            ("renamed", |r| r.renamed.1 += 1),
+        ];
+        for (field, change) in changes {
+            let mut other = rec;
+            change(&mut other);
+            assert_ne!(rec, other, "{field} differs");
+        }
+    }
+}
