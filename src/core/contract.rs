@@ -492,7 +492,8 @@ mod tests {
         assert_ne!(rec.state_before, again.state_before);
         assert_eq!(rec, again, "the stamps are not compared");
 
-        let changes: [(&str, fn(&mut ContractionRecord)); 9] = [
+        type Change = fn(&mut ContractionRecord);
+        let changes: [(&str, Change); 9] = [
             ("u", |r| r.u = VertexId(r.u.0 + 1)),
             ("v", |r| r.v = VertexId(r.v.0 + 1)),
             ("link", |r| r.link[1] = VertexId(r.link[1].0 + 1)),
