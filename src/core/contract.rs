@@ -512,4 +512,59 @@ mod tests {
             assert_ne!(rec, other, "{field} differs");
         }
     }
+
+    /// A record's renamed corners are the `d_v - 2` corners of `v` outside the two removed
+    /// faces: [`ContractionRecord::renamed_len`] counts them, and they are the ones the
+    /// history stores for it.
+    #[test]
+    fn renamed_len_is_the_degree_of_v_less_two() {
+        let mesh = crate::gen::subdivide(&crate::gen::icosahedron(), 1).expect("subdivided");
+        let mut t = Triangulation::from_faces(mesh.vertex_count, &mesh.faces).expect("a sphere");
+        let mut h = History::new();
+        let mut degrees = Vec::new();
+        loop {
+            let next = t
+                .edges()
+                .map(|(u, v, _)| (u, v))
+                .find(|&(u, v)| t.link_condition_naive(u, v));
+            let Some((u, v)) = next else { break };
+            degrees.push(t.degree(v));
+            t.contract_tested(u, v, &mut h);
+        }
+        assert!(degrees.len() > 30, "{} contractions", degrees.len());
+        assert!(degrees.iter().any(|&d| d != 6) && degrees.iter().any(|&d| d == 6));
+        for (r, d) in h.records().iter().zip(&degrees) {
+            assert_eq!(r.renamed_len(), d - 2);
+            assert_eq!(h.renamed(r).len(), d - 2);
+        }
+    }
+
+    /// Histories are equal exactly when their records and renamed corners are; the
+    /// link-test scratch takes no part.
+    #[test]
+    fn histories_are_equal_exactly_when_their_contractions_are() {
+        let oct = crate::gen::octahedron();
+        let run = |edge: usize, contractions: usize| {
+            let mut t = Triangulation::from_faces(6, &oct.faces).expect("the octahedron");
+            let mut h = History::new();
+            for _ in 0..contractions {
+                let (u, v, _) = t.edges().nth(edge).expect("an edge");
+                t.contract_tested(u, v, &mut h);
+            }
+            h
+        };
+        let a = run(0, 1);
+        assert_eq!(a, run(0, 1));
+        assert_ne!(a, History::new());
+        assert_ne!(a, run(0, 2), "a record more");
+        assert_ne!(a, run(3, 1), "another edge");
+        let mut same_records = a.clone();
+        same_records.renamed.reverse();
+        same_records.renamed.push(Corner(0));
+        assert_eq!(same_records.records, a.records);
+        assert_ne!(a, same_records, "other renamed corners");
+        let mut fresh = a.clone();
+        fresh.tester = None;
+        assert_eq!(a, fresh, "the scratch is not compared");
+    }
 }
