@@ -6,7 +6,7 @@
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use contractible::gen::{self, RandomParams, SurfaceKind};
-use contractible::{BuildError, ConedComponent, Surfaces, TriMesh, VertexId};
+use contractible::{BuildError, ConedComponent, FaceId, Surfaces, TriMesh, VertexId};
 
 use crate::common;
 
@@ -257,6 +257,54 @@ fn check_mesh(mesh: &TriMesh, label: &str) -> (usize, usize) {
             .unwrap_or_else(|e| panic!("{label}: {e}"));
         let expected_loops = walk_loops(&faces);
         assert_eq!(library_loops(c), expected_loops, "{label}: loops");
+        // As written, each loop starts at its smallest local id and goes towards the
+        // smaller of that vertex's neighbours.
+        for l in c.boundary_loops() {
+            let ids: Vec<u32> = l.iter().map(|v| v.0).collect();
+            assert_eq!(ids, canonical(ids.clone()), "{label}: loop as written");
+        }
+        // A real face names its mesh face (the same vertices); a cone face, on a virtual
+        // vertex, names none.
+        for f in c.tri().faces() {
+            let vs = c.tri().face_vertices(f);
+            match c.face_origin_of(f) {
+                Some(m) => {
+                    let mut got: Vec<u32> = vs
+                        .iter()
+                        .map(|&v| c.vertex_origin_of(v).expect("a real face's vertex"))
+                        .collect();
+                    let mut want = mesh.faces[m as usize].to_vec();
+                    got.sort_unstable();
+                    want.sort_unstable();
+                    assert_eq!(got, want, "{label}: face {} origin", f.0);
+                }
+                None => assert!(
+                    vs.iter().any(|&v| c.is_virtual(v)),
+                    "{label}: face {} has no origin",
+                    f.0
+                ),
+            }
+        }
+        // A boundary vertex lies on its loop's virtual vertex; others on none.
+        for v in c.tri().vertices() {
+            match c.loop_of(v) {
+                Some(w) => assert!(
+                    c.is_virtual(w) && c.tri().link(w).any(|x| x == v),
+                    "{label}: loop of {}",
+                    v.0
+                ),
+                None => assert!(
+                    c.is_virtual(v) || c.tri().link(v).all(|x| !c.is_virtual(x)),
+                    "{label}: {} is on a loop",
+                    v.0
+                ),
+            }
+        }
+        // Ids past the triangulation's are neither virtual, on a loop, nor faces of the mesh.
+        let past = VertexId(c.tri().vertex_capacity() as u32 + 1);
+        assert!(!c.is_virtual(past) && c.loop_of(past).is_none(), "{label}");
+        let past_face = FaceId(c.tri().face_capacity() as u32);
+        assert_eq!(c.face_origin_of(past_face), None, "{label}");
         let b = expected_loops.len();
         loops += b;
         let lengths: Vec<usize> = c.boundary_loops().iter().map(Vec::len).collect();
