@@ -17,20 +17,6 @@ impl<'a> Lines<'a> {
         }
     }
 
-    /// Starts at byte `pos` of `bytes`, where the line about to be read has number `line + 1`.
-    pub(crate) fn starting_at(bytes: &'a [u8], pos: usize, line: usize) -> Self {
-        Lines {
-            bytes,
-            pos: pos.min(bytes.len()),
-            line,
-        }
-    }
-
-    /// Number of the last line returned (0 before the first).
-    pub(crate) fn line(&self) -> usize {
-        self.line
-    }
-
     /// Bytes not yet consumed.
     pub(crate) fn remaining(&self) -> usize {
         self.bytes.len() - self.pos
@@ -77,6 +63,7 @@ pub(crate) fn is_space(b: u8) -> bool {
 }
 
 /// Iterates over whitespace-separated tokens of one line.
+#[derive(Clone)]
 pub(crate) struct Tokens<'a> {
     s: &'a [u8],
     pos: usize,
