@@ -21,7 +21,7 @@ use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
 use super::input::Input;
 use super::poly::PolyMesh;
-use super::text::{is_space, parse_i64, Tokens};
+use super::text::{is_space, parse_any_f64, parse_i64, Tokens};
 use crate::mesh::Mesh;
 
 /// How a PLY file encodes its payload.
@@ -463,8 +463,7 @@ impl Payload for Ascii<'_, '_> {
             Ok(Value::Int(v))
         } else {
             // Any float syntax (NaN too) for ignored properties; coordinates are checked later.
-            let s = std::str::from_utf8(tok).map_err(|_| bad())?;
-            Ok(Value::Float(s.parse::<f64>().map_err(|_| bad())?))
+            Ok(Value::Float(parse_any_f64(tok).ok_or_else(bad)?))
         }
     }
 
