@@ -84,11 +84,39 @@ fn tmp(name: &str) -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("io_formats_{name}"))
 }
 
+/// A reader handing out a few bytes per call (1, 2, ... 7, then 1 again), so that every
+/// record and line of a stream crosses buffer refills.
+struct Trickle<'a> {
+    bytes: &'a [u8],
+    calls: usize,
+}
+
+impl std::io::Read for Trickle<'_> {
+    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+        self.calls += 1;
+        let n = (self.calls % 7 + 1).min(out.len()).min(self.bytes.len());
+        out[..n].copy_from_slice(&self.bytes[..n]);
+        self.bytes = &self.bytes[n..];
+        Ok(n)
+    }
+}
+
+/// The error reading `bytes` as `format` gives, which must be the same (kind and
+/// location) whether the bytes are read from memory (their length known) or streamed in
+/// dribs and drabs from a reader (their length unknown).
 fn err(bytes: &[u8], format: Format) -> ReadError {
-    match read_tri_mesh_bytes(bytes, Some(format)) {
+    let e = match read_tri_mesh_bytes(bytes, Some(format)) {
         Ok(m) => panic!("expected an error, read {m:?}"),
         Err(e) => e,
-    }
+    };
+    let streamed = read_tri_mesh_from(Trickle { bytes, calls: 0 }, format)
+        .expect_err("the same error when streamed");
+    assert_eq!(
+        (format!("{:?}", streamed.kind), streamed.location),
+        (format!("{:?}", e.kind), e.location),
+        "streamed and in-memory reading disagree"
+    );
+    e
 }
 
 // ---------------------------------------------------------------- round trips
@@ -108,7 +136,17 @@ fn tri_round_trip_all_formats_in_memory() {
         // Sniffing finds the same format.
         assert_eq!(Format::sniff(&bytes), Some(format));
         assert_same(&m, &read_tri_mesh_bytes(&bytes, None).unwrap());
-        assert_same(&m, &read_tri_mesh_from(&bytes[..], format).unwrap());
+        assert_same(
+            &m,
+            &read_tri_mesh_from(
+                Trickle {
+                    bytes: &bytes,
+                    calls: 0,
+                },
+                format,
+            )
+            .unwrap(),
+        );
     }
     for enc in [
         PlyEncoding::Ascii,
