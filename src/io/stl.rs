@@ -20,10 +20,14 @@
 //! ASCII when it starts with the keyword `solid` (after an optional UTF-8 BOM and
 //! whitespace) and its first 512 bytes are text (no control bytes, which the binary
 //! count and coordinates nearly always contain); otherwise as binary, whose checks then
-//! say what is wrong.
+//! say what is wrong. Gzip content from memory or a file is measured by a first
+//! decompression pass when this rule needs its length; a gzip stream read once
+//! ([`super::decode_reader`]) has no length, and a `solid` start followed by text is then
+//! ASCII (a binary file would differ only with a count of at least 538,976,288 triangles
+//! whose bytes are all text, at exactly the matching size).
 //!
 //! **Binary.** The declared count is checked against the input's length *before* anything
-//! is reserved: a shorter payload is `Truncated` at the offset of the first incomplete
+//! is reserved (for a stream of unknown length, when it ends, with the same errors): a shorter payload is `Truncated` at the offset of the first incomplete
 //! triangle (or a `CountMismatch` at byte 80 when the payload holds a whole number of
 //! triangles), a longer one is `TrailingData` at the offset where the declared triangles
 //! end. A NaN or infinite coordinate is `BadNumber` at the byte offset of that `f32`.
