@@ -274,9 +274,25 @@ fn decode_source(mut source: Source<'_>, declared: Option<Format>) -> Result<Dec
         input.set_known_len(len);
         sniffed = sniff_input(&mut input)?;
     }
-    let format = sniffed
-        .or(declared)
-        .ok_or_else(|| ReadError::new(ReadErrorKind::UnknownFormat, Location::Unknown))?;
+    let format = match sniffed.or(declared) {
+        Some(format) => format,
+        // A stream read once has no length for the binary STL rule (a length that
+        // matches the count): read it as binary STL, which checks exactly that as it ends.
+        None if input.known_len().is_none() => {
+            let mesh = stl::parse_unsniffed(&mut input)?;
+            return Ok(Decoded {
+                mesh: mesh.into(),
+                format: Format::Stl,
+                declared,
+            });
+        }
+        None => {
+            return Err(ReadError::new(
+                ReadErrorKind::UnknownFormat,
+                Location::Unknown,
+            ))
+        }
+    };
     let mesh = parse(&mut input, format)?;
     Ok(Decoded {
         mesh,
@@ -334,8 +350,11 @@ pub fn decode(bytes: &[u8], declared: Option<Format>) -> Result<Decoded, ReadErr
 }
 
 /// [`decode`] on a stream read once (standard input, a socket): the same rules, in memory
-/// for the mesh only. One difference, since the stream's length is unknown until it ends:
-/// gzip content starting with `solid` and text is ASCII STL (see the `stl` module).
+/// for the mesh only, except where the STL rule needs the length before the stream ends:
+/// content that no header names is read as binary STL, kept if its length matches its
+/// triangle count (`UnknownFormat` otherwise), and a binary STL whose 80-byte header
+/// starts like another format (`ply`, `OFF`, an OBJ statement, `solid` and text) is read
+/// as that format (see the `stl` module).
 pub fn decode_reader(reader: impl Read, declared: Option<Format>) -> Result<Decoded, ReadError> {
     decode_source(Source::Reader(Box::new(reader)), declared)
 }

@@ -265,6 +265,30 @@ fn parse_binary(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
     }
 }
 
+/// Reads content that no header names, from a stream of unknown length, as binary STL:
+/// the mesh when its length matches the triangle count (what [`sniff`] would have decided
+/// with the length known), `UnknownFormat` when it does not, and a binary error (a
+/// non-finite coordinate...) only when the length matches.
+pub(crate) fn parse_unsniffed(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
+    let unknown = || ReadError::new(K::UnknownFormat, super::Location::Unknown);
+    let head = input.peek(PAYLOAD_START)?;
+    let Some(&[a, b, c, d]) = head.get(80..PAYLOAD_START) else {
+        return Err(unknown());
+    };
+    let declared = u64::from(u32::from_le_bytes([a, b, c, d]));
+    input.consume(PAYLOAD_START);
+    match read_triangles(input, declared) {
+        Ok(mesh) => Ok(mesh),
+        Err(e) => {
+            input.drain()?;
+            match binary_length_error(declared, input.offset()) {
+                None => Err(e),
+                Some(_) => Err(unknown()),
+            }
+        }
+    }
+}
+
 /// Reads `declared` binary triangles from the payload start, then checks that nothing
 /// follows them.
 fn read_triangles(input: &mut Input<'_>, declared: u64) -> Result<TriMesh, ReadError> {

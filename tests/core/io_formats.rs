@@ -1365,3 +1365,60 @@ fn a_failed_write_leaves_no_file() {
     assert_eq!(listing(), vec![std::ffi::OsString::from("q.obj")]);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// A stream read once has no length for the binary STL rule: content no header names is
+/// read as binary STL when its length matches the count, and is `UnknownFormat` when it
+/// does not, as from memory.
+#[test]
+fn read_once_streams_recognise_binary_stl_by_its_length() {
+    let m = contractible::gen::octahedron();
+    let stl = to_bytes(&m, Format::Stl, true);
+    let from_memory = contractible::io::decode(&stl, None).unwrap();
+    let streamed = contractible::io::decode_reader(
+        Trickle {
+            bytes: &stl,
+            calls: 0,
+        },
+        None,
+    )
+    .unwrap();
+    assert_eq!(
+        (from_memory.format, streamed.format),
+        (Format::Stl, Format::Stl)
+    );
+    assert_eq!(from_memory.mesh, streamed.mesh);
+    for bad in [
+        &stl[..stl.len() - 1],
+        &[&stl[..], &[0u8; 50][..]].concat()[..],
+        &stl[..40],
+    ] {
+        let a = contractible::io::decode(bad, None).unwrap_err();
+        let b = contractible::io::decode_reader(
+            Trickle {
+                bytes: bad,
+                calls: 0,
+            },
+            None,
+        )
+        .unwrap_err();
+        assert!(matches!(a.kind, K::UnknownFormat), "{a}");
+        assert!(matches!(b.kind, K::UnknownFormat), "{b}");
+    }
+    // A non-finite coordinate is reported when the length matches.
+    let mut nan = stl.clone();
+    nan[84 + 12..84 + 16].copy_from_slice(&f32::NAN.to_le_bytes());
+    let a = contractible::io::decode(&nan, None).unwrap_err();
+    let b = contractible::io::decode_reader(
+        Trickle {
+            bytes: &nan,
+            calls: 0,
+        },
+        None,
+    )
+    .unwrap_err();
+    assert_eq!(
+        (format!("{:?}", a.kind), a.location),
+        (format!("{:?}", b.kind), b.location)
+    );
+    assert!(matches!(a.kind, K::BadNumber { .. }), "{a}");
+}
