@@ -284,26 +284,17 @@ pub fn load(path: &Path, opts: &InputOpts, ui: Ui) -> Result<Loaded, CliError> {
     let declared = opts.format.map(io::Format::from);
     let r = if is_stdin(path) {
         let pb = spinner(ui, format!("reading {}", shown(path)));
-        let mut bytes = Vec::new();
-        use std::io::Read;
-        let r = std::io::stdin()
-            .lock()
-            .read_to_end(&mut bytes)
-            .map_err(|e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown))
-            .and_then(|_| io::decode(&bytes, declared));
+        let r = io::decode_reader(std::io::stdin().lock(), declared);
         pb.finish_and_clear();
         r
     } else {
-        // The bytes with a bar (size known), then the parsing with a spinner.
-        read_bytes(path, ui).and_then(|bytes| {
-            let pb = spinner(
-                ui,
-                format!("parsing {} ({} bytes)", path.display(), bytes.len()),
-            );
-            let r = io::decode_named(path, &bytes, declared);
-            pb.finish_and_clear();
-            r
-        })
+        // Streamed: the bar follows the file bytes read while parsing (the size is a hint
+        // for the bar only: the file may change while read).
+        let len = std::fs::metadata(path).map(|m| m.len()).unwrap_or(0);
+        let pb = bytes_bar(ui, len, format!("reading {}", path.display()));
+        let r = io::read_poly_mesh_observed(path, declared, &mut |n| pb.set_position(n));
+        pb.finish_and_clear();
+        r
     };
     let decoded = r.map_err(|e| CliError::Input(read_error_message(path, &e)))?;
     let mut names = Names::of_path(path);
@@ -556,21 +547,6 @@ pub fn warn_dropped(names: &Names, dropped: usize, ui: Ui) {
             names.shown
         ));
     }
-}
-
-/// The bytes of `path`, read with a bar over the file's size.
-fn read_bytes(path: &Path, ui: Ui) -> Result<Vec<u8>, ReadError> {
-    use std::io::Read;
-    let io_error = |e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown);
-    let file = std::fs::File::open(path).map_err(io_error)?;
-    let len = file.metadata().map_err(io_error)?.len();
-    let pb = bytes_bar(ui, len, format!("reading {}", path.display()));
-    // The size is a hint for the allocation only: the file may change while read.
-    let mut bytes = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
-    let r = pb.wrap_read(file).read_to_end(&mut bytes);
-    pb.finish_and_clear();
-    r.map_err(io_error)?;
-    Ok(bytes)
 }
 
 /// Why an output cannot be written, found before any work (exit code 2).

@@ -539,6 +539,7 @@ pub fn check_journal(input: &JournalInput) {
 /// `parse_*`: the reader must not panic; a parsed mesh goes to [`Surfaces::from_mesh`]
 /// (must not panic), and every component it builds must validate and be consistent.
 pub fn check_parse(bytes: &[u8], format: Option<Format>) {
+    check_streamed(bytes, format);
     let Ok(mesh) = read_tri_mesh_bytes(bytes, format) else {
         return;
     };
@@ -566,6 +567,77 @@ pub fn check_parse(bytes: &[u8], format: Option<Format>) {
         faces += c.tri.face_count();
     }
     assert_eq!(faces, mesh.faces.len(), "faces lost between components");
+}
+
+/// A reader handing out 1 to 7 bytes per call, so that every line and record of a
+/// stream crosses buffer refills.
+pub struct Trickle<'a> {
+    bytes: &'a [u8],
+    calls: usize,
+}
+
+impl<'a> Trickle<'a> {
+    /// Streams `bytes`.
+    pub fn new(bytes: &'a [u8]) -> Self {
+        Trickle { bytes, calls: 0 }
+    }
+}
+
+impl std::io::Read for Trickle<'_> {
+    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+        self.calls += 1;
+        let n = (self.calls % 7 + 1).min(out.len()).min(self.bytes.len());
+        out[..n].copy_from_slice(&self.bytes[..n]);
+        self.bytes = &self.bytes[n..];
+        Ok(n)
+    }
+}
+
+/// Reading `bytes` streamed from a reader gives what reading them from memory gives: the
+/// same mesh, or an error of the same kind at the same location. Skipped where the STL
+/// rule needs the length that only memory knows beforehand (documented at
+/// `contractible::io::decode_reader`): gzip STL, and undeclared content whose length is
+/// that of a binary STL.
+pub fn check_streamed(bytes: &[u8], format: Option<Format>) {
+    let gzip = bytes.starts_with(&[0x1f, 0x8b]);
+    let outcome = |r: Result<contractible::TriMesh, contractible::io::ReadError>| match r {
+        Ok(m) => Ok(m),
+        Err(e) => Err((format!("{:?}", e.kind), e.location)),
+    };
+    let (memory, streamed) = match format {
+        Some(f) => {
+            if gzip && f == Format::Stl {
+                return;
+            }
+            (
+                outcome(read_tri_mesh_bytes(bytes, Some(f))),
+                outcome(contractible::io::read_tri_mesh_from(Trickle::new(bytes), f)),
+            )
+        }
+        None => {
+            let binary_stl_size = bytes.get(80..84).is_some_and(|c| {
+                let n = u64::from(u32::from_le_bytes([c[0], c[1], c[2], c[3]]));
+                (bytes.len() - 84) as u64 == 50 * n
+            });
+            if gzip || binary_stl_size {
+                return;
+            }
+            let tri = |r: Result<contractible::io::Decoded, contractible::io::ReadError>| {
+                r.and_then(|d| d.mesh.into_tri_mesh())
+            };
+            (
+                outcome(tri(contractible::io::decode(bytes, None))),
+                outcome(tri(contractible::io::decode_reader(
+                    Trickle::new(bytes),
+                    None,
+                ))),
+            )
+        }
+    };
+    assert_eq!(
+        memory, streamed,
+        "streamed reading differs from reading from memory"
+    );
 }
 
 /// χ and orientability by the face-list oracle; panics if the faces are not a closed surface.

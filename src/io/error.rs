@@ -118,6 +118,14 @@ pub enum ReadErrorKind {
     /// STL-specific structural problem (an ASCII keyword out of place).
     #[error("STL: {0}")]
     Stl(String),
+    /// A text line is longer than the readers accept (see [`crate::io::MAX_LINE`]): no
+    /// mesh format needs such a line, and buffering it would let one line take any amount
+    /// of memory.
+    #[error("line longer than {limit} bytes")]
+    LineTooLong {
+        /// The limit, in bytes.
+        limit: usize,
+    },
     /// Malformed line of a surface list (`NAME: [[a,b,c],...]`, see [`crate::io::list`]).
     #[error("surface list: {0}")]
     List(String),

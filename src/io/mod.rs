@@ -15,13 +15,20 @@
 //!   0 elsewhere. Manifoldness is *not* checked here ([`crate::diagnose`] lists every
 //!   problem, [`crate::Surfaces`] builds).
 //! - a UTF-8 byte order mark before a text format (OFF, OBJ, PLY, ASCII STL) is skipped;
-//!   for binary PLY, byte offsets then count from after it.
+//!   byte offsets count from the start of the input, the mark included.
 //! - STL has no shared vertices: its reader welds corners at bitwise-equal positions
 //!   (see the `stl` module's docs); [`Mesh::welded`] does the same for any mesh.
 //!
-//! Inputs are read completely into memory (and decompressed when gzip) before parsing.
+//! Inputs are streamed: a file, a reader or a gzip decoder is read through one buffer that
+//! holds the line or record being parsed, so reading needs memory for the mesh, not for the
+//! input (a gzip file expanding to gigabytes of blank lines or comments is read in a few
+//! hundred kilobytes; a single line longer than [`MAX_LINE`] is refused as
+//! [`ReadErrorKind::LineTooLong`]). Allocations follow the records actually read; a
+//! header count is only trusted up to what the input's length can hold, or up to a
+//! million records when the length is not known in advance (compressed or piped input).
 
 mod error;
+mod input;
 pub mod list;
 mod obj;
 mod off;
@@ -36,10 +43,12 @@ use std::io::{BufWriter, Read, Write};
 use std::path::Path;
 
 pub use error::{Location, ReadError, ReadErrorKind, WriteError};
+pub use input::MAX_LINE;
 pub use ply::PlyEncoding;
 pub use poly::{PolyMesh, SkippedStatements, Triangulated};
 
 use crate::mesh::{Mesh, TriMesh};
+use input::Input;
 
 /// A mesh file format. Guarantees nothing beyond naming the format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -85,15 +94,47 @@ impl Format {
     /// first non-comment line, an `OFF`-family keyword or an OBJ statement. `None`
     /// otherwise. A UTF-8 byte order mark at the start is skipped.
     pub fn sniff(bytes: &[u8]) -> Option<Format> {
-        if stl::sniff(bytes) {
-            return Some(Format::Stl);
+        let mut input = Input::from_slice(bytes);
+        sniff_input(&mut input).ok().flatten()
+    }
+}
+
+/// [`Format::sniff`] on the start of a stream, without consuming anything: looks at as much
+/// as the decision needs (the first data line may follow comments; at most [`MAX_LINE`]
+/// bytes are looked at). The STL length rule applies when the input's length is known.
+fn sniff_input(input: &mut Input<'_>) -> Result<Option<Format>, ReadError> {
+    let len = input.known_len();
+    if stl::sniff(stl::probe(input)?, len) {
+        return Ok(Some(Format::Stl));
+    }
+    let mut want = 4096;
+    loop {
+        let head = input.peek(want)?;
+        let complete = head.len() < want || want >= MAX_LINE;
+        let head = strip_bom(head);
+        if head.starts_with(b"ply") {
+            return Ok(Some(Format::Ply));
         }
-        let bytes = strip_bom(bytes);
-        if bytes.starts_with(b"ply") {
-            return Some(Format::Ply);
+        let mut lines = text::Lines::new(head);
+        // A data line counts only when the text after it is there too (it is complete).
+        let found = match lines.next_data_line(b'#') {
+            Some((_, line)) if complete || lines.remaining() > 0 => Some(line),
+            _ => None,
+        };
+        if let Some(line) = found {
+            return Ok(Format::of_first_data_line(line));
         }
-        let mut lines = text::Lines::new(bytes);
-        let (_, line) = lines.next_data_line(b'#')?;
+        if complete {
+            return Ok(None);
+        }
+        want *= 4;
+    }
+}
+
+impl Format {
+    /// The format the first non-comment line names: an `OFF`-family keyword or an OBJ
+    /// statement.
+    fn of_first_data_line(line: &[u8]) -> Option<Format> {
         let first = text::Tokens::new(line).next()?;
         if let Some(prefix) = first.strip_suffix(b"OFF") {
             if prefix
@@ -114,16 +155,150 @@ impl Format {
 
 const GZIP_MAGIC: [u8; 2] = [0x1f, 0x8b];
 
-/// Decompresses `bytes` if they start with the gzip magic; otherwise borrows them.
-fn maybe_gunzip(bytes: &[u8]) -> Result<std::borrow::Cow<'_, [u8]>, ReadError> {
-    if !bytes.starts_with(&GZIP_MAGIC) {
-        return Ok(std::borrow::Cow::Borrowed(bytes));
+/// Where a mesh's bytes come from: in memory, a file (both can be read twice, which the
+/// STL length rule may need for gzip content), or a reader read once.
+enum Source<'a> {
+    Bytes(&'a [u8]),
+    File {
+        path: &'a Path,
+        on_read: Option<&'a mut (dyn FnMut(u64) + 'a)>,
+    },
+    Reader(Box<dyn Read + 'a>),
+}
+
+fn io_error(e: std::io::Error) -> ReadError {
+    ReadError::new(ReadErrorKind::Io(e), Location::Unknown)
+}
+
+/// Reads `reader` through a decoder when its first bytes are the gzip magic.
+fn open_stream<'a>(
+    mut reader: Box<dyn Read + 'a>,
+    len: Option<u64>,
+) -> Result<Input<'a>, ReadError> {
+    let mut magic = [0u8; 2];
+    let mut got = 0;
+    while got < magic.len() {
+        match reader.read(&mut magic[got..]) {
+            Ok(0) => break,
+            Ok(n) => got += n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+            Err(e) => return Err(io_error(e)),
+        }
     }
-    let mut out = Vec::new();
-    flate2::read::MultiGzDecoder::new(bytes)
-        .read_to_end(&mut out)
-        .map_err(|e| ReadError::new(ReadErrorKind::Decompress(e.to_string()), Location::Unknown))?;
-    Ok(std::borrow::Cow::Owned(out))
+    let prefix = magic.get(..got).unwrap_or_default().to_vec();
+    let whole: Box<dyn Read + 'a> = Box::new(std::io::Cursor::new(prefix).chain(reader));
+    Ok(if magic == GZIP_MAGIC && got == 2 {
+        Input::new(
+            Box::new(flate2::read::MultiGzDecoder::new(whole)),
+            true,
+            None,
+        )
+    } else {
+        Input::new(whole, false, len)
+    })
+}
+
+/// Counts the file bytes read, for a caller's progress display.
+struct Observed<'a, R> {
+    inner: R,
+    total: u64,
+    on_read: &'a mut dyn FnMut(u64),
+}
+
+impl<R: Read> Read for Observed<'_, R> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.inner.read(buf)?;
+        self.total += n as u64;
+        (self.on_read)(self.total);
+        Ok(n)
+    }
+}
+
+impl<'a> Source<'a> {
+    /// The bytes as a stream (decompressed when gzip).
+    fn open(&mut self) -> Result<Input<'_>, ReadError> {
+        match self {
+            Source::Bytes(b) => open_stream(Box::new(*b), Some(b.len() as u64)),
+            Source::File { path, on_read } => {
+                let file = File::open(path).map_err(io_error)?;
+                let len = file.metadata().map_err(io_error)?.len();
+                let file = std::io::BufReader::with_capacity(1 << 16, file);
+                match on_read {
+                    Some(f) => open_stream(
+                        Box::new(Observed {
+                            inner: file,
+                            total: 0,
+                            on_read: &mut **f,
+                        }),
+                        Some(len),
+                    ),
+                    None => open_stream(Box::new(file), Some(len)),
+                }
+            }
+            Source::Reader(r) => open_stream(Box::new(r), None),
+        }
+    }
+
+    /// The decompressed length of gzip content, by a pass that decompresses it without
+    /// keeping it (`None` for a reader, which cannot be read twice).
+    fn gunzipped_len(&self) -> Result<Option<u64>, ReadError> {
+        let raw: Box<dyn Read + '_> = match self {
+            Source::Bytes(b) => Box::new(*b),
+            Source::File { path, .. } => Box::new(File::open(path).map_err(io_error)?),
+            Source::Reader(_) => return Ok(None),
+        };
+        std::io::copy(
+            &mut flate2::read::MultiGzDecoder::new(raw),
+            &mut std::io::sink(),
+        )
+        .map(Some)
+        .map_err(|e| ReadError::new(ReadErrorKind::Decompress(e.to_string()), Location::Unknown))
+    }
+}
+
+/// Streams `source`: the format is the content's when [`sniff_input`] recognises it,
+/// `declared` otherwise.
+fn decode_source(mut source: Source<'_>, declared: Option<Format>) -> Result<Decoded, ReadError> {
+    // The STL decisions compare the length with the binary triangle count. Compressed
+    // content has no length until it is decompressed: when the decision may need it, a
+    // first pass measures it (a reader read once goes without, see the `stl` module).
+    let rereadable = !matches!(source, Source::Reader(_));
+    let mut input = source.open()?;
+    let mut sniffed = sniff_input(&mut input)?;
+    let stl_possible = matches!(sniffed, None | Some(Format::Stl))
+        && matches!(declared.or(sniffed), None | Some(Format::Stl));
+    if input.is_gzip() && stl_possible && rereadable {
+        drop(input);
+        let len = source.gunzipped_len()?;
+        input = source.open()?;
+        input.set_known_len(len);
+        sniffed = sniff_input(&mut input)?;
+    }
+    let format = match sniffed.or(declared) {
+        Some(format) => format,
+        // A stream read once has no length for the binary STL rule (a length that
+        // matches the count): read it as binary STL, which checks exactly that as it ends.
+        None if input.known_len().is_none() => {
+            let mesh = stl::parse_unsniffed(&mut input)?;
+            return Ok(Decoded {
+                mesh: mesh.into(),
+                format: Format::Stl,
+                declared,
+            });
+        }
+        None => {
+            return Err(ReadError::new(
+                ReadErrorKind::UnknownFormat,
+                Location::Unknown,
+            ))
+        }
+    };
+    let mesh = parse(&mut input, format)?;
+    Ok(Decoded {
+        mesh,
+        format,
+        declared,
+    })
 }
 
 /// The UTF-8 byte order mark some editors put at the start of text files.
@@ -171,40 +346,79 @@ impl std::fmt::Display for Format {
 /// Guarantees: as [`read_tri_mesh_bytes`] (no panic, bounded allocation); gzip detected
 /// by its magic bytes; `UnknownFormat` when neither decides.
 pub fn decode(bytes: &[u8], declared: Option<Format>) -> Result<Decoded, ReadError> {
-    let data = maybe_gunzip(bytes)?;
-    let format = Format::sniff(&data)
-        .or(declared)
-        .ok_or_else(|| ReadError::new(ReadErrorKind::UnknownFormat, Location::Unknown))?;
-    let mesh = parse(&data, format)?;
-    Ok(Decoded {
-        mesh,
-        format,
-        declared,
-    })
+    decode_source(Source::Bytes(bytes), declared)
 }
 
-fn parse(data: &[u8], format: Format) -> Result<PolyMesh, ReadError> {
+/// [`decode`] on a stream read once (standard input, a socket): the same rules, in memory
+/// for the mesh only, except where the STL rule needs the length before the stream ends:
+/// content that no header names is read as binary STL, kept if its length matches its
+/// triangle count (`UnknownFormat` otherwise), and a binary STL whose 80-byte header
+/// starts like another format (`ply`, `OFF`, an OBJ statement, `solid` and text) is read
+/// as that format (see the `stl` module).
+pub fn decode_reader(reader: impl Read, declared: Option<Format>) -> Result<Decoded, ReadError> {
+    decode_source(Source::Reader(Box::new(reader)), declared)
+}
+
+fn parse(input: &mut Input<'_>, format: Format) -> Result<PolyMesh, ReadError> {
+    // The STL reader skips a BOM itself where it applies (ASCII only).
+    if format != Format::Stl && input.peek(BOM.len())? == BOM {
+        input.consume(BOM.len());
+    }
     match format {
-        Format::Off => off::parse_off(strip_bom(data)),
-        Format::Obj => obj::parse_obj(strip_bom(data)),
-        Format::Ply => ply::parse_ply(strip_bom(data)),
-        // The STL reader skips a BOM itself where it applies (ASCII only).
-        Format::Stl => stl::parse_stl(data).map(PolyMesh::from),
+        Format::Off => off::parse_off(input),
+        Format::Obj => obj::parse_obj(input),
+        Format::Ply => ply::parse_ply(input),
+        Format::Stl => stl::parse_stl(input).map(PolyMesh::from),
     }
 }
 
-/// Reads a mesh file as [`decode`] does, the declared format being `format` or else the
-/// extension's (`.off`/`.obj`/`.ply`/`.stl`, case-insensitive, optionally `.gz`); gzip
-/// content is detected by its magic bytes whatever the name (a `.gz` name without them is
-/// a `Decompress` error). Errors carry `path`.
+/// Reads a mesh file as [`decode`] does, streaming it (memory for the mesh, not the file),
+/// the declared format being `format` or else the extension's (`.off`/`.obj`/`.ply`/`.stl`,
+/// case-insensitive, optionally `.gz`); gzip content is detected by its magic bytes
+/// whatever the name (a `.gz` name without them is a `Decompress` error). Errors carry
+/// `path`.
 pub fn read_poly_mesh(path: &Path, format: Option<Format>) -> Result<Decoded, ReadError> {
-    std::fs::read(path)
-        .map_err(|e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown).with_path(path))
-        .and_then(|bytes| decode_named(path, &bytes, format))
+    read_file(path, format, None)
 }
 
-/// [`read_poly_mesh`] on the bytes of the file `path` already read (by a caller that
-/// shows the reading's progress, say): the same checks, format rules and errors.
+/// [`read_poly_mesh`], calling `on_read` with the number of file bytes read so far as the
+/// reading goes (for a progress display; compressed files count compressed bytes).
+pub fn read_poly_mesh_observed(
+    path: &Path,
+    format: Option<Format>,
+    on_read: &mut dyn FnMut(u64),
+) -> Result<Decoded, ReadError> {
+    read_file(path, format, Some(on_read))
+}
+
+fn read_file<'a>(
+    path: &'a Path,
+    format: Option<Format>,
+    on_read: Option<&'a mut (dyn FnMut(u64) + 'a)>,
+) -> Result<Decoded, ReadError> {
+    let (from_name, gz) = Format::from_path(path);
+    let result = (|| {
+        if gz {
+            let mut magic = [0u8; 2];
+            let mut file = File::open(path).map_err(io_error)?;
+            let n = file.read(&mut magic).map_err(io_error)?;
+            if n < 2 && file.read(&mut magic[n..]).map_err(io_error)? + n < 2 || magic != GZIP_MAGIC
+            {
+                return Err(ReadError::new(
+                    ReadErrorKind::Decompress(
+                        "file name ends in .gz but the content is not gzip".into(),
+                    ),
+                    Location::ByteOffset(0),
+                ));
+            }
+        }
+        decode_source(Source::File { path, on_read }, format.or(from_name))
+    })();
+    result.map_err(|e| e.with_path(path))
+}
+
+/// [`read_poly_mesh`] on the bytes of the file `path` already read: the same checks, format
+/// rules and errors.
 pub fn decode_named(
     path: &Path,
     bytes: &[u8],
@@ -229,29 +443,38 @@ pub fn read_tri_mesh(path: &Path) -> Result<TriMesh, ReadError> {
     read_poly_mesh(path, None).and_then(|d| d.mesh.into_tri_mesh().map_err(|e| e.with_path(path)))
 }
 
-/// Reads a triangle mesh in `format` from a reader (read to the end; gzip content is
-/// detected by its magic bytes and decompressed). Same guarantees as [`read_tri_mesh_bytes`].
-pub fn read_tri_mesh_from(mut reader: impl Read, format: Format) -> Result<TriMesh, ReadError> {
-    let mut bytes = Vec::new();
-    reader
-        .read_to_end(&mut bytes)
-        .map_err(|e| ReadError::new(ReadErrorKind::Io(e), Location::Unknown))?;
-    read_tri_mesh_bytes(&bytes, Some(format))
+/// Reads a triangle mesh in `format` from a reader, streaming it (gzip content is detected
+/// by its magic bytes and decompressed as it is read). Same guarantees as
+/// [`read_tri_mesh_bytes`].
+pub fn read_tri_mesh_from(reader: impl Read, format: Format) -> Result<TriMesh, ReadError> {
+    let mut source = Source::Reader(Box::new(reader));
+    let mut input = source.open()?;
+    parse(&mut input, format)?.into_tri_mesh()
 }
 
 /// Reads a polygon mesh from in-memory bytes in `format` (gzip detected by magic bytes;
 /// the format sniffed from the content when `format` is `None`).
 ///
-/// Guarantees: never panics and never allocates more than a small multiple of the
-/// (decompressed) input size, whatever the bytes; suitable as a fuzzing entry point.
+/// Guarantees: never panics and never allocates more than a small multiple of the mesh
+/// it returns, or of the input's size, whatever the bytes (compressed content included);
+/// suitable as a fuzzing entry point.
 pub fn read_poly_mesh_bytes(bytes: &[u8], format: Option<Format>) -> Result<PolyMesh, ReadError> {
-    let data = maybe_gunzip(bytes)?;
-    let format = match format {
-        Some(f) => f,
-        None => Format::sniff(&data)
-            .ok_or_else(|| ReadError::new(ReadErrorKind::UnknownFormat, Location::Unknown))?,
-    };
-    parse(&data, format)
+    match format {
+        Some(f) => {
+            let mut source = Source::Bytes(bytes);
+            let gz_len = if bytes.starts_with(&GZIP_MAGIC) && f == Format::Stl {
+                source.gunzipped_len()?
+            } else {
+                None
+            };
+            let mut input = source.open()?;
+            if gz_len.is_some() {
+                input.set_known_len(gz_len);
+            }
+            parse(&mut input, f)
+        }
+        None => decode(bytes, None).map(|d| d.mesh),
+    }
 }
 
 /// Reads a triangle mesh from in-memory bytes: [`read_poly_mesh_bytes`], then

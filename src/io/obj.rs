@@ -20,20 +20,20 @@ use std::io::Write;
 
 use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
+use super::input::Input;
 use super::poly::PolyMesh;
-use super::text::{parse_f64, parse_i64, Lines, Tokens};
+use super::text::{parse_f64, parse_i64, Tokens};
 use crate::mesh::Mesh;
 
-/// Parses OBJ bytes into a polygon mesh; see the module docs for the accepted subset.
-pub(crate) fn parse_obj(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
-    let mut lines = Lines::new(bytes);
+/// Parses OBJ into a polygon mesh; see the module docs for the accepted subset.
+pub(crate) fn parse_obj(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
     let mut positions: Vec<[f64; 3]> = Vec::new();
     let mut mesh = PolyMesh::new(0, None, true, true);
     let mut face: Vec<u32> = Vec::new();
     // Face indices are checked against the final vertex count (forward references are
     // tolerated by most tools); `max_index` finds out cheaply whether any is out of range.
     let mut max_index: u64 = 0;
-    while let Some((n, line)) = lines.next_data_line(b'#') {
+    while let Some((n, line)) = input.next_data_line(b'#')? {
         let mut t = Tokens::new(line);
         let keyword = t.next().unwrap_or_default();
         match keyword {

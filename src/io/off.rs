@@ -13,8 +13,9 @@ use std::io::Write;
 use super::error::Location;
 use super::error::{token_string, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
+use super::input::Input;
 use super::poly::PolyMesh;
-use super::text::{parse_f64, parse_i64, parse_u64, Lines, Tokens};
+use super::text::{parse_f64, parse_i64, parse_u64, Tokens};
 use crate::mesh::Mesh;
 
 /// Smallest possible vertex line: `0 0 0` plus a newline.
@@ -22,31 +23,31 @@ const MIN_VERTEX_BYTES: u64 = 6;
 /// Smallest possible face line: `3 0 0 0` plus a newline.
 const MIN_FACE_BYTES: u64 = 8;
 
-/// Parses ASCII OFF bytes into a polygon mesh; see the module docs for the accepted syntax.
-pub(crate) fn parse_off(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
-    let mut lines = Lines::new(bytes);
-    let (hline, header) = lines.next_data_line(b'#').ok_or_else(|| {
-        ReadError::at_line(
+/// Parses ASCII OFF into a polygon mesh; see the module docs for the accepted syntax.
+pub(crate) fn parse_off(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
+    let Some((hline, header)) = input.next_data_line(b'#')? else {
+        return Err(ReadError::at_line(
             K::BadHeader("empty input, expected an OFF header".into()),
-            lines.line().max(1),
-        )
-    })?;
+            input.line().max(1),
+        ));
+    };
     let mut toks = Tokens::new(header);
     let keyword = toks.next().unwrap_or_default();
     check_keyword(keyword).map_err(|k| ReadError::at_line(k, hline))?;
 
-    // Counts: rest of the header line, or the next data line.
+    // Counts: rest of the header line, or the next data line. At most four tokens are
+    // kept (more than three is an error whatever follows).
     let mut count_line = hline;
-    let mut counts: Vec<&[u8]> = toks.collect();
+    let mut counts: Vec<Vec<u8>> = toks.take(4).map(<[u8]>::to_vec).collect();
     if counts.is_empty() {
-        let (n, l) = lines.next_data_line(b'#').ok_or_else(|| {
-            ReadError::at_line(
+        let Some((n, l)) = input.next_data_line(b'#')? else {
+            return Err(ReadError::at_line(
                 K::BadHeader("missing vertex/face counts".into()),
-                lines.line(),
-            )
-        })?;
+                input.line(),
+            ));
+        };
         count_line = n;
-        counts = Tokens::new(l).collect();
+        counts = Tokens::new(l).take(4).map(<[u8]>::to_vec).collect();
     }
     if counts
         .first()
@@ -92,20 +93,19 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
     // Never trust the counts for allocation: reserve at most what the remaining bytes could
     // hold at the smallest possible record size. The loops below consume at least one line
     // per record, so a count larger than the input ends in a located `CountMismatch`.
-    let remaining = lines.remaining() as u64 + 1;
-    let nv_cap = nv.min(remaining / MIN_VERTEX_BYTES) as usize;
-    let nf_cap = nf.min(remaining / MIN_FACE_BYTES) as usize;
+    let nv_cap = input.reserve_for(nv, MIN_VERTEX_BYTES);
+    let nf_cap = input.reserve_for(nf, MIN_FACE_BYTES);
 
     let mut positions = Vec::with_capacity(nv_cap);
     for i in 0..nv {
-        let Some((n, line)) = lines.next_data_line(b'#') else {
+        let Some((n, line)) = input.next_data_line(b'#')? else {
             return Err(ReadError::at_line(
                 K::CountMismatch {
                     what: "vertices",
                     declared: nv,
                     found: i,
                 },
-                lines.line(),
+                input.line(),
             ));
         };
         let mut t = Tokens::new(line);
@@ -133,14 +133,14 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
     mesh.reserve(nf_cap);
     let mut face: Vec<u32> = Vec::new();
     for f in 0..nf {
-        let Some((n, line)) = lines.next_data_line(b'#') else {
+        let Some((n, line)) = input.next_data_line(b'#')? else {
             return Err(ReadError::at_line(
                 K::CountMismatch {
                     what: "faces",
                     declared: nf,
                     found: f,
                 },
-                lines.line(),
+                input.line(),
             ));
         };
         let mut t = Tokens::new(line);
@@ -200,9 +200,9 @@ pub(crate) fn parse_off(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
     }
 
     // More records than declared is an error; trailing blank lines and comments are not.
-    if let Some((first, _)) = lines.next_data_line(b'#') {
+    if let Some((first, _)) = input.next_data_line(b'#')? {
         let mut extra = 1u64;
-        while lines.next_data_line(b'#').is_some() {
+        while input.next_data_line(b'#')?.is_some() {
             extra += 1;
         }
         return Err(ReadError::at_line(

@@ -19,8 +19,9 @@ use std::io::Write;
 
 use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
 use super::fmt_f64_triple;
+use super::input::Input;
 use super::poly::PolyMesh;
-use super::text::{is_space, parse_i64, Lines, Tokens};
+use super::text::{is_space, parse_any_f64, parse_i64, Tokens};
 use crate::mesh::Mesh;
 
 /// How a PLY file encodes its payload.
@@ -115,31 +116,42 @@ enum ElementKind {
 struct Header {
     encoding: PlyEncoding,
     elements: Vec<Element>,
-    /// Byte offset of the payload.
-    data_start: usize,
     /// Number of header lines (the payload's first line is `lines + 1`).
     lines: usize,
-    /// Length of the payload in bytes.
-    payload_len: usize,
 }
+
+/// Most elements and properties one header may declare: far above any real file, low
+/// enough that a header cannot make every record's decoding arbitrarily slow or the header
+/// model arbitrarily large.
+const MAX_HEADER_ITEMS: usize = 1 << 16;
 
 fn bad_header(msg: impl Into<String>, line: usize) -> ReadError {
     ReadError::at_line(K::BadHeader(msg.into()), line)
 }
 
-fn parse_header(bytes: &[u8]) -> Result<Header, ReadError> {
-    let mut lines = Lines::new(bytes);
-    match lines.next_line() {
+fn parse_header(input: &mut Input<'_>) -> Result<Header, ReadError> {
+    match input.next_line()? {
         Some((_, l)) if trim(l) == b"ply" => {}
         _ => return Err(bad_header("missing `ply` magic line", 1)),
     }
     let mut encoding = None;
     let mut elements: Vec<Element> = Vec::new();
+    let mut items = 0usize;
     loop {
-        let Some((n, line)) = lines.next_line() else {
-            return Err(bad_header("missing `end_header`", lines.line().max(1)));
+        let last = input.line();
+        let Some((n, line)) = input.next_line()? else {
+            return Err(bad_header("missing `end_header`", last.max(1)));
         };
         let mut t = Tokens::new(line);
+        if matches!(t.clone().next(), Some(b"element" | b"property")) {
+            items += 1;
+            if items > MAX_HEADER_ITEMS {
+                return Err(bad_header(
+                    format!("more than {MAX_HEADER_ITEMS} elements and properties"),
+                    n,
+                ));
+            }
+        }
         match t.next() {
             None => continue,
             Some(b"comment" | b"obj_info") => continue,
@@ -262,8 +274,7 @@ fn parse_header(bytes: &[u8]) -> Result<Header, ReadError> {
             }
         }
     }
-    let header_lines = lines.line();
-    let data_start = bytes.len() - lines.remaining();
+    let header_lines = input.line();
     let encoding = encoding.ok_or_else(|| bad_header("missing `format` line", header_lines))?;
     let Some(vertex) = elements.iter().find(|e| e.kind == ElementKind::Vertex) else {
         return Err(bad_header("no `vertex` element", header_lines));
@@ -296,9 +307,7 @@ fn parse_header(bytes: &[u8]) -> Result<Header, ReadError> {
     Ok(Header {
         encoding,
         elements,
-        data_start,
         lines: header_lines,
-        payload_len: bytes.len() - data_start,
     })
 }
 
@@ -347,31 +356,35 @@ trait Payload {
     fn last(&self) -> Location;
     /// Error unless only whitespace remains.
     fn finish(&mut self) -> Result<(), ReadError>;
+    /// How many of `declared` records of at least `min_bytes` each to reserve room for
+    /// ([`Input::reserve_for`]).
+    fn reserve_for(&self, declared: u64, min_bytes: u64) -> usize;
 }
 
-struct Binary<'a> {
-    bytes: &'a [u8],
-    pos: usize,
-    last: usize,
+struct Binary<'i, 'r> {
+    input: &'i mut Input<'r>,
+    last: u64,
     big_endian: bool,
 }
 
-impl Payload for Binary<'_> {
+impl Payload for Binary<'_, '_> {
     fn value(&mut self, s: Scalar, what: &dyn Fn() -> String) -> Result<Value, ReadError> {
         let size = s.size();
-        let Some(raw) = self.bytes.get(self.pos..).and_then(|r| r.get(..size)) else {
-            return Err(ReadError::at_byte(
+        let at = self.input.offset();
+        let raw = self.input.peek(size)?;
+        if raw.len() < size {
+            return Err(ReadError::new(
                 K::Truncated { expected: what() },
-                self.pos,
+                Location::ByteOffset(at),
             ));
-        };
+        }
         let mut b = [0u8; 8];
         b[..size].copy_from_slice(raw);
+        self.input.consume(size);
         if self.big_endian {
             b[..size].reverse();
         }
-        self.last = self.pos;
-        self.pos += size;
+        self.last = at;
         // `b` is now little endian.
         let v = match s {
             Scalar::I8 => Value::Int(i64::from(b[0] as i8)),
@@ -387,54 +400,51 @@ impl Payload for Binary<'_> {
     }
 
     fn last(&self) -> Location {
-        Location::ByteOffset(self.last as u64)
+        Location::ByteOffset(self.last)
+    }
+
+    fn reserve_for(&self, declared: u64, min_bytes: u64) -> usize {
+        self.input.reserve_for(declared, min_bytes)
     }
 
     fn finish(&mut self) -> Result<(), ReadError> {
-        let rest = self.bytes.get(self.pos..).unwrap_or_default();
-        match rest.iter().position(|b| !b.is_ascii_whitespace()) {
-            None => Ok(()),
-            Some(i) => Err(ReadError::at_byte(
-                K::TrailingData { what: "element" },
-                self.pos + i,
-            )),
+        loop {
+            let at = self.input.offset();
+            let rest = self.input.fill_at_least(1)?;
+            if rest.is_empty() {
+                return Ok(());
+            }
+            if let Some(i) = rest.iter().position(|b| !b.is_ascii_whitespace()) {
+                return Err(ReadError::new(
+                    K::TrailingData { what: "element" },
+                    Location::ByteOffset(at + i as u64),
+                ));
+            }
+            let n = rest.len();
+            self.input.consume(n);
         }
     }
 }
 
-struct Ascii<'a> {
-    lines: Lines<'a>,
-    current: Tokens<'a>,
+struct Ascii<'i, 'r> {
+    input: &'i mut Input<'r>,
+    /// The line of the last token (the payload's first line before any).
     line: usize,
 }
 
-impl<'a> Ascii<'a> {
-    fn next_token(&mut self) -> Option<&'a [u8]> {
-        loop {
-            if let Some(t) = self.current.next() {
-                return Some(t);
-            }
-            let (n, l) = self.lines.next_line()?;
-            self.line = n;
-            self.current = Tokens::new(l);
-        }
-    }
-}
-
-impl Payload for Ascii<'_> {
+impl Payload for Ascii<'_, '_> {
     fn value(&mut self, s: Scalar, what: &dyn Fn() -> String) -> Result<Value, ReadError> {
-        let Some(tok) = self.next_token() else {
-            return Err(ReadError::at_line(
-                K::Truncated { expected: what() },
-                self.line.max(1),
-            ));
+        let Some((n, tok)) = self.input.next_token()? else {
+            let line = self.line.max(self.input.token_line()).max(1);
+            return Err(ReadError::at_line(K::Truncated { expected: what() }, line));
         };
+        self.line = n;
         let bad = || {
             ReadError::at_line(
                 K::BadNumber {
                     token: token_string(tok),
                 },
-                self.line,
+                n,
             )
         };
         if s.is_int() {
@@ -453,8 +463,7 @@ impl Payload for Ascii<'_> {
             Ok(Value::Int(v))
         } else {
             // Any float syntax (NaN too) for ignored properties; coordinates are checked later.
-            let s = std::str::from_utf8(tok).map_err(|_| bad())?;
-            Ok(Value::Float(s.parse::<f64>().map_err(|_| bad())?))
+            Ok(Value::Float(parse_any_f64(tok).ok_or_else(bad)?))
         }
     }
 
@@ -462,34 +471,32 @@ impl Payload for Ascii<'_> {
         Location::Line(self.line.max(1))
     }
 
+    fn reserve_for(&self, declared: u64, min_bytes: u64) -> usize {
+        self.input.reserve_for(declared, min_bytes)
+    }
+
     fn finish(&mut self) -> Result<(), ReadError> {
-        match self.next_token() {
+        match self.input.next_token()? {
             None => Ok(()),
-            Some(_) => Err(ReadError::at_line(
-                K::TrailingData { what: "element" },
-                self.line,
-            )),
+            Some((n, _)) => Err(ReadError::at_line(K::TrailingData { what: "element" }, n)),
         }
     }
 }
 
-/// Parses PLY bytes (ascii or binary) into a polygon mesh; see the module docs.
-pub(crate) fn parse_ply(bytes: &[u8]) -> Result<PolyMesh, ReadError> {
-    let header = parse_header(bytes)?;
+/// Parses PLY (ascii or binary) into a polygon mesh; see the module docs.
+pub(crate) fn parse_ply(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
+    let header = parse_header(input)?;
     match header.encoding {
         PlyEncoding::Ascii => {
-            let mut p = Ascii {
-                lines: Lines::starting_at(bytes, header.data_start, header.lines),
-                current: Tokens::new(&[]),
-                line: header.lines + 1,
-            };
+            let line = header.lines + 1;
+            let mut p = Ascii { input, line };
             read_payload(&header, &mut p)
         }
         enc => {
+            let last = input.offset();
             let mut p = Binary {
-                bytes,
-                pos: header.data_start,
-                last: header.data_start,
+                input,
+                last,
                 big_endian: enc == PlyEncoding::BinaryBigEndian,
             };
             read_payload(&header, &mut p)
@@ -518,7 +525,7 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<PolyMesh, Rea
             .iter()
             .map(|p| min_bytes(header.encoding, p))
             .sum();
-        let cap = e.count.min((header.payload_len / min_record.max(1)) as u64) as usize;
+        let cap = src.reserve_for(e.count, min_record as u64);
         match e.kind {
             ElementKind::Vertex => positions.reserve_exact(cap),
             ElementKind::Face => mesh.reserve(cap),

@@ -20,10 +20,14 @@
 //! ASCII when it starts with the keyword `solid` (after an optional UTF-8 BOM and
 //! whitespace) and its first 512 bytes are text (no control bytes, which the binary
 //! count and coordinates nearly always contain); otherwise as binary, whose checks then
-//! say what is wrong.
+//! say what is wrong. Gzip content from memory or a file is measured by a first
+//! decompression pass when this rule needs its length; a gzip stream read once
+//! ([`super::decode_reader`]) has no length, and a `solid` start followed by text is then
+//! ASCII (a binary file would differ only with a count of at least 538,976,288 triangles
+//! whose bytes are all text, at exactly the matching size).
 //!
 //! **Binary.** The declared count is checked against the input's length *before* anything
-//! is reserved: a shorter payload is `Truncated` at the offset of the first incomplete
+//! is reserved (for a stream of unknown length, when it ends, with the same errors): a shorter payload is `Truncated` at the offset of the first incomplete
 //! triangle (or a `CountMismatch` at byte 80 when the payload holds a whole number of
 //! triangles), a longer one is `TrailingData` at the offset where the declared triangles
 //! end. A NaN or infinite coordinate is `BadNumber` at the byte offset of that `f32`.
@@ -59,7 +63,8 @@ use std::collections::HashMap;
 use std::io::Write;
 
 use super::error::{token_string, ReadError, ReadErrorKind as K, WriteError};
-use super::text::{is_space, parse_f64, Lines, Tokens};
+use super::input::Input;
+use super::text::{is_space, parse_f64};
 use crate::mesh::{Mesh, TriMesh};
 
 /// Bytes before the binary payload: the 80-byte header and the `u32` triangle count.
@@ -116,12 +121,13 @@ fn too_many_vertices(count: usize) -> K {
     }
 }
 
-/// Whether the length is exactly that of a binary STL with the count at bytes 80..84.
-fn binary_size_matches(bytes: &[u8]) -> bool {
-    match bytes.get(80..PAYLOAD_START) {
-        Some(&[a, b, c, d]) => {
+/// Whether `len`, the input's length, is exactly that of a binary STL with the count at
+/// bytes 80..84 of `head` (`false` when the length is unknown).
+fn binary_size_matches(head: &[u8], len: Option<u64>) -> bool {
+    match (head.get(80..PAYLOAD_START), len) {
+        (Some(&[a, b, c, d]), Some(len)) => {
             let n = u64::from(u32::from_le_bytes([a, b, c, d]));
-            (bytes.len() - PAYLOAD_START) as u64 == n * TRIANGLE_BYTES as u64
+            len - PAYLOAD_START as u64 == n * TRIANGLE_BYTES as u64
         }
         _ => false,
     }
@@ -137,54 +143,68 @@ fn text_start(bytes: &[u8]) -> &[u8] {
     &b[skip..]
 }
 
-/// Whether `bytes` start with the keyword `solid` (case-insensitive, followed by
-/// whitespace or the end).
-fn starts_with_solid(bytes: &[u8]) -> bool {
-    let b = text_start(bytes);
+/// Whether `head` (the start of the input, see [`probe`]) starts with the keyword `solid`
+/// (case-insensitive, followed by whitespace or the end).
+fn starts_with_solid(head: &[u8]) -> bool {
+    let b = text_start(head);
     b.get(..5).is_some_and(|k| k.eq_ignore_ascii_case(b"solid"))
         && b.get(5).is_none_or(|&c| is_space(c) || c == b'\n')
 }
 
-/// Whether the content is to be read as ASCII STL (see the module docs).
-fn is_ascii(bytes: &[u8]) -> bool {
-    starts_with_solid(bytes)
-        && !binary_size_matches(bytes)
-        && bytes
+/// Whether the content is to be read as ASCII STL (see the module docs): `head` is the
+/// start of the input ([`probe`]), `len` its length when known.
+fn is_ascii(head: &[u8], len: Option<u64>) -> bool {
+    starts_with_solid(head)
+        && !binary_size_matches(head, len)
+        && head
             .iter()
             .take(TEXT_PROBE)
             .all(|&c| c >= 0x20 || is_space(c) || c == b'\n')
 }
 
-/// Whether the content looks like STL: a binary file of consistent size, or ASCII.
-pub(crate) fn sniff(bytes: &[u8]) -> bool {
-    binary_size_matches(bytes) || is_ascii(bytes)
+/// The start of the input the STL decisions look at: the first [`TEXT_PROBE`] bytes, or
+/// more while they are only a BOM and whitespace (so that `solid` after a long run of
+/// blank lines is still found; at most [`super::MAX_LINE`] bytes).
+pub(crate) fn probe<'a>(input: &'a mut Input<'_>) -> Result<&'a [u8], ReadError> {
+    let mut want = TEXT_PROBE.max(PAYLOAD_START + 6);
+    loop {
+        let head = input.peek(want)?;
+        if head.len() < want || !text_start(head).is_empty() || want >= super::MAX_LINE {
+            break;
+        }
+        want *= 4;
+    }
+    input.peek(want)
 }
 
-/// Parses STL bytes (binary or ASCII, decided as the module docs say) into a welded
-/// triangle mesh.
-pub(crate) fn parse_stl(bytes: &[u8]) -> Result<TriMesh, ReadError> {
-    if is_ascii(bytes) {
-        parse_ascii(bytes)
+/// Whether the content looks like STL: a binary file of consistent size, or ASCII
+/// (`head` as [`is_ascii`] takes it).
+pub(crate) fn sniff(head: &[u8], len: Option<u64>) -> bool {
+    binary_size_matches(head, len) || is_ascii(head, len)
+}
+
+/// Parses STL (binary or ASCII, decided as the module docs say) into a welded triangle
+/// mesh.
+pub(crate) fn parse_stl(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
+    let len = input.known_len();
+    if is_ascii(probe(input)?, len) {
+        if input.peek(UTF8_BOM.len())? == UTF8_BOM {
+            input.consume(UTF8_BOM.len());
+        }
+        parse_ascii(input)
     } else {
-        parse_binary(bytes)
+        parse_binary(input)
     }
 }
 
-fn parse_binary(bytes: &[u8]) -> Result<TriMesh, ReadError> {
-    let Some(&[a, b, c, d]) = bytes.get(80..PAYLOAD_START) else {
-        return Err(ReadError::at_byte(
-            K::Truncated {
-                expected: "an 80-byte header and a 4-byte triangle count (binary STL)".into(),
-            },
-            bytes.len(),
-        ));
-    };
-    let declared = u64::from(u32::from_le_bytes([a, b, c, d]));
-    let payload = (bytes.len() - PAYLOAD_START) as u64;
+/// The length check of a binary STL of `len` bytes declaring `declared` triangles: the
+/// error for a payload that is not exactly `declared` triangles.
+fn binary_length_error(declared: u64, len: u64) -> Option<ReadError> {
+    let payload = len.saturating_sub(PAYLOAD_START as u64);
     let per = TRIANGLE_BYTES as u64;
     let whole = payload / per;
     if whole < declared {
-        return Err(if payload % per != 0 {
+        return Some(if payload % per != 0 {
             ReadError::new(
                 K::Truncated {
                     expected: format!(
@@ -205,88 +225,175 @@ fn parse_binary(bytes: &[u8]) -> Result<TriMesh, ReadError> {
             )
         });
     }
-    if payload > declared * per {
-        return Err(ReadError::new(
+    (payload > declared * per).then(|| {
+        ReadError::new(
             K::TrailingData { what: "triangle" },
             super::Location::ByteOffset(PAYLOAD_START as u64 + declared * per),
+        )
+    })
+}
+
+fn parse_binary(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
+    let head = input.peek(PAYLOAD_START)?;
+    let Some(&[a, b, c, d]) = head.get(80..PAYLOAD_START) else {
+        return Err(ReadError::at_byte(
+            K::Truncated {
+                expected: "an 80-byte header and a 4-byte triangle count (binary STL)".into(),
+            },
+            head.len(),
         ));
+    };
+    let declared = u64::from(u32::from_le_bytes([a, b, c, d]));
+    // With the length known, the count is checked against it before anything is
+    // reserved; otherwise the same checks are made when the input ends, and an error met
+    // on the way (a non-finite coordinate) is reported only if the length is right, so
+    // that both ways give the same error.
+    if let Some(e) = input
+        .known_len()
+        .and_then(|len| binary_length_error(declared, len))
+    {
+        return Err(e);
     }
-    // The count now matches the input's length: `declared` triangles are present.
-    let mut welder = Welder::with_capacity(declared as usize);
-    let payload_bytes = bytes.get(PAYLOAD_START..).unwrap_or_default();
-    for (i, t) in payload_bytes.chunks_exact(TRIANGLE_BYTES).enumerate() {
-        let base = PAYLOAD_START + i * TRIANGLE_BYTES;
-        let mut face = [0u32; 3];
-        for (k, slot) in face.iter_mut().enumerate() {
-            let mut p = [0.0f64; 3];
-            for (j, c) in p.iter_mut().enumerate() {
-                // Corners start after the 12-byte normal; `at + 3 < 48 <= t.len()`.
-                let at = 12 + 12 * k + 4 * j;
-                let x = f32::from_le_bytes([t[at], t[at + 1], t[at + 2], t[at + 3]]);
-                if !x.is_finite() {
-                    return Err(ReadError::at_byte(
-                        K::BadNumber {
-                            token: x.to_string(),
-                        },
-                        base + at,
-                    ));
-                }
-                *c = f64::from(x);
-            }
-            *slot = welder.vertex(p).ok_or_else(|| {
-                ReadError::at_byte(too_many_vertices(welder.positions.len()), base)
-            })?;
+    input.consume(PAYLOAD_START);
+    match read_triangles(input, declared) {
+        Ok(mesh) => Ok(mesh),
+        Err(e) if input.known_len().is_some() => Err(e),
+        Err(e) => {
+            input.drain()?;
+            Err(binary_length_error(declared, input.offset()).unwrap_or(e))
         }
-        welder.faces.push(face);
+    }
+}
+
+/// Reads content that no header names, from a stream of unknown length, as binary STL:
+/// the mesh when its length matches the triangle count (what [`sniff`] would have decided
+/// with the length known), `UnknownFormat` when it does not, and a binary error (a
+/// non-finite coordinate...) only when the length matches.
+pub(crate) fn parse_unsniffed(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
+    let unknown = || ReadError::new(K::UnknownFormat, super::Location::Unknown);
+    let head = input.peek(PAYLOAD_START)?;
+    let Some(&[a, b, c, d]) = head.get(80..PAYLOAD_START) else {
+        return Err(unknown());
+    };
+    let declared = u64::from(u32::from_le_bytes([a, b, c, d]));
+    input.consume(PAYLOAD_START);
+    match read_triangles(input, declared) {
+        Ok(mesh) => Ok(mesh),
+        Err(e) => {
+            input.drain()?;
+            match binary_length_error(declared, input.offset()) {
+                None => Err(e),
+                Some(_) => Err(unknown()),
+            }
+        }
+    }
+}
+
+/// Reads `declared` binary triangles from the payload start, then checks that nothing
+/// follows them.
+fn read_triangles(input: &mut Input<'_>, declared: u64) -> Result<TriMesh, ReadError> {
+    let mut welder = Welder::with_capacity(input.reserve_for(declared, TRIANGLE_BYTES as u64));
+    let mut done = 0u64;
+    while done < declared {
+        let base = input.offset();
+        let batch = input.fill_at_least(TRIANGLE_BYTES)?;
+        if batch.len() < TRIANGLE_BYTES {
+            input.drain()?;
+            let len = input.offset();
+            return Err(binary_length_error(declared, len).unwrap_or_else(|| {
+                ReadError::at_byte(
+                    K::Truncated {
+                        expected: "a whole triangle".into(),
+                    },
+                    base as usize,
+                )
+            }));
+        }
+        let take = (batch.len() / TRIANGLE_BYTES)
+            .min(usize::try_from(declared - done).unwrap_or(usize::MAX));
+        for (i, t) in batch[..take * TRIANGLE_BYTES]
+            .chunks_exact(TRIANGLE_BYTES)
+            .enumerate()
+        {
+            let at = base + (i * TRIANGLE_BYTES) as u64;
+            let mut face = [0u32; 3];
+            for (k, slot) in face.iter_mut().enumerate() {
+                let mut p = [0.0f64; 3];
+                for (j, c) in p.iter_mut().enumerate() {
+                    // Corners start after the 12-byte normal; `o + 3 < 48 <= t.len()`.
+                    let o = 12 + 12 * k + 4 * j;
+                    let x = f32::from_le_bytes([t[o], t[o + 1], t[o + 2], t[o + 3]]);
+                    if !x.is_finite() {
+                        return Err(ReadError::new(
+                            K::BadNumber {
+                                token: x.to_string(),
+                            },
+                            super::Location::ByteOffset(at + o as u64),
+                        ));
+                    }
+                    *c = f64::from(x);
+                }
+                *slot = welder.vertex(p).ok_or_else(|| {
+                    ReadError::new(
+                        too_many_vertices(welder.positions.len()),
+                        super::Location::ByteOffset(at),
+                    )
+                })?;
+            }
+            welder.faces.push(face);
+        }
+        input.consume(take * TRIANGLE_BYTES);
+        done += take as u64;
+    }
+    if !input.at_end()? {
+        let at = input.offset();
+        input.drain()?;
+        return Err(
+            binary_length_error(declared, input.offset()).unwrap_or_else(|| {
+                ReadError::new(
+                    K::TrailingData { what: "triangle" },
+                    super::Location::ByteOffset(at),
+                )
+            }),
+        );
     }
     Ok(welder.finish())
 }
 
 /// Whitespace-separated tokens across lines, each with its 1-based line.
-struct TokenStream<'a> {
-    lines: Lines<'a>,
-    tokens: Tokens<'a>,
-    line: usize,
+struct TokenStream<'i, 'r> {
+    input: &'i mut Input<'r>,
 }
 
-impl<'a> TokenStream<'a> {
-    fn new(bytes: &'a [u8]) -> Self {
-        TokenStream {
-            lines: Lines::new(bytes),
-            tokens: Tokens::new(b""),
-            line: 0,
-        }
-    }
-
-    fn next(&mut self) -> Option<(usize, &'a [u8])> {
-        loop {
-            if let Some(t) = self.tokens.next() {
-                return Some((self.line, t));
-            }
-            let (n, l) = self.lines.next_line()?;
-            self.line = n;
-            self.tokens = Tokens::new(l);
-        }
+impl TokenStream<'_, '_> {
+    fn next(&mut self) -> Result<Option<(usize, &[u8])>, ReadError> {
+        self.input.next_token()
     }
 
     /// Drops the rest of the current line (a solid's name).
     fn skip_line(&mut self) {
-        self.tokens = Tokens::new(b"");
+        self.input.skip_token_line();
     }
 
     /// The last line read (1 at least), where an unexpected end is reported.
     fn last_line(&self) -> usize {
-        self.line.max(1)
+        self.input.token_line().max(1)
     }
 
     /// The next token, which must be the keyword `kw` (case-insensitive).
     fn expect(&mut self, kw: &'static str) -> Result<usize, ReadError> {
-        match self.next() {
-            Some((n, t)) if t.eq_ignore_ascii_case(kw.as_bytes()) => Ok(n),
-            Some((n, t)) => Err(ReadError::at_line(
-                K::Stl(format!("expected `{kw}`, found {:?}", token_string(t))),
-                n,
-            )),
+        match self.input.next_token_span()? {
+            Some((n, s, e)) => {
+                let t = self.input.bytes(s, e);
+                if t.eq_ignore_ascii_case(kw.as_bytes()) {
+                    Ok(n)
+                } else {
+                    Err(ReadError::at_line(
+                        K::Stl(format!("expected `{kw}`, found {:?}", token_string(t))),
+                        n,
+                    ))
+                }
+            }
             None => Err(ReadError::at_line(
                 K::Truncated {
                     expected: format!("`{kw}`"),
@@ -297,15 +404,16 @@ impl<'a> TokenStream<'a> {
     }
 
     /// The next token, which must exist (`what` names it in the error).
-    fn value(&mut self, what: &'static str) -> Result<(usize, &'a [u8]), ReadError> {
-        self.next().ok_or_else(|| {
-            ReadError::at_line(
+    fn value(&mut self, what: &'static str) -> Result<(usize, &[u8]), ReadError> {
+        match self.input.next_token_span()? {
+            Some((n, s, e)) => Ok((n, self.input.bytes(s, e))),
+            None => Err(ReadError::at_line(
                 K::Truncated {
                     expected: what.into(),
                 },
                 self.last_line(),
-            )
-        })
+            )),
+        }
     }
 }
 
@@ -313,9 +421,8 @@ fn is_kw(t: &[u8], kw: &str) -> bool {
     t.eq_ignore_ascii_case(kw.as_bytes())
 }
 
-fn parse_ascii(bytes: &[u8]) -> Result<TriMesh, ReadError> {
-    let body = bytes.strip_prefix(UTF8_BOM).unwrap_or(bytes);
-    let mut ts = TokenStream::new(body);
+fn parse_ascii(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
+    let mut ts = TokenStream { input };
     ts.expect("solid")?;
     ts.skip_line();
     let mut welder = Welder::with_capacity(0);
@@ -323,7 +430,7 @@ fn parse_ascii(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         let (n, t) = ts.value("`facet` or `endsolid`")?;
         if is_kw(t, "endsolid") {
             ts.skip_line();
-            match ts.next() {
+            match ts.next()? {
                 None => break,
                 Some((_, t)) if is_kw(t, "solid") => {
                     ts.skip_line();
@@ -492,6 +599,16 @@ fn unit_normal([a, b, c]: &[[f64; 3]; 3]) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn parse_stl(bytes: &[u8]) -> Result<TriMesh, ReadError> {
+        super::parse_stl(&mut Input::from_slice(bytes))
+    }
+
+    fn sniff(bytes: &[u8]) -> bool {
+        let mut input = Input::from_slice(bytes);
+        let len = input.known_len();
+        super::sniff(probe(&mut input).unwrap(), len)
+    }
     use crate::io::Location;
 
     /// A binary STL of `tris` (corner positions), with `count` in the header.

@@ -84,11 +84,39 @@ fn tmp(name: &str) -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("io_formats_{name}"))
 }
 
+/// A reader handing out a few bytes per call (1, 2, ... 7, then 1 again), so that every
+/// record and line of a stream crosses buffer refills.
+struct Trickle<'a> {
+    bytes: &'a [u8],
+    calls: usize,
+}
+
+impl std::io::Read for Trickle<'_> {
+    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+        self.calls += 1;
+        let n = (self.calls % 7 + 1).min(out.len()).min(self.bytes.len());
+        out[..n].copy_from_slice(&self.bytes[..n]);
+        self.bytes = &self.bytes[n..];
+        Ok(n)
+    }
+}
+
+/// The error reading `bytes` as `format` gives, which must be the same (kind and
+/// location) whether the bytes are read from memory (their length known) or streamed in
+/// dribs and drabs from a reader (their length unknown).
 fn err(bytes: &[u8], format: Format) -> ReadError {
-    match read_tri_mesh_bytes(bytes, Some(format)) {
+    let e = match read_tri_mesh_bytes(bytes, Some(format)) {
         Ok(m) => panic!("expected an error, read {m:?}"),
         Err(e) => e,
-    }
+    };
+    let streamed = read_tri_mesh_from(Trickle { bytes, calls: 0 }, format)
+        .expect_err("the same error when streamed");
+    assert_eq!(
+        (format!("{:?}", streamed.kind), streamed.location),
+        (format!("{:?}", e.kind), e.location),
+        "streamed and in-memory reading disagree"
+    );
+    e
 }
 
 // ---------------------------------------------------------------- round trips
@@ -108,7 +136,17 @@ fn tri_round_trip_all_formats_in_memory() {
         // Sniffing finds the same format.
         assert_eq!(Format::sniff(&bytes), Some(format));
         assert_same(&m, &read_tri_mesh_bytes(&bytes, None).unwrap());
-        assert_same(&m, &read_tri_mesh_from(&bytes[..], format).unwrap());
+        assert_same(
+            &m,
+            &read_tri_mesh_from(
+                Trickle {
+                    bytes: &bytes,
+                    calls: 0,
+                },
+                format,
+            )
+            .unwrap(),
+        );
     }
     for enc in [
         PlyEncoding::Ascii,
@@ -1326,4 +1364,61 @@ fn a_failed_write_leaves_no_file() {
     write_mesh(&good, &quads).expect("replaceable");
     assert_eq!(listing(), vec![std::ffi::OsString::from("q.obj")]);
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A stream read once has no length for the binary STL rule: content no header names is
+/// read as binary STL when its length matches the count, and is `UnknownFormat` when it
+/// does not, as from memory.
+#[test]
+fn read_once_streams_recognise_binary_stl_by_its_length() {
+    let m = contractible::gen::octahedron();
+    let stl = to_bytes(&m, Format::Stl, true);
+    let from_memory = contractible::io::decode(&stl, None).unwrap();
+    let streamed = contractible::io::decode_reader(
+        Trickle {
+            bytes: &stl,
+            calls: 0,
+        },
+        None,
+    )
+    .unwrap();
+    assert_eq!(
+        (from_memory.format, streamed.format),
+        (Format::Stl, Format::Stl)
+    );
+    assert_eq!(from_memory.mesh, streamed.mesh);
+    for bad in [
+        &stl[..stl.len() - 1],
+        &[&stl[..], &[0u8; 50][..]].concat()[..],
+        &stl[..40],
+    ] {
+        let a = contractible::io::decode(bad, None).unwrap_err();
+        let b = contractible::io::decode_reader(
+            Trickle {
+                bytes: bad,
+                calls: 0,
+            },
+            None,
+        )
+        .unwrap_err();
+        assert!(matches!(a.kind, K::UnknownFormat), "{a}");
+        assert!(matches!(b.kind, K::UnknownFormat), "{b}");
+    }
+    // A non-finite coordinate is reported when the length matches.
+    let mut nan = stl.clone();
+    nan[84 + 12..84 + 16].copy_from_slice(&f32::NAN.to_le_bytes());
+    let a = contractible::io::decode(&nan, None).unwrap_err();
+    let b = contractible::io::decode_reader(
+        Trickle {
+            bytes: &nan,
+            calls: 0,
+        },
+        None,
+    )
+    .unwrap_err();
+    assert_eq!(
+        (format!("{:?}", a.kind), a.location),
+        (format!("{:?}", b.kind), b.location)
+    );
+    assert!(matches!(a.kind, K::BadNumber { .. }), "{a}");
 }
