@@ -388,4 +388,20 @@ mod tests {
             assert_eq!(SurfaceType::of(&t), SurfaceType::from(kind));
         }
     }
+
+    /// Removing discs from a surface that already has boundary adds to its loops and
+    /// lowers χ by as many, up to `u32::MAX` loops.
+    #[test]
+    fn removing_discs_from_a_surface_with_boundary() {
+        let annulus = SurfaceType::with_boundary(0, true, 2).expect("an annulus");
+        let more = annulus.with_discs_removed(3);
+        assert_eq!(
+            (more.euler_characteristic(), more.boundary_loops()),
+            (-3, 5)
+        );
+        assert_eq!(more.capped(), annulus.capped());
+        let most = annulus.with_discs_removed(usize::MAX);
+        assert_eq!(most.boundary_loops(), u32::MAX as usize);
+        assert_eq!(most.euler_characteristic(), -(i64::from(u32::MAX) - 2));
+    }
 }
