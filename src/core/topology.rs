@@ -404,4 +404,45 @@ mod tests {
         assert_eq!(most.boundary_loops(), u32::MAX as usize);
         assert_eq!(most.euler_characteristic(), -(i64::from(u32::MAX) - 2));
     }
+
+    /// The serialised fields, in order, with the struct's length: `boundary_loops` only
+    /// for a surface with boundary.
+    #[cfg(feature = "serde")]
+    #[test]
+    fn serialises_the_reported_fields() {
+        use serde_test::{assert_ser_tokens, Token};
+        let fields = |chi: i64, genus: Option<i64>, euler_genus: i64| {
+            let mut t = vec![
+                Token::Str("euler_characteristic"),
+                Token::I64(chi),
+                Token::Str("orientable"),
+                Token::Bool(genus.is_some()),
+                Token::Str("genus"),
+            ];
+            t.extend(match genus {
+                Some(g) => vec![Token::Some, Token::I64(g)],
+                None => vec![Token::None],
+            });
+            t.extend([Token::Str("euler_genus"), Token::I64(euler_genus)]);
+            t
+        };
+        let torus = SurfaceType::new(0, true).expect("a torus");
+        let mut want = vec![Token::Struct {
+            name: "SurfaceType",
+            len: 4,
+        }];
+        want.extend(fields(0, Some(1), 2));
+        want.push(Token::StructEnd);
+        assert_ser_tokens(&torus, &want);
+
+        let mobius = SurfaceType::with_boundary(0, false, 1).expect("a Möbius band");
+        let mut want = vec![Token::Struct {
+            name: "SurfaceType",
+            len: 5,
+        }];
+        want.extend(fields(0, None, 1));
+        want.extend([Token::Str("boundary_loops"), Token::U32(1)]);
+        want.push(Token::StructEnd);
+        assert_ser_tokens(&mobius, &want);
+    }
 }
