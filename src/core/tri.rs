@@ -541,3 +541,70 @@ impl Triangulation {
             + self.degree.capacity())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A source hands out its reserved block in order, then reserves a new one: every
+    /// stamp lies in the block reserved last (`end - BLOCK <= stamp < end`), one more
+    /// than the one before within a block.
+    #[test]
+    fn stamps_come_from_the_reserved_block_in_order() {
+        let mut source = StampSource::default();
+        let mut previous: Option<u64> = None;
+        let mut blocks = 0;
+        for _ in 0..StampSource::BLOCK + 2 {
+            let end_before = source.end;
+            let StateStamp(s) = source.take();
+            assert!(
+                source.end >= StampSource::BLOCK
+                    && (source.end - StampSource::BLOCK..source.end).contains(&s),
+                "stamp {s} outside the block ending at {}",
+                source.end
+            );
+            assert_eq!(source.next, s + 1);
+            if source.end != end_before {
+                blocks += 1;
+                assert_eq!(
+                    s,
+                    source.end - StampSource::BLOCK,
+                    "a block starts at its base"
+                );
+            } else {
+                assert_eq!(Some(s), previous.map(|p| p + 1), "in order within a block");
+            }
+            previous = Some(s);
+        }
+        assert_eq!(blocks, 2, "one reservation per block, and only then");
+        // A clone starts without a block (so no two sources share one).
+        let clone = source.clone();
+        assert_eq!((clone.next, clone.end), (0, 0));
+    }
+
+    /// `==` compares every array and count (each changed alone makes triangulations
+    /// unequal) and ignores the state stamp.
+    #[test]
+    fn triangulations_are_equal_exactly_when_their_arrays_are() {
+        let oct = crate::gen::octahedron();
+        let t = Triangulation::from_faces(6, &oct.faces).expect("the octahedron");
+        let mut same = Triangulation::from_faces(6, &oct.faces).expect("the octahedron");
+        same.state = StateStamp::fresh();
+        assert_ne!(t.state(), same.state());
+        assert_eq!(t, same, "the stamps are not compared");
+        type Change = fn(&mut Triangulation);
+        let changes: [(&str, Change); 6] = [
+            ("corner_vertex", |t| t.corner_vertex[0] ^= 1),
+            ("opposite", |t| t.opposite[0] ^= 1),
+            ("vertex_corner", |t| t.vertex_corner[0] ^= 1),
+            ("degree", |t| t.degree[0] += 1),
+            ("live_vertices", |t| t.live_vertices += 1),
+            ("live_faces", |t| t.live_faces += 1),
+        ];
+        for (field, change) in changes {
+            let mut other = t.clone();
+            change(&mut other);
+            assert_ne!(t, other, "{field} differs");
+        }
+    }
+}
