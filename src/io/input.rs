@@ -21,8 +21,11 @@ use super::text::is_space;
 /// Bytes requested from the reader at a time.
 const CHUNK: usize = 256 << 10;
 
-/// Records reserved ahead when the input's length is unknown (compressed or piped input).
-pub(crate) const UNKNOWN_LEN_RESERVE: u64 = 1 << 20;
+/// Records reserved ahead when the input's length is unknown (compressed or piped input):
+/// enough that a large mesh's vectors double only a few times as it is read, few enough
+/// that a small input declaring a huge count reserves at most a megabyte or two (with a
+/// million, every such input reserved tens of megabytes).
+pub(crate) const UNKNOWN_LEN_RESERVE: u64 = 1 << 16;
 
 /// The longest line (terminator excluded) a text reader accepts: far above any real
 /// record (a 64 MiB face line would list millions of corners), low enough that a

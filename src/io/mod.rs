@@ -24,8 +24,8 @@
 //! input (a gzip file expanding to gigabytes of blank lines or comments is read in a few
 //! hundred kilobytes; a single line longer than [`MAX_LINE`] is refused as
 //! [`ReadErrorKind::LineTooLong`]). Allocations follow the records actually read; a
-//! header count is only trusted up to what the input's length can hold, or up to a
-//! million records when the length is not known in advance (compressed or piped input).
+//! header count is only trusted up to what the input's length can hold, or up to 65,536
+//! records when the length is not known in advance (compressed or piped input).
 
 mod error;
 mod input;
