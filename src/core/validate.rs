@@ -607,4 +607,84 @@ mod tests {
             })
         ));
     }
+
+    /// The pillow (two triangles on the same three vertices, glued along all three
+    /// edges), which mesh libraries that collapse a tetrahedron make, is refused at its
+    /// first vertex: its link is a 2-cycle. Any two faces on the same vertices put the
+    /// same edge twice into the link of each of those vertices, so the link checks refuse
+    /// every duplicate face before the duplicate check is reached (which stays as a
+    /// second line).
+    #[test]
+    fn the_pillow_is_refused_by_its_links() {
+        // Face 0 = [0, 1, 2], face 1 = [0, 2, 1]; corner 3k + i is vertex i of face k,
+        // glued to the corner of the other face at the same vertex.
+        let pillow = Triangulation {
+            corner_vertex: vec![0, 1, 2, 0, 2, 1],
+            opposite: vec![3, 5, 4, 0, 2, 1],
+            vertex_corner: vec![0, 1, 2],
+            degree: vec![2, 2, 2],
+            live_vertices: 3,
+            live_faces: 2,
+            state: crate::core::StateStamp::fresh(),
+            stamps: Default::default(),
+        };
+        assert_eq!(
+            pillow.validate(),
+            Err(ValidationError::Degree {
+                vertex: 0,
+                degree: 2,
+                faces: 2
+            })
+        );
+    }
+
+    /// The problems' messages say what went wrong, with the numbers involved.
+    #[test]
+    fn problems_display_what_went_wrong() {
+        let shown = [
+            (
+                GluingProblem::NotLive { opposite: 7 }.to_string(),
+                "opposite 7 is not a live corner",
+            ),
+            (
+                GluingProblem::SameFace { opposite: 4 }.to_string(),
+                "opposite 4 in the same face",
+            ),
+            (
+                GluingProblem::NotInvolution {
+                    opposite: 4,
+                    back: 9,
+                }
+                .to_string(),
+                "opposite(4) = 9 is not the corner",
+            ),
+            (
+                GluingProblem::DifferentEdges {
+                    edge: [1, 2],
+                    other: [3, 4],
+                }
+                .to_string(),
+                "it and its opposite see different edges [1, 2] / [3, 4]",
+            ),
+            (
+                LinkProblem::DoesNotClose.to_string(),
+                "the star walk does not close",
+            ),
+            (
+                LinkProblem::Repeats(VertexId(5)).to_string(),
+                "it repeats 5",
+            ),
+            (
+                LinkProblem::Short {
+                    walked: 2,
+                    faces: 5,
+                }
+                .to_string(),
+                "2 of 5 faces",
+            ),
+        ];
+        for (got, want) in shown {
+            assert_eq!(got, want);
+        }
+    }
 }
