@@ -11,7 +11,7 @@
 
 #[allow(dead_code)]
 #[path = "../../fuzz/src/lib.rs"]
-mod harness;
+pub(crate) mod harness;
 
 use std::path::PathBuf;
 

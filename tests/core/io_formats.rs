@@ -10,6 +10,9 @@ use contractible::io::{
 };
 use contractible::{Mesh, QuadMesh, TriMesh};
 
+// The reader handing out 1 to 7 bytes per call, shared with the fuzz harness.
+use crate::fuzz_regressions::harness::Trickle;
+
 /// A predicate on an error kind.
 type KindCheck = fn(&K) -> bool;
 
@@ -84,23 +87,6 @@ fn tmp(name: &str) -> PathBuf {
     Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("io_formats_{name}"))
 }
 
-/// A reader handing out a few bytes per call (1, 2, ... 7, then 1 again), so that every
-/// record and line of a stream crosses buffer refills.
-struct Trickle<'a> {
-    bytes: &'a [u8],
-    calls: usize,
-}
-
-impl std::io::Read for Trickle<'_> {
-    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
-        self.calls += 1;
-        let n = (self.calls % 7 + 1).min(out.len()).min(self.bytes.len());
-        out[..n].copy_from_slice(&self.bytes[..n]);
-        self.bytes = &self.bytes[n..];
-        Ok(n)
-    }
-}
-
 /// The error reading `bytes` as `format` gives, which must be the same (kind and
 /// location) whether the bytes are read from memory (their length known) or streamed in
 /// dribs and drabs from a reader (their length unknown).
@@ -109,8 +95,8 @@ fn err(bytes: &[u8], format: Format) -> ReadError {
         Ok(m) => panic!("expected an error, read {m:?}"),
         Err(e) => e,
     };
-    let streamed = read_tri_mesh_from(Trickle { bytes, calls: 0 }, format)
-        .expect_err("the same error when streamed");
+    let streamed =
+        read_tri_mesh_from(Trickle::new(bytes), format).expect_err("the same error when streamed");
     assert_eq!(
         (format!("{:?}", streamed.kind), streamed.location),
         (format!("{:?}", e.kind), e.location),
@@ -138,14 +124,7 @@ fn tri_round_trip_all_formats_in_memory() {
         assert_same(&m, &read_tri_mesh_bytes(&bytes, None).unwrap());
         assert_same(
             &m,
-            &read_tri_mesh_from(
-                Trickle {
-                    bytes: &bytes,
-                    calls: 0,
-                },
-                format,
-            )
-            .unwrap(),
+            &read_tri_mesh_from(Trickle::new(&bytes), format).unwrap(),
         );
     }
     for enc in [
@@ -1374,14 +1353,7 @@ fn read_once_streams_recognise_binary_stl_by_its_length() {
     let m = contractible::gen::octahedron();
     let stl = to_bytes(&m, Format::Stl, true);
     let from_memory = contractible::io::decode(&stl, None).unwrap();
-    let streamed = contractible::io::decode_reader(
-        Trickle {
-            bytes: &stl,
-            calls: 0,
-        },
-        None,
-    )
-    .unwrap();
+    let streamed = contractible::io::decode_reader(Trickle::new(&stl), None).unwrap();
     assert_eq!(
         (from_memory.format, streamed.format),
         (Format::Stl, Format::Stl)
@@ -1393,14 +1365,7 @@ fn read_once_streams_recognise_binary_stl_by_its_length() {
         &stl[..40],
     ] {
         let a = contractible::io::decode(bad, None).unwrap_err();
-        let b = contractible::io::decode_reader(
-            Trickle {
-                bytes: bad,
-                calls: 0,
-            },
-            None,
-        )
-        .unwrap_err();
+        let b = contractible::io::decode_reader(Trickle::new(bad), None).unwrap_err();
         assert!(matches!(a.kind, K::UnknownFormat), "{a}");
         assert!(matches!(b.kind, K::UnknownFormat), "{b}");
     }
@@ -1408,14 +1373,7 @@ fn read_once_streams_recognise_binary_stl_by_its_length() {
     let mut nan = stl.clone();
     nan[84 + 12..84 + 16].copy_from_slice(&f32::NAN.to_le_bytes());
     let a = contractible::io::decode(&nan, None).unwrap_err();
-    let b = contractible::io::decode_reader(
-        Trickle {
-            bytes: &nan,
-            calls: 0,
-        },
-        None,
-    )
-    .unwrap_err();
+    let b = contractible::io::decode_reader(Trickle::new(&nan), None).unwrap_err();
     assert_eq!(
         (format!("{:?}", a.kind), a.location),
         (format!("{:?}", b.kind), b.location)
