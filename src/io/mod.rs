@@ -256,15 +256,43 @@ impl<'a> Source<'a> {
     }
 }
 
-/// Streams `source`: the format is the content's when [`sniff_input`] recognises it,
-/// `declared` otherwise.
-fn decode_source(mut source: Source<'_>, declared: Option<Format>) -> Result<Decoded, ReadError> {
+/// How [`read_source`] settles the format.
+#[derive(Clone, Copy)]
+enum Pick {
+    /// The content's, when [`sniff_input`] recognises it; else the declared one.
+    Sniff(Option<Format>),
+    /// This one, whatever the content.
+    Given(Format),
+}
+
+/// The error for a name ending in `.gz` whose content is not gzip.
+fn not_gzip() -> ReadError {
+    ReadError::new(
+        ReadErrorKind::Decompress("file name ends in .gz but the content is not gzip".into()),
+        Location::ByteOffset(0),
+    )
+}
+
+/// Streams `source` and parses it in the format `pick` settles; `named_gz`: the name
+/// ends in `.gz`, so the content must be gzip.
+fn read_source(mut source: Source<'_>, pick: Pick, named_gz: bool) -> Result<Decoded, ReadError> {
+    let declared = match pick {
+        Pick::Sniff(declared) => declared,
+        Pick::Given(format) => Some(format),
+    };
+    let rereadable = !matches!(source, Source::Reader(_));
+    let mut input = source.open()?;
+    if named_gz && !input.is_gzip() {
+        return Err(not_gzip());
+    }
+    let sniff = |input: &mut Input<'_>| match pick {
+        Pick::Sniff(_) => sniff_input(input),
+        Pick::Given(_) => Ok(None),
+    };
+    let mut sniffed = sniff(&mut input)?;
     // The STL decisions compare the length with the binary triangle count. Compressed
     // content has no length until it is decompressed: when the decision may need it, a
     // first pass measures it (a reader read once goes without, see the `stl` module).
-    let rereadable = !matches!(source, Source::Reader(_));
-    let mut input = source.open()?;
-    let mut sniffed = sniff_input(&mut input)?;
     let stl_possible = matches!(sniffed, None | Some(Format::Stl))
         && matches!(declared.or(sniffed), None | Some(Format::Stl));
     if input.is_gzip() && stl_possible && rereadable {
@@ -272,7 +300,7 @@ fn decode_source(mut source: Source<'_>, declared: Option<Format>) -> Result<Dec
         let len = source.gunzipped_len()?;
         input = source.open()?;
         input.set_known_len(len);
-        sniffed = sniff_input(&mut input)?;
+        sniffed = sniff(&mut input)?;
     }
     let format = match sniffed.or(declared) {
         Some(format) => format,
@@ -346,7 +374,7 @@ impl std::fmt::Display for Format {
 /// Guarantees: as [`read_tri_mesh_bytes`] (no panic, bounded allocation); gzip detected
 /// by its magic bytes; `UnknownFormat` when neither decides.
 pub fn decode(bytes: &[u8], declared: Option<Format>) -> Result<Decoded, ReadError> {
-    decode_source(Source::Bytes(bytes), declared)
+    read_source(Source::Bytes(bytes), Pick::Sniff(declared), false)
 }
 
 /// [`decode`] on a stream read once (standard input, a socket): the same rules, in memory
@@ -356,7 +384,11 @@ pub fn decode(bytes: &[u8], declared: Option<Format>) -> Result<Decoded, ReadErr
 /// starts like another format (`ply`, `OFF`, an OBJ statement, `solid` and text) is read
 /// as that format (see the `stl` module).
 pub fn decode_reader(reader: impl Read, declared: Option<Format>) -> Result<Decoded, ReadError> {
-    decode_source(Source::Reader(Box::new(reader)), declared)
+    read_source(
+        Source::Reader(Box::new(reader)),
+        Pick::Sniff(declared),
+        false,
+    )
 }
 
 fn parse(input: &mut Input<'_>, format: Format) -> Result<PolyMesh, ReadError> {
@@ -397,23 +429,11 @@ fn read_file<'a>(
     on_read: Option<&'a mut (dyn FnMut(u64) + 'a)>,
 ) -> Result<Decoded, ReadError> {
     let (from_name, gz) = Format::from_path(path);
-    let result = (|| {
-        if gz {
-            let mut magic = [0u8; 2];
-            let mut file = File::open(path).map_err(io_error)?;
-            let n = file.read(&mut magic).map_err(io_error)?;
-            if n < 2 && file.read(&mut magic[n..]).map_err(io_error)? + n < 2 || magic != GZIP_MAGIC
-            {
-                return Err(ReadError::new(
-                    ReadErrorKind::Decompress(
-                        "file name ends in .gz but the content is not gzip".into(),
-                    ),
-                    Location::ByteOffset(0),
-                ));
-            }
-        }
-        decode_source(Source::File { path, on_read }, format.or(from_name))
-    })();
+    let result = read_source(
+        Source::File { path, on_read },
+        Pick::Sniff(format.or(from_name)),
+        gz,
+    );
     result.map_err(|e| e.with_path(path))
 }
 
@@ -425,15 +445,8 @@ pub fn decode_named(
     format: Option<Format>,
 ) -> Result<Decoded, ReadError> {
     let (from_name, gz) = Format::from_path(path);
-    let result = if gz && !bytes.starts_with(&GZIP_MAGIC) {
-        Err(ReadError::new(
-            ReadErrorKind::Decompress("file name ends in .gz but the content is not gzip".into()),
-            Location::ByteOffset(0),
-        ))
-    } else {
-        decode(bytes, format.or(from_name))
-    };
-    result.map_err(|e| e.with_path(path))
+    read_source(Source::Bytes(bytes), Pick::Sniff(format.or(from_name)), gz)
+        .map_err(|e| e.with_path(path))
 }
 
 /// Reads a triangle mesh from a file: [`read_poly_mesh`] (the content decides the format
@@ -447,9 +460,9 @@ pub fn read_tri_mesh(path: &Path) -> Result<TriMesh, ReadError> {
 /// by its magic bytes and decompressed as it is read). Same guarantees as
 /// [`read_tri_mesh_bytes`].
 pub fn read_tri_mesh_from(reader: impl Read, format: Format) -> Result<TriMesh, ReadError> {
-    let mut source = Source::Reader(Box::new(reader));
-    let mut input = source.open()?;
-    parse(&mut input, format)?.into_tri_mesh()
+    read_source(Source::Reader(Box::new(reader)), Pick::Given(format), false)?
+        .mesh
+        .into_tri_mesh()
 }
 
 /// Reads a polygon mesh from in-memory bytes in `format` (gzip detected by magic bytes;
@@ -459,22 +472,11 @@ pub fn read_tri_mesh_from(reader: impl Read, format: Format) -> Result<TriMesh, 
 /// it returns, or of the input's size, whatever the bytes (compressed content included);
 /// suitable as a fuzzing entry point.
 pub fn read_poly_mesh_bytes(bytes: &[u8], format: Option<Format>) -> Result<PolyMesh, ReadError> {
-    match format {
-        Some(f) => {
-            let mut source = Source::Bytes(bytes);
-            let gz_len = if bytes.starts_with(&GZIP_MAGIC) && f == Format::Stl {
-                source.gunzipped_len()?
-            } else {
-                None
-            };
-            let mut input = source.open()?;
-            if gz_len.is_some() {
-                input.set_known_len(gz_len);
-            }
-            parse(&mut input, f)
-        }
-        None => decode(bytes, None).map(|d| d.mesh),
-    }
+    let pick = match format {
+        Some(f) => Pick::Given(f),
+        None => Pick::Sniff(None),
+    };
+    read_source(Source::Bytes(bytes), pick, false).map(|d| d.mesh)
 }
 
 /// Reads a triangle mesh from in-memory bytes: [`read_poly_mesh_bytes`], then
