@@ -32,6 +32,24 @@ fn build_b0(b: divan::Bencher) {
         .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
 }
 
+/// The floor under `build_b0` that fresh memory sets: allocating and writing once as
+/// many bytes as that build allocates (three arrays of one `u32` per corner: the
+/// corner-to-vertex array, the gluing and the corners grouped by vertex; five of one
+/// `u32` per vertex; one flag per vertex), and nothing else. Most of this is the kernel
+/// handing out and zeroing pages, not the writes.
+#[divan::bench(sample_count = 10)]
+fn fresh_memory_b0(b: divan::Bencher) {
+    let m = b0();
+    let (corners, vertices) = (3 * m.faces.len(), m.vertex_count);
+    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
+        .bench(|| {
+            let per_corner: [Vec<u32>; 3] = std::array::from_fn(|_| vec![1u32; corners]);
+            let per_vertex: [Vec<u32>; 5] = std::array::from_fn(|_| vec![1u32; vertices]);
+            let flags = vec![true; vertices];
+            (per_corner, per_vertex, flags)
+        });
+}
+
 /// `Surfaces::from_mesh` (validation + component split) on B0.
 #[divan::bench(sample_count = 10)]
 fn surfaces_b0(b: divan::Bencher) {

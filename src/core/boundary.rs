@@ -60,8 +60,8 @@
 //! virtual vertices and cone faces.
 
 use super::build::{
-    assemble, check_counts, check_open, face_components, split, unused_vertices, BuildError,
-    Checked, Component, OpenCheck, Surfaces,
+    assemble, check_counts, check_open, split, unused_vertices, BuildError, Checked, Component,
+    OpenCheck, Surfaces,
 };
 use super::ids::{Corner, FaceId, VertexId, NONE};
 use super::topology::SurfaceType;
@@ -277,10 +277,10 @@ impl ConedSurfaces {
                 )?
             }
         };
-        let Checked { tri, used } = checked;
         // Cone apexes come after the mesh's vertices and are always used.
-        let dropped_vertices = unused_vertices(&used[..vertex_count]);
-        let (label, count) = face_components(&tri);
+        let dropped_vertices = unused_vertices(&checked.used[..vertex_count]);
+        let (label, count) = checked.face_components();
+        let tri = checked.tri;
         let virtual_count = (tri.vertex_capacity() - vertex_count) as u32;
         let components = if count == 1 && dropped_vertices.is_empty() {
             // As in `Surfaces::from_faces`: the mesh's ids are already dense, real ones

@@ -139,6 +139,54 @@ pub enum BuildError {
 pub(super) struct Checked {
     pub(super) tri: Triangulation,
     pub(super) used: Vec<bool>,
+    /// The vertex union-find of the edges (see [`union`]), when the classification
+    /// made one; empty otherwise.
+    parent: Vec<u32>,
+}
+
+impl Checked {
+    /// Number of connected components. O(V) from the union-find, else O(F).
+    pub(super) fn component_count(&self) -> usize {
+        if self.parent.is_empty() {
+            return face_components(&self.tri).1;
+        }
+        let mut roots = 0;
+        for (v, &p) in self.parent.iter().enumerate() {
+            roots += usize::from(p == v as u32 && self.used[v]);
+        }
+        roots
+    }
+
+    /// The connected components of the face graph: `label[f]` (numbered in order of
+    /// each component's smallest face) and their count. O(F + V).
+    pub(super) fn face_components(&self) -> (Vec<u32>, usize) {
+        if self.parent.is_empty() {
+            return face_components(&self.tri);
+        }
+        // A closed surface's faces are connected exactly when its vertices are: each
+        // vertex's faces form one fan (phase 4 checked it), and an edge's two faces
+        // contain both its endpoints.
+        let mut root = self.parent.clone();
+        for v in 0..root.len() {
+            root[v] = root[root[v] as usize];
+        }
+        let mut id = vec![NONE; root.len()];
+        let mut count = 0u32;
+        let label = self
+            .tri
+            .corner_vertex
+            .chunks_exact(3)
+            .map(|f| {
+                let r = root[f[0] as usize] as usize;
+                if id[r] == NONE {
+                    id[r] = count;
+                    count += 1;
+                }
+                id[r]
+            })
+            .collect();
+        (label, count as usize)
+    }
 }
 
 fn check_sizes(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
@@ -167,68 +215,74 @@ pub(super) fn check_counts(vertex_count: usize, faces: usize) -> Result<(), Buil
     Ok(())
 }
 
-/// Phase 1, per face: every index in range, no repeated vertex. O(F).
-fn check_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(), BuildError> {
-    for (i, f) in faces.iter().enumerate() {
-        for &v in f {
-            if v as usize >= vertex_count {
-                return Err(BuildError::VertexOutOfRange {
-                    face: i,
-                    vertex: v,
-                    vertex_count,
-                });
-            }
-        }
-        if f[0] == f[1] || f[1] == f[2] || f[0] == f[2] {
-            return Err(BuildError::DegenerateFace {
-                face: i,
-                vertices: *f,
-            });
-        }
+/// What is wrong with input face `face`, which has an index out of range or a
+/// repeated vertex: the first index out of range, else the repetition.
+fn face_problem(vertex_count: usize, face: usize, vertices: [u32; 3]) -> BuildError {
+    match vertices.iter().find(|&&v| v as usize >= vertex_count) {
+        Some(&vertex) => BuildError::VertexOutOfRange {
+            face,
+            vertex,
+            vertex_count,
+        },
+        None => BuildError::DegenerateFace { face, vertices },
     }
-    Ok(())
 }
 
-/// Phase 2 output: the edge opposite each corner, bucketed under its smaller endpoint.
-/// Bucket `lo` is `entries[start[lo]..start[lo + 1]]`; each entry packs
-/// `(larger endpoint << 32) | corner` so a bucket sorts without indirection.
-struct EdgeBuckets {
-    start: Vec<u32>,
-    entries: Vec<u64>,
+/// Phase 1 output: the corner-to-vertex array (the faces, flattened) and the number of
+/// corners at each vertex.
+struct Scanned {
+    corner_vertex: Vec<u32>,
+    degree: Vec<u32>,
 }
 
-/// Phase 2: buckets every corner's opposite edge (a counting sort by smaller endpoint).
-/// O(F + V).
-fn bucket_edges(vertex_count: usize, corner_vertex: &[u32]) -> EdgeBuckets {
-    // The edge opposite slot s of a face joins its slots s + 1 and s + 2 (mod 3): read
-    // per face, so no corner arithmetic is needed.
-    let edges = |f: &[u32]| {
-        let ordered = |a: u32, b: u32| if a < b { (a, b) } else { (b, a) };
-        [
-            ordered(f[1], f[2]),
-            ordered(f[2], f[0]),
-            ordered(f[0], f[1]),
-        ]
-    };
-    let mut start = vec![0u32; vertex_count + 1];
-    for f in corner_vertex.chunks_exact(3) {
-        for (lo, _) in edges(f) {
-            start[lo as usize + 1] += 1;
+/// Phase 1: sizes, every index in range, no repeated vertex (the first face with a
+/// problem is the error); the corners per vertex; the corner-to-vertex array. O(F + V).
+fn scan_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Scanned, BuildError> {
+    check_sizes(vertex_count, faces)?;
+    let mut degree = vec![0u32; vertex_count];
+    let n = degree.len();
+    for (i, &f) in faces.iter().enumerate() {
+        let [a, b, c] = f.map(|v| v as usize);
+        // One test for both problems: valid faces (nearly all) take a single branch.
+        if (a >= n) | (b >= n) | (c >= n) | (a == b) | (b == c) | (a == c) {
+            return Err(face_problem(vertex_count, i, f));
         }
+        degree[a] += 1;
+        degree[b] += 1;
+        degree[c] += 1;
     }
-    for i in 0..vertex_count {
-        start[i + 1] += start[i];
+    let corner_vertex = faces.as_flattened().to_vec();
+    Ok(Scanned {
+        corner_vertex,
+        degree,
+    })
+}
+
+/// Phase 2 output: the corners at each vertex, increasing. Vertex `v`'s corners are
+/// `corners[end[v - 1]..end[v]]` (from 0 for `v = 0`).
+struct VertexCorners {
+    end: Vec<u32>,
+    corners: Vec<u32>,
+}
+
+/// Phase 2: the corners grouped by vertex, by a counting sort on the vertex (the
+/// degrees are the counts). O(F + V).
+fn vertex_corners(corner_vertex: &[u32], degree: &[u32]) -> VertexCorners {
+    let mut end = Vec::with_capacity(degree.len());
+    let mut sum = 0u32;
+    for &d in degree {
+        end.push(sum);
+        sum += d;
     }
-    let mut fill = start.clone();
-    let mut entries = vec![0u64; corner_vertex.len()];
-    for (face, f) in corner_vertex.chunks_exact(3).enumerate() {
-        for (s, (lo, hi)) in edges(f).into_iter().enumerate() {
-            let slot = &mut fill[lo as usize];
-            entries[*slot as usize] = ((hi as u64) << 32) | (3 * face + s) as u64;
-            *slot += 1;
-        }
+    // `end[v]` starts as the beginning of `v`'s run and, after each corner of `v` is
+    // placed, is its end.
+    let mut corners = vec![0u32; corner_vertex.len()];
+    for (c, &v) in corner_vertex.iter().enumerate() {
+        let slot = &mut end[v as usize];
+        corners[*slot as usize] = c as u32;
+        *slot += 1;
     }
-    EdgeBuckets { start, entries }
+    VertexCorners { end, corners }
 }
 
 /// How many faces hold one pair of endpoints, as phase 3 classifies it.
@@ -256,33 +310,83 @@ impl EdgeClass {
     }
 }
 
-/// Phase 3 output: the gluing of interior edges, the corners of boundary edges, and the
-/// first problem of each kind (reported in a fixed order of precedence by the caller).
+/// Phase 3 output: the gluing of interior edges, the corners of boundary edges, the
+/// first problem of each kind (reported in a fixed order of precedence by the caller),
+/// and the vertex union-find of the edges (for the connected components).
 struct Classified {
     opposite: Vec<u32>,
-    /// Corners opposite a boundary edge (their `opposite` entry stays `NONE`), in
-    /// bucket order.
+    /// Corners opposite a boundary edge (their `opposite` entry is `NONE`), in
+    /// edge order (smaller endpoint, then larger endpoint).
     boundary: Vec<u32>,
     duplicate: Option<BuildError>,
     bad_edge: Option<BuildError>,
     first_boundary: Option<BuildError>,
+    /// The first vertex-link problem in vertex order; only meaningful (and only
+    /// looked for) while every edge so far lies in exactly two faces.
+    first_link: Option<BuildError>,
+    /// Every edge met so far lies in exactly two faces.
+    clean: bool,
+    /// The union-find of the vertices joined by edges ([`union`]).
+    parent: Vec<u32>,
+    /// The smallest corner at each vertex (`NONE` if unused).
+    vertex_corner: Vec<u32>,
 }
 
-/// Phase 3: sorts each bucket, groups equal endpoint pairs, glues interior edges and
-/// classifies the rest ([`EdgeClass`]); also detects duplicate faces (two faces on one
-/// edge with the same third vertex). O(F) plus sorting the buckets (each ~degree).
-fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]]) -> Classified {
-    let EdgeBuckets { start, mut entries } = buckets;
+/// Phase 3, one vertex at a time in increasing order: the edges from `v` to larger
+/// neighbours (each pair of endpoints once, as its smaller endpoint's), sorted and
+/// grouped by the larger endpoint; interior edges are glued and the rest classified
+/// ([`EdgeClass`]); duplicate faces are two faces on one edge with the same third
+/// vertex. Once `v`'s own edges are glued, every edge at `v` is (the others belong to
+/// smaller vertices), so while the surface is clean so far, `v`'s star walk checks its
+/// link there and then, while its faces are in cache. O(F + V) plus sorting each
+/// vertex's edges (about three on a typical surface).
+fn classify_edges(scanned: &Scanned, by_vertex: &VertexCorners, faces: &[[u32; 3]]) -> Classified {
+    let corner_vertex = &scanned.corner_vertex[..];
+    let vertex_count = scanned.degree.len();
     let mut out = Classified {
-        opposite: vec![NONE; corner_vertex.len()],
+        // Zeroed, not filled: the allocation comes from the system already zeroed, and
+        // every entry is written below (glued, or `NONE` on a boundary edge) unless an
+        // edge error discards the whole table.
+        opposite: vec![0; corner_vertex.len()],
         boundary: Vec::new(),
         duplicate: None,
         bad_edge: None,
         first_boundary: None,
+        first_link: None,
+        clean: true,
+        parent: (0..vertex_count as u32).collect(),
+        vertex_corner: vec![NONE; vertex_count],
     };
-    for lo in 0..start.len() - 1 {
-        let b = &mut entries[start[lo] as usize..start[lo + 1] as usize];
-        sort_bucket(b);
+    let mut bucket: Vec<u64> = Vec::new();
+    // The link edge [a, b] of each face at the vertex (its other two vertices).
+    let mut ends: Vec<(u32, u32)> = Vec::new();
+    let mut begin = 0usize;
+    for (v, &end) in by_vertex.end.iter().enumerate() {
+        let corners = &by_vertex.corners[begin..end as usize];
+        begin = end as usize;
+        if corners.is_empty() {
+            continue;
+        }
+        let lo = v as u32;
+        out.vertex_corner[v] = corners[0];
+        // Each entry packs `(larger endpoint << 32) | corner opposite the edge`, so the
+        // bucket sorts without indirection.
+        bucket.clear();
+        ends.clear();
+        for &c in corners {
+            let (next, prev) = (Corner(c).next().0, Corner(c).prev().0);
+            let (a, b) = (corner_vertex[next as usize], corner_vertex[prev as usize]);
+            ends.push((a, b));
+            // The edge [v, a] is opposite the corner at b, and [v, b] opposite a's.
+            if a > lo {
+                bucket.push(((a as u64) << 32) | prev as u64);
+            }
+            if b > lo {
+                bucket.push(((b as u64) << 32) | next as u64);
+            }
+        }
+        sort_bucket(&mut bucket);
+        let b = &bucket[..];
         let mut i = 0;
         while i < b.len() {
             let hi = b[i] >> 32;
@@ -290,6 +394,7 @@ fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]
             while j < b.len() && b[j] >> 32 == hi {
                 j += 1;
             }
+            union(&mut out.parent, lo, hi as u32);
             if j == i + 2 {
                 // The common case, an interior edge, without `classify_run`'s general
                 // bookkeeping (same checks, same order).
@@ -307,20 +412,167 @@ fn classify_edges(buckets: EdgeBuckets, corner_vertex: &[u32], faces: &[[u32; 3]
                 }
                 out.opposite[p] = q as u32;
                 out.opposite[q] = p as u32;
-                i = j;
-                continue;
+            } else {
+                out.clean = false;
+                classify_run(&b[i..j], (lo, hi as u32), corner_vertex, faces, &mut out);
             }
-            classify_run(
-                &b[i..j],
-                (lo as u32, hi as u32),
-                corner_vertex,
-                faces,
-                &mut out,
-            );
             i = j;
+        }
+        if out.clean && out.first_link.is_none() {
+            let cycles = if ends.len() <= SMALL_LINK {
+                link_cycles(&ends)
+            } else {
+                fans(corner_vertex, &out.opposite, lo, corners)
+            };
+            out.first_link = link_problem(lo, cycles, ends.len());
         }
     }
     out
+}
+
+/// Joins the sets of `x` and `y` (Rem's union-find with splicing: a parent is never
+/// larger than its child, so one increasing pass afterwards flattens every path).
+fn union(parent: &mut [u32], mut x: u32, mut y: u32) {
+    while parent[x as usize] != parent[y as usize] {
+        if parent[x as usize] < parent[y as usize] {
+            std::mem::swap(&mut x, &mut y);
+        }
+        let px = parent[x as usize];
+        let py = parent[y as usize];
+        if px == x {
+            parent[x as usize] = py;
+            return;
+        }
+        parent[x as usize] = py;
+        x = px;
+    }
+}
+
+/// Phase 4 for one vertex with `cycles` separate cycles of faces around it, `faces` in
+/// all: its link must be one cycle, and there must be at least 3 faces.
+fn link_problem(v: u32, cycles: usize, faces: usize) -> Option<BuildError> {
+    if cycles != 1 {
+        return Some(BuildError::VertexLinkNotCycle {
+            vertex: v,
+            cycles,
+            faces,
+        });
+    }
+    if faces < 3 {
+        return Some(BuildError::VertexDegreeTooLow {
+            vertex: v,
+            degree: faces,
+        });
+    }
+    None
+}
+
+/// Vertices with at most this many faces have their link checked on the link edges
+/// gathered for the classification ([`link_cycles`], quadratic in the degree but
+/// without a memory access), larger ones by star walks ([`fans`]).
+const SMALL_LINK: usize = 32;
+
+/// The number of cycles formed by the link edges `ends` (one per face at a vertex),
+/// when each link vertex lies on exactly two of them (every edge at the vertex is in two
+/// faces): the number of fans of faces around the vertex. O(len²).
+fn link_cycles(ends: &[(u32, u32)]) -> usize {
+    debug_assert!(ends.len() <= SMALL_LINK);
+    let mut visited = 0u64;
+    let mut cycles = 0;
+    for s in 0..ends.len() {
+        if visited & (1 << s) != 0 {
+            continue;
+        }
+        cycles += 1;
+        visited |= 1 << s;
+        let (mut at, mut through) = (s, ends[s].1);
+        // The other link edge with the link vertex `through`, until back at `s`.
+        while let Some(next) =
+            (0..ends.len()).find(|&j| j != at && (ends[j].0 == through || ends[j].1 == through))
+        {
+            if next == s {
+                break;
+            }
+            visited |= 1 << next;
+            through = if ends[next].0 == through {
+                ends[next].1
+            } else {
+                ends[next].0
+            };
+            at = next;
+        }
+    }
+    cycles
+}
+
+/// The number of fans of faces around `v` (whose edges are all glued), by star walks
+/// from each of its `corners` not yet visited.
+fn fans(corner_vertex: &[u32], opposite: &[u32], v: u32, corners: &[u32]) -> usize {
+    let walked = fan_len(corner_vertex, opposite, v, corners[0]);
+    if walked == corners.len() {
+        return 1;
+    }
+    let mut cycles = 1;
+    let mut seen = walked;
+    let mut in_fan = std::collections::HashSet::new();
+    fan_corners(corner_vertex, opposite, v, corners[0], &mut in_fan);
+    for &c in corners {
+        if seen == corners.len() {
+            break;
+        }
+        if !in_fan.contains(&c) {
+            cycles += 1;
+            seen += fan_corners(corner_vertex, opposite, v, c, &mut in_fan);
+        }
+    }
+    cycles
+}
+
+/// The corner at `centre` following `c` in a star walk that leaves `c`'s face by the
+/// edge opposite `exit`: the same step as [`Triangulation::star`], on the bare arrays
+/// (the triangulation does not exist yet). Returns the corner and the next exit.
+#[inline]
+fn fan_step(corner_vertex: &[u32], opposite: &[u32], centre: u32, exit: u32) -> (u32, u32) {
+    let o = Corner(opposite[exit as usize]);
+    let n = o.next();
+    // Leave the new face by its other edge at the centre: the one opposite the corner
+    // that is neither the centre's nor `o`.
+    if corner_vertex[n.index()] == centre {
+        (n.0, o.prev().0)
+    } else {
+        (o.prev().0, n.0)
+    }
+}
+
+/// Number of corners on the fan of `centre` through corner `c` (a closed walk: every
+/// edge at `centre` is glued).
+fn fan_len(corner_vertex: &[u32], opposite: &[u32], centre: u32, c: u32) -> usize {
+    let mut len = 1;
+    let (mut at, mut exit) = fan_step(corner_vertex, opposite, centre, Corner(c).next().0);
+    while at != c {
+        len += 1;
+        (at, exit) = fan_step(corner_vertex, opposite, centre, exit);
+    }
+    len
+}
+
+/// [`fan_len`], also recording the fan's corners in `seen` (the error path only).
+fn fan_corners(
+    corner_vertex: &[u32],
+    opposite: &[u32],
+    centre: u32,
+    c: u32,
+    seen: &mut std::collections::HashSet<u32>,
+) -> usize {
+    seen.insert(c);
+    let mut len = 1;
+    let (mut at, mut exit) = fan_step(corner_vertex, opposite, centre, Corner(c).next().0);
+    while at != c {
+        seen.insert(at);
+        len += 1;
+        (at, exit) = fan_step(corner_vertex, opposite, centre, exit);
+    }
+    len
 }
 
 /// Sorts one edge bucket (a vertex's edges to larger neighbours: about three on a
@@ -374,6 +626,7 @@ fn classify_run(
             out.opposite[q] = p as u32;
         }
         EdgeClass::Boundary => {
+            out.opposite[corner(0)] = NONE;
             out.boundary.push(corner(0) as u32);
             if out.first_boundary.is_none() {
                 out.first_boundary = Some(BuildError::BoundaryEdge {
@@ -407,8 +660,10 @@ fn classify_run(
     }
 }
 
-/// Phase 4: with every edge in exactly two faces, each used vertex's star walk must
-/// visit all its corners (its link is one cycle) and there must be at least 3. O(F).
+/// Phase 4 on a fully glued corner table built some other way (the coned surfaces of
+/// module `boundary`): with every edge in exactly two faces, each used vertex's star
+/// walk must visit all its corners (its link is one cycle) and there must be at least
+/// 3. O(F).
 fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildError> {
     for (v, &is_used) in used.iter().enumerate() {
         if !is_used {
@@ -433,23 +688,18 @@ fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildErr
     Ok(())
 }
 
-/// Phases 1-3 on a face list: sizes and faces, edge bucketing, edge classification.
-/// Returns the corner-to-vertex array and the classification; the first face error,
-/// duplicate face or non-manifold / multiple edge is an error here (in that
-/// precedence), boundary edges are left to the caller.
-fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Vec<u32>, Classified), BuildError> {
-    check_sizes(vertex_count, faces)?;
-    check_faces(vertex_count, faces)?;
-    let mut corner_vertex: Vec<u32> = Vec::with_capacity(3 * faces.len());
-    for f in faces {
-        corner_vertex.extend_from_slice(f);
-    }
-    let buckets = bucket_edges(vertex_count, &corner_vertex);
-    let mut classified = classify_edges(buckets, &corner_vertex, faces);
+/// Phases 1-3 on a face list: sizes and faces, corners by vertex, edge classification
+/// (with the vertex links while the surface is clean). The first face error, duplicate
+/// face or non-manifold / multiple edge is an error here (in that precedence); boundary
+/// edges and vertex links are left to the caller.
+fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Scanned, Classified), BuildError> {
+    let scanned = scan_faces(vertex_count, faces)?;
+    let by_vertex = vertex_corners(&scanned.corner_vertex, &scanned.degree);
+    let mut classified = classify_edges(&scanned, &by_vertex, faces);
     if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {
         return Err(e);
     }
-    Ok((corner_vertex, classified))
+    Ok((scanned, classified))
 }
 
 /// Phase 4 on a fully glued corner table (every edge interior): per-vertex corners and
@@ -480,45 +730,72 @@ pub(super) fn assemble(
         stamps: Default::default(),
     };
     check_vertex_links(&tri, &used)?;
-    Ok(Checked { tri, used })
+    Ok(Checked {
+        tri,
+        used,
+        parent: Vec::new(),
+    })
+}
+
+/// The closed surface classified without problems: its corner table, with the link
+/// problem found on the way (if any) as the error.
+fn finish_closed(
+    faces: usize,
+    scanned: Scanned,
+    classified: Classified,
+) -> Result<Checked, BuildError> {
+    if let Some(e) = classified.first_link {
+        return Err(e);
+    }
+    let Scanned {
+        corner_vertex,
+        degree,
+    } = scanned;
+    let used: Vec<bool> = degree.iter().map(|&d| d != 0).collect();
+    let tri = Triangulation {
+        corner_vertex,
+        opposite: classified.opposite,
+        vertex_corner: classified.vertex_corner,
+        degree,
+        live_vertices: used.iter().filter(|&&u| u).count(),
+        live_faces: faces,
+        state: StateStamp::fresh(),
+        stamps: Default::default(),
+    };
+    Ok(Checked {
+        tri,
+        used,
+        parent: classified.parent,
+    })
 }
 
 /// Validates a face list as a possibly disconnected closed surface and builds its corner
-/// table, in four phases: sizes and faces, edge bucketing, edge classification (gluing),
-/// vertex links. Errors are reported in a fixed precedence: the first face error, then
-/// duplicate faces, then non-manifold or multiple edges, then boundary edges, then
-/// vertex links.
+/// table, in four phases: sizes and faces, corners by vertex, edge classification
+/// (gluing), vertex links (the last two in one pass over the vertices). Errors are
+/// reported in a fixed precedence: the first face error, then duplicate faces, then
+/// non-manifold or multiple edges, then boundary edges, then vertex links (the first
+/// in vertex order).
 pub(super) fn check(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
-    let (corner_vertex, classified) = classify(vertex_count, faces)?;
+    let (scanned, classified) = classify(vertex_count, faces)?;
     if let Some(e) = classified.first_boundary {
         return Err(e);
     }
     debug_assert!(classified.boundary.is_empty());
-    assemble(
-        vertex_count,
-        faces.len(),
-        corner_vertex,
-        classified.opposite,
-    )
+    finish_closed(faces.len(), scanned, classified)
 }
 
 /// Phases 1-3 for a surface that may have boundary: the face and edge errors of
 /// [`check`] except boundary edges, which are returned as the corners opposite them
-/// (in bucket order). If there are none, the closed surface is finished too (phase 4),
+/// (in edge order). If there are none, the closed surface is finished too (phase 4),
 /// so that a closed mesh costs what [`check`] costs.
 pub(super) fn check_open(vertex_count: usize, faces: &[[u32; 3]]) -> Result<OpenCheck, BuildError> {
-    let (corner_vertex, classified) = classify(vertex_count, faces)?;
+    let (scanned, classified) = classify(vertex_count, faces)?;
     if classified.boundary.is_empty() {
-        let checked = assemble(
-            vertex_count,
-            faces.len(),
-            corner_vertex,
-            classified.opposite,
-        )?;
+        let checked = finish_closed(faces.len(), scanned, classified)?;
         return Ok(OpenCheck::Closed(checked));
     }
     Ok(OpenCheck::Open {
-        corner_vertex,
+        corner_vertex: scanned.corner_vertex,
         opposite: classified.opposite,
         boundary: classified.boundary,
     })
@@ -599,15 +876,15 @@ impl Triangulation {
     /// Strict: unused vertices and several components are errors here; use
     /// [`Surfaces::from_mesh`] to drop or split them.
     pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
-        let Checked { tri, used } = check(vertex_count, faces)?;
-        if let Some(v) = used.iter().position(|&u| !u) {
+        let checked = check(vertex_count, faces)?;
+        if let Some(v) = checked.used.iter().position(|&u| !u) {
             return Err(BuildError::UnusedVertex { vertex: v as u32 });
         }
-        let (_, components) = face_components(&tri);
+        let components = checked.component_count();
         if components != 1 {
             return Err(BuildError::Disconnected { components });
         }
-        Ok(tri)
+        Ok(checked.tri)
     }
 }
 
@@ -643,17 +920,17 @@ impl Surfaces {
 
     /// [`Self::from_mesh`] on a bare face list.
     pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
-        let Checked { tri, used } = check(vertex_count, faces)?;
-        let dropped_vertices = unused_vertices(&used);
-        let (label, count) = face_components(&tri);
-        let components = if count == 1 && dropped_vertices.is_empty() {
+        let checked = check(vertex_count, faces)?;
+        let dropped_vertices = unused_vertices(&checked.used);
+        let components = if checked.component_count() == 1 && dropped_vertices.is_empty() {
             vec![Component {
                 vertex_origin: (0..vertex_count as u32).collect(),
                 face_origin: (0..faces.len() as u32).collect(),
-                tri,
+                tri: checked.tri,
             }]
         } else {
-            split(&tri, &label, count)
+            let (label, count) = checked.face_components();
+            split(&checked.tri, &label, count)
         };
         Ok(Surfaces {
             components,

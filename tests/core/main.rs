@@ -11,6 +11,7 @@ mod harnesses;
 #[path = "../../proofs/surfaces.rs"]
 mod surfaces;
 
+mod build_oracle;
 mod core_boundary;
 mod core_meshes;
 mod core_ops;
