@@ -231,3 +231,66 @@ impl Triangulation {
         [c1a, c2b]
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gen::octahedron;
+
+    /// `==` compares every field but the state stamps: a record equals itself with
+    /// other stamps, and differs from itself with any one other field changed.
+    #[test]
+    fn record_equality_is_field_by_field_without_the_stamps() {
+        let m = octahedron();
+        let mut t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron");
+        let mut twin = t.clone();
+        let rec = t.flip_at(Corner(0)).expect("an octahedron edge flips");
+        let same = twin.flip_at(Corner(0)).expect("the same flip");
+        assert_ne!(rec.state_after(), same.state_after());
+        assert_eq!(rec, same);
+        let restamped = FlipRecord {
+            state_before: StateStamp::fresh(),
+            state_after: StateStamp::fresh(),
+            ..rec
+        };
+        assert_eq!(rec, restamped);
+        let v = |x: u32| VertexId(x + 100);
+        let changed: [FlipRecord; 8] = [
+            FlipRecord {
+                old_edge: [v(0), v(1)],
+                ..rec
+            },
+            FlipRecord {
+                new_edge: [v(0), v(1)],
+                ..rec
+            },
+            FlipRecord {
+                new_corners: [Corner(90), Corner(91)],
+                ..rec
+            },
+            FlipRecord {
+                moved: [Corner(90), Corner(91)],
+                ..rec
+            },
+            FlipRecord {
+                faces: [FaceId(90), FaceId(91)],
+                ..rec
+            },
+            FlipRecord {
+                saved_vertex: [99; 6],
+                ..rec
+            },
+            FlipRecord {
+                saved_opposite: [99; 6],
+                ..rec
+            },
+            FlipRecord {
+                saved_vertex_corner: [99; 2],
+                ..rec
+            },
+        ];
+        for (k, c) in changed.iter().enumerate() {
+            assert_ne!(&rec, c, "field {k} changed, yet equal");
+        }
+    }
+}
