@@ -301,6 +301,68 @@ fn orientation_is_preserved_by_contractions_splits_and_flips() {
     assert!(live.iter().all(|&x| x == live[0]));
 }
 
+/// `is_coherent` says whether the stored faces are consistently oriented, as the
+/// directed edges of the face list tell; `is_orientable` and `orientation` agree with it
+/// and with the surface's kind, on random surfaces with random faces reversed and after
+/// contractions (removed faces in the table).
+#[test]
+fn coherence_and_orientation_agree_with_the_directed_edges() {
+    let mut rng = Rng::new(11);
+    let mut coherent = [0usize; 2];
+    for kind in surfaces() {
+        let t0 = random(&RandomParams {
+            surface: kind,
+            min_faces: 120,
+            flip_percent: 30,
+            seed: rng.next_u64(),
+        })
+        .expect("a random surface within the limits");
+        let orientable = matches!(kind, SurfaceKind::Orientable(_));
+        for trial in 0..12 {
+            let mut faces = t0.face_list();
+            for f in faces.iter_mut() {
+                if trial % 2 == 1 && rng.chance(1, 2 * trial) {
+                    f.swap(0, 1);
+                }
+            }
+            let mut t = Triangulation::from_faces(t0.vertex_capacity(), &faces).expect("surface");
+            if trial % 3 == 2 {
+                let mut h = History::new();
+                for _ in 0..20 {
+                    let live: Vec<VertexId> = t.vertices().collect();
+                    let u = live[rng.index(live.len())];
+                    let v = t.link(u).next().expect("a neighbour");
+                    let _ = t.contract(u, v, &mut h);
+                }
+            }
+            let want = consistently_oriented(&t);
+            assert_eq!(t.is_coherent(), want, "{kind:?} trial {trial}");
+            coherent[usize::from(want)] += 1;
+            assert_eq!(t.is_orientable(), orientable, "{kind:?} trial {trial}");
+            match t.orientation() {
+                Some(flip) => {
+                    let fixed: Vec<[u32; 3]> = t
+                        .faces()
+                        .map(|f| {
+                            let mut g = t.face_vertices(f).map(|v| v.0);
+                            if flip[f.index()] {
+                                g.swap(0, 1);
+                            }
+                            g
+                        })
+                        .collect();
+                    let mut seen = std::collections::HashSet::new();
+                    assert!(fixed
+                        .iter()
+                        .all(|g| (0..3).all(|k| seen.insert((g[k], g[(k + 1) % 3])))));
+                }
+                None => assert!(!orientable),
+            }
+        }
+    }
+    assert!(coherent[0] > 10 && coherent[1] > 5, "{coherent:?}");
+}
+
 /// The contraction record stays compact (RS keeps one per contraction: 2.1 M on B0), and
 /// its undo, the only reader of the compacted fields, restores every surface exactly.
 #[test]
