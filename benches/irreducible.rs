@@ -20,6 +20,7 @@ fn main() {
 const OPTIONS: Options = Options {
     seed: 1,
     count_retests: false,
+    keep_history: true,
 };
 
 /// Inputs are built once per process and shared by the three algorithms.

@@ -58,6 +58,8 @@ pub fn reduce_with_bars(
             algorithm,
             seed,
             count_retests: true,
+            // The command writes the surface, never the contractions.
+            keep_history: false,
             verify: !no_verify,
             monitor,
         },

@@ -248,6 +248,7 @@ pub fn options(seed: u64) -> Options {
     Options {
         seed,
         count_retests: true,
+        keep_history: true,
     }
 }
 

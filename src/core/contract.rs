@@ -221,6 +221,13 @@ impl History {
             tester: None,
         }
     }
+    /// Drops every record (they can no longer be undone), keeping the allocation and the
+    /// link-test scratch: for callers that need contractions done, not undone, this
+    /// keeps the history's memory constant. O(1).
+    pub fn forget(&mut self) {
+        self.records.clear();
+        self.renamed.clear();
+    }
     /// Number of recorded contractions.
     pub fn len(&self) -> usize {
         self.records.len()

@@ -66,6 +66,7 @@ pub fn reduce_observed(
     let started = Instant::now();
     let mut stats = super::start_stats(&tri);
     let mut history = History::new();
+    let mut contractions = 0u64;
     let mut counter = RetestCounter::new(&tri, options.count_retests);
     let mut tester = LinkTester::new(tri.vertex_capacity());
 
@@ -94,6 +95,10 @@ pub fn reduce_observed(
                 continue;
             }
             let rec = tri.contract_tested(a, b, &mut history);
+            contractions += 1;
+            if !options.keep_history {
+                history.forget();
+            }
             counter.contracted(&rec);
             numbers.contracted(&rec);
             contracted_in_pass = true;
@@ -107,5 +112,5 @@ pub fn reduce_observed(
     }
 
     stats.edges_tested_more_than_once = counter.more_than_once();
-    super::finish(Algorithm::Brute, tri, history, stats, started)
+    super::finish(Algorithm::Brute, tri, history, contractions, stats, started)
 }

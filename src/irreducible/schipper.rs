@@ -75,6 +75,7 @@ pub fn reduce_observed(
     let started = Instant::now();
     let mut stats = super::start_stats(&tri);
     let mut history = History::new();
+    let mut contractions = 0u64;
     let mut counter = RetestCounter::new(&tri, options.count_retests);
 
     let n = tri.vertex_capacity();
@@ -113,6 +114,10 @@ pub fn reduce_observed(
                 continue;
             }
             let rec = tri.contract_tested(w, u, &mut history);
+            contractions += 1;
+            if !options.keep_history {
+                history.forget();
+            }
             counter.contracted(&rec);
             update_dictionaries(&mut dict, u, w, x, y);
             loose.remove(&(key[u.index()], u.0));
@@ -138,7 +143,14 @@ pub fn reduce_observed(
 
     observer(Progress::new(STAGE, total, total));
     stats.edges_tested_more_than_once = counter.more_than_once();
-    super::finish(Algorithm::Schipper, tri, history, stats, started)
+    super::finish(
+        Algorithm::Schipper,
+        tri,
+        history,
+        contractions,
+        stats,
+        started,
+    )
 }
 
 /// The dictionary form of the link condition for edge `[u, w]` with link `{x, y}`.

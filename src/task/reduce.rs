@@ -7,7 +7,8 @@ use crate::topology::SurfaceType;
 
 use super::{Error, Monitor, Step};
 
-/// Options of [`reduce`]. The default: RS, seed 0, no ε counter, outputs verified.
+/// Options of [`reduce`]. The default: RS, seed 0, no ε counter, histories kept,
+/// outputs verified.
 #[derive(Clone, Debug)]
 pub struct ReduceOptions {
     /// The algorithm.
@@ -18,6 +19,10 @@ pub struct ReduceOptions {
     /// Count ε, the edges tested more than once ([`ReduceStats::edges_tested_more_than_once`],
     /// 0 without it): 8 bytes per face and a little time.
     pub count_retests: bool,
+    /// Keep each component's contraction history (its `reduction.history`), which
+    /// undoes the reduction and replays it as vertex splits; without it the histories
+    /// are empty and the call needs about 44 bytes less per input triangle.
+    pub keep_history: bool,
     /// Check every output independently ([`check_irreducible`]) and fail with
     /// [`Error::Unverified`] if one still has a contractible edge.
     pub verify: bool,
@@ -31,6 +36,7 @@ impl Default for ReduceOptions {
             algorithm: Algorithm::default(),
             seed: 0,
             count_retests: false,
+            keep_history: true,
             verify: true,
             monitor: Monitor::default(),
         }
@@ -287,6 +293,7 @@ pub fn reduce(mesh: &TriMesh, options: &ReduceOptions) -> Result<ReduceResult, E
     let algo = irreducible::Options {
         seed: options.seed,
         count_retests: options.count_retests,
+        keep_history: options.keep_history,
     };
     let mut components = Vec::with_capacity(n);
     for (i, c) in surfaces.components.into_iter().enumerate() {

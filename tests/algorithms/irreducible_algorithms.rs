@@ -213,6 +213,7 @@ fn same_input_and_seed_give_identical_results() {
                 &Options {
                     seed: 5,
                     count_retests: false,
+                    keep_history: true,
                 },
             );
             assert!(c.tri == a.tri && c.history == a.history, "{}", alg.name());

@@ -60,6 +60,7 @@ fn reductions_report_inside(sphere: &Triangulation) {
     let options = Options {
         seed: 5,
         count_retests: true,
+        keep_history: true,
     };
     for algo in [Algorithm::Rs, Algorithm::Schipper, Algorithm::Brute] {
         let label = &format!("{} on {n} vertices", algo.name());

@@ -44,6 +44,7 @@ fn reduced_faces(t: &Triangulation) -> usize {
         &ReduceOptions {
             seed: 0,
             count_retests: false,
+            keep_history: true,
         },
     )
     .tri

@@ -112,6 +112,7 @@ fn retest_counter_sees_the_retests_of_schipper_and_brute_force() {
     let opts = Options {
         seed: 5,
         count_retests: true,
+        keep_history: true,
     };
     let mut seen = [0u64; 3];
     for (k, surface) in [SurfaceKind::Orientable(2), SurfaceKind::NonOrientable(3)]
@@ -148,6 +149,7 @@ fn small_surfaces_under_many_vertex_orders() {
     let opts = Options {
         seed: 0,
         count_retests: true,
+        keep_history: true,
     };
     let mut runs = 0;
     for k in 0..80u32 {
@@ -184,4 +186,62 @@ fn small_surfaces_under_many_vertex_orders() {
         }
     }
     assert_eq!(runs, 2000);
+}
+
+/// Without its history, each algorithm gives the same surface and the same counters
+/// (the contraction count included), with an empty history; with it, the history has
+/// one record per contraction and expands back to the input. The task call likewise.
+#[test]
+fn dropping_the_history_changes_nothing_else() {
+    for (k, surface) in [
+        SurfaceKind::Orientable(0),
+        SurfaceKind::Orientable(2),
+        SurfaceKind::NonOrientable(3),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let input = random(&RandomParams {
+            surface,
+            min_faces: 300,
+            flip_percent: 20,
+            seed: 40 + k as u64,
+        })
+        .expect("small surface");
+        for algorithm in common::ALL {
+            let with = Options {
+                seed: 3,
+                count_retests: true,
+                keep_history: true,
+            };
+            let without = Options {
+                keep_history: false,
+                ..with
+            };
+            let a = reduce(input.clone(), algorithm, &with);
+            let b = reduce(input.clone(), algorithm, &without);
+            assert_eq!(a.tri, b.tri, "{algorithm:?}");
+            let mut sb = b.stats.clone();
+            sb.seconds = a.stats.seconds;
+            assert_eq!(a.stats, sb, "{algorithm:?}");
+            assert!(a.stats.contractions > 100, "{algorithm:?}: a weak test");
+            assert_eq!(a.history.len() as u64, a.stats.contractions);
+            assert!(b.history.is_empty(), "{algorithm:?}");
+            assert_eq!(a.expand(), input, "{algorithm:?}");
+        }
+    }
+    let mesh = contractible::gen::icosahedron();
+    let keep = contractible::reduce(&mesh, &Default::default()).expect("a sphere");
+    let drop = contractible::reduce(
+        &mesh,
+        &contractible::ReduceOptions {
+            keep_history: false,
+            ..Default::default()
+        },
+    )
+    .expect("a sphere");
+    assert_eq!(keep.mesh, drop.mesh);
+    assert_eq!(keep.totals.contractions, drop.totals.contractions);
+    assert_eq!(keep.components[0].reduction.history.len(), 8);
+    assert!(drop.components[0].reduction.history.is_empty());
 }

@@ -151,6 +151,7 @@ fn library_reproduces_every_vector_exactly() {
         let opts = |seed| Options {
             seed,
             count_retests: true,
+            keep_history: true,
         };
         let rs = reduce(tri.clone(), Algorithm::Rs, &opts(0));
         assert_reproduces(&name, "rs", &v, &rs);

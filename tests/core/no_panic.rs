@@ -147,6 +147,7 @@ proptest! {
             algorithm: r_algo,
             seed,
             count_retests: flags[0],
+            keep_history: true,
             verify: flags[1],
             monitor: monitor(cancelled),
         });

@@ -306,7 +306,7 @@ proptest! {
         let t = build(&inp);
         prop_assert!(build(&inp) == t, "the generator is deterministic");
         for alg in common::ALL {
-            let opts = Options { seed, count_retests: true };
+            let opts = Options { seed, count_retests: true, keep_history: true };
             let a = reduce(t.clone(), alg, &opts);
             let b = reduce(t.clone(), alg, &opts);
             prop_assert!(a.tri == b.tri, "{:?}: output", alg);

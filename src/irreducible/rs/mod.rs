@@ -272,6 +272,10 @@ pub struct Variant {
 struct Rs {
     tri: Triangulation,
     history: History,
+    /// Whether `history` keeps its records ([`Options::keep_history`]).
+    keep_history: bool,
+    /// Contractions so far (the history's length when it keeps its records).
+    contractions: u64,
     /// p: processed (or removed).
     processed: Vec<bool>,
     /// n: the vertex whose neighbour this vertex was last found to be.
@@ -370,7 +374,14 @@ fn reduce_variant_observed(
     let first = rs.contractions_first_vertex;
     let follow = rs.follow.take();
     (
-        finish(Algorithm::Rs, rs.tri, rs.history, stats, started),
+        finish(
+            Algorithm::Rs,
+            rs.tri,
+            rs.history,
+            rs.contractions,
+            stats,
+            started,
+        ),
         first,
         follow,
     )
@@ -394,7 +405,13 @@ impl Rs {
             // RS contracts all but a few vertices of large meshes: reserving the bound
             // avoids copying hundreds of megabytes of records while the history grows.
             // About four corners are renamed per contraction (mean d_v − 2).
-            history: History::with_capacity(live.saturating_sub(4), 4 * live),
+            history: if options.keep_history {
+                History::with_capacity(live.saturating_sub(4), 4 * live)
+            } else {
+                History::new()
+            },
+            keep_history: options.keep_history,
+            contractions: 0,
             ts: Time::START,
             link_tests: 0,
             counter,
@@ -429,7 +446,7 @@ impl Rs {
 
     /// Vertices settled so far: processed until trapped, or contracted away.
     fn settled(&self) -> u64 {
-        self.processed_count + self.history.len() as u64
+        self.processed_count + self.contractions
     }
 
     /// Alg. 4.2 l.6–36: processes `u` until it is trapped.
@@ -475,7 +492,7 @@ impl Rs {
         self.processed[u.index()] = true;
         if self.processed_count == 0 {
             // The history starts empty: all of it was made while processing `u`.
-            self.contractions_first_vertex = self.history.len() as u64;
+            self.contractions_first_vertex = self.contractions;
         }
         self.processed_count += 1;
         spec::vertex_trapped(self, u);
@@ -690,6 +707,10 @@ impl Rs {
         let rec = self
             .tri
             .contract_tested_walked(u, v, &self.scratch_star, i, &mut self.history);
+        self.contractions += 1;
+        if !self.keep_history {
+            self.history.forget();
+        }
         self.counter.contracted(&rec);
         if let Some(numbers) = &mut self.follow {
             numbers.contracted(&rec);

@@ -133,6 +133,7 @@ fn vector(input: &Input, group: &str) -> Value {
     let opts = |seed| Options {
         seed,
         count_retests: true,
+        keep_history: true,
     };
     let rs = reduce(tri.clone(), Algorithm::Rs, &opts(0));
     let schipper = reduce(tri.clone(), Algorithm::Schipper, &opts(0));

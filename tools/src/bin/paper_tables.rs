@@ -60,6 +60,7 @@ fn main() {
         let opts = |seed| Options {
             seed,
             count_retests: true,
+            keep_history: true,
         };
         let rs = reduce(tri.clone(), Algorithm::Rs, &opts(0)).stats;
         let s = reduce(tri.clone(), Algorithm::Schipper, &opts(0)).stats;
