@@ -153,3 +153,34 @@ impl Journal {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gen::icosahedron;
+
+    /// `len` and `is_empty` count the operations recorded and not yet undone, and
+    /// `undo_all` restores the surface and empties the journal.
+    #[test]
+    fn length_emptiness_and_undo_all() {
+        let m = icosahedron();
+        let t0 = Triangulation::from_faces(m.vertex_count, &m.faces).expect("icosahedron");
+        let mut t = t0.clone();
+        let mut j = Journal::new();
+        assert!(j.is_empty());
+        assert_eq!(j.len(), 0);
+        j.flip_at(&mut t, Corner(0)).expect("an icosahedron edge flips");
+        assert!(!j.is_empty());
+        assert_eq!(j.len(), 1);
+        let (u, v) = (VertexId(3), t.link(VertexId(3)).next().expect("neighbour"));
+        j.contract(&mut t, u, v).expect("contractible");
+        j.flip_at(&mut t, Corner(6)).expect("flips");
+        assert_eq!(j.len(), 3);
+        assert_ne!(t, t0);
+        j.undo(&mut t).expect("the state the flip left");
+        assert_eq!(j.len(), 2);
+        j.undo_all(&mut t).expect("every state as left");
+        assert!(j.is_empty());
+        assert_eq!(t, t0);
+    }
+}
