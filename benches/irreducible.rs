@@ -121,3 +121,47 @@ group!(
     ],
     5
 );
+
+/// RS on B0 in the configurations a caller chooses between: the library's default
+/// (the contraction history kept, so the reduction can be undone or replayed), without
+/// the history (what the command line runs, less ε), and without the history but
+/// counting ε (the command line exactly). The ratios between them are the costs of
+/// keeping the history and of counting ε.
+#[divan::bench_group(sample_count = 10, sample_size = 1)]
+mod rs_b0 {
+    use super::*;
+
+    fn run_with(b: divan::Bencher, options: Options) {
+        let t = input("B0");
+        b.with_inputs(|| t.clone())
+            .bench_local_values(|t| reduce(t, Algorithm::Rs, &options));
+    }
+
+    #[divan::bench]
+    fn history_kept(b: divan::Bencher) {
+        run_with(b, OPTIONS);
+    }
+
+    #[divan::bench]
+    fn no_history(b: divan::Bencher) {
+        run_with(
+            b,
+            Options {
+                keep_history: false,
+                ..OPTIONS
+            },
+        );
+    }
+
+    #[divan::bench]
+    fn no_history_counting_retests(b: divan::Bencher) {
+        run_with(
+            b,
+            Options {
+                keep_history: false,
+                count_retests: true,
+                ..OPTIONS
+            },
+        );
+    }
+}

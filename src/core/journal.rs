@@ -169,7 +169,8 @@ mod tests {
         let mut j = Journal::new();
         assert!(j.is_empty());
         assert_eq!(j.len(), 0);
-        j.flip_at(&mut t, Corner(0)).expect("an icosahedron edge flips");
+        j.flip_at(&mut t, Corner(0))
+            .expect("an icosahedron edge flips");
         assert!(!j.is_empty());
         assert_eq!(j.len(), 1);
         let (u, v) = (VertexId(3), t.link(VertexId(3)).next().expect("neighbour"));
