@@ -768,22 +768,50 @@ fn off_errors_have_kind_and_line() {
             },
             2,
         ),
+        // More faces than a triangulation indexes: refused at the count, before reading.
         (
             "OFF 3 18446744073709551615 0\n0 0 0\n1 0 0\n0 1 0\n",
             |k| {
                 matches!(
                     k,
-                    K::CountMismatch {
+                    K::CountTooLarge {
                         what: "faces",
                         declared: u64::MAX,
+                    }
+                )
+            },
+            1,
+        ),
+        (
+            "OFF\n3 1431655765 0\n0 0 0\n1 0 0\n0 1 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountTooLarge {
+                        what: "faces",
+                        declared: 1431655765,
+                    }
+                )
+            },
+            2,
+        ),
+        // One face fewer is within the limit: read until the input ends.
+        (
+            "OFF\n3 1431655764 0\n0 0 0\n1 0 0\n0 1 0\n",
+            |k| {
+                matches!(
+                    k,
+                    K::CountMismatch {
+                        what: "faces",
+                        declared: 1431655764,
                         found: 0
                     }
                 )
             },
-            4,
+            5,
         ),
         (
-            "OFF\n4294967295 4294967295\n0 0 0\n1 1 1",
+            "OFF\n4294967295 1431655764\n0 0 0\n1 1 1",
             |k| {
                 matches!(
                     k,
@@ -994,6 +1022,23 @@ fn ply_errors_have_kind_and_location() {
         vec![[0, 1, 2]]
     );
     let cases: Vec<(String, KindCheck, Location)> = vec![
+        // More faces than a triangulation indexes: refused at the element line.
+        (
+            format!(
+                "{}0 0 0\n",
+                PLY_HEAD.replace("element face 1", "element face 1431655765")
+            ),
+            |k| {
+                matches!(
+                    k,
+                    K::CountTooLarge {
+                        what: "faces",
+                        declared: 1431655765
+                    }
+                )
+            },
+            Location::Line(8),
+        ),
         (
             format!("{PLY_HEAD}0 0 0\n1 0 0\n0 1 0\n4 0 1 2 0\n"),
             |k| {
