@@ -168,8 +168,15 @@ fn malformed_files_exit_2_with_a_located_message() {
     rejects(
         &d,
         "huge.off",
-        b"OFF\n4000000000 4000000000 0\n0 0 0\n",
+        b"OFF\n4000000000 1 0\n0 0 0\n",
         "line 3: vertices: header declares 4000000000",
+    );
+    // More faces than a triangulation indexes: refused at the header, before reading.
+    rejects(
+        &d,
+        "huge_faces.off",
+        b"OFF\n4000000000 4000000000 0\n0 0 0\n",
+        "line 2: faces: declared count 4000000000 is impossible for this input",
     );
     // A quad: `info` describes polygon meshes; the other commands refuse them, located,
     // naming the flag that would cut them.
