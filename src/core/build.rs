@@ -285,11 +285,11 @@ fn vertex_corners(corner_vertex: &[u32], degree: &[u32]) -> VertexCorners {
     VertexCorners { end, corners }
 }
 
-/// How many faces hold one pair of endpoints, as phase 3 classifies it.
+/// What is wrong with one pair of endpoints held by other than two faces, as phase 3
+/// classifies it (two faces, an interior edge, is glued on the spot and never
+/// classified).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub(crate) enum EdgeClass {
-    /// Two faces: an interior edge of a surface (glued in `opposite`).
-    Interior,
     /// One face: a boundary edge (an error for closed surfaces; the classified case a
     /// surface-with-boundary builder keeps).
     Boundary,
@@ -300,9 +300,9 @@ pub(crate) enum EdgeClass {
 }
 
 impl EdgeClass {
+    /// The class of an endpoint pair held by `faces` faces, `faces` ≠ 2.
     fn of(faces: usize) -> Self {
         match faces {
-            2 => EdgeClass::Interior,
             1 => EdgeClass::Boundary,
             n if n % 2 == 1 => EdgeClass::NonManifold,
             _ => EdgeClass::Multiple,
@@ -593,7 +593,8 @@ fn sort_bucket(b: &mut [u64]) {
     }
 }
 
-/// Phase 3 for one endpoint pair `[a, b]` held by the corners of `run`.
+/// Phase 3 for one endpoint pair `[a, b]` held by the corners of `run`, which are not
+/// two (an interior edge takes the fast path in [`classify_edges`]).
 fn classify_run(
     run: &[u64],
     (a, b): (u32, u32),
@@ -620,11 +621,6 @@ fn classify_run(
     }
     let first_face = (0..run.len()).map(|k| corner(k) / 3).min().unwrap_or(0);
     match EdgeClass::of(run.len()) {
-        EdgeClass::Interior => {
-            let (p, q) = (corner(0), corner(1));
-            out.opposite[p] = q as u32;
-            out.opposite[q] = p as u32;
-        }
         EdgeClass::Boundary => {
             out.opposite[corner(0)] = NONE;
             out.boundary.push(corner(0) as u32);
@@ -1005,4 +1001,32 @@ pub(super) fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Com
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_size_limits_accept_their_bounds_and_refuse_one_more() {
+        assert_eq!(check_counts(MAX_VERTICES, MAX_FACES), Ok(()));
+        assert_eq!(
+            check_counts(MAX_VERTICES, MAX_FACES + 1),
+            Err(BuildError::TooLarge {
+                what: "faces",
+                count: MAX_FACES + 1,
+                max: MAX_FACES,
+            })
+        );
+        assert_eq!(
+            check_counts(MAX_VERTICES + 1, MAX_FACES),
+            Err(BuildError::TooLarge {
+                what: "vertices",
+                count: MAX_VERTICES + 1,
+                max: MAX_VERTICES,
+            })
+        );
+        assert_eq!(check_counts(3, 0), Err(BuildError::Empty));
+        assert_eq!(check_counts(0, 1), Ok(()));
+    }
 }

@@ -470,7 +470,7 @@ impl Triangulation {
     /// Whether the faces can be oriented consistently. O(F), by a walk over the dual graph
     /// unless they already are.
     pub fn is_orientable(&self) -> bool {
-        self.is_coherent() || self.orientation().is_some()
+        self.is_coherent() || self.orientation_by_walk().is_some()
     }
 
     /// Whether the faces as stored are consistently oriented: every edge is listed in
@@ -496,10 +496,16 @@ impl Triangulation {
     /// A consistent orientation if one exists: `flip[f]` says whether face `f` must be
     /// reversed (removed faces get `false`). O(F).
     pub fn orientation(&self) -> Option<Vec<bool>> {
-        let nf = self.face_capacity();
         if self.is_coherent() {
-            return Some(vec![false; nf]);
+            return Some(vec![false; self.face_capacity()]);
         }
+        self.orientation_by_walk()
+    }
+
+    /// [`Self::orientation`] by a depth-first walk over the dual graph, which fixes each
+    /// face's flip from a neighbour's and fails on the first disagreement. O(F).
+    fn orientation_by_walk(&self) -> Option<Vec<bool>> {
+        let nf = self.face_capacity();
         let mut flip = vec![false; nf];
         let mut seen = vec![false; nf];
         let mut stack = Vec::new();

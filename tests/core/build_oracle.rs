@@ -406,3 +406,34 @@ fn high_degree_vertices_and_pinches_of_every_size() {
         }
     }
 }
+
+#[test]
+fn an_edge_in_any_number_of_faces_is_classified_by_its_parity() {
+    // A book of `k` triangles on the spine [0, 1]: the spine is in `k` faces (every
+    // other edge in one), so the error is the spine's, non-manifold for odd `k` and
+    // `k / 2` edges with the same endpoints for even `k`.
+    for k in 3u32..=9 {
+        let faces: Vec<[u32; 3]> = (0..k).map(|i| [0, 1, 2 + i]).collect();
+        assert!(!check(k as usize + 2, &faces), "book of {k}");
+        let want = if k % 2 == 1 {
+            BuildError::NonManifoldEdge {
+                a: 0,
+                b: 1,
+                faces: k as usize,
+                face: 0,
+            }
+        } else {
+            BuildError::MultipleEdges {
+                a: 0,
+                b: 1,
+                edges: k as usize / 2,
+                faces: k as usize,
+                face: 0,
+            }
+        };
+        assert_eq!(
+            Triangulation::from_faces(k as usize + 2, &faces).unwrap_err(),
+            want
+        );
+    }
+}
