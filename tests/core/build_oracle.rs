@@ -437,3 +437,47 @@ fn an_edge_in_any_number_of_faces_is_classified_by_its_parity() {
         );
     }
 }
+
+/// Bipyramids over `sizes[i]`-gons, disjoint but for one shared vertex (0), an apex of
+/// each: a vertex with one fan of `sizes[i]` faces per bipyramid, in this order.
+fn bouquet(sizes: &[u32]) -> (usize, Vec<[u32; 3]>) {
+    let mut faces = Vec::new();
+    let mut next = 1u32;
+    for &n in sizes {
+        let base = next;
+        faces.extend(bipyramid(n).into_iter().map(|f| {
+            f.map(|v| match v {
+                v if v == n => 0,
+                v if v < n => base + v,
+                _ => base + n,
+            })
+        }));
+        next = base + n + 1;
+    }
+    (next as usize, faces)
+}
+
+#[test]
+fn a_vertex_with_several_fans_reports_them_all() {
+    // Fan sizes whose running sums and products cross the total (6 · 7 = 6 + 7 + 29):
+    // counting must not stop before the last fan, on both sides of the small-link limit.
+    for sizes in [
+        &[3u32, 3, 3][..],
+        &[6, 7, 29],
+        &[3, 4, 5, 6],
+        &[20, 3, 3],
+        &[40, 3, 3, 3],
+    ] {
+        let (n, faces) = bouquet(sizes);
+        assert!(!check(n, &faces), "{sizes:?}");
+        assert_eq!(
+            Surfaces::from_faces(n, &faces).unwrap_err(),
+            BuildError::VertexLinkNotCycle {
+                vertex: 0,
+                cycles: sizes.len(),
+                faces: sizes.iter().sum::<u32>() as usize,
+            },
+            "{sizes:?}"
+        );
+    }
+}
