@@ -506,23 +506,17 @@ fn link_cycles(ends: &[(u32, u32)]) -> usize {
 }
 
 /// The number of fans of faces around `v` (whose edges are all glued), by star walks
-/// from each of its `corners` not yet visited.
+/// from each of its `corners` not yet visited; one walk when the first fan holds them all.
 fn fans(corner_vertex: &[u32], opposite: &[u32], v: u32, corners: &[u32]) -> usize {
-    let walked = fan_len(corner_vertex, opposite, v, corners[0]);
-    if walked == corners.len() {
+    if fan_len(corner_vertex, opposite, v, corners[0]) == corners.len() {
         return 1;
     }
-    let mut cycles = 1;
-    let mut seen = walked;
     let mut in_fan = std::collections::HashSet::new();
-    fan_corners(corner_vertex, opposite, v, corners[0], &mut in_fan);
+    let mut cycles = 0;
     for &c in corners {
-        if seen == corners.len() {
-            break;
-        }
         if !in_fan.contains(&c) {
             cycles += 1;
-            seen += fan_corners(corner_vertex, opposite, v, c, &mut in_fan);
+            fan_corners(corner_vertex, opposite, v, c, &mut in_fan);
         }
     }
     cycles
@@ -556,23 +550,21 @@ fn fan_len(corner_vertex: &[u32], opposite: &[u32], centre: u32, c: u32) -> usiz
     len
 }
 
-/// [`fan_len`], also recording the fan's corners in `seen` (the error path only).
+/// Records in `seen` the corners of the fan of `centre` through corner `c` (the error
+/// path only).
 fn fan_corners(
     corner_vertex: &[u32],
     opposite: &[u32],
     centre: u32,
     c: u32,
     seen: &mut std::collections::HashSet<u32>,
-) -> usize {
+) {
     seen.insert(c);
-    let mut len = 1;
     let (mut at, mut exit) = fan_step(corner_vertex, opposite, centre, Corner(c).next().0);
     while at != c {
         seen.insert(at);
-        len += 1;
         (at, exit) = fan_step(corner_vertex, opposite, centre, exit);
     }
-    len
 }
 
 /// Sorts one edge bucket (a vertex's edges to larger neighbours: about three on a
