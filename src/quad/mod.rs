@@ -606,6 +606,79 @@ mod tests {
         out
     }
 
+    /// Exactly Frink's reduction (its four strategies) pairs every face itself: for
+    /// those no completion runs (no progress beyond the initial stage, no completion
+    /// time); for the others it does. Either way the result's quad mesh has a quad per
+    /// pair, on the union of the pair's vertices, and the initial step took time.
+    #[test]
+    fn only_frinks_reduction_skips_the_completion() {
+        use crate::gen::random::{random, RandomParams, SurfaceKind};
+        let direct = [
+            Algorithm::DsNaive,
+            Algorithm::FrinkLct,
+            Algorithm::DiksStanczyk,
+            Algorithm::BiedlBoseDemaineLubiw,
+        ];
+        let tri = random(&RandomParams {
+            surface: SurfaceKind::NonOrientable(2),
+            min_faces: 1500,
+            flip_percent: 30,
+            seed: 7,
+        })
+        .expect("a random surface");
+        let faces = tri.face_list();
+        for algorithm in Algorithm::ALL {
+            assert_eq!(
+                algorithm.is_perfect_directly(),
+                direct.contains(&algorithm),
+                "{algorithm}"
+            );
+            let mut stages = Vec::new();
+            let q = convert_observed(tri.clone(), algorithm, &Options::default(), &mut |p| {
+                stages.push(p.stage)
+            })
+            .expect("conversion");
+            let completed = stages.iter().any(|&s| s != INITIAL);
+            assert_eq!(completed, !direct.contains(&algorithm), "{algorithm}");
+            assert!(q.stats.initial_seconds > 0.0, "{algorithm}");
+            if direct.contains(&algorithm) {
+                assert_eq!(q.stats.completion_seconds, 0.0, "{algorithm}");
+                assert_eq!(q.stats.total_seconds, q.stats.initial_seconds);
+            }
+            let mesh = q.quad_mesh().expect("a perfect pairing");
+            assert_eq!(mesh.faces.len(), faces.len() / 2, "{algorithm}");
+            let mut want: Vec<[u32; 4]> = q
+                .pairing
+                .pairs()
+                .map(|(f, g)| {
+                    let mut v: Vec<u32> = q
+                        .tri
+                        .face_vertices(f)
+                        .into_iter()
+                        .chain(q.tri.face_vertices(g))
+                        .map(|v| v.0)
+                        .collect();
+                    v.sort_unstable();
+                    v.dedup();
+                    v.try_into()
+                        .expect("two triangles on an edge span 4 vertices")
+                })
+                .collect();
+            let mut got: Vec<[u32; 4]> = mesh
+                .faces
+                .iter()
+                .map(|q| {
+                    let mut q = *q;
+                    q.sort_unstable();
+                    q
+                })
+                .collect();
+            want.sort_unstable();
+            got.sort_unstable();
+            assert_eq!(got, want, "{algorithm}");
+        }
+    }
+
     /// Every perfect pairing of the octahedron (9, the perfect matchings of the cube)
     /// passes the check and gives 4 quads, each the union of its two triangles' vertices.
     #[test]
