@@ -31,6 +31,10 @@
 //! triangle (or a `CountMismatch` at byte 80 when the payload holds a whole number of
 //! triangles), a longer one is `TrailingData` at the offset where the declared triangles
 //! end. A NaN or infinite coordinate is `BadNumber` at the byte offset of that `f32`.
+//! A count above [`crate::core::MAX_FACES`] (more triangles than a triangulation
+//! indexes) that passes the length check is `CountTooLarge` at byte 80, before any
+//! triangle is read (from a stream of unknown length, once the stream has been read to
+//! its end without storing it).
 //!
 //! **ASCII.** `solid [name]`, then `facet normal nx ny nz`, `outer loop`, three
 //! `vertex x y z`, `endloop`, `endfacet` per triangle, and `endsolid [name]`; keywords are
@@ -39,7 +43,8 @@
 //! 1-based line: a missing keyword (`Stl`), a missing or non-finite coordinate
 //! (`MissingValue`, `BadNumber`), a loop without exactly three vertices
 //! (`NonTriangleFace`), input that ends before `endsolid` (`Truncated`), data after the
-//! last `endsolid` (`TrailingData`).
+//! last `endsolid` (`TrailingData`), a facet past [`crate::core::MAX_FACES`]
+//! (`CountTooLarge`).
 //!
 //! **Writing** is binary little-endian: an 80-byte header that does not start with `solid`
 //! (so that no reader mistakes it for ASCII), the count, and per face the unit normal of
@@ -112,6 +117,16 @@ impl Welder {
     fn finish(self) -> TriMesh {
         Mesh::with_positions(self.positions, self.faces)
     }
+}
+
+/// The error for an STL of `count` triangles, more than a triangulation indexes
+/// ([`crate::core::MAX_FACES`]), if it is: said at the binary header or at the ASCII
+/// facet past the limit, before the faces are stored.
+fn too_many_faces(count: u64) -> Option<K> {
+    (count > crate::core::MAX_FACES as u64).then_some(K::CountTooLarge {
+        what: "triangles",
+        declared: count,
+    })
 }
 
 fn too_many_vertices(count: usize) -> K {
@@ -253,6 +268,17 @@ fn parse_binary(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
         .and_then(|len| binary_length_error(declared, len))
     {
         return Err(e);
+    }
+    if let Some(k) = too_many_faces(declared) {
+        // Without a length the stream is read to its end, storing nothing, so that a
+        // wrong length is reported as it is from memory.
+        if input.known_len().is_none() {
+            input.drain()?;
+            if let Some(e) = binary_length_error(declared, input.offset()) {
+                return Err(e);
+            }
+        }
+        return Err(ReadError::at_byte(k, 80));
     }
     input.consume(PAYLOAD_START);
     match read_triangles(input, declared) {
@@ -451,6 +477,9 @@ fn parse_ascii(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
             ));
         }
         let face_no = welder.faces.len();
+        if let Some(k) = too_many_faces(face_no as u64 + 1) {
+            return Err(ReadError::at_line(k, n));
+        }
         ts.expect("normal")?;
         // The normal is ignored (its three values must be present).
         for _ in 0..3 {
@@ -599,6 +628,20 @@ fn unit_normal([a, b, c]: &[[f64; 3]; 3]) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_face_limit_is_the_triangulations() {
+        let max = crate::core::MAX_FACES as u64;
+        assert!(too_many_faces(max).is_none());
+        assert!(too_many_faces(1).is_none());
+        assert!(matches!(
+            too_many_faces(max + 1),
+            Some(K::CountTooLarge {
+                what: "triangles",
+                declared,
+            }) if declared == max + 1
+        ));
+    }
 
     fn parse_stl(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         super::parse_stl(&mut Input::from_slice(bytes))

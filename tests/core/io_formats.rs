@@ -1390,6 +1390,41 @@ fn a_failed_write_leaves_no_file() {
     std::fs::remove_dir_all(&dir).ok();
 }
 
+/// A binary STL declaring more triangles than a triangulation indexes is refused at its
+/// header, before any triangle is read: shown on a sparse file of the declared length
+/// (72 GB apparent, nothing written but the header). A short one gets the length error,
+/// from memory and read once alike.
+#[test]
+fn a_binary_stl_count_past_the_face_limit_is_refused_at_the_header() {
+    let declared = contractible::core::MAX_FACES as u64 + 1;
+    let mut head = vec![0u8; 80];
+    head.extend_from_slice(&(declared as u32).to_le_bytes());
+    let dir = std::env::temp_dir().join(format!("contractible-stl-limit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("huge.stl");
+    let mut file = std::fs::File::create(&path).unwrap();
+    std::io::Write::write_all(&mut file, &head).unwrap();
+    file.set_len(84 + 50 * declared).unwrap();
+    drop(file);
+    let e = contractible::io::read_tri_mesh(&path).unwrap_err();
+    std::fs::remove_dir_all(&dir).ok();
+    assert!(
+        matches!(e.kind, K::CountTooLarge { what: "triangles", declared: d } if d == declared),
+        "{e}"
+    );
+    assert_eq!(e.location, contractible::io::Location::ByteOffset(80));
+
+    let mut stl = to_bytes(&contractible::gen::octahedron(), Format::Stl, true);
+    stl[80..84].copy_from_slice(&(declared as u32).to_le_bytes());
+    let a = contractible::io::read_tri_mesh_bytes(&stl, Some(Format::Stl)).unwrap_err();
+    let b = contractible::io::read_tri_mesh_from(Trickle::new(&stl), Format::Stl).unwrap_err();
+    assert_eq!(
+        (format!("{:?}", a.kind), a.location),
+        (format!("{:?}", b.kind), b.location)
+    );
+    assert!(!matches!(a.kind, K::CountTooLarge { .. }), "{a}");
+}
+
 /// A stream read once has no length for the binary STL rule: content no header names is
 /// read as binary STL when its length matches the count, and is `UnknownFormat` when it
 /// does not, as from memory.
