@@ -633,14 +633,28 @@ mod tests {
                 direct.contains(&algorithm),
                 "{algorithm}"
             );
-            let mut stages = Vec::new();
+            let mut seen = Vec::new();
             let q = convert_observed(tri.clone(), algorithm, &Options::default(), &mut |p| {
-                stages.push(p.stage)
+                seen.push((p.stage, p.done, p.total))
             })
             .expect("conversion");
-            let completed = stages.iter().any(|&s| s != INITIAL);
+            let completed = seen.iter().any(|&(s, _, _)| s != INITIAL);
             assert_eq!(completed, !direct.contains(&algorithm), "{algorithm}");
+            // The initial stage starts at 0 and, when a completion follows, ends at the
+            // faces the initial step paired.
+            let n = faces.len() as u64;
+            assert_eq!(seen[0], (INITIAL, 0, n), "{algorithm}");
+            if completed {
+                let paired = (q.stats.faces - q.stats.initial_unpaired) as u64;
+                assert_eq!(seen[1], (INITIAL, paired, n), "{algorithm}");
+                assert!(paired > 4, "{algorithm}: a count that shows the arithmetic");
+            }
             assert!(q.stats.initial_seconds > 0.0, "{algorithm}");
+            assert_eq!(
+                q.stats.total_seconds,
+                q.stats.initial_seconds + q.stats.completion_seconds,
+                "{algorithm}"
+            );
             if direct.contains(&algorithm) {
                 assert_eq!(q.stats.completion_seconds, 0.0, "{algorithm}");
                 assert_eq!(q.stats.total_seconds, q.stats.initial_seconds);
