@@ -647,7 +647,6 @@ mod tests {
             if completed {
                 let paired = (q.stats.faces - q.stats.initial_unpaired) as u64;
                 assert_eq!(seen[1], (INITIAL, paired, n), "{algorithm}");
-                assert!(paired > 4, "{algorithm}: a count that shows the arithmetic");
             }
             assert!(q.stats.initial_seconds > 0.0, "{algorithm}");
             assert_eq!(
