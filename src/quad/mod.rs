@@ -606,6 +606,29 @@ mod tests {
         out
     }
 
+    /// A pairing counts its pairs through pairing and unpairing, and lists each once.
+    #[test]
+    fn a_pairing_counts_and_lists_its_pairs() {
+        let mut p = Pairing::new(6);
+        assert!(p.is_empty());
+        assert_eq!((p.len(), p.face_capacity()), (0, 6));
+        p.pair(FaceId(4), FaceId(1));
+        p.pair(FaceId(0), FaceId(5));
+        assert!(!p.is_empty());
+        assert_eq!(p.len(), 2);
+        assert_eq!(
+            p.pairs().collect::<Vec<_>>(),
+            [(FaceId(0), FaceId(5)), (FaceId(1), FaceId(4))]
+        );
+        assert_eq!(p.mate(FaceId(1)), Some(FaceId(4)));
+        assert!(p.is_paired(FaceId(4)) && !p.is_paired(FaceId(2)));
+        assert_eq!(p.unpair(FaceId(5)), Some(FaceId(0)));
+        assert_eq!(p.unpair(FaceId(5)), None);
+        assert_eq!(p.len(), 1);
+        assert_eq!(p.unpair(FaceId(4)), Some(FaceId(1)));
+        assert!(p.is_empty());
+    }
+
     /// Exactly Frink's reduction (its four strategies) pairs every face itself: for
     /// those no completion runs (no progress beyond the initial stage, no completion
     /// time); for the others it does. Either way the result's quad mesh has a quad per
