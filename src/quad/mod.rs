@@ -726,6 +726,7 @@ mod tests {
         for pairs in all {
             let mut p = Pairing::new(t.face_capacity());
             for &(f, g) in &pairs {
+                assert!(!p.is_perfect(&t));
                 p.pair(FaceId(f as u32), FaceId(g as u32));
             }
             assert_eq!(p.check(&t), Ok(()));
