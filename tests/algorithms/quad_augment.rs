@@ -439,6 +439,193 @@ fn sparse_ps_leftovers_are_completed_by_single_root_searches() {
     }
 }
 
+/// A sphere shaped as a tube of rings of 3 or 4 vertices: segment `k` has
+/// `segments[k]` bands, its rings have 3 vertices for even `k` and 4 for odd `k`, and
+/// both ends are capped by a fan. Faces are listed cap, bands, cap, each band in its
+/// cyclic strip order (consecutive faces of a band share an edge). Returns the faces and
+/// the pairing of consecutive faces within each cap and band: a band between rings of 3
+/// and 4 vertices has 7 faces and a cap on a ring of 3 has 3, so each of those leaves its
+/// last face unpaired: the two caps and one face per change of ring size, far apart when
+/// the segments are long.
+fn tube(segments: &[usize]) -> (Triangulation, Pairing) {
+    let size = |k: usize| 3 + (k % 2) as u32;
+    let mut rings: Vec<(u32, u32)> = Vec::new(); // (first vertex, vertex count)
+    let mut next = 1u32; // vertex 0 is the top apex
+    let mut add_ring = |n: u32, rings: &mut Vec<(u32, u32)>| {
+        rings.push((next, n));
+        next += n;
+    };
+    add_ring(size(0), &mut rings);
+    for (k, &bands) in segments.iter().enumerate() {
+        for _ in 0..bands {
+            add_ring(size(k), &mut rings);
+        }
+        if k + 1 < segments.len() {
+            add_ring(size(k + 1), &mut rings);
+        }
+    }
+    let bottom = next;
+    let mut groups: Vec<Vec<[u32; 3]>> = Vec::new();
+    let (s0, n0) = rings[0];
+    groups.push((0..n0).map(|i| [0, s0 + (i + 1) % n0, s0 + i]).collect());
+    for w in rings.windows(2) {
+        let ((a0, na), (b0, nb)) = (w[0], w[1]);
+        // Walk both rings once: each face advances one of them, the smaller ratio first,
+        // so that consecutive faces share the edge between the two current vertices.
+        let (mut i, mut j) = (0u32, 0u32);
+        let mut band = Vec::new();
+        while i < na || j < nb {
+            let (a, b) = (a0 + i % na, b0 + j % nb);
+            if j * na < i * nb || i == na {
+                band.push([a, b0 + (j + 1) % nb, b]);
+                j += 1;
+            } else {
+                band.push([a, a0 + (i + 1) % na, b]);
+                i += 1;
+            }
+        }
+        groups.push(band);
+    }
+    let (sl, nl) = *rings.last().expect("a ring");
+    groups.push(
+        (0..nl)
+            .map(|i| [bottom, sl + i, sl + (i + 1) % nl])
+            .collect(),
+    );
+    let faces: Vec<[u32; 3]> = groups.iter().flatten().copied().collect();
+    let t = Triangulation::from_faces(bottom as usize + 1, &faces).expect("a tube is a sphere");
+    let mut p = Pairing::new(t.face_capacity());
+    let mut first = 0u32;
+    for g in &groups {
+        for k in (0..g.len() as u32 / 2).map(|k| first + 2 * k) {
+            p.pair(FaceId(k), FaceId(k + 1));
+        }
+        first += g.len() as u32;
+    }
+    (t, p)
+}
+
+/// The sparse pass (module documentation, step 2) on 32 far-apart leftovers of a
+/// 32,000-face tube: one single-root search per pair of leftovers when each finds its
+/// partner within `F / 4` edge visits; when the first must cross a quarter of the
+/// surface it is aborted, and the phases take every leftover.
+#[test]
+fn a_single_root_search_past_its_budget_hands_the_leftovers_to_the_phases() {
+    for (long, searches) in [(1, 16..=16), (0, 2..=4)] {
+        let mut segments = vec![40; 31];
+        segments[long] = 4_000;
+        let (t, start) = tube(&segments);
+        let unpaired = t.face_count() - 2 * start.len();
+        assert!(
+            unpaired == 32 && t.face_count() >= 32 * 1000,
+            "{unpaired} leftovers on {} faces",
+            t.face_count()
+        );
+        let c = complete_checked(&t, &start, &format!("tube, segment {long} long"));
+        assert_eq!(c.augmenting_paths, 16);
+        assert!(
+            searches.contains(&c.phases),
+            "long segment {long}: {} searches, expected {searches:?}",
+            c.phases
+        );
+    }
+}
+
+/// The linear pass as the module documentation states it (step 1), written from that
+/// text: for each unpaired face `f` in increasing id, its first unpaired neighbour in
+/// slot order, else the first unpaired `x ≠ f` among the neighbours of `mate(v)` for the
+/// neighbours `v` of `f`, every slot looked at counted as one edge visit. Returns the
+/// pairing after the pass, the visits and the number of paths of length 3.
+fn linear_pass_by_the_rule(t: &Triangulation, start: &Pairing) -> (Pairing, u64, usize) {
+    let mut p = start.clone();
+    let (mut visits, mut threes) = (0u64, 0);
+    let unpaired: Vec<FaceId> = start.unpaired(t).collect();
+    for f in unpaired {
+        if p.is_paired(f) {
+            continue;
+        }
+        let nb = t.face_neighbours(f);
+        if let Some(&g) = nb.iter().find(|&&g| {
+            visits += 1;
+            !p.is_paired(g)
+        }) {
+            p.pair(f, g);
+            continue;
+        }
+        'three: for v in nb {
+            let w = p.mate(v).expect("every neighbour is paired");
+            for x in t.face_neighbours(w) {
+                visits += 1;
+                if x != f && !p.is_paired(x) {
+                    p.unpair(v);
+                    p.pair(f, v);
+                    p.pair(w, x);
+                    threes += 1;
+                    break 'three;
+                }
+            }
+        }
+    }
+    (p, visits, threes)
+}
+
+/// When the linear pass alone completes a pairing, the output is the one its rule gives
+/// and the edge visits are exactly the slots it looked at. Starts: perfect pairings with
+/// a few pairs removed, and with a few pairs (f, v), (w, x) replaced by (v, w), which
+/// leaves `f` and `x` unpaired at distance 3 when they share no edge.
+#[test]
+fn the_linear_pass_pairs_and_counts_as_documented() {
+    let (mut complete_starts, mut paths_of_3) = (0, 0);
+    for seed in 0..12u64 {
+        let t = random(&RandomParams {
+            surface: kinds()[seed as usize % kinds().len()],
+            min_faces: 300,
+            flip_percent: 30,
+            seed: 900 + seed,
+        })
+        .expect("a random surface within the limits");
+        let mut perfect = matching::initial_pairing(&t);
+        complete(&t, &mut perfect).expect("a closed triangulation");
+        let mut rng = Rng::new(seed);
+        for removed in 1..=4 {
+            let mut start = perfect.clone();
+            for _ in 0..removed {
+                let f = t.faces().nth(rng.index(t.face_count())).expect("a face");
+                let Some(v) = start.mate(f) else { continue };
+                if seed % 2 == 0 {
+                    start.unpair(f);
+                    continue;
+                }
+                // Replace (f, v), (w, x) by (v, w) for a neighbour w of v other than f.
+                let w = t.face_neighbours(v)[rng.index(3)];
+                if w == f || !start.is_paired(w) {
+                    continue;
+                }
+                start.unpair(f);
+                start.unpair(w);
+                start.pair(v, w);
+            }
+            let (expected, visits, threes) = linear_pass_by_the_rule(&t, &start);
+            if !expected.is_perfect(&t) {
+                continue;
+            }
+            let label = format!("seed {seed}, {removed} changes");
+            let c = complete_checked(&t, &start, &label);
+            let mut out = start.clone();
+            complete(&t, &mut out).expect("a closed triangulation");
+            assert!(out == expected, "{label}: not the rule's pairing");
+            assert_eq!(c.phases, 0, "{label}: a search ran");
+            assert_eq!(c.edge_visits, visits, "{label}: edge visits");
+            complete_starts += 1;
+            paths_of_3 += threes;
+        }
+    }
+    assert!(
+        complete_starts >= 20 && paths_of_3 >= 10,
+        "{complete_starts} starts completed by the linear pass, {paths_of_3} paths of length 3"
+    );
+}
+
 #[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
