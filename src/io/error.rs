@@ -131,6 +131,17 @@ pub enum ReadErrorKind {
     List(String),
 }
 
+impl ReadErrorKind {
+    /// `CountTooLarge` for a declared count of `what` (faces, triangles) above
+    /// [`crate::core::MAX_FACES`], if it is: more faces than a triangulation indexes
+    /// (their corners would overflow `u32`). The readers say it at the header or at the
+    /// record past the limit, before the faces are stored.
+    pub(crate) fn past_face_limit(what: &'static str, declared: u64) -> Option<Self> {
+        (declared > crate::core::MAX_FACES as u64)
+            .then_some(ReadErrorKind::CountTooLarge { what, declared })
+    }
+}
+
 /// A failed read: what ([`ReadErrorKind`]), where ([`Location`]) and in which file.
 ///
 /// Displays as `path:location: message` (path and location omitted when unknown).
@@ -248,4 +259,23 @@ pub enum WriteError {
 pub(crate) fn token_string(token: &[u8]) -> String {
     let cut = &token[..token.len().min(64)];
     String::from_utf8_lossy(cut).into_owned()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_face_limit_is_the_triangulations() {
+        let max = crate::core::MAX_FACES as u64;
+        assert!(ReadErrorKind::past_face_limit("faces", max).is_none());
+        assert!(ReadErrorKind::past_face_limit("faces", 1).is_none());
+        assert!(matches!(
+            ReadErrorKind::past_face_limit("triangles", max + 1),
+            Some(ReadErrorKind::CountTooLarge {
+                what: "triangles",
+                declared,
+            }) if declared == max + 1
+        ));
+    }
 }

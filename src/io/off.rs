@@ -92,14 +92,8 @@ pub(crate) fn parse_off(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
     }
     // Nor more faces than a triangulation can index (their corners would overflow u32):
     // said here, before any record is read.
-    if nf > crate::core::MAX_FACES as u64 {
-        return Err(ReadError::at_line(
-            K::CountTooLarge {
-                what: "faces",
-                declared: nf,
-            },
-            count_line,
-        ));
+    if let Some(k) = K::past_face_limit("faces", nf) {
+        return Err(ReadError::at_line(k, count_line));
     }
     // Never trust the counts for allocation: reserve at most what the remaining bytes could
     // hold at the smallest possible record size. The loops below consume at least one line

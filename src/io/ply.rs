@@ -299,14 +299,8 @@ fn parse_header(input: &mut Input<'_>) -> Result<Header, ReadError> {
     if let Some(face) = elements.iter().find(|e| e.kind == ElementKind::Face) {
         // More faces than a triangulation can index (their corners would overflow u32):
         // said here, before any record is read.
-        if face.count > crate::core::MAX_FACES as u64 {
-            return Err(ReadError::at_line(
-                K::CountTooLarge {
-                    what: "faces",
-                    declared: face.count,
-                },
-                face.line,
-            ));
+        if let Some(k) = K::past_face_limit("faces", face.count) {
+            return Err(ReadError::at_line(k, face.line));
         }
         if !face.properties.iter().any(|p| p.role == Role::Corners) {
             return Err(bad_header(
