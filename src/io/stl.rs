@@ -119,16 +119,6 @@ impl Welder {
     }
 }
 
-/// The error for an STL of `count` triangles, more than a triangulation indexes
-/// ([`crate::core::MAX_FACES`]), if it is: said at the binary header or at the ASCII
-/// facet past the limit, before the faces are stored.
-fn too_many_faces(count: u64) -> Option<K> {
-    (count > crate::core::MAX_FACES as u64).then_some(K::CountTooLarge {
-        what: "triangles",
-        declared: count,
-    })
-}
-
 fn too_many_vertices(count: usize) -> K {
     K::CountTooLarge {
         what: "distinct STL vertices",
@@ -248,6 +238,18 @@ fn binary_length_error(declared: u64, len: u64) -> Option<ReadError> {
     })
 }
 
+/// Reads the rest of `input` without storing it, then makes the length check of a binary
+/// STL declaring `declared` triangles on the length read. A stream of unknown length
+/// reports a wrong length this way, as the in-memory reader does before reading, in
+/// preference to an error met on the way.
+fn drained_length_error(
+    input: &mut Input<'_>,
+    declared: u64,
+) -> Result<Option<ReadError>, ReadError> {
+    input.drain()?;
+    Ok(binary_length_error(declared, input.offset()))
+}
+
 fn parse_binary(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
     let head = input.peek(PAYLOAD_START)?;
     let Some(&[a, b, c, d]) = head.get(80..PAYLOAD_START) else {
@@ -269,12 +271,11 @@ fn parse_binary(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
     {
         return Err(e);
     }
-    if let Some(k) = too_many_faces(declared) {
+    if let Some(k) = K::past_face_limit("triangles", declared) {
         // Without a length the stream is read to its end, storing nothing, so that a
         // wrong length is reported as it is from memory.
         if input.known_len().is_none() {
-            input.drain()?;
-            if let Some(e) = binary_length_error(declared, input.offset()) {
+            if let Some(e) = drained_length_error(input, declared)? {
                 return Err(e);
             }
         }
@@ -284,10 +285,7 @@ fn parse_binary(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
     match read_triangles(input, declared) {
         Ok(mesh) => Ok(mesh),
         Err(e) if input.known_len().is_some() => Err(e),
-        Err(e) => {
-            input.drain()?;
-            Err(binary_length_error(declared, input.offset()).unwrap_or(e))
-        }
+        Err(e) => Err(drained_length_error(input, declared)?.unwrap_or(e)),
     }
 }
 
@@ -305,13 +303,10 @@ pub(crate) fn parse_unsniffed(input: &mut Input<'_>) -> Result<TriMesh, ReadErro
     input.consume(PAYLOAD_START);
     match read_triangles(input, declared) {
         Ok(mesh) => Ok(mesh),
-        Err(e) => {
-            input.drain()?;
-            match binary_length_error(declared, input.offset()) {
-                None => Err(e),
-                Some(_) => Err(unknown()),
-            }
-        }
+        Err(e) => match drained_length_error(input, declared)? {
+            None => Err(e),
+            Some(_) => Err(unknown()),
+        },
     }
 }
 
@@ -324,9 +319,7 @@ fn read_triangles(input: &mut Input<'_>, declared: u64) -> Result<TriMesh, ReadE
         let base = input.offset();
         let batch = input.fill_at_least(TRIANGLE_BYTES)?;
         if batch.len() < TRIANGLE_BYTES {
-            input.drain()?;
-            let len = input.offset();
-            return Err(binary_length_error(declared, len).unwrap_or_else(|| {
+            return Err(drained_length_error(input, declared)?.unwrap_or_else(|| {
                 ReadError::at_byte(
                     K::Truncated {
                         expected: "a whole triangle".into(),
@@ -373,15 +366,12 @@ fn read_triangles(input: &mut Input<'_>, declared: u64) -> Result<TriMesh, ReadE
     }
     if !input.at_end()? {
         let at = input.offset();
-        input.drain()?;
-        return Err(
-            binary_length_error(declared, input.offset()).unwrap_or_else(|| {
-                ReadError::new(
-                    K::TrailingData { what: "triangle" },
-                    super::Location::ByteOffset(at),
-                )
-            }),
-        );
+        return Err(drained_length_error(input, declared)?.unwrap_or_else(|| {
+            ReadError::new(
+                K::TrailingData { what: "triangle" },
+                super::Location::ByteOffset(at),
+            )
+        }));
     }
     Ok(welder.finish())
 }
@@ -477,7 +467,7 @@ fn parse_ascii(input: &mut Input<'_>) -> Result<TriMesh, ReadError> {
             ));
         }
         let face_no = welder.faces.len();
-        if let Some(k) = too_many_faces(face_no as u64 + 1) {
+        if let Some(k) = K::past_face_limit("triangles", face_no as u64 + 1) {
             return Err(ReadError::at_line(k, n));
         }
         ts.expect("normal")?;
@@ -628,20 +618,6 @@ fn unit_normal([a, b, c]: &[[f64; 3]; 3]) -> [f64; 3] {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn the_face_limit_is_the_triangulations() {
-        let max = crate::core::MAX_FACES as u64;
-        assert!(too_many_faces(max).is_none());
-        assert!(too_many_faces(1).is_none());
-        assert!(matches!(
-            too_many_faces(max + 1),
-            Some(K::CountTooLarge {
-                what: "triangles",
-                declared,
-            }) if declared == max + 1
-        ));
-    }
 
     fn parse_stl(bytes: &[u8]) -> Result<TriMesh, ReadError> {
         super::parse_stl(&mut Input::from_slice(bytes))
