@@ -606,6 +606,32 @@ mod tests {
         out
     }
 
+    /// The quads that pairs of triangles (given by their vertices) must give, each as
+    /// its sorted 4 vertices, in sorted order: two triangles on an edge span the 4
+    /// vertices of their union.
+    fn pair_unions(pairs: impl IntoIterator<Item = ([u32; 3], [u32; 3])>) -> Vec<[u32; 4]> {
+        sorted_quads(pairs.into_iter().map(|(a, b)| {
+            let mut v: Vec<u32> = a.iter().chain(&b).copied().collect();
+            v.sort_unstable();
+            v.dedup();
+            v.try_into()
+                .expect("two triangles sharing an edge span 4 vertices")
+        }))
+    }
+
+    /// `quads`, each with its vertices sorted, in sorted order.
+    fn sorted_quads(quads: impl IntoIterator<Item = [u32; 4]>) -> Vec<[u32; 4]> {
+        let mut out: Vec<[u32; 4]> = quads
+            .into_iter()
+            .map(|mut q| {
+                q.sort_unstable();
+                q
+            })
+            .collect();
+        out.sort_unstable();
+        out
+    }
+
     /// A pairing counts its pairs through pairing and unpairing, and lists each once.
     #[test]
     fn a_pairing_counts_and_lists_its_pairs() {
@@ -683,34 +709,11 @@ mod tests {
             }
             let mesh = q.quad_mesh().expect("a perfect pairing");
             assert_eq!(mesh.faces.len(), faces.len() / 2, "{algorithm}");
-            let mut want: Vec<[u32; 4]> = q
-                .pairing
-                .pairs()
-                .map(|(f, g)| {
-                    let mut v: Vec<u32> = q
-                        .tri
-                        .face_vertices(f)
-                        .into_iter()
-                        .chain(q.tri.face_vertices(g))
-                        .map(|v| v.0)
-                        .collect();
-                    v.sort_unstable();
-                    v.dedup();
-                    v.try_into()
-                        .expect("two triangles on an edge span 4 vertices")
-                })
-                .collect();
-            let mut got: Vec<[u32; 4]> = mesh
-                .faces
-                .iter()
-                .map(|q| {
-                    let mut q = *q;
-                    q.sort_unstable();
-                    q
-                })
-                .collect();
-            want.sort_unstable();
-            got.sort_unstable();
+            let want = pair_unions(q.pairing.pairs().map(|(f, g)| {
+                let ids = |f| q.tri.face_vertices(f).map(|v| v.0);
+                (ids(f), ids(g))
+            }));
+            let got = sorted_quads(mesh.faces.iter().copied());
             assert_eq!(got, want, "{algorithm}");
         }
     }
@@ -734,25 +737,8 @@ mod tests {
             assert_eq!(initial_stats(&t, &p, 0.0).initial_unpaired, 0);
             let quads = quad_faces(&t, &p).expect("perfect");
             assert_eq!(quads.len(), 4);
-            let mut expected: Vec<[u32; 4]> = pairs
-                .iter()
-                .map(|&(f, g)| {
-                    let mut q: Vec<u32> = m.faces[f].iter().chain(&m.faces[g]).copied().collect();
-                    q.sort_unstable();
-                    q.dedup();
-                    q.try_into()
-                        .expect("two triangles sharing an edge span 4 vertices")
-                })
-                .collect();
-            let mut got: Vec<[u32; 4]> = quads
-                .into_iter()
-                .map(|mut q| {
-                    q.sort_unstable();
-                    q
-                })
-                .collect();
-            expected.sort_unstable();
-            got.sort_unstable();
+            let expected = pair_unions(pairs.iter().map(|&(f, g)| (m.faces[f], m.faces[g])));
+            let got = sorted_quads(quads);
             assert_eq!(got, expected);
         }
     }
