@@ -722,6 +722,29 @@ mod tests {
         false
     }
 
+    /// A search returns the number of augmenting paths it applied: one for a single-root
+    /// search that reaches an unpaired face, and one per two trees that meet in a phase
+    /// whose roots are every face.
+    #[test]
+    fn a_search_returns_the_paths_it_applied() {
+        for m in [tetrahedron(), octahedron(), icosahedron()] {
+            let t = tri(&m);
+            let mut p = Pairing::new(t.face_capacity());
+            let mut s = Search::new(&t, &mut p.mate);
+            assert_eq!(s.phase(&[0], u64::MAX), 1);
+            assert_eq!(s.counters.augmenting_paths, 1);
+            assert_eq!(s.mate.iter().filter(|&&m| m != NONE).count(), 2);
+
+            let mut p = Pairing::new(t.face_capacity());
+            let roots: Vec<u32> = t.faces().map(|f| f.0).collect();
+            let mut s = Search::new(&t, &mut p.mate);
+            let paths = s.phase(&roots, u64::MAX);
+            assert!(paths >= 2, "{paths} paths");
+            assert_eq!(paths, s.counters.augmenting_paths);
+            assert_eq!(s.mate.iter().filter(|&&m| m != NONE).count(), 2 * paths);
+        }
+    }
+
     /// Matchings with two unpaired faces whose augmenting path the search can only find
     /// through a blossom (a blossom-free forest finds none, yet Petersen and Berge say a
     /// path exists): obtained from perfect matchings by freeing one pair and shifting one
@@ -788,6 +811,14 @@ mod tests {
                         assert!(p.is_perfect(t) && p.check(t).is_ok());
                         assert_eq!(c.augmenting_paths, 1);
                         assert!(blossoms > 0, "a path was found without a blossom");
+                        // Each shrink joins at least three blossoms (two bases and the
+                        // odd vertex between) into one, so a search shrinks fewer than
+                        // half as many blossoms as there are faces.
+                        assert!(
+                            2 * blossoms < (c.phases * t.face_count()) as u64,
+                            "{blossoms} blossoms in {} searches",
+                            c.phases
+                        );
                     }
                 }
             }
