@@ -64,8 +64,10 @@
 //! with the crate's located errors and allocation rules is shorter than the adaptation
 //! around `stl_io` would be.
 
-use std::collections::HashMap;
+use std::hash::BuildHasher;
 use std::io::Write;
+
+use hashbrown::{DefaultHashBuilder, HashTable};
 
 use super::error::{token_string, ReadError, ReadErrorKind as K, WriteError};
 use super::input::Input;
@@ -83,11 +85,30 @@ const UTF8_BOM: &[u8] = b"\xEF\xBB\xBF";
 const WRITE_HEADER: &[u8] = b"binary STL written by contractible";
 
 /// Welds triangle corners by bitwise-equal position while the triangles are read.
+///
+/// Vertex ids are given in order of first appearance, so the output does not depend on
+/// the hash. Why not a `HashMap<[u64; 3], u32>`: on B0 (12.6 M corners, 2.1 M vertices)
+/// its 32-byte entries make a table of about 100 MB, and almost every lookup missed the
+/// caches (the whole binary read ran at 206 MB/s, slower than `stl_io`). Here the table
+/// holds only the 4-byte ids (keys are compared against `positions`), and a small
+/// direct-mapped cache of recent lookups answers most corners: in a mesh's own triangle
+/// order a vertex's triangles are near each other in the file (`docs/benchmarks.md`,
+/// readers).
 struct Welder {
-    index: HashMap<[u64; 3], u32>,
+    /// Vertex ids, hashed by their position's bits.
+    index: HashTable<u32>,
+    hasher: DefaultHashBuilder,
+    /// `recent[h >> RECENT_SHIFT]` = (hash, id) of the last vertex looked up whose hash
+    /// `h` maps there: a hint, confirmed by comparing positions (so the initial zeros
+    /// need no sentinel).
+    recent: Vec<(u64, u32)>,
     positions: Vec<[f64; 3]>,
     faces: Vec<[u32; 3]>,
 }
+
+/// log2 of the number of recent-lookup slots: 2^14 × 16 bytes stay in a core's L2 cache.
+const RECENT_BITS: u32 = 14;
+const RECENT_SHIFT: u32 = 64 - RECENT_BITS;
 
 impl Welder {
     /// Room for `triangles` faces (a count already checked against the input's size).
@@ -95,7 +116,9 @@ impl Welder {
         // A closed triangle mesh has about half as many vertices as faces.
         let vertices = triangles / 2 + 3;
         Welder {
-            index: HashMap::with_capacity(vertices),
+            index: HashTable::with_capacity(vertices),
+            hasher: DefaultHashBuilder::default(),
+            recent: vec![(0, 0); 1 << RECENT_BITS],
             positions: Vec::with_capacity(vertices),
             faces: Vec::with_capacity(triangles),
         }
@@ -105,12 +128,36 @@ impl Welder {
     /// vertex would not be addressable by a `u32`.
     fn vertex(&mut self, p: [f64; 3]) -> Option<u32> {
         let key = p.map(f64::to_bits);
-        if let Some(&v) = self.index.get(&key) {
+        let h = self.hasher.hash_one(key);
+        let slot = (h >> RECENT_SHIFT) as usize;
+        let Welder {
+            index,
+            hasher,
+            recent,
+            positions,
+            ..
+        } = self;
+        let same = |v: u32| positions.get(v as usize).map(|q| q.map(f64::to_bits)) == Some(key);
+        let (seen, v) = recent[slot];
+        if seen == h && same(v) {
             return Some(v);
         }
-        let v = u32::try_from(self.positions.len()).ok()?;
-        self.index.insert(key, v);
-        self.positions.push(p);
+        let v = match index.find(h, |&v| same(v)) {
+            Some(&v) => v,
+            None => {
+                let v = u32::try_from(positions.len()).ok()?;
+                // Rehashing reads the key back from the positions (every stored id
+                // indexes one).
+                index.insert_unique(h, v, |&u| {
+                    positions
+                        .get(u as usize)
+                        .map_or(0, |q| hasher.hash_one(q.map(f64::to_bits)))
+                });
+                positions.push(p);
+                v
+            }
+        };
+        recent[slot] = (h, v);
         Some(v)
     }
 
