@@ -1460,3 +1460,71 @@ fn read_once_streams_recognise_binary_stl_by_its_length() {
     );
     assert!(matches!(a.kind, K::BadNumber { .. }), "{a}");
 }
+
+/// Binary STL welding on more vertices than the reader's cache of recent lookups holds,
+/// with the triangles in random order (so most lookups go to the table), against an
+/// oracle written here: vertices numbered in order of first appearance, merged exactly
+/// when the `f32` positions written are bitwise equal (`0.0` and `-0.0` apart).
+#[test]
+fn binary_stl_welds_many_scattered_vertices_by_bitwise_position() {
+    use std::collections::BTreeMap;
+    let mut rng = contractible::rng::Rng::new(11);
+    let distinct = 60_000usize;
+    let mut positions: Vec<[f64; 3]> = (0..distinct)
+        .map(|i| {
+            [
+                (i % 97) as f64,
+                ((i / 97) % 89) as f64,
+                (i / (97 * 89)) as f64 + 0.5,
+            ]
+        })
+        .collect();
+    // Copies of some positions (welded into one vertex), and signed zeros (kept apart).
+    for i in 0..5_000 {
+        positions.push(positions[rng.index(distinct)]);
+        positions.push([if i % 2 == 0 { 0.0 } else { -0.0 }, i as f64, 0.25]);
+    }
+    let n = positions.len() as u32;
+    let faces: Vec<[u32; 3]> = (0..150_000)
+        .map(|_| {
+            let a = rng.index(n as usize) as u32;
+            [
+                a,
+                (a + 1 + rng.index(100) as u32) % n,
+                (a + 200 + rng.index(100) as u32) % n,
+            ]
+        })
+        .collect();
+    let mesh = TriMesh::with_positions(positions.clone(), faces.clone());
+    let bytes = to_bytes(&mesh, Format::Stl, true);
+
+    let mut ids: BTreeMap<[u64; 3], u32> = BTreeMap::new();
+    let mut want_positions = Vec::new();
+    let want_faces: Vec<[u32; 3]> = faces
+        .iter()
+        .map(|f| {
+            f.map(|v| {
+                let p = positions[v as usize].map(|x| f64::from(x as f32));
+                *ids.entry(p.map(f64::to_bits)).or_insert_with(|| {
+                    want_positions.push(p);
+                    want_positions.len() as u32 - 1
+                })
+            })
+        })
+        .collect();
+    assert!(
+        want_positions.len() > 60_000,
+        "{} vertices",
+        want_positions.len()
+    );
+
+    let got = contractible::io::read_tri_mesh_bytes(&bytes, Some(Format::Stl)).unwrap();
+    assert_eq!(got.faces, want_faces);
+    let got_positions = got.positions.expect("STL has positions");
+    assert_eq!(got_positions.len(), want_positions.len());
+    for (g, w) in got_positions.iter().zip(&want_positions) {
+        assert_eq!(g.map(f64::to_bits), w.map(f64::to_bits));
+    }
+    let streamed = contractible::io::read_tri_mesh_from(Trickle::new(&bytes), Format::Stl).unwrap();
+    assert_eq!(streamed.faces, want_faces);
+}
