@@ -323,11 +323,16 @@ impl PolyMesh {
                 at,
             ));
         }
-        let faces = self
-            .corners
-            .chunks_exact(3)
-            .map(|c| [c[0], c[1], c[2]])
-            .collect();
+        // Every face is a triangle, so the corner list read three at a time is the face
+        // list: its allocation is reused when its capacity is a whole number of faces
+        // (after the readers' exact reservations, or once shrunk), which saves writing a
+        // second copy of the largest array; otherwise it is copied.
+        let mut corners = self.corners;
+        if corners.capacity() % 3 != 0 {
+            corners.shrink_to_fit();
+        }
+        let faces = bytemuck::allocation::try_cast_vec::<u32, [u32; 3]>(corners)
+            .unwrap_or_else(|(_, c)| c.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect());
         Ok(Mesh {
             vertex_count: self.vertex_count,
             positions: self.positions,
@@ -492,6 +497,29 @@ impl From<TriMesh> for PolyMesh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A triangle-only polygon mesh becomes the triangle mesh of its faces in order,
+    /// whatever capacity its corner list grew to (reused or copied).
+    #[test]
+    fn triangles_become_the_face_list_whatever_the_corner_capacity() {
+        for faces in 0..40u32 {
+            for reserve in [0, faces as usize, faces as usize + 1] {
+                let mut m = PolyMesh::new(faces as usize + 2, None, false, false);
+                m.reserve(reserve);
+                let want: Vec<[u32; 3]> = (0..faces).map(|i| [i, i + 1, i + 2]).collect();
+                for f in &want {
+                    m.push_face(f, Location::Unknown).expect("a triangle");
+                }
+                let exact = m.corners.capacity() == 3 * faces as usize && faces > 0;
+                let before = m.corners.as_ptr() as usize;
+                let t = m.into_tri_mesh().expect("triangles only");
+                assert_eq!(t.faces, want, "{faces} faces, {reserve} reserved");
+                if exact {
+                    assert_eq!(t.faces.as_ptr() as usize, before, "an exact list is reused");
+                }
+            }
+        }
+    }
 
     #[test]
     fn quads_are_cut_along_the_shorter_diagonal_and_polygons_fanned() {
