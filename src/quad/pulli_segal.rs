@@ -464,6 +464,49 @@ mod tests {
         }
     }
 
+    /// The state before PS's first step on the octahedron, set 0 in id order.
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    fn first_state(tri: &Triangulation) -> State<'_> {
+        let cap = tri.face_capacity();
+        let mut st = State {
+            tri,
+            pairing: Pairing::new(cap),
+            sets: Sets::new(cap),
+            rules: Rules::CHOSEN,
+        };
+        for f in tri.faces() {
+            let x = &mut st.sets.slot[f.index()];
+            (x.free, x.set) = (3, 0);
+        }
+        st.sets.zero = tri.faces().map(|f| f.0).collect();
+        st
+    }
+
+    /// The step check (a gated hook) passes on the real first state and fails on each
+    /// corruption: a face in the wrong set, and a step from a set below a non-empty one.
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    #[test]
+    fn the_step_check_catches_a_wrong_set_and_a_wrong_set_order() {
+        use crate::spec::testing::assert_fails;
+        let t = from_mesh(&octahedron());
+        let f = FaceId(0);
+        let far = t
+            .faces()
+            .find(|&g| g != f && !t.face_neighbours(f).contains(&g))
+            .expect("the octahedron has faces not adjacent to face 0");
+        first_state(&t).check_step(f);
+
+        let mut st = first_state(&t);
+        st.sets.remove(f.0);
+        st.sets.insert(f.0, 3, false);
+        assert_fails("PS priority of", || st.check_step(f));
+
+        let mut st = first_state(&t);
+        st.sets.remove(far.0);
+        st.sets.insert(far.0, 1, false);
+        assert_fails("a higher set is not empty", || st.check_step(f));
+    }
+
     #[test]
     fn sets_are_lists_and_set_zero_a_queue() {
         let mut s = Sets::new(8);
