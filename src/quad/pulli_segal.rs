@@ -272,7 +272,27 @@ struct State<'a> {
     rules: Rules,
 }
 
-impl State<'_> {
+impl<'a> State<'a> {
+    /// The state before the first step: nothing paired, every live face at three free
+    /// edges in set 0, which lists the faces in `order` from the front.
+    fn new(tri: &'a Triangulation, order: Vec<FaceId>, rules: Rules) -> Self {
+        let cap = tri.face_capacity();
+        let mut sets = Sets::new(cap);
+        // The records are written in id order (sequential); the order itself is set
+        // 0's array.
+        for f in tri.faces() {
+            let x = &mut sets.slot[f.index()];
+            (x.free, x.set) = (3, 0);
+        }
+        sets.zero = order.into_iter().map(|f| f.0).collect();
+        State {
+            tri,
+            pairing: Pairing::new(cap),
+            sets,
+            rules,
+        }
+    }
+
     /// The priority of the unpaired face `f` by the paper's definition, from the
     /// maintained counts; `None` if it has no free edge.
     fn priority(&self, f: FaceId) -> Option<u8> {
@@ -405,22 +425,9 @@ impl State<'_> {
 
 /// PS under `rules`.
 fn run(tri: &Triangulation, options: &Options, rules: Rules) -> Pairing {
-    let cap = tri.face_capacity();
     let mut order: Vec<FaceId> = tri.faces().collect();
     Rng::new(options.seed).shuffle(&mut order);
-    let mut st = State {
-        tri,
-        pairing: Pairing::new(cap),
-        sets: Sets::new(cap),
-        rules,
-    };
-    // Set 0 lists the shuffled faces from the front. The records are written in id
-    // order (sequential), the order itself is set 0's array.
-    for f in tri.faces() {
-        let x = &mut st.sets.slot[f.index()];
-        (x.free, x.set) = (3, 0);
-    }
-    st.sets.zero = order.into_iter().map(|f| f.0).collect();
+    let mut st = State::new(tri, order, rules);
     while let Some(t) = st.sets.top() {
         let t = FaceId(t);
         st.check_step(t);
@@ -467,19 +474,7 @@ mod tests {
     /// The state before PS's first step on the octahedron, set 0 in id order.
     #[cfg(any(debug_assertions, feature = "invariants"))]
     fn first_state(tri: &Triangulation) -> State<'_> {
-        let cap = tri.face_capacity();
-        let mut st = State {
-            tri,
-            pairing: Pairing::new(cap),
-            sets: Sets::new(cap),
-            rules: Rules::CHOSEN,
-        };
-        for f in tri.faces() {
-            let x = &mut st.sets.slot[f.index()];
-            (x.free, x.set) = (3, 0);
-        }
-        st.sets.zero = tri.faces().map(|f| f.0).collect();
-        st
+        State::new(tri, tri.faces().collect(), Rules::CHOSEN)
     }
 
     /// The step check (a gated hook) passes on real states and fails on each corruption:
@@ -491,10 +486,7 @@ mod tests {
         use crate::spec::testing::assert_fails;
         let t = from_mesh(&octahedron());
         let f = FaceId(0);
-        let far = t
-            .faces()
-            .find(|&g| g != f && !t.face_neighbours(f).contains(&g))
-            .expect("the octahedron has faces not adjacent to face 0");
+        let far = crate::quad::fixtures::face_not_adjacent_to(&t, f);
         first_state(&t).check_step(f);
 
         let mut st = first_state(&t);
