@@ -608,10 +608,7 @@ mod tests {
     fn a_pairing_of_non_adjacent_faces_is_refused() {
         let t = tri(&octahedron());
         let f = FaceId(0);
-        let far = t
-            .faces()
-            .find(|&g| g != f && !t.face_neighbours(f).contains(&g))
-            .expect("the octahedron has faces not adjacent to face 0");
+        let far = crate::quad::fixtures::face_not_adjacent_to(&t, f);
         let mut p = Pairing::new(t.face_capacity());
         p.pair(f, far);
         complete(&t, &mut p).expect("a pairing of the triangulation");

@@ -564,6 +564,20 @@ pub fn quad_mesh(tri: &Triangulation, pairing: &Pairing) -> Option<QuadMesh> {
     ))
 }
 
+/// Test fixtures shared by the pairing modules' unit tests.
+#[cfg(test)]
+pub(crate) mod fixtures {
+    use crate::core::{FaceId, Triangulation};
+
+    /// A live face of `t` other than `f` that shares no edge with it (it may share a
+    /// vertex): the partner of an invalid pair.
+    pub(crate) fn face_not_adjacent_to(t: &Triangulation, f: FaceId) -> FaceId {
+        t.faces()
+            .find(|&g| g != f && !t.face_neighbours(f).contains(&g))
+            .expect("a face sharing no edge with the given one")
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -748,14 +762,8 @@ mod tests {
     fn the_pairing_check_reports_every_kind_of_error() {
         let m = octahedron();
         let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("octahedron");
-        let (f, g) = (0..8)
-            .flat_map(|f| (f + 1..8).map(move |g| (f, g)))
-            .find(|&(f, g)| {
-                let shared = m.faces[f].iter().filter(|v| m.faces[g].contains(v)).count();
-                shared == 1
-            })
-            .map(|(f, g)| (FaceId(f as u32), FaceId(g as u32)))
-            .expect("two faces sharing only a vertex");
+        let f = FaceId(0);
+        let g = super::fixtures::face_not_adjacent_to(&t, f);
         // Two faces that share no edge.
         let mut p = Pairing::new(t.face_capacity());
         p.pair(f, g);

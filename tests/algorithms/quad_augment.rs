@@ -87,8 +87,9 @@ fn sparse(t: &Triangulation, seed: u64) -> Pairing {
     p
 }
 
-/// Completes `start` and checks the result independently; returns the counters.
-fn complete_checked(t: &Triangulation, start: &Pairing, label: &str) -> Completion {
+/// Completes `start` and checks the result independently; returns the counters and the
+/// completed pairing.
+fn complete_checked(t: &Triangulation, start: &Pairing, label: &str) -> (Completion, Pairing) {
     let mut p = start.clone();
     let c = complete(t, &mut p).expect("a closed triangulation");
     assert_perfect(t, &p, label);
@@ -105,7 +106,7 @@ fn complete_checked(t: &Triangulation, start: &Pairing, label: &str) -> Completi
         "{label}: counters differ"
     );
     assert!(again == p, "{label}: output differs between runs");
-    c
+    (c, p)
 }
 
 /// The starts used on every input: empty, two random greedy maximal, two random sparse.
@@ -168,7 +169,7 @@ fn medium_random_surfaces_are_completed_in_near_linear_work() {
             .expect("a random surface within the limits");
             for (name, start) in starts(&t, seed) {
                 let label = format!("{kind:?} seed {seed} F {} {name}", t.face_count());
-                let c = complete_checked(&t, &start, &label);
+                let (c, _) = complete_checked(&t, &start, &label);
                 // A few BFS sweeps (3 visits per face each) at most: the design's point.
                 let per_face = c.edge_visits as f64 / t.face_count() as f64;
                 assert!(
@@ -220,7 +221,7 @@ fn complete_every_component(mesh: &TriMesh, name: &str, totals: &mut (usize, u64
             assert_eq!(petgraph_matching_size(t), t.face_count() / 2, "{name}#{k}");
         }
         for (start_name, start) in starts(t, k as u64).into_iter().take(4) {
-            let c = complete_checked(t, &start, &format!("{name}#{k} {start_name}"));
+            let (c, _) = complete_checked(t, &start, &format!("{name}#{k} {start_name}"));
             if start_name == "greedy" {
                 totals.0 += t.face_count();
                 totals.1 += c.edge_visits;
@@ -300,7 +301,7 @@ fn the_matching_route_is_the_completion_from_empty() {
     .expect("a random surface within the limits");
     let start = matching::initial_pairing(&t);
     assert!(start.is_empty() && start.face_capacity() == t.face_capacity());
-    let c = complete_checked(&t, &start, "matching");
+    let (c, _) = complete_checked(&t, &start, "matching");
     assert_eq!(c.augmenting_paths, t.face_count() / 2);
 }
 
@@ -402,7 +403,7 @@ fn long_augmenting_paths_are_found() {
             steps += 1;
         }
         assert!(steps > 1_000 && !p.is_paired(a) && !p.is_paired(e));
-        let c = complete_checked(&t, &p, &format!("{kind:?} walk"));
+        let (c, _) = complete_checked(&t, &p, &format!("{kind:?} walk"));
         assert_eq!(c.augmenting_paths, 1);
     }
 }
@@ -430,7 +431,7 @@ fn sparse_ps_leftovers_are_completed_by_single_root_searches() {
             unpaired >= 32 && unpaired * 1000 <= t.face_count(),
             "{label}: {unpaired} leftovers are not sparse"
         );
-        let c = complete_checked(t, &start, &label);
+        let (c, _) = complete_checked(t, &start, &label);
         assert!(
             c.phases > 4,
             "{label}: {} searches, the sparse pass did not run",
@@ -521,7 +522,7 @@ fn a_single_root_search_past_its_budget_hands_the_leftovers_to_the_phases() {
             "{unpaired} leftovers on {} faces",
             t.face_count()
         );
-        let c = complete_checked(&t, &start, &format!("tube, segment {long} long"));
+        let (c, _) = complete_checked(&t, &start, &format!("tube, segment {long} long"));
         assert_eq!(c.augmenting_paths, 16);
         assert!(
             searches.contains(&c.phases),
@@ -610,9 +611,7 @@ fn the_linear_pass_pairs_and_counts_as_documented() {
                 continue;
             }
             let label = format!("seed {seed}, {removed} changes");
-            let c = complete_checked(&t, &start, &label);
-            let mut out = start.clone();
-            complete(&t, &mut out).expect("a closed triangulation");
+            let (c, out) = complete_checked(&t, &start, &label);
             assert!(out == expected, "{label}: not the rule's pairing");
             assert_eq!(c.phases, 0, "{label}: a search ran");
             assert_eq!(c.edge_visits, visits, "{label}: edge visits");
