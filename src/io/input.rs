@@ -19,7 +19,7 @@ use super::error::{Location, ReadError, ReadErrorKind as K};
 use super::text::is_space;
 
 /// Bytes requested from the reader at a time.
-const CHUNK: usize = 256 << 10;
+pub(crate) const CHUNK: usize = 256 << 10;
 
 /// Records reserved ahead when the input's length is unknown (compressed or piped input):
 /// enough that a large mesh's vectors double only a few times as it is read, few enough

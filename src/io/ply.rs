@@ -353,6 +353,105 @@ impl Value {
     }
 }
 
+/// The value of type `s` at the start of `b` (which holds at least its size).
+#[inline(always)]
+fn decode(b: &[u8], s: Scalar, big_endian: bool) -> Value {
+    macro_rules! num {
+        ($t:ty, $n:literal) => {{
+            let mut a = [0u8; $n];
+            a.copy_from_slice(&b[..$n]);
+            if big_endian {
+                <$t>::from_be_bytes(a)
+            } else {
+                <$t>::from_le_bytes(a)
+            }
+        }};
+    }
+    match s {
+        Scalar::I8 => Value::Int(i64::from(b[0] as i8)),
+        Scalar::U8 => Value::Int(i64::from(b[0])),
+        Scalar::I16 => Value::Int(i64::from(num!(i16, 2))),
+        Scalar::U16 => Value::Int(i64::from(num!(u16, 2))),
+        Scalar::I32 => Value::Int(i64::from(num!(i32, 4))),
+        Scalar::U32 => Value::Int(i64::from(num!(u32, 4))),
+        Scalar::F32 => Value::Float(f64::from(num!(f32, 4))),
+        Scalar::F64 => Value::Float(num!(f64, 8)),
+    }
+}
+
+/// The fixed record layout of a binary element, for [`Payload::batch`]: every
+/// property a scalar, except in faces one corner list, which has a fixed length when it
+/// holds 3 corners. Records of other shapes (polygons, other lists) and records with a
+/// problem go through the value-by-value decoder, which gives the located errors.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Layout {
+    /// A vertex record of `len` bytes, coordinate `c` at `coords[c]` (offset, type).
+    Vertex {
+        len: usize,
+        coords: [(usize, Scalar); 3],
+    },
+    /// A face record of `len` bytes when its list holds 3 corners: the count at
+    /// `count_at`, the corners from `items_at`.
+    Face {
+        len: usize,
+        count_at: usize,
+        count: Scalar,
+        items_at: usize,
+        item: Scalar,
+    },
+    /// A record of `len` bytes that nothing reads.
+    Skip { len: usize },
+}
+
+impl Layout {
+    /// The layout of `e`'s records when it is fixed (binary encodings only).
+    fn of(encoding: PlyEncoding, e: &Element) -> Option<Layout> {
+        if encoding == PlyEncoding::Ascii {
+            return None;
+        }
+        let mut at = 0;
+        let mut coords = [None; 3];
+        let mut list = None;
+        for p in &e.properties {
+            match (p.ty, p.role) {
+                (PropType::Scalar(s), Role::Coord(c)) => {
+                    coords[c] = Some((at, s));
+                    at += s.size();
+                }
+                (PropType::Scalar(s), _) => at += s.size(),
+                (PropType::List { count, item }, Role::Corners) => {
+                    list = Some((at, count, at + count.size(), item));
+                    at += count.size() + 3 * item.size();
+                }
+                (PropType::List { .. }, _) => return None,
+            }
+        }
+        let len = at;
+        Some(match (e.kind, list) {
+            (ElementKind::Vertex, None) => Layout::Vertex {
+                len,
+                coords: [coords[0]?, coords[1]?, coords[2]?],
+            },
+            (ElementKind::Face, Some((count_at, count, items_at, item))) => Layout::Face {
+                len,
+                count_at,
+                count,
+                items_at,
+                item,
+            },
+            (ElementKind::Other, None) if len > 0 => Layout::Skip { len },
+            _ => return None,
+        })
+    }
+
+    /// Bytes per record.
+    fn len(&self) -> usize {
+        match *self {
+            Layout::Vertex { len, .. } | Layout::Face { len, .. } | Layout::Skip { len } => len,
+        }
+    }
+}
+
 /// Source of payload values, positioned for error messages.
 trait Payload {
     /// Reads one value of type `s`; `what` describes it for truncation errors.
@@ -364,6 +463,19 @@ trait Payload {
     /// How many of `declared` records of at least `min_bytes` each to reserve room for
     /// ([`Input::reserve_for`]).
     fn reserve_for(&self, declared: u64, min_bytes: u64) -> usize;
+    /// Decodes up to `max` records of `layout` from the bytes at hand, appending
+    /// vertices to `positions` and faces to `mesh` exactly as the value-by-value path
+    /// would; stops before the first record that is incomplete, of another shape or
+    /// wrong (never consuming it), and returns how many it decoded. Text payloads
+    /// decode none.
+    fn batch(
+        &mut self,
+        layout: &Layout,
+        max: u64,
+        nv: usize,
+        positions: &mut Vec<[f64; 3]>,
+        mesh: &mut PolyMesh,
+    ) -> Result<u64, ReadError>;
 }
 
 struct Binary<'i, 'r> {
@@ -383,25 +495,80 @@ impl Payload for Binary<'_, '_> {
                 Location::ByteOffset(at),
             ));
         }
-        let mut b = [0u8; 8];
-        b[..size].copy_from_slice(raw);
+        let v = decode(raw, s, self.big_endian);
         self.input.consume(size);
-        if self.big_endian {
-            b[..size].reverse();
-        }
         self.last = at;
-        // `b` is now little endian.
-        let v = match s {
-            Scalar::I8 => Value::Int(i64::from(b[0] as i8)),
-            Scalar::U8 => Value::Int(i64::from(b[0])),
-            Scalar::I16 => Value::Int(i64::from(i16::from_le_bytes([b[0], b[1]]))),
-            Scalar::U16 => Value::Int(i64::from(u16::from_le_bytes([b[0], b[1]]))),
-            Scalar::I32 => Value::Int(i64::from(i32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
-            Scalar::U32 => Value::Int(i64::from(u32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
-            Scalar::F32 => Value::Float(f64::from(f32::from_le_bytes([b[0], b[1], b[2], b[3]]))),
-            Scalar::F64 => Value::Float(f64::from_le_bytes(b)),
-        };
         Ok(v)
+    }
+
+    fn batch(
+        &mut self,
+        layout: &Layout,
+        max: u64,
+        nv: usize,
+        positions: &mut Vec<[f64; 3]>,
+        mesh: &mut PolyMesh,
+    ) -> Result<u64, ReadError> {
+        let big = self.big_endian;
+        let base = self.input.offset();
+        let buf = self.input.fill_at_least(layout.len())?;
+        let (mut at, mut n) = (0usize, 0u64);
+        match *layout {
+            Layout::Vertex { len, coords } => {
+                while n < max {
+                    let Some(r) = buf.get(at..at + len) else {
+                        break;
+                    };
+                    let xyz = coords.map(|(o, s)| decode(&r[o..], s, big).as_f64());
+                    if !xyz.iter().all(|x| x.is_finite()) {
+                        break;
+                    }
+                    positions.push(xyz);
+                    (at, n) = (at + len, n + 1);
+                }
+            }
+            Layout::Face {
+                len,
+                count_at,
+                count,
+                items_at,
+                item,
+            } => {
+                let step = item.size();
+                while n < max {
+                    let Some(r) = buf.get(at..at + len) else {
+                        break;
+                    };
+                    if !matches!(decode(&r[count_at..], count, big), Value::Int(3)) {
+                        break;
+                    }
+                    let mut face = [0u32; 3];
+                    let mut valid = true;
+                    for (k, slot) in face.iter_mut().enumerate() {
+                        let v = match decode(&r[items_at + k * step..], item, big) {
+                            Value::Int(v) => u32::try_from(v).ok().filter(|&v| (v as usize) < nv),
+                            Value::Float(_) => None,
+                        };
+                        valid &= v.is_some();
+                        *slot = v.unwrap_or(0);
+                    }
+                    if !valid {
+                        break;
+                    }
+                    // Where the value-by-value path would locate the face: its last
+                    // corner.
+                    let last = base + (at + items_at + 2 * step) as u64;
+                    mesh.push_face(&face, Location::ByteOffset(last))?;
+                    (at, n) = (at + len, n + 1);
+                }
+            }
+            Layout::Skip { len } => {
+                n = max.min((buf.len() / len) as u64);
+                at = n as usize * len;
+            }
+        }
+        self.input.consume(at);
+        Ok(n)
     }
 
     fn last(&self) -> Location {
@@ -480,6 +647,17 @@ impl Payload for Ascii<'_, '_> {
         self.input.reserve_for(declared, min_bytes)
     }
 
+    fn batch(
+        &mut self,
+        _: &Layout,
+        _: u64,
+        _: usize,
+        _: &mut Vec<[f64; 3]>,
+        _: &mut PolyMesh,
+    ) -> Result<u64, ReadError> {
+        Ok(0)
+    }
+
     fn finish(&mut self) -> Result<(), ReadError> {
         match self.input.next_token()? {
             None => Ok(()),
@@ -490,12 +668,18 @@ impl Payload for Ascii<'_, '_> {
 
 /// Parses PLY (ascii or binary) into a polygon mesh; see the module docs.
 pub(crate) fn parse_ply(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
+    parse_ply_with(input, true)
+}
+
+/// [`parse_ply`], with or without the batch decoder of fixed binary layouts (the tests
+/// compare the two).
+fn parse_ply_with(input: &mut Input<'_>, batched: bool) -> Result<PolyMesh, ReadError> {
     let header = parse_header(input)?;
     match header.encoding {
         PlyEncoding::Ascii => {
             let line = header.lines + 1;
             let mut p = Ascii { input, line };
-            read_payload(&header, &mut p)
+            read_payload(&header, &mut p, batched)
         }
         enc => {
             let last = input.offset();
@@ -504,12 +688,19 @@ pub(crate) fn parse_ply(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
                 last,
                 big_endian: enc == PlyEncoding::BinaryBigEndian,
             };
-            read_payload(&header, &mut p)
+            read_payload(&header, &mut p, batched)
         }
     }
 }
 
-fn read_payload(header: &Header, src: &mut impl Payload) -> Result<PolyMesh, ReadError> {
+/// Reads the elements' records in header order: a binary element of fixed layout
+/// in batches straight from the buffer when `batched` ([`Layout`]), every other record
+/// (and every record when not `batched`) value by value.
+fn read_payload(
+    header: &Header,
+    src: &mut impl Payload,
+    batched: bool,
+) -> Result<PolyMesh, ReadError> {
     let nv = header
         .elements
         .iter()
@@ -536,7 +727,19 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<PolyMesh, Rea
             ElementKind::Face => mesh.reserve(cap),
             ElementKind::Other => {}
         }
-        for i in 0..e.count {
+        let layout = if batched {
+            Layout::of(header.encoding, e)
+        } else {
+            None
+        };
+        let mut i = 0;
+        while i < e.count {
+            if let Some(layout) = &layout {
+                i += src.batch(layout, e.count - i, nv, &mut positions, &mut mesh)?;
+                if i == e.count {
+                    break;
+                }
+            }
             let mut xyz = [0.0; 3];
             let mut corners: Option<Location> = None;
             for p in &e.properties {
@@ -627,6 +830,7 @@ fn read_payload(header: &Header, src: &mut impl Payload) -> Result<PolyMesh, Rea
                 }
                 ElementKind::Other => {}
             }
+            i += 1;
         }
     }
     src.finish()?;
@@ -702,4 +906,224 @@ pub(crate) fn write_ply<const N: usize>(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::Rng;
+
+    const TYPES: [(Scalar, &str); 8] = [
+        (Scalar::I8, "char"),
+        (Scalar::U8, "uchar"),
+        (Scalar::I16, "short"),
+        (Scalar::U16, "ushort"),
+        (Scalar::I32, "int"),
+        (Scalar::U32, "uint"),
+        (Scalar::F32, "float"),
+        (Scalar::F64, "double"),
+    ];
+
+    /// Appends `v` encoded as `s` (wrapping to the type's width, so that out-of-range
+    /// and negative values occur for the small types).
+    fn put(out: &mut Vec<u8>, s: Scalar, v: f64, big: bool) {
+        let i = v as i64;
+        macro_rules! b {
+            ($x:expr) => {
+                if big {
+                    out.extend_from_slice(&$x.to_be_bytes())
+                } else {
+                    out.extend_from_slice(&$x.to_le_bytes())
+                }
+            };
+        }
+        match s {
+            Scalar::I8 => b!(i as i8),
+            Scalar::U8 => b!(i as u8),
+            Scalar::I16 => b!(i as i16),
+            Scalar::U16 => b!(i as u16),
+            Scalar::I32 => b!(i as i32),
+            Scalar::U32 => b!(i as u32),
+            Scalar::F32 => b!(v as f32),
+            Scalar::F64 => b!(v),
+        }
+    }
+
+    fn any_type(rng: &mut Rng) -> (Scalar, &'static str) {
+        TYPES[rng.index(TYPES.len())]
+    }
+
+    fn int_type(rng: &mut Rng) -> (Scalar, &'static str) {
+        TYPES[rng.index(6)]
+    }
+
+    /// A random binary PLY file: coordinates and corners of random types among extra
+    /// scalar properties, an optional element nobody reads (with or without a list),
+    /// mostly triangles with some polygons and some faulty records (non-finite
+    /// coordinates, bad counts, indices out of range), sometimes truncated or followed
+    /// by bytes.
+    fn random_ply(rng: &mut Rng, records: usize) -> Vec<u8> {
+        let big = rng.chance(1, 2);
+        let nv = 1 + rng.index(records);
+        let nf = rng.index(2 * records);
+        let rare = |rng: &mut Rng| rng.chance(1, 1 + 4 * records as u64);
+        let mut head = format!(
+            "ply\nformat {} 1.0\n",
+            if big {
+                "binary_big_endian"
+            } else {
+                "binary_little_endian"
+            }
+        );
+        let mut body = Vec::new();
+        // An element nobody reads, before or after the others.
+        let other_first = rng.chance(1, 2);
+        // (record count, scalar properties, whether a list follows them)
+        type Extra = (u64, Vec<(Scalar, &'static str)>, bool);
+        let other: Option<Extra> = rng.chance(1, 2).then(|| {
+            let props = (0..1 + rng.index(3)).map(|_| any_type(rng)).collect();
+            (rng.below(5), props, rng.chance(1, 3))
+        });
+        let mut other_head = String::new();
+        let mut other_body = Vec::new();
+        if let Some((count, props, list)) = &other {
+            other_head += &format!("element extra {count}\n");
+            for (k, (_, name)) in props.iter().enumerate() {
+                other_head += &format!("property {name} p{k}\n");
+            }
+            if *list {
+                other_head += "property list uchar int items\n";
+            }
+            for _ in 0..*count {
+                for &(s, _) in props {
+                    put(&mut other_body, s, rng.below(300) as f64, big);
+                }
+                if *list {
+                    let n = rng.below(3);
+                    put(&mut other_body, Scalar::U8, n as f64, big);
+                    for _ in 0..n {
+                        put(&mut other_body, Scalar::I32, 7.0, big);
+                    }
+                }
+            }
+        }
+        if other_first {
+            head += &other_head;
+            body.extend_from_slice(&other_body);
+        }
+        // Vertices: x, y, z in a random order among 0-2 extra scalars.
+        head += &format!("element vertex {nv}\n");
+        let mut vprops: Vec<(Option<usize>, (Scalar, &str))> = Vec::new();
+        for c in 0..3 {
+            vprops.push((Some(c), any_type(rng)));
+        }
+        for _ in 0..rng.index(3) {
+            vprops.push((None, any_type(rng)));
+        }
+        rng.shuffle(&mut vprops);
+        for (k, (c, (_, name))) in vprops.iter().enumerate() {
+            match c {
+                Some(c) => head += &format!("property {name} {}\n", ["x", "y", "z"][*c]),
+                None => head += &format!("property {name} v{k}\n"),
+            }
+        }
+        for _ in 0..nv {
+            for &(c, (s, _)) in &vprops {
+                let v = if c.is_some() && rare(rng) {
+                    [f64::NAN, f64::INFINITY, f64::NEG_INFINITY][rng.index(3)]
+                } else {
+                    rng.below(200) as f64 - 100.0 + 0.25 * rng.below(4) as f64
+                };
+                put(&mut body, s, v, big);
+            }
+        }
+        // Faces: the corner list among 0-2 extra scalars.
+        head += &format!("element face {nf}\n");
+        let (cs, cname) = int_type(rng);
+        let (is, iname) = int_type(rng);
+        let before: Vec<_> = (0..rng.index(2)).map(|_| any_type(rng)).collect();
+        let after: Vec<_> = (0..rng.index(2)).map(|_| any_type(rng)).collect();
+        for (k, (_, name)) in before.iter().enumerate() {
+            head += &format!("property {name} b{k}\n");
+        }
+        let list_name = ["vertex_indices", "vertex_index"][rng.index(2)];
+        head += &format!("property list {cname} {iname} {list_name}\n");
+        for (k, (_, name)) in after.iter().enumerate() {
+            head += &format!("property {name} a{k}\n");
+        }
+        for _ in 0..nf {
+            for &(s, _) in &before {
+                put(&mut body, s, rng.below(100) as f64, big);
+            }
+            let n: i64 = if rare(rng) {
+                [-1, 0, 2, 300][rng.index(4)]
+            } else if rng.chance(1, 10) {
+                4 + rng.below(3) as i64
+            } else {
+                3
+            };
+            put(&mut body, cs, n as f64, big);
+            for _ in 0..n.clamp(0, 6) {
+                let v = if rare(rng) {
+                    [-1, nv as i64, 70_000][rng.index(3)]
+                } else {
+                    rng.index(nv) as i64
+                };
+                put(&mut body, is, v as f64, big);
+            }
+            for &(s, _) in &after {
+                put(&mut body, s, rng.below(100) as f64, big);
+            }
+        }
+        if !other_first {
+            head += &other_head;
+            body.extend_from_slice(&other_body);
+        }
+        head += "end_header\n";
+        let mut file = head.into_bytes();
+        file.extend_from_slice(&body);
+        if rng.chance(1, 8) {
+            let cut = rng.index(file.len());
+            file.truncate(cut);
+        } else if rng.chance(1, 8) {
+            file.extend_from_slice([&b" \n"[..], b"x", &[0, 1]][rng.index(3)]);
+        }
+        file
+    }
+
+    fn read(file: &[u8], batched: bool) -> Result<PolyMesh, String> {
+        parse_ply_with(&mut Input::from_slice(file), batched).map_err(|e| format!("{e:?}"))
+    }
+
+    /// The batch decoder gives what the value-by-value decoder gives, meshes and located
+    /// errors alike, on small files of every layout.
+    #[test]
+    fn batches_decode_as_value_by_value_on_random_files() {
+        let (mut ok, mut err) = (0, 0);
+        for seed in 0..3000 {
+            let file = random_ply(&mut Rng::new(seed), 1 + seed as usize % 12);
+            let (fast, slow) = (read(&file, true), read(&file, false));
+            assert_eq!(fast, slow, "seed {seed}");
+            if fast.is_ok() {
+                ok += 1
+            } else {
+                err += 1
+            }
+        }
+        assert!(ok > 1000 && err > 500, "{ok} read, {err} refused");
+    }
+
+    /// As above on files of several buffer lengths (the batches stop and resume at each
+    /// refill), with a problem, when there is one, far from the start.
+    #[test]
+    fn batches_decode_as_value_by_value_across_buffer_refills() {
+        let mut long = 0;
+        for seed in 0..16 {
+            let file = random_ply(&mut Rng::new(10_000 + seed), 40_000);
+            long += usize::from(file.len() > 3 * super::super::input::CHUNK);
+            let (fast, slow) = (read(&file, true), read(&file, false));
+            assert_eq!(fast, slow, "seed {seed}");
+        }
+        assert!(long >= 8, "{long} files of more than three buffers");
+    }
 }
