@@ -112,14 +112,6 @@ pub enum ValidationError {
         /// How the star walk failed.
         problem: LinkProblem,
     },
-    /// Two faces have the same vertex set.
-    #[error("invalid triangulation: face {face} duplicates another face {vertices:?}")]
-    DuplicateFace {
-        /// The later face id.
-        face: FaceId,
-        /// The sorted vertex set.
-        vertices: [u32; 3],
-    },
     /// The dual graph is not connected.
     #[error(
         "invalid triangulation: not connected: {reached} of {faces} faces reachable from {from}"
@@ -222,10 +214,11 @@ macro_rules! ensure {
 impl Triangulation {
     /// Re-checks every structural invariant from scratch, sharing no code with the fast
     /// paths beyond the star walk: array shapes, live counts, the `opposite` involution
-    /// and its edge endpoints, degrees, each link a simple cycle of length ≥ 3, no
-    /// duplicate faces, every edge in exactly two faces, connectivity. O(V + F) time and
-    /// memory, no hashing: edges and faces are bucketed by their smallest vertex (a
-    /// counting sort), and repeated neighbours are found with per-vertex stamps. The
+    /// and its edge endpoints, every edge in exactly two faces, degrees, each link a
+    /// simple cycle of length ≥ 3 (which together exclude duplicate faces),
+    /// connectivity. O(V + F) time and memory, no hashing: edges are bucketed by their
+    /// smaller endpoint (a counting sort), and repeated neighbours are found with
+    /// per-vertex stamps. The
     /// error reported, when there are several, is deterministic (the first in the order
     /// of the checks, then of vertex or face ids). Used by the tests after every
     /// operation and by the command line's independent checks of large outputs.
@@ -340,14 +333,18 @@ impl Triangulation {
                 )
             );
         }
-        // Corners per vertex pair: bucket each live corner's edge `[a, b]` (`a < b`)
-        // under `a`, then count the `b`s of each bucket with stamped counters.
+        // Edges per vertex pair: the gluing is now known to pair the live corners two
+        // by two on equal endpoints, so each edge is bucketed once (from its smaller
+        // corner) as `[a, b]` (`a < b`) under `a`, and the `b`s of each bucket are
+        // counted with stamped counters. A pair's faces are twice its edges.
         let (start, others) = buckets(
             nv,
-            (0..nc).filter(|&c| self.corner_vertex[c] != NONE).map(|c| {
-                let [a, b] = endpoints(c);
-                (a, b)
-            }),
+            (0..nc)
+                .filter(|&c| self.corner_vertex[c] != NONE && c < self.opposite[c] as usize)
+                .map(|c| {
+                    let [a, b] = endpoints(c);
+                    (a, b)
+                }),
         );
         let mut stamp = vec![NONE; nv];
         let mut count = vec![0u32; nv];
@@ -359,7 +356,7 @@ impl Triangulation {
                     stamp[b] = a as u32;
                     count[b] = 0;
                 }
-                count[b] += 1;
+                count[b] += 2;
             }
             for &b in bucket {
                 let faces = count[b as usize];
@@ -431,40 +428,11 @@ impl Triangulation {
             }
         );
 
-        // Duplicate faces: bucket each live face's sorted vertices `[a, b, c]` under `a`
-        // (with its id), sort each bucket, and report the smallest face id that repeats
-        // an earlier face (the first duplicate in face order).
-        let keyed = |f: FaceId| {
-            let mut k = self.face_vertices(f).map(|v| v.0);
-            k.sort_unstable();
-            k
-        };
-        let (start, mut rest) = buckets(
-            nv,
-            (0..nc as u32 / 3)
-                .filter(|&f| self.corner_vertex[3 * f as usize] != NONE)
-                .map(|f| {
-                    let k = keyed(FaceId(f));
-                    (k[0], (u64::from(k[1]) << 32 | u64::from(k[2]), f))
-                }),
-        );
-        let mut duplicate: Option<u32> = None;
-        for a in 0..nv {
-            let bucket = &mut rest[start[a] as usize..start[a + 1] as usize];
-            bucket.sort_unstable();
-            for w in bucket.windows(2) {
-                if w[0].0 == w[1].0 {
-                    duplicate = Some(duplicate.map_or(w[1].1, |d| d.min(w[1].1)));
-                }
-            }
-        }
-        if let Some(f) = duplicate {
-            let face = FaceId(f);
-            return Err(ValidationError::DuplicateFace {
-                face,
-                vertices: keyed(face),
-            });
-        }
+        // No duplicate-face check is needed: two faces on the same three vertices
+        // would be the only two faces on each of their edges (checked above), so glued
+        // to each other along all three, and each of their vertices would have a link
+        // of two edges, which the link checks above refuse (degree below 3, or a star
+        // walk that closes before visiting all of a vertex's faces).
 
         // Connectivity over the dual graph.
         let first = self.faces().next().expect("live_faces > 0");
