@@ -1,5 +1,5 @@
-//! Core benchmarks: building a `Triangulation` from a face list and the `info`
-//! invariants, on the ~4.2M-triangle genus-0 paper brick B0 and on a subdivided real
+//! Core benchmarks: building a `Triangulation` from a face list, validating it from
+//! scratch, checking a tri-quad conversion, and the `info` invariants, on the ~4.2M-triangle genus-0 paper brick B0 and on a subdivided real
 //! mesh. Run: `cargo bench --bench core`. Divan reports medians.
 
 use contractible::gen::paper_family;
@@ -48,6 +48,31 @@ fn fresh_memory_b0(b: divan::Bencher) {
             let flags = vec![true; vertices];
             (per_corner, per_vertex, flags)
         });
+}
+
+/// `Triangulation::validate`, the independent from-scratch check, on B0.
+#[divan::bench(sample_count = 10)]
+fn validate_b0(b: divan::Bencher) {
+    let m = b0();
+    let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface");
+    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
+        .bench(|| t.validate().expect("valid"));
+}
+
+/// `task::verify_quadrangulation`, the independent check of a tri-quad conversion, on
+/// B0's conversions by PS (the triangulation unchanged) and LRS (flipped).
+#[divan::bench(args = ["ps", "lrs"], sample_count = 10)]
+fn verify_quad_b0(b: divan::Bencher, algo: &str) {
+    use contractible::quad::{convert, Algorithm, Options};
+    let m = b0();
+    let t = Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface");
+    let alg = match algo {
+        "ps" => Algorithm::PulliSegal,
+        _ => Algorithm::Lrs,
+    };
+    let q = convert(t.clone(), alg, &Options::default()).expect("converted");
+    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
+        .bench(|| assert!(contractible::task::verify_quadrangulation(&t, &q)));
 }
 
 /// `Surfaces::from_mesh` (validation + component split) on B0.
