@@ -362,6 +362,72 @@ mod tests {
         }
     }
 
+    /// The independent check accepts every algorithm's conversion, by its from-scratch
+    /// path too (LRS flips edges, so its triangulation is not the input's), and refuses
+    /// a conversion of another surface with the same counts, a corrupted triangulation,
+    /// and pairings that are not perfect or pair faces sharing no edge.
+    #[test]
+    fn the_quad_check_accepts_conversions_and_refuses_wrong_ones() {
+        use crate::gen::random::{random, RandomParams, SurfaceKind};
+        use crate::quad::{convert, fixtures::face_not_adjacent_to, Options};
+        let surface = |surface| {
+            random(&RandomParams {
+                surface,
+                min_faces: 200,
+                flip_percent: 50,
+                seed: 5,
+            })
+            .expect("a random surface")
+        };
+        let (torus, klein) = (
+            surface(SurfaceKind::Orientable(1)),
+            surface(SurfaceKind::NonOrientable(2)),
+        );
+        assert_eq!(
+            (torus.vertex_count(), torus.face_count()),
+            (klein.vertex_count(), klein.face_count())
+        );
+        let opts = Options { seed: 1 };
+        for algorithm in Algorithm::ALL {
+            let q = convert(torus.clone(), algorithm, &opts).expect("converted");
+            assert!(verify_quadrangulation(&torus, &q), "{algorithm}");
+        }
+        let lrs = convert(torus.clone(), Algorithm::Lrs, &opts).expect("converted");
+        assert!(lrs.tri != torus, "LRS flipped no edge on this input");
+
+        let other = convert(klein, Algorithm::PulliSegal, &opts).expect("converted");
+        assert!(!verify_quadrangulation(&torus, &other), "another surface");
+
+        let mut broken = lrs.clone();
+        broken.tri.degree[0] += 1;
+        assert!(
+            !verify_quadrangulation(&torus, &broken),
+            "a broken triangulation"
+        );
+
+        for q in [
+            &lrs,
+            &convert(torus.clone(), Algorithm::PulliSegal, &opts).expect(""),
+        ] {
+            let f = q.tri.faces().next().expect("a face");
+            let mut short = q.clone();
+            short.pairing.unpair(f);
+            assert!(!verify_quadrangulation(&torus, &short), "a pair missing");
+            let mut far = q.clone();
+            let g = face_not_adjacent_to(&q.tri, f);
+            let (f2, g2) = (
+                far.pairing.unpair(f).expect("paired"),
+                far.pairing.unpair(g).expect("paired"),
+            );
+            far.pairing.pair(f, g);
+            far.pairing.pair(f2, g2);
+            assert!(
+                !verify_quadrangulation(&torus, &far),
+                "faces sharing no edge"
+            );
+        }
+    }
+
     /// A component above ds-naive's limit is refused, located, before any work.
     #[test]
     fn ds_naive_refuses_large_components() {
