@@ -175,6 +175,16 @@ fn random_surfaces() {
                     assert!(again.pairing.pairs().eq(ex.pairing.pairs()), "{label}");
                 }
                 let c = ex.cases;
+                // Every split takes exactly one branch of Alg. 3.1.
+                assert_eq!(
+                    c.splits,
+                    c.line7 + c.degree3 + c.degree4 + c.degree4_flagged + c.degree_greater_than4,
+                    "{label}: branches"
+                );
+                // Flags are set only on the two edges a split creates, so no edge is
+                // flagged twice; each unflip clears one, and every flag left is flipped
+                // (the flips counted against the edge sets by `check`).
+                assert_eq!(ex.flips + c.unflips, c.flags_set, "{label}: flags");
                 total.splits += c.splits;
                 total.line7 += c.line7;
                 total.degree3 += c.degree3;
@@ -187,6 +197,19 @@ fn random_surfaces() {
         }
     }
     eprintln!("{total:?}");
+    // Every branch, and unflips, occur on these inputs (so the identities above are
+    // tested on each).
+    let t = total;
+    for (n, what) in [
+        (t.line7, "line 7"),
+        (t.degree3, "degree 3"),
+        (t.unflips, "unflips"),
+        (t.degree4, "degree 4"),
+        (t.degree4_flagged, "degree 4 flagged"),
+        (t.degree_greater_than4, "degree > 4"),
+    ] {
+        assert!(n > 0, "{what} never ran: {total:?}");
+    }
 }
 
 /// Runs `variant` on the input it is pinned to (the first input of
