@@ -371,6 +371,16 @@ mod tests {
         assert_fails("L2 (Prop. 3.3): a flip is [v_ij, v_ik]", || {
             after_split(&ex, &bad, 1)
         });
+        // An edge at v whose other end was not split from u: [u, v] itself.
+        let u = s.rec.u;
+        let (uv, _) = *all_edges(&ex)
+            .iter()
+            .find(|(_, ab)| ab.contains(&u) && ab.contains(&v))
+            .expect("the split edge [u, v]");
+        bad.flagged = [Some(uv), None];
+        assert_fails("L2 (Prop. 3.3): a flip is [v_ij, v_ik]", || {
+            after_split(&ex, &bad, 1)
+        });
     }
 
     #[cfg(any(debug_assertions, feature = "invariants"))]
