@@ -611,3 +611,88 @@ fn pair_edges(
     }
     (p, error)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::gen::{random, RandomParams, SurfaceKind};
+
+    /// The branch of Alg. 3.1 a split took, re-derived from the paper's rule on the
+    /// state after the split: the split changes none of what the rule reads (it inserts
+    /// `[u, v]` or `[v, z]`, flags `[v, x]` or `[v, y]`, and unflags only at degree 3,
+    /// where the flags take no part in the choice).
+    fn branch(ex: &Expander, rec: &ContractionRecord) -> &'static str {
+        let a = ex.around(rec);
+        let (ux_in, uy_in) = (ex.in_m[a.ux.index()], ex.in_m[a.uy.index()]);
+        if !ux_in && !uy_in {
+            "line 7"
+        } else if a.degree == 3 {
+            "degree 3"
+        } else if a.degree == 4 {
+            if ex.flipped[a.x_far.index()] || ex.flipped[a.y_far.index()] {
+                "degree 4 flagged"
+            } else {
+                "degree 4"
+            }
+        } else {
+            "degree > 4"
+        }
+    }
+
+    /// Each split is counted under the branch the paper's rule selects, and the flags
+    /// and unflips it counts are those it made; every branch occurs, a degree-4 split
+    /// with exactly one of `[x, z]`, `[y, z]` flagged included.
+    #[test]
+    fn every_split_is_counted_under_the_branch_the_rule_selects() {
+        let mut seen: std::collections::BTreeMap<&str, usize> = Default::default();
+        let mut one_far_flag = 0;
+        for seed in 0..8 {
+            let t = random(&RandomParams {
+                surface: SurfaceKind::Orientable(seed as u32 % 3),
+                min_faces: 200,
+                flip_percent: 30,
+                seed,
+            })
+            .expect("a random surface within the limits");
+            let mut ex = Expander::new(t, Variant::SPECIFIED);
+            let mut before = ex.cases;
+            while let Some(s) = ex.step() {
+                let after = ex.cases;
+                let name = branch(&ex, &s.rec);
+                let counted = [
+                    ("line 7", after.line7 - before.line7),
+                    ("degree 3", after.degree3 - before.degree3),
+                    ("degree 4", after.degree4 - before.degree4),
+                    (
+                        "degree 4 flagged",
+                        after.degree4_flagged - before.degree4_flagged,
+                    ),
+                    (
+                        "degree > 4",
+                        after.degree_greater_than4 - before.degree_greater_than4,
+                    ),
+                ];
+                for (what, n) in counted {
+                    assert_eq!(
+                        n,
+                        usize::from(what == name),
+                        "seed {seed}: {what} for {name}"
+                    );
+                }
+                assert_eq!(after.splits - before.splits, 1, "seed {seed}");
+                let flags = s.flagged.iter().flatten().count();
+                assert_eq!(after.flags_set - before.flags_set, flags, "seed {seed}");
+                let a = ex.around(&s.rec);
+                if name == "degree 4 flagged"
+                    && ex.flipped[a.x_far.index()] != ex.flipped[a.y_far.index()]
+                {
+                    one_far_flag += 1;
+                }
+                *seen.entry(name).or_default() += 1;
+                before = after;
+            }
+        }
+        assert_eq!(seen.len(), 5, "{seen:?}");
+        assert!(one_far_flag > 0, "{seen:?}");
+    }
+}
