@@ -32,7 +32,7 @@ use serde_json::Value;
 use crate::common;
 
 /// The quad vector files and their number of vectors.
-const GROUPS: [(&str, usize); 2] = [("quad-surfaces-upto-8-vertices", 57), ("quad-generated", 7)];
+const GROUPS: [(&str, usize); 2] = [("quad-surfaces-upto-8-vertices", 57), ("quad-generated", 8)];
 
 /// Seeds of the exhaustive twins.
 const TWIN_SEEDS: std::ops::Range<u64> = 0..5;

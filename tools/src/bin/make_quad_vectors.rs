@@ -3,7 +3,7 @@
 //!
 //! `cargo run -p contractible-tools --bin make_quad_vectors [OUT_DIR]` (default
 //! `spec/vectors` of this checkout). Reads
-//! `tests/data/irreducible/surfaces-upto-8-vertices.txt`, generates seven small random
+//! `tests/data/irreducible/surfaces-upto-8-vertices.txt`, generates eight small random
 //! surfaces, and runs every tri-quad algorithm (`quad::Algorithm::ALL`) with seeds 0 and
 //! 1 on each: the initial pairing (`quad::{lrs, pulli_segal, greedy, matching}::
 //! initial_pairing`, or Frink's perfect matching with the algorithm's strategy), then the
@@ -26,8 +26,10 @@ const SEEDS: [u64; 2] = [0, 1];
 /// `Algorithm::ALL` (lrs, ps, sg, matching, ds, bbdl, frink-lct, ds-naive).
 const ALGORITHMS: [Algorithm; 8] = Algorithm::ALL;
 
-/// The generated random surfaces: (surface, min_faces, flip_percent, seed).
-const RANDOM: [(SurfaceKind, usize, u32, u64); 7] = [
+/// The generated random surfaces: (surface, min_faces, flip_percent, seed). The last
+/// one makes LRS take every branch of Alg. 3.1–3.4, a degree-4 split with exactly one
+/// of `[x, z]`, `[y, z]` flagged (Alg. 3.4, not 3.3) included.
+const RANDOM: [(SurfaceKind, usize, u32, u64); 8] = [
     (SurfaceKind::Orientable(0), 40, 30, 11),
     (SurfaceKind::Orientable(1), 60, 30, 12),
     (SurfaceKind::Orientable(2), 80, 30, 13),
@@ -35,6 +37,7 @@ const RANDOM: [(SurfaceKind, usize, u32, u64); 7] = [
     (SurfaceKind::NonOrientable(1), 40, 30, 15),
     (SurfaceKind::NonOrientable(2), 60, 30, 16),
     (SurfaceKind::NonOrientable(3), 80, 30, 17),
+    (SurfaceKind::Orientable(0), 40, 30, 0),
 ];
 
 struct Input {
