@@ -429,6 +429,33 @@ mod tests {
         assert_fails("L3 (Prop. 3.3 (ii)): the inserted edge is [u_l", || {
             after_split(&ex, &bad, new_flags(&bad))
         });
+        // An edge away from v with one end split from u and the other u itself (so
+        // neither end is processed before u): not [u_l or V_l, V_i].
+        let u = s.rec.u;
+        let (half, _) = *all_edges(&ex)
+            .iter()
+            .find(|(e, [a, b])| {
+                let split_from_u = |w: &VertexId| *w != v && ex.expanded_from[w.index()] == u.0;
+                !ex.flipped[e.index()]
+                    && ((*a == u && split_from_u(b)) || (*b == u && split_from_u(a)))
+            })
+            .expect("an unflagged edge from u to a vertex split from it, other than v");
+        bad.inserted = half;
+        assert_fails("L3 (Prop. 3.3 (ii)): the inserted edge is [u_l", || {
+            after_split(&ex, &bad, new_flags(&bad))
+        });
+    }
+
+    /// The last L7 check runs on the final state: it passes there, and fails once `M`
+    /// is emptied.
+    #[cfg(any(debug_assertions, feature = "invariants"))]
+    #[test]
+    fn l7_at_the_end_checks_the_final_state() {
+        let (mut ex, _) = state();
+        while ex.step().is_some() {}
+        at_end(&ex);
+        ex.in_m.fill(false);
+        assert_fails("L7", || at_end(&ex));
     }
 
     #[cfg(any(debug_assertions, feature = "invariants"))]
