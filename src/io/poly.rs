@@ -15,8 +15,9 @@ use crate::mesh::{Mesh, TriMesh};
 /// Guarantees (for meshes from the readers): every corner is `< vertex_count`; every face
 /// has at least 3 corners; `positions`, when present, has `vertex_count` entries;
 /// `face_line(i)` is the 1-based line of face `i` for text formats (OFF, OBJ, ascii PLY).
-/// Faces are stored flat (one `u32` per corner plus one per face), so a triangle file
-/// costs about a third more than its [`TriMesh`].
+/// Faces are stored flat: one `u32` per corner, and, once a face has more than 3
+/// corners, one per face for where it ends; so a triangle file costs what its
+/// [`TriMesh`] does.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PolyMesh {
     /// Number of vertices.
@@ -25,7 +26,9 @@ pub struct PolyMesh {
     pub positions: Option<Vec<[f64; 3]>>,
     /// Corners of all faces, face after face.
     corners: Vec<u32>,
-    /// `ends[i]` is one past the last corner of face `i`.
+    /// `ends[i]` is one past the last corner of face `i`; empty while every face is a
+    /// triangle (face `i` is then `corners[3i..3i + 3]`), which saves 4 bytes a face
+    /// on the meshes nearly every file holds.
     ends: Vec<u32>,
     /// The 1-based file line of each face (text formats only).
     lines: Option<Vec<u32>>,
@@ -215,7 +218,9 @@ impl PolyMesh {
 
     /// Reserves room for `faces` more faces (of 3 corners).
     pub(crate) fn reserve(&mut self, faces: usize) {
-        self.ends.reserve(faces);
+        if self.first_polygon.is_some() {
+            self.ends.reserve(faces);
+        }
         self.corners.reserve(faces.saturating_mul(3));
         if let Some(l) = &mut self.lines {
             l.reserve(faces);
@@ -225,7 +230,7 @@ impl PolyMesh {
     /// Appends a face read at `at` (its line when text). Faces with fewer than 3 corners
     /// are refused (`NonTriangleFace`); more corners than `u32` can count are refused.
     pub(crate) fn push_face(&mut self, corners: &[u32], at: Location) -> Result<(), ReadError> {
-        let face = self.ends.len();
+        let face = self.face_count();
         if corners.len() < 3 {
             return Err(ReadError::new(
                 K::NonTriangleFace {
@@ -237,6 +242,9 @@ impl PolyMesh {
         }
         if corners.len() > 3 && self.first_polygon.is_none() {
             self.first_polygon = Some((face, corners.len() as u64, at));
+            // The faces so far are triangles: their ends, written out now. They fit
+            // `u32`, as the corner count does.
+            self.ends = (1..=face).map(|i| (3 * i) as u32).collect();
         }
         self.corners.extend_from_slice(corners);
         let end = u32::try_from(self.corners.len()).map_err(|_| {
@@ -248,7 +256,9 @@ impl PolyMesh {
                 at,
             )
         })?;
-        self.ends.push(end);
+        if self.first_polygon.is_some() {
+            self.ends.push(end);
+        }
         if let (Some(lines), Location::Line(n)) = (&mut self.lines, at) {
             lines.push(u32::try_from(n).unwrap_or(u32::MAX));
         }
@@ -257,11 +267,22 @@ impl PolyMesh {
 
     /// Number of faces.
     pub fn face_count(&self) -> usize {
-        self.ends.len()
+        if self.first_polygon.is_none() {
+            self.corners.len() / 3
+        } else {
+            self.ends.len()
+        }
     }
 
     /// The corners of face `i` (empty if there is no such face).
     pub fn face(&self, i: usize) -> &[u32] {
+        if self.first_polygon.is_none() {
+            let start = i.saturating_mul(3);
+            return self
+                .corners
+                .get(start..start.saturating_add(3))
+                .unwrap_or(&[]);
+        }
         let start = match i.checked_sub(1) {
             None => 0,
             Some(j) => self.ends.get(j).map_or(0, |&e| e as usize),
@@ -352,7 +373,8 @@ impl PolyMesh {
     /// polygons' order; deterministic. O(corners) for bounded polygon sizes and vertex
     /// degrees.
     pub fn triangulated(&self) -> Triangulated {
-        let mut faces = Vec::with_capacity(self.corners.len().saturating_sub(2 * self.ends.len()));
+        let mut faces =
+            Vec::with_capacity(self.corners.len().saturating_sub(2 * self.face_count()));
         let mut origin = Vec::with_capacity(faces.capacity());
         let mut polygons = 0;
         let mut edges = EdgeIndex::new(self);
@@ -480,12 +502,11 @@ impl PolyMesh {
 impl From<TriMesh> for PolyMesh {
     /// The triangle mesh as a polygon mesh (no file lines, 0-based numbering).
     fn from(m: TriMesh) -> Self {
-        let ends = (1..=m.faces.len()).map(|i| (3 * i) as u32).collect();
         PolyMesh {
             vertex_count: m.vertex_count,
             positions: m.positions,
             corners: m.faces.into_iter().flatten().collect(),
-            ends,
+            ends: Vec::new(),
             lines: None,
             one_based: false,
             first_polygon: None,
@@ -497,6 +518,41 @@ impl From<TriMesh> for PolyMesh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Faces read back as given, whether every face is a triangle (no face ends kept)
+    /// or polygons come first, after triangles, or between them.
+    #[test]
+    fn faces_read_back_as_given_with_or_without_polygons() {
+        let tri = |k: u32| vec![k, k + 1, k + 2];
+        let cases: Vec<Vec<Vec<u32>>> = vec![
+            vec![],
+            vec![tri(0), tri(3), tri(6)],
+            vec![vec![0, 1, 2, 3], tri(4), tri(7)],
+            vec![
+                tri(0),
+                tri(3),
+                vec![6, 7, 8, 9, 10],
+                tri(1),
+                vec![2, 3, 4, 5],
+            ],
+            vec![tri(0), vec![1, 2, 3, 4]],
+        ];
+        for faces in cases {
+            let m = PolyMesh::from_faces(12, None, &faces).expect("faces of 3 or more");
+            let triangles = faces.iter().all(|f| f.len() == 3);
+            assert_eq!(m.face_count(), faces.len(), "{faces:?}");
+            assert!(m.faces().eq(faces.iter().map(|f| &f[..])), "{faces:?}");
+            assert_eq!(m.face(faces.len()), &[] as &[u32], "{faces:?}");
+            assert_eq!(m.is_triangle_mesh(), triangles, "{faces:?}");
+            assert_eq!(m.ends.capacity() == 0, triangles, "{faces:?}");
+            let (lo, hi) = m.corner_range();
+            let lens = faces.iter().map(Vec::len);
+            assert_eq!(
+                (lo, hi),
+                (lens.clone().min().unwrap_or(0), lens.max().unwrap_or(0))
+            );
+        }
+    }
 
     /// A triangle-only polygon mesh becomes the triangle mesh of its faces in order,
     /// whatever capacity its corner list grew to (reused or copied).
