@@ -466,16 +466,18 @@ trait Payload {
     /// Decodes up to `max` records of `layout` from the bytes at hand, appending
     /// vertices to `positions` and faces to `mesh` exactly as the value-by-value path
     /// would; stops before the first record that is incomplete, of another shape or
-    /// wrong (never consuming it), and returns how many it decoded. Text payloads
-    /// decode none.
+    /// wrong (never consuming it), and returns how many it decoded. By default (text
+    /// payloads) it decodes none.
     fn batch(
         &mut self,
-        layout: &Layout,
-        max: u64,
-        nv: usize,
-        positions: &mut Vec<[f64; 3]>,
-        mesh: &mut PolyMesh,
-    ) -> Result<u64, ReadError>;
+        _layout: &Layout,
+        _max: u64,
+        _nv: usize,
+        _positions: &mut Vec<[f64; 3]>,
+        _mesh: &mut PolyMesh,
+    ) -> Result<u64, ReadError> {
+        Ok(0)
+    }
 }
 
 struct Binary<'i, 'r> {
@@ -645,17 +647,6 @@ impl Payload for Ascii<'_, '_> {
 
     fn reserve_for(&self, declared: u64, min_bytes: u64) -> usize {
         self.input.reserve_for(declared, min_bytes)
-    }
-
-    fn batch(
-        &mut self,
-        _: &Layout,
-        _: u64,
-        _: usize,
-        _: &mut Vec<[f64; 3]>,
-        _: &mut PolyMesh,
-    ) -> Result<u64, ReadError> {
-        Ok(0)
     }
 
     fn finish(&mut self) -> Result<(), ReadError> {
