@@ -1,6 +1,7 @@
-//! Core benchmarks: building a `Triangulation` from a face list, validating it from
-//! scratch, checking a tri-quad conversion, and the `info` invariants, on the ~4.2M-triangle genus-0 paper brick B0 and on a subdivided real
-//! mesh. Run: `cargo bench --bench core`. Divan reports medians.
+//! Core benchmarks: building a `Triangulation` from a face list (vertex ids in the
+//! generator's order, and shuffled), validating it from scratch, checking a tri-quad
+//! conversion, and the `info` invariants, on the ~4.2M-triangle genus-0 paper brick B0.
+//! Run: `cargo bench --bench core`. Divan reports medians.
 
 use contractible::gen::paper_family;
 use contractible::{Surfaces, TriMesh, Triangulation};
@@ -28,6 +29,30 @@ fn main() {
 #[divan::bench(sample_count = 10)]
 fn build_b0(b: divan::Bencher) {
     let m = b0();
+    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
+        .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
+}
+
+/// B0 with its vertex ids permuted at random (seed 1): ids that do not follow the
+/// surface, as in meshes from scans and modelling tools, where the build's gathering
+/// of each vertex's faces misses the caches.
+fn b0_shuffled() -> &'static TriMesh {
+    static M: OnceLock<TriMesh> = OnceLock::new();
+    M.get_or_init(|| {
+        let m = b0();
+        let mut id: Vec<u32> = (0..m.vertex_count as u32).collect();
+        contractible::rng::Rng::new(1).shuffle(&mut id);
+        TriMesh::combinatorial(
+            m.vertex_count,
+            m.faces.iter().map(|f| f.map(|v| id[v as usize])).collect(),
+        )
+    })
+}
+
+/// `Triangulation::from_faces` on [`b0_shuffled`].
+#[divan::bench(sample_count = 10)]
+fn build_b0_shuffled_ids(b: divan::Bencher) {
+    let m = b0_shuffled();
     b.counter(divan::counter::ItemsCount::new(m.faces.len()))
         .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
 }
