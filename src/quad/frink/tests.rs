@@ -338,6 +338,51 @@ fn every_small_graph_is_matched() {
     assert!(empty.mate.is_empty());
 }
 
+/// A strategy that does not override [`Strategy::forbidden`] avoids no edge in the base
+/// case: on random multigraphs the reference strategy gives what it gives when told
+/// explicitly to avoid none (and avoiding an edge does change some results).
+#[test]
+fn by_default_the_base_case_avoids_no_edge() {
+    struct AvoidNone(Naive);
+    impl Strategy for AvoidNone {
+        fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+            self.0.choose(g, cand)
+        }
+        fn forbidden(&self) -> Option<u32> {
+            None
+        }
+    }
+    // Random bridgeless multigraphs, some of which keep edge 1 to the base case.
+    let mut rng = Rng::new(11);
+    let mut differs_from_edge_1 = 0;
+    for round in 0..400 {
+        let g = random_cubic(2 * (1 + rng.index(4)), &mut rng);
+        let Ok(by_default) = solve(g.clone(), &mut Naive::new()) else {
+            continue;
+        };
+        let explicit = solve(g.clone(), &mut AvoidNone(Naive::new())).expect("bridgeless");
+        assert_eq!(by_default.mate, explicit.mate, "round {round}");
+        let avoiding_1 = solve(g, &mut Avoid(Naive::new(), 1)).expect("bridgeless");
+        differs_from_edge_1 += usize::from(avoiding_1.mate != explicit.mate);
+    }
+    assert!(
+        differs_from_edge_1 > 0,
+        "no graph where avoiding edge 1 matters"
+    );
+}
+
+/// The reference strategy, avoiding edge `.1` in the base case.
+struct Avoid(Naive, u32);
+
+impl Strategy for Avoid {
+    fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+        self.0.choose(g, cand)
+    }
+    fn forbidden(&self) -> Option<u32> {
+        Some(self.1)
+    }
+}
+
 #[test]
 fn inputs_that_are_not_connected_bridgeless_cubic_are_refused() {
     assert_eq!(
