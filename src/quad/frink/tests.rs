@@ -548,6 +548,9 @@ struct Checked<S = CoverTree> {
     /// Broken variant for the test of this check: the other reconnection whenever only
     /// one is valid.
     flip: bool,
+    /// The other reconnection whenever both are valid: a valid run that is not the
+    /// strategy's own, which its structures must follow (through `applied`).
+    overrule: bool,
 }
 
 impl<S: Strategy> Strategy for Checked<S> {
@@ -571,7 +574,7 @@ impl<S: Strategy> Strategy for Checked<S> {
             g.undo(&r);
             ok
         });
-        if self.flip && ok[0] != ok[1] {
+        if (self.flip && ok[0] != ok[1]) || (self.overrule && ok[0] && ok[1]) {
             // The broken variant: the other reconnection, where it is the invalid one.
             chosen = match chosen {
                 Reconnection::H1 => Reconnection::H2,
@@ -699,6 +702,38 @@ fn flipped_runs_caught<S: Strategy + Default>(seed: u64) -> usize {
         }
     }
     caught
+}
+
+/// A strategy overruled wherever both reconnections are valid follows the reduction
+/// applied instead of its own choice: the run stays valid at every step (the agreement
+/// check) and ends in a perfect matching, for the strategies whose structures are
+/// written to follow such a wrapper (the forbidden-edge ones).
+#[test]
+fn strategies_follow_reductions_they_did_not_choose() {
+    fn overruled<S: Strategy + Default>(seed: u64) -> u64 {
+        let mut rng = Rng::new(seed);
+        let mut overruled = 0;
+        for round in 0..200 {
+            let g = random_cubic(2 * (3 + rng.index(10)), &mut rng);
+            if !spec::connected_bridgeless_by_definition(&g) {
+                continue;
+            }
+            let mut s = Checked::<S> {
+                overrule: true,
+                ..Checked::default()
+            };
+            let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
+            assert_perfect(&g, &sol.mate, &format!("round {round}"));
+            overruled += s.steps - s.single;
+        }
+        overruled
+    }
+    for (name, n) in [
+        ("diks-stanczyk", overruled::<DiksStanczyk>(6)),
+        ("bbdl", overruled::<BiedlBoseDemaineLubiw>(7)),
+    ] {
+        assert!(n > 100, "{name}: {n} steps overruled");
+    }
 }
 
 /// The agreement check can fail: with the choice flipped it catches the first step where
