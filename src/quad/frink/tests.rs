@@ -673,17 +673,21 @@ fn cover_tree_agrees_with_the_naive_test_on_small_and_random_multigraphs() {
     );
 }
 
+/// The connected bridgeless ones among 200 random cubic multigraphs of 6 to 24 nodes
+/// from `seed`.
+fn bridgeless_random_cubics(seed: u64) -> impl Iterator<Item = Cubic> {
+    let mut rng = Rng::new(seed);
+    (0..200)
+        .map(move |_| random_cubic(2 * (3 + rng.index(10)), &mut rng))
+        .filter(spec::connected_bridgeless_by_definition)
+}
+
 /// Runs `S` wrapped in [`Checked`] with its choice flipped wherever only one
 /// reconnection is valid, on random bridgeless multigraphs from `seed`; returns how many
 /// runs the agreement check stopped (each with its own message).
 fn flipped_runs_caught<S: Strategy + Default>(seed: u64) -> usize {
-    let mut rng = Rng::new(seed);
     let mut caught = 0;
-    for _ in 0..200 {
-        let g = random_cubic(2 * (3 + rng.index(10)), &mut rng);
-        if !spec::connected_bridgeless_by_definition(&g) {
-            continue;
-        }
+    for g in bridgeless_random_cubics(seed) {
         let r = std::panic::catch_unwind(|| {
             let mut s = Checked::<S> {
                 flip: true,
@@ -711,13 +715,8 @@ fn flipped_runs_caught<S: Strategy + Default>(seed: u64) -> usize {
 #[test]
 fn strategies_follow_reductions_they_did_not_choose() {
     fn overruled<S: Strategy + Default>(seed: u64) -> u64 {
-        let mut rng = Rng::new(seed);
         let mut overruled = 0;
-        for round in 0..200 {
-            let g = random_cubic(2 * (3 + rng.index(10)), &mut rng);
-            if !spec::connected_bridgeless_by_definition(&g) {
-                continue;
-            }
+        for (round, g) in bridgeless_random_cubics(seed).enumerate() {
             let mut s = Checked::<S> {
                 overrule: true,
                 ..Checked::default()
