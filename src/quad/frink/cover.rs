@@ -507,11 +507,17 @@ impl Strategy for CoverTree {
     }
 
     fn applied(&mut self, g: &Cubic, r: &Reduction) {
-        let Some(p) = self.plan.take() else {
+        // Without a plan (a naive step), or when the reduction applied is not the one
+        // planned (a wrapper overruled the choice), the link–cut tree no longer matches
+        // `g`: it is rebuilt before the next pick.
+        let Some(p) = self
+            .plan
+            .take()
+            .filter(|p| p.recon == r.recon && p.cand == r.cand)
+        else {
             self.dirty = true;
             return;
         };
-        debug_assert_eq!(p.recon, r.recon);
         if self.enode.len() < g.ends.len() {
             self.enode.resize(g.ends.len(), NONE);
         }

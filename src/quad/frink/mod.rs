@@ -198,7 +198,10 @@ pub trait Strategy {
     /// was (every [`Cubic::reduce`] undone by [`Cubic::undo`]).
     fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection>;
 
-    /// Called after the chosen reduction `r` has been applied to `g`.
+    /// Called after the reduction `r` has been applied to `g`. Usually `r` is the one
+    /// [`Strategy::choose`] returned, but a caller may apply the other valid
+    /// reconnection instead (a wrapper that overrules the choice): a strategy must then
+    /// bring its own structures in line with `g` as it now is.
     fn applied(&mut self, g: &Cubic, r: &Reduction) {
         let _ = (g, r);
     }

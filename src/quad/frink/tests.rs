@@ -711,7 +711,7 @@ fn flipped_runs_caught<S: Strategy + Default>(seed: u64) -> usize {
 /// A strategy overruled wherever both reconnections are valid follows the reduction
 /// applied instead of its own choice: the run stays valid at every step (the agreement
 /// check) and ends in a perfect matching, for the strategies whose structures are
-/// written to follow such a wrapper (the forbidden-edge ones).
+/// for every strategy (the forbidden-edge ones resynchronise, the cover tree rebuilds).
 #[test]
 fn strategies_follow_reductions_they_did_not_choose() {
     fn overruled<S: Strategy + Default>(seed: u64) -> u64 {
@@ -730,6 +730,7 @@ fn strategies_follow_reductions_they_did_not_choose() {
     for (name, n) in [
         ("diks-stanczyk", overruled::<DiksStanczyk>(6)),
         ("bbdl", overruled::<BiedlBoseDemaineLubiw>(7)),
+        ("cover tree", overruled::<CoverTree>(8)),
     ] {
         assert!(n > 100, "{name}: {n} steps overruled");
     }
