@@ -57,6 +57,34 @@ fn build_b0_shuffled_ids(b: divan::Bencher) {
         .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
 }
 
+/// B0 with its vertex ids renumbered in order of first appearance in the face list.
+fn b0_first_appearance() -> &'static TriMesh {
+    static M: OnceLock<TriMesh> = OnceLock::new();
+    M.get_or_init(|| {
+        let m = b0();
+        let mut id = vec![u32::MAX; m.vertex_count];
+        let mut next = 0;
+        for &v in m.faces.as_flattened() {
+            if id[v as usize] == u32::MAX {
+                id[v as usize] = next;
+                next += 1;
+            }
+        }
+        TriMesh::combinatorial(
+            m.vertex_count,
+            m.faces.iter().map(|f| f.map(|v| id[v as usize])).collect(),
+        )
+    })
+}
+
+/// `Triangulation::from_faces` on [`b0_first_appearance`].
+#[divan::bench(sample_count = 10)]
+fn build_b0_first_appearance_ids(b: divan::Bencher) {
+    let m = b0_first_appearance();
+    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
+        .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
+}
+
 /// The floor under `build_b0` that fresh memory sets: allocating and writing once as
 /// many bytes as that build allocates (three arrays of one `u32` per corner: the
 /// corner-to-vertex array, the gluing and the corners grouped by vertex; five of one

@@ -140,7 +140,8 @@ pub(super) struct Checked {
     pub(super) tri: Triangulation,
     pub(super) used: Vec<bool>,
     /// The vertex union-find of the edges (see [`union`]), when the classification
-    /// made one; empty otherwise.
+    /// made one; empty otherwise. Either a parent is never larger than its child or
+    /// every parent is a root (so one increasing pass flattens it either way).
     parent: Vec<u32>,
 }
 
@@ -681,13 +682,141 @@ fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildErr
 /// face or non-manifold / multiple edge is an error here (in that precedence); boundary
 /// edges and vertex links are left to the caller.
 fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Scanned, Classified), BuildError> {
-    let scanned = scan_faces(vertex_count, faces)?;
+    let mut scanned = scan_faces(vertex_count, faces)?;
+    if scattered(faces) {
+        if let Some(classified) = classify_renumbered(&mut scanned, faces) {
+            return Ok((scanned, classified));
+        }
+    }
+    let classified = classify_in_id_order(faces, &scanned)?;
+    Ok((scanned, classified))
+}
+
+/// Phases 2-3 in vertex id order, the order that defines which problem is reported.
+fn classify_in_id_order(faces: &[[u32; 3]], scanned: &Scanned) -> Result<Classified, BuildError> {
     let by_vertex = vertex_corners(&scanned.corner_vertex, &scanned.degree);
-    let mut classified = classify_edges(&scanned, &by_vertex, faces);
+    let mut classified = classify_edges(scanned, &by_vertex, faces);
     if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {
         return Err(e);
     }
-    Ok((scanned, classified))
+    Ok(classified)
+}
+
+/// Ids this far apart (or more) at the same slot of consecutive faces are *far*: the
+/// per-vertex data between them spans more than the caches hold.
+const FAR_IDS: u32 = 1 << 16;
+
+/// Whether the vertex ids are scattered over the face list: at more than a quarter of
+/// the slots of a sample of consecutive faces (every eighth pair, O(F/8)), the ids are
+/// [`FAR_IDS`] apart. Then [`classify_renumbered`] pays for its two passes several times
+/// over (B0 with shuffled ids: 0.73 of the pairs far, build 4.4× faster renumbered);
+/// where they are not, it would cost 10-15 % (B0 in the generator's order: 0.02; every
+/// closed mesh of the shared corpus, 10k-200k faces: 0, none has ids that far apart).
+fn scattered(faces: &[[u32; 3]]) -> bool {
+    let (mut far, mut slots) = (0usize, 0usize);
+    for pair in faces.windows(2).step_by(8) {
+        for (a, b) in pair[0].iter().zip(&pair[1]) {
+            far += usize::from(a.abs_diff(*b) >= FAR_IDS);
+        }
+        slots += 3;
+    }
+    4 * far > slots
+}
+
+/// Phases 2-3 with the vertices numbered in order of first appearance in the face list,
+/// mapped back to the input's ids: the same result as [`classify_in_id_order`], array
+/// for array, when there is nothing to report. Why: phase 3 visits each vertex's corners
+/// and their neighbours, which lie together in the face list when the ids follow it and
+/// all over it when they do not (ids from scans and modelling tools); on B0 with its ids
+/// shuffled the build was 7× slower (docs/benchmarks.md). Renumbering costs one pass
+/// over the corners and one back, which [`scattered`] decides are worth paying.
+///
+/// `None`, with `scanned` as it was, when the ids already are in that order, or when
+/// the surface has a problem (a duplicate face, an edge not in exactly two faces except
+/// where a boundary is fine, a vertex link), which is then found and reported in id
+/// order, its documented precedence. Boundary edges are kept, in the id order of their
+/// endpoints, as [`classify_in_id_order`] lists them.
+fn classify_renumbered(scanned: &mut Scanned, faces: &[[u32; 3]]) -> Option<Classified> {
+    let n = scanned.degree.len();
+    let mut new_id = vec![NONE; n];
+    let mut old_id: Vec<u32> = Vec::new();
+    let mut identity = true;
+    for v in scanned.corner_vertex.iter_mut() {
+        let mut k = new_id[*v as usize];
+        if k == NONE {
+            k = old_id.len() as u32;
+            new_id[*v as usize] = k;
+            old_id.push(*v);
+            identity &= k == *v;
+        }
+        *v = k;
+    }
+    if identity {
+        // Every corner kept its id: `scanned` is unchanged.
+        return None;
+    }
+    let renumbered = Scanned {
+        corner_vertex: std::mem::take(&mut scanned.corner_vertex),
+        degree: old_id.iter().map(|&v| scanned.degree[v as usize]).collect(),
+    };
+    let by_vertex = vertex_corners(&renumbered.corner_vertex, &renumbered.degree);
+    let mut classified = classify_edges(&renumbered, &by_vertex, faces);
+    drop(by_vertex);
+    let mut corner_vertex = renumbered.corner_vertex;
+    for v in corner_vertex.iter_mut() {
+        *v = old_id[*v as usize];
+    }
+    scanned.corner_vertex = corner_vertex;
+    let closed_and_sound = classified.clean && classified.first_link.is_none();
+    let bounded_and_sound = classified.duplicate.is_none()
+        && classified.bad_edge.is_none()
+        && !classified.boundary.is_empty();
+    if !closed_and_sound && !bounded_and_sound {
+        return None;
+    }
+    let corner_vertex = &scanned.corner_vertex;
+    // The endpoints of the edge opposite corner `c`, smaller first.
+    let edge = |c: u32| {
+        let (a, b) = (
+            corner_vertex[Corner(c).next().index()],
+            corner_vertex[Corner(c).prev().index()],
+        );
+        (a.min(b), a.max(b))
+    };
+    // In id order the boundary edges come by smaller, then larger endpoint, and the
+    // first of them is the one [`check`] reports.
+    classified.boundary.sort_unstable_by_key(|&c| edge(c));
+    classified.first_boundary = classified.boundary.first().map(|&c| {
+        let (a, b) = edge(c);
+        BuildError::BoundaryEdge {
+            a,
+            b,
+            face: c as usize / 3,
+        }
+    });
+    let mut vertex_corner = vec![NONE; n];
+    for (k, &v) in old_id.iter().enumerate() {
+        vertex_corner[v as usize] = classified.vertex_corner[k];
+    }
+    classified.vertex_corner = vertex_corner;
+    // The union-find, flattened (one increasing pass suffices, see [`union`]) and
+    // carried to the input's ids; unused vertices are their own roots.
+    let parent = &mut classified.parent;
+    for k in 0..parent.len() {
+        parent[k] = parent[parent[k] as usize];
+    }
+    classified.parent = new_id
+        .iter()
+        .enumerate()
+        .map(|(v, &k)| {
+            if k == NONE {
+                v as u32
+            } else {
+                old_id[parent[k as usize] as usize]
+            }
+        })
+        .collect();
+    Some(classified)
 }
 
 /// Phase 4 on a fully glued corner table (every edge interior): per-vertex corners and
@@ -998,6 +1127,188 @@ pub(super) fn split(tri: &Triangulation, label: &[u32], count: usize) -> Vec<Com
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::gen::random::{random, RandomParams, SurfaceKind};
+    use crate::rng::Rng;
+
+    /// Everything [`classify`] hands on, with the union-find as the smallest vertex of
+    /// each vertex's set (the partition, whatever the tree).
+    type Outcome = (
+        Vec<u32>,
+        Vec<u32>,
+        Vec<u32>,
+        Vec<u32>,
+        Vec<u32>,
+        Option<BuildError>,
+        Option<BuildError>,
+    );
+
+    fn outcome(scanned: Scanned, c: Classified) -> Outcome {
+        let mut root = c.parent;
+        for v in 0..root.len() {
+            root[v] = root[root[v] as usize];
+        }
+        let mut least = vec![NONE; root.len()];
+        for (v, &r) in root.iter().enumerate() {
+            least[r as usize] = least[r as usize].min(v as u32);
+        }
+        let set = root.iter().map(|&r| least[r as usize]).collect();
+        (
+            scanned.corner_vertex,
+            c.opposite,
+            c.boundary,
+            c.vertex_corner,
+            set,
+            c.first_boundary,
+            c.first_link,
+        )
+    }
+
+    /// The renumbered phases, where they answer (`None` where they hand over to the
+    /// id order).
+    fn renumbered_outcome(n: usize, faces: &[[u32; 3]]) -> Option<Outcome> {
+        let mut scanned = scan_faces(n, faces).expect("faces in range");
+        let c = classify_renumbered(&mut scanned, faces)?;
+        Some(outcome(scanned, c))
+    }
+
+    /// The phases in id order only.
+    fn in_id_order(n: usize, faces: &[[u32; 3]]) -> Result<Outcome, BuildError> {
+        let scanned = scan_faces(n, faces)?;
+        let c = classify_in_id_order(faces, &scanned)?;
+        Ok(outcome(scanned, c))
+    }
+
+    /// Numbering the vertices in order of first appearance changes only the order in
+    /// which they are visited: on closed surfaces, bounded ones, several components with
+    /// unused vertices, and faulty ones (duplicate faces, non-manifold edges, pinched
+    /// vertices), each with shuffled ids, every array, the boundary list and its first
+    /// edge, the link verdict, the components and the error are those of the id order.
+    #[test]
+    fn renumbering_changes_nothing_but_the_visiting_order() {
+        let mut rng = Rng::new(11);
+        let mut taken = [0usize; 2];
+        for round in 0..300u64 {
+            let surface = match round % 3 {
+                0 => SurfaceKind::Orientable(0),
+                1 => SurfaceKind::Orientable(1 + (round % 2) as u32),
+                _ => SurfaceKind::NonOrientable(1 + (round % 3) as u32),
+            };
+            let tri = random(&RandomParams {
+                surface,
+                min_faces: 20 + rng.index(60),
+                flip_percent: 30,
+                seed: round,
+            })
+            .expect("random surface");
+            let mut faces = tri.face_list();
+            let mut n = tri.vertex_capacity();
+            match round % 6 {
+                // A second copy, disjoint, and an unused vertex between them.
+                1 => {
+                    let shift = n as u32 + 1;
+                    let copy: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| v + shift)).collect();
+                    faces.extend(copy);
+                    n = 2 * n + 1;
+                }
+                // A hole or two: a bounded surface.
+                2 => {
+                    for _ in 0..1 + rng.index(2) {
+                        faces.swap_remove(rng.index(faces.len()));
+                    }
+                }
+                // A repeated face (duplicate, and its edges in four faces).
+                3 => faces.push(faces[rng.index(faces.len())]),
+                // Two vertices identified: a pinched vertex or a non-manifold edge.
+                4 => {
+                    let (a, b) = (rng.index(n) as u32, rng.index(n) as u32);
+                    for f in faces.iter_mut() {
+                        for v in f.iter_mut() {
+                            if *v == b {
+                                *v = a;
+                            }
+                        }
+                    }
+                    faces.retain(|f| f[0] != f[1] && f[1] != f[2] && f[0] != f[2]);
+                }
+                _ => {}
+            }
+            let mut id: Vec<u32> = (0..n as u32).collect();
+            rng.shuffle(&mut id);
+            let shuffled: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| id[v as usize])).collect();
+            match renumbered_outcome(n, &shuffled) {
+                Some(r) => {
+                    assert_eq!(
+                        Ok(r),
+                        in_id_order(n, &shuffled),
+                        "round {round}: {shuffled:?}"
+                    );
+                    taken[1] += 1;
+                }
+                None => taken[0] += 1,
+            }
+        }
+        // The renumbered phases answered for the sound inputs and handed the faulty
+        // ones (and those with unused vertices in id order) over.
+        assert!(taken[0] >= 50 && taken[1] >= 100, "{taken:?}");
+    }
+
+    /// Ids far apart at consecutive faces' slots make a face list scattered when they
+    /// are more than a quarter of the sampled slots, not before.
+    #[test]
+    fn scattered_ids_are_told_from_local_ones() {
+        let far = |k: u32| {
+            [
+                (k + 2) * FAR_IDS,
+                (k + 2) * FAR_IDS + 1,
+                (k + 2) * FAR_IDS + 2,
+            ]
+        };
+        let near = |k: u32| [3 * k, 3 * k + 1, 3 * k + 2];
+        // 81 faces: 80 consecutive pairs, every eighth sampled (10 pairs, 30 slots).
+        let local: Vec<[u32; 3]> = (0..81).map(near).collect();
+        assert!(!scattered(&local));
+        let spread: Vec<[u32; 3]> = (0..81).map(far).collect();
+        assert!(scattered(&spread));
+        // Far at the sampled pairs (0, 1), (8, 9), (16, 17): 3 of 10 pairs, 9 of 30
+        // slots, more than a quarter; 2 of 10 pairs are not.
+        let some = |far_pairs: u32| -> Vec<[u32; 3]> {
+            (0..81u32)
+                .map(|i| {
+                    if i % 8 == 0 && i / 8 < far_pairs {
+                        far(i + 1)
+                    } else {
+                        near(i)
+                    }
+                })
+                .collect()
+        };
+        assert!(scattered(&some(3)));
+        assert!(!scattered(&some(2)));
+    }
+
+    /// Ids already in order of first appearance are not renumbered.
+    #[test]
+    fn ids_in_order_of_first_appearance_are_left_alone() {
+        let tri = random(&RandomParams {
+            surface: SurfaceKind::Orientable(1),
+            min_faces: 50,
+            flip_percent: 30,
+            seed: 3,
+        })
+        .expect("random surface");
+        let faces = tri.face_list();
+        let mut id = vec![NONE; tri.vertex_capacity()];
+        let mut next = 0;
+        for &v in faces.as_flattened() {
+            if id[v as usize] == NONE {
+                id[v as usize] = next;
+                next += 1;
+            }
+        }
+        let in_order: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| id[v as usize])).collect();
+        assert!(renumbered_outcome(next as usize, &in_order).is_none());
+        assert!(faces == in_order || renumbered_outcome(tri.vertex_capacity(), &faces).is_some());
+    }
 
     #[test]
     fn the_size_limits_accept_their_bounds_and_refuse_one_more() {
