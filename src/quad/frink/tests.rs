@@ -750,7 +750,8 @@ fn the_agreement_check_catches_a_flipped_choice() {
 }
 
 /// The fallback (no tree-stable configuration: rebuild, then a naive step, then a
-/// rebuild), forced on every step: still every choice valid and the matching perfect.
+/// rebuild), forced on every step: still every choice valid, the matching perfect, and
+/// the counters say so.
 #[test]
 fn cover_tree_fallback_steps() {
     let mut rng = Rng::new(5);
@@ -768,6 +769,12 @@ fn cover_tree_fallback_steps() {
         let c = s.inner.counters();
         assert_eq!(c.naive_steps as usize, sol.stats.reductions);
         assert_eq!(c.s1 + c.s2 + c.s4, 0);
+        // One rebuild at the start, then one before each step after a naive one.
+        assert_eq!(
+            c.rebuilds as usize,
+            sol.stats.reductions.max(1),
+            "round {round}"
+        );
         graphs += 1;
     }
     assert!(graphs > 50);
