@@ -1286,6 +1286,124 @@ mod tests {
         assert!(!scattered(&some(2)));
     }
 
+    /// `e` with its vertex ids `v` written as `k * v` (face indices unchanged).
+    fn spread_error(e: BuildError, k: u32) -> BuildError {
+        use BuildError::*;
+        match e {
+            DegenerateFace { face, vertices } => DegenerateFace {
+                face,
+                vertices: vertices.map(|v| k * v),
+            },
+            DuplicateFace {
+                face,
+                first,
+                vertices,
+            } => DuplicateFace {
+                face,
+                first,
+                vertices: vertices.map(|v| k * v),
+            },
+            BoundaryEdge { a, b, face } => BoundaryEdge {
+                a: k * a,
+                b: k * b,
+                face,
+            },
+            NonManifoldEdge { a, b, faces, face } => NonManifoldEdge {
+                a: k * a,
+                b: k * b,
+                faces,
+                face,
+            },
+            MultipleEdges {
+                a,
+                b,
+                edges,
+                faces,
+                face,
+            } => MultipleEdges {
+                a: k * a,
+                b: k * b,
+                edges,
+                faces,
+                face,
+            },
+            VertexLinkNotCycle {
+                vertex,
+                cycles,
+                faces,
+            } => VertexLinkNotCycle {
+                vertex: k * vertex,
+                cycles,
+                faces,
+            },
+            VertexDegreeTooLow { vertex, degree } => VertexDegreeTooLow {
+                vertex: k * vertex,
+                degree,
+            },
+            other => other,
+        }
+    }
+
+    /// Through the public builder, on inputs that take the renumbered path: with every
+    /// id `v` written as `2^16 · v` (an increasing map, so the id order and with it the
+    /// error precedence are kept, and the ids scattered), [`Surfaces::from_faces`] gives
+    /// the same components (the same local triangulations and face origins, vertex
+    /// origins spread) or the same error (its vertex ids spread), on sound and faulty
+    /// surfaces.
+    #[test]
+    fn scattered_ids_build_what_compact_ids_build() {
+        let k = FAR_IDS;
+        let mut rng = Rng::new(12);
+        let mut renumbered = 0;
+        for round in 0..40u64 {
+            let tri = random(&RandomParams {
+                surface: [SurfaceKind::Orientable(0), SurfaceKind::NonOrientable(1)]
+                    [round as usize % 2],
+                min_faces: 16 + rng.index(20),
+                flip_percent: 30,
+                seed: round,
+            })
+            .expect("random surface");
+            let mut faces = tri.face_list();
+            let n = tri.vertex_capacity();
+            match round % 4 {
+                1 => faces.push(faces[rng.index(faces.len())]),
+                2 => {
+                    faces.swap_remove(rng.index(faces.len()));
+                }
+                3 => {
+                    let shift = n as u32;
+                    let copy: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| v + shift)).collect();
+                    faces.extend(copy);
+                }
+                _ => {}
+            }
+            let n = 2 * n;
+            let spread: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| k * v)).collect();
+            let spread_n = k as usize * n;
+            if scattered(&spread) {
+                renumbered += 1;
+            }
+            match (
+                Surfaces::from_faces(n, &faces),
+                Surfaces::from_faces(spread_n, &spread),
+            ) {
+                (Ok(a), Ok(b)) => {
+                    assert_eq!(a.components.len(), b.components.len(), "round {round}");
+                    for (x, y) in a.components.iter().zip(&b.components) {
+                        assert_eq!(x.tri, y.tri, "round {round}");
+                        assert_eq!(x.face_origin, y.face_origin, "round {round}");
+                        let origin: Vec<u32> = x.vertex_origin.iter().map(|&v| k * v).collect();
+                        assert_eq!(origin, y.vertex_origin, "round {round}");
+                    }
+                }
+                (Err(a), Err(b)) => assert_eq!(spread_error(a, k), b, "round {round}"),
+                (a, b) => panic!("round {round}: {:?} against {:?}", a.err(), b.err()),
+            }
+        }
+        assert!(renumbered >= 30, "{renumbered} of 40 scattered");
+    }
+
     /// Ids already in order of first appearance are not renumbered.
     #[test]
     fn ids_in_order_of_first_appearance_are_left_alone() {
