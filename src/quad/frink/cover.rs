@@ -102,6 +102,23 @@ impl CoverTree {
         self.counters
     }
 
+    /// Whether the link–cut slots are consistent: each of the `n` odd ids `2x + 1` is
+    /// either free or the node of exactly one tree edge, and no other id is either (a
+    /// vertex's node `2x` never is). For the tests.
+    #[cfg(test)]
+    pub(crate) fn slots_are_consistent(&self) -> bool {
+        let mut seen = vec![false; self.n];
+        let tree = self.enode.iter().copied().filter(|&k| k != NONE);
+        for k in self.free.iter().copied().chain(tree) {
+            let x = (k / 2) as usize;
+            if k % 2 == 0 || x >= self.n || seen[x] {
+                return false;
+            }
+            seen[x] = true;
+        }
+        seen.iter().all(|&s| s)
+    }
+
     fn is_tree(&self, e: u32) -> bool {
         self.enode.get(e as usize).is_some_and(|&k| k != NONE)
     }

@@ -780,6 +780,41 @@ fn cover_tree_fallback_steps() {
     assert!(graphs > 50);
 }
 
+/// The cover tree's link–cut slots stay consistent ([`CoverTree::slots_are_consistent`])
+/// after the start and after every reduction, on random bridgeless multigraphs whose
+/// runs take all three kinds of tree-stable step.
+#[test]
+fn cover_tree_slots_stay_consistent() {
+    struct Slots(CoverTree);
+    impl Strategy for Slots {
+        fn start(&mut self, g: &Cubic) {
+            self.0.start(g);
+            assert!(self.0.slots_are_consistent(), "after the start");
+        }
+        fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
+            self.0.pick(g)
+        }
+        fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
+            self.0.choose(g, cand)
+        }
+        fn applied(&mut self, g: &Cubic, r: &Reduction) {
+            self.0.applied(g, r);
+            assert!(self.0.slots_are_consistent(), "after {r:?}");
+        }
+    }
+    let mut kinds = CoverCounters::default();
+    for (round, g) in bridgeless_random_cubics(9).enumerate() {
+        let mut s = Slots(CoverTree::new());
+        let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
+        assert_perfect(&g, &sol.mate, &format!("round {round}"));
+        let c = s.0.counters();
+        kinds.s1 += c.s1;
+        kinds.s2 += c.s2;
+        kinds.s4 += c.s4;
+    }
+    assert!(kinds.s1 > 50 && kinds.s2 > 50 && kinds.s4 > 50, "{kinds:?}");
+}
+
 /// Calls `each(t, g, label)` on the duals `g` of random closed surfaces `t` of at least
 /// 400 faces, orientable of genus 0 to 8 and non-orientable of genus 1 to 6, two seeds
 /// each.
