@@ -551,6 +551,8 @@ struct Checked<S = CoverTree> {
     /// The other reconnection whenever both are valid: a valid run that is not the
     /// strategy's own, which its structures must follow (through `applied`).
     overrule: bool,
+    /// A check of the strategy's own state, after the start and after every step.
+    audit: Option<fn(&S)>,
 }
 
 impl<S: Strategy> Strategy for Checked<S> {
@@ -560,6 +562,9 @@ impl<S: Strategy> Strategy for Checked<S> {
 
     fn start(&mut self, g: &Cubic) {
         self.inner.start(g);
+        if let Some(audit) = self.audit {
+            audit(&self.inner);
+        }
     }
 
     fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
@@ -593,6 +598,9 @@ impl<S: Strategy> Strategy for Checked<S> {
 
     fn applied(&mut self, g: &Cubic, r: &Reduction) {
         self.inner.applied(g, r);
+        if let Some(audit) = self.audit {
+            audit(&self.inner);
+        }
     }
 
     fn forbidden(&self) -> Option<u32> {
@@ -781,33 +789,19 @@ fn cover_tree_fallback_steps() {
 }
 
 /// The cover tree's link–cut slots stay consistent ([`CoverTree::slots_are_consistent`])
-/// after the start and after every reduction, on random bridgeless multigraphs whose
-/// runs take all three kinds of tree-stable step.
+/// after the start and after every reduction (each choice checked as by [`Checked`]),
+/// on random bridgeless multigraphs whose runs take all three kinds of tree-stable step.
 #[test]
 fn cover_tree_slots_stay_consistent() {
-    struct Slots(CoverTree);
-    impl Strategy for Slots {
-        fn start(&mut self, g: &Cubic) {
-            self.0.start(g);
-            assert!(self.0.slots_are_consistent(), "after the start");
-        }
-        fn pick(&mut self, g: &Cubic) -> Option<Candidate> {
-            self.0.pick(g)
-        }
-        fn choose(&mut self, g: &mut Cubic, cand: &Candidate) -> Option<Reconnection> {
-            self.0.choose(g, cand)
-        }
-        fn applied(&mut self, g: &Cubic, r: &Reduction) {
-            self.0.applied(g, r);
-            assert!(self.0.slots_are_consistent(), "after {r:?}");
-        }
-    }
     let mut kinds = CoverCounters::default();
     for (round, g) in bridgeless_random_cubics(9).enumerate() {
-        let mut s = Slots(CoverTree::new());
+        let mut s = Checked::<CoverTree> {
+            audit: Some(|s| assert!(s.slots_are_consistent())),
+            ..Checked::default()
+        };
         let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
         assert_perfect(&g, &sol.mate, &format!("round {round}"));
-        let c = s.0.counters();
+        let c = s.inner.counters();
         kinds.s1 += c.s1;
         kinds.s2 += c.s2;
         kinds.s4 += c.s4;
