@@ -28,61 +28,56 @@ fn main() {
 /// `Triangulation::from_faces` (full validation) on B0.
 #[divan::bench(sample_count = 10)]
 fn build_b0(b: divan::Bencher) {
+    bench_build(b, b0());
+}
+
+/// B0 with vertex `v` renamed `id[v]`.
+fn b0_renamed(id: &[u32]) -> TriMesh {
     let m = b0();
+    TriMesh::combinatorial(
+        m.vertex_count,
+        m.faces.iter().map(|f| f.map(|v| id[v as usize])).collect(),
+    )
+}
+
+/// `Triangulation::from_faces` on `m`.
+fn bench_build(b: divan::Bencher, m: &TriMesh) {
     b.counter(divan::counter::ItemsCount::new(m.faces.len()))
         .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
 }
 
-/// B0 with its vertex ids permuted at random (seed 1): ids that do not follow the
-/// surface, as in meshes from scans and modelling tools, where the build's gathering
-/// of each vertex's faces misses the caches.
-fn b0_shuffled() -> &'static TriMesh {
-    static M: OnceLock<TriMesh> = OnceLock::new();
-    M.get_or_init(|| {
-        let m = b0();
-        let mut id: Vec<u32> = (0..m.vertex_count as u32).collect();
-        contractible::rng::Rng::new(1).shuffle(&mut id);
-        TriMesh::combinatorial(
-            m.vertex_count,
-            m.faces.iter().map(|f| f.map(|v| id[v as usize])).collect(),
-        )
-    })
-}
-
-/// `Triangulation::from_faces` on [`b0_shuffled`].
+/// `Triangulation::from_faces` on B0 with its vertex ids permuted at random (seed 1):
+/// ids that do not follow the surface, as in meshes from scans and modelling tools,
+/// where the build's gathering of each vertex's faces misses the caches (unless the
+/// build renumbers them).
 #[divan::bench(sample_count = 10)]
 fn build_b0_shuffled_ids(b: divan::Bencher) {
-    let m = b0_shuffled();
-    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
-        .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
+    static M: OnceLock<TriMesh> = OnceLock::new();
+    let m = M.get_or_init(|| {
+        let mut id: Vec<u32> = (0..b0().vertex_count as u32).collect();
+        contractible::rng::Rng::new(1).shuffle(&mut id);
+        b0_renamed(&id)
+    });
+    bench_build(b, m);
 }
 
-/// B0 with its vertex ids renumbered in order of first appearance in the face list.
-fn b0_first_appearance() -> &'static TriMesh {
+/// `Triangulation::from_faces` on B0 with its vertex ids renumbered in order of first
+/// appearance in the face list.
+#[divan::bench(sample_count = 10)]
+fn build_b0_first_appearance_ids(b: divan::Bencher) {
     static M: OnceLock<TriMesh> = OnceLock::new();
-    M.get_or_init(|| {
-        let m = b0();
-        let mut id = vec![u32::MAX; m.vertex_count];
+    let m = M.get_or_init(|| {
+        let mut id = vec![u32::MAX; b0().vertex_count];
         let mut next = 0;
-        for &v in m.faces.as_flattened() {
+        for &v in b0().faces.as_flattened() {
             if id[v as usize] == u32::MAX {
                 id[v as usize] = next;
                 next += 1;
             }
         }
-        TriMesh::combinatorial(
-            m.vertex_count,
-            m.faces.iter().map(|f| f.map(|v| id[v as usize])).collect(),
-        )
-    })
-}
-
-/// `Triangulation::from_faces` on [`b0_first_appearance`].
-#[divan::bench(sample_count = 10)]
-fn build_b0_first_appearance_ids(b: divan::Bencher) {
-    let m = b0_first_appearance();
-    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
-        .bench(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"));
+        b0_renamed(&id)
+    });
+    bench_build(b, m);
 }
 
 /// The floor under `build_b0` that fresh memory sets: allocating and writing once as
