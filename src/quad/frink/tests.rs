@@ -803,6 +803,12 @@ fn cover_tree_slots_stay_consistent() {
         let sol = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
         assert_perfect(&g, &sol.mate, &format!("round {round}"));
         let c = s.inner.counters();
+        // Every step is of exactly one kind.
+        assert_eq!(
+            c.s1 + c.s2 + c.s4 + c.naive_steps,
+            sol.stats.reductions as u64,
+            "round {round}: {c:?}"
+        );
         kinds.s1 += c.s1;
         kinds.s2 += c.s2;
         kinds.s4 += c.s4;
