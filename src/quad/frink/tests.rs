@@ -788,6 +788,20 @@ fn cover_tree_fallback_steps() {
     assert!(graphs > 50);
 }
 
+/// A cover tree used for a second run starts afresh: the same matching and the same
+/// counters as on its first run (its counters and state are reset by `start`).
+#[test]
+fn a_cover_tree_run_twice_starts_afresh() {
+    for (round, g) in bridgeless_random_cubics(10).enumerate() {
+        let mut s = CoverTree::new();
+        let first = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
+        let counters = s.counters();
+        let second = solve(g.clone(), &mut s).unwrap_or_else(|e| panic!("round {round}: {e}"));
+        assert_eq!(first.mate, second.mate, "round {round}");
+        assert_eq!(counters, s.counters(), "round {round}");
+    }
+}
+
 /// The cover tree's link–cut slots stay consistent ([`CoverTree::slots_are_consistent`])
 /// after the start and after every reduction (each choice checked as by [`Checked`]),
 /// on random bridgeless multigraphs whose runs take all three kinds of tree-stable step
