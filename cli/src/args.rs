@@ -360,6 +360,10 @@ pub struct ReduceArgs {
     /// Skip the independent check that every output component is irreducible.
     #[arg(long)]
     pub no_verify: bool,
+    /// Components of the mesh processed at once (default: one per CPU; 1 processes
+    /// them one after another). The output is the same for every value.
+    #[arg(long, short = 'j')]
+    pub jobs: Option<usize>,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }
@@ -387,6 +391,10 @@ pub struct QuadArgs {
     /// triangulation K, which keeps the input's face indices. `-` writes them to stdout.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
+    /// Components of the mesh processed at once (default: one per CPU; 1 processes
+    /// them one after another). The output is the same for every value.
+    #[arg(long, short = 'j')]
+    pub jobs: Option<usize>,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

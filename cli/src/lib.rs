@@ -32,6 +32,7 @@ mod demo;
 mod docs;
 mod gen;
 mod info;
+mod jobs;
 mod meshio;
 mod progress;
 mod quad;

@@ -152,8 +152,8 @@ pub fn byte_spinner(ui: Ui, msg: impl Into<String>) -> ProgressBar {
 
 /// The bars of one library task call, driven by its [`contractible::Monitor`]: a spinner
 /// while the input is checked, a [`StageBar`] following the algorithm inside each
-/// component (`VERB (NAME), component i/n`), and a bar over the components while their
-/// outputs are verified.
+/// component (`VERB (NAME), component i/n`; with components in parallel, the one that
+/// started last), and a bar over the components while their outputs are verified.
 pub struct TaskBars {
     ui: Ui,
     verb: &'static str,
@@ -166,6 +166,11 @@ pub struct TaskBars {
     contracted: usize,
     /// The number of components (known from the first run step).
     components: usize,
+    /// The component the run bar follows: the one whose run started last (components
+    /// processed in parallel report interleaved; the others' reports are not drawn).
+    current: usize,
+    /// Components whose verification started (in parallel, in any order).
+    verifying: u64,
 }
 
 impl TaskBars {
@@ -190,6 +195,8 @@ impl TaskBars {
             verify: None,
             contracted: 0,
             components: 1,
+            current: 0,
+            verifying: 0,
         }));
         let shared = std::sync::Arc::clone(&bars);
         let monitor = contractible::Monitor::new().observe(move |e| {
@@ -222,6 +229,7 @@ impl TaskBars {
                 }
                 self.contracted = 0;
                 self.components = components;
+                self.current = component;
                 let prefix = component_prefix(self.verb, &self.name, component, components);
                 match &mut self.run {
                     Some(bar) => bar.set_prefix(prefix),
@@ -230,7 +238,6 @@ impl TaskBars {
             }
             Event::Step {
                 step: Step::Verify,
-                component,
                 components,
                 ..
             } => {
@@ -240,11 +247,17 @@ impl TaskBars {
                 let pb = self
                     .verify
                     .get_or_insert_with(|| bar(self.ui, components as u64, self.verify_message));
-                pb.set_position(component as u64);
+                // The verifications started before this one: in sequence, the components
+                // done; in parallel, also the few still running on other threads.
+                pb.set_position(self.verifying);
+                self.verifying += 1;
             }
-            Event::Progress(p) => {
-                if let Some(bar) = &mut self.run {
-                    bar.observe(p);
+            Event::Progress {
+                component,
+                progress,
+            } => {
+                if let (Some(bar), true) = (&mut self.run, component == self.current) {
+                    bar.observe(progress);
                 }
             }
             Event::Pass(r) => {

@@ -9,6 +9,7 @@ use contractible::{QuadOptions, QuadResult, TriMesh};
 use serde::Serialize;
 
 use super::args::QuadArgs;
+use super::jobs::with_jobs;
 use super::progress::{finish, TaskBars};
 use super::{meshio, print_json, CliError, Ui};
 
@@ -49,6 +50,7 @@ pub fn quadrangulate_with_bars(
     mesh: &TriMesh,
     algorithm: Algorithm,
     seed: u64,
+    parallel: bool,
     ui: Ui,
 ) -> Result<QuadResult, contractible::Error> {
     let (monitor, bars) = TaskBars::monitor(
@@ -63,6 +65,7 @@ pub fn quadrangulate_with_bars(
             algorithm,
             seed,
             verify: true,
+            parallel,
             monitor,
         },
     );
@@ -99,8 +102,10 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
     }
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
-    let r = quadrangulate_with_bars(&mesh, a.algo, a.seed, ui)
-        .map_err(|e| meshio::task_error(&mesh, &names, "quad", e))?;
+    let r = with_jobs(a.jobs, |parallel| {
+        quadrangulate_with_bars(&mesh, a.algo, a.seed, parallel, ui)
+    })?
+    .map_err(|e| meshio::task_error(&mesh, &names, "quad", e))?;
     meshio::warn_dropped(&names, r.dropped_vertices, ui);
     drop(mesh);
     let seconds_write = match &output {

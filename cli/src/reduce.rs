@@ -6,6 +6,7 @@ use contractible::{ReduceOptions, ReduceResult, TriMesh};
 use serde::Serialize;
 
 use super::args::ReduceArgs;
+use super::jobs::with_jobs;
 use super::progress::{finish, TaskBars};
 use super::{meshio, print_json, CliError, Ui};
 
@@ -44,6 +45,7 @@ pub fn reduce_with_bars(
     algorithm: Algorithm,
     seed: u64,
     no_verify: bool,
+    parallel: bool,
     ui: Ui,
 ) -> Result<ReduceResult, contractible::Error> {
     let (monitor, bars) = TaskBars::monitor(
@@ -61,6 +63,7 @@ pub fn reduce_with_bars(
             // The command writes the surface, never the contractions.
             keep_history: false,
             verify: !no_verify,
+            parallel,
             monitor,
         },
     );
@@ -138,8 +141,10 @@ pub fn compute(a: &ReduceArgs, ui: Ui) -> Result<ReduceReport, CliError> {
         .transpose()?;
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
-    let r = reduce_with_bars(&mesh, a.algo, a.seed, a.no_verify, ui)
-        .map_err(|e| meshio::task_error(&mesh, &names, "reduce", e))?;
+    let r = with_jobs(a.jobs, |parallel| {
+        reduce_with_bars(&mesh, a.algo, a.seed, a.no_verify, parallel, ui)
+    })?
+    .map_err(|e| meshio::task_error(&mesh, &names, "reduce", e))?;
     meshio::warn_dropped(&names, r.dropped_vertices, ui);
     drop(mesh);
     let seconds_write = match &output {

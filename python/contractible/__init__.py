@@ -173,7 +173,7 @@ def info(V: Any, F: Any = None) -> Dict[str, Any]:
 
 
 def reduce(V: Any, F: Any = None, algo: str = "rs", seed: int = 0,
-           count_retests: bool = False) -> Reduced:
+           count_retests: bool = False, parallel: bool = False) -> Reduced:
     """An irreducible triangulation (no edge contractible under the link condition) of
     every component, by ``rs`` (Ramaswami–Siqueira, default), ``schipper`` or ``brute``
     (randomised by ``seed``). Closed surfaces only (orientable or not); vertex positions
@@ -181,13 +181,18 @@ def reduce(V: Any, F: Any = None, algo: str = "rs", seed: int = 0,
 
     ``count_retests=True`` counts ε (``edges_tested_more_than_once``, as the command
     line does); off by default, as in the Rust library, since it costs about a quarter
-    of the reduction's time (ε is then 0)."""
+    of the reduction's time (ε is then 0).
+
+    ``parallel=True`` reduces the components of the mesh on one thread per CPU; the
+    result is the same (the GIL is released either way)."""
     V, F = _vf(V, F)
-    d = _native.reduce(_vertices(V), _faces(F), algo, int(seed), None, bool(count_retests))
+    d = _native.reduce(_vertices(V), _faces(F), algo, int(seed), None, bool(count_retests),
+                       bool(parallel))
     return Reduced(d["vertices"], d["faces"], d["vertex_map"], d["stats"], d["history"])
 
 
-def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0) -> Quadrangulated:
+def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0,
+         parallel: bool = False) -> Quadrangulated:
     """A quadrangulation on the same vertices: a perfect pairing of edge-adjacent
     triangles by ``lrs`` (contraction/expansion with flips, default), ``ps``
     (Pulli–Segal), ``sg`` (simple greedy) or ``matching``, each completed by augmenting
@@ -197,9 +202,10 @@ def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0) -> Quadrangula
     ``frink-lct``: the link–cut cover-count strategy;
     ``ds-naive``: the quadratic reference, refused above 100,000 faces per component
     with a :class:`MeshError` of kind ``too_large``), perfect without completion. Closed
-    surfaces only; positions optional."""
+    surfaces only; positions optional. ``parallel=True`` pairs the components on one
+    thread per CPU, with the same result."""
     V, F = _vf(V, F)
-    d = _native.quad(_vertices(V), _faces(F), algo, int(seed))
+    d = _native.quad(_vertices(V), _faces(F), algo, int(seed), None, bool(parallel))
     return Quadrangulated(d["vertices"], d["quads"], d["triangles"], d["pairs"], d["stats"])
 
 

@@ -477,7 +477,8 @@ fn task_stats<'py, 'a, T: serde::Serialize + 'a>(
 /// in input order), `vertex_map` (input id of each survivor), `stats` (the command
 /// line's `reduce --json` totals and `component_list`), `history`.
 #[pyfunction]
-#[pyo3(signature = (vertices, faces, algo="rs", seed=0, vertex_count=None, count_retests=false))]
+#[pyo3(signature = (vertices, faces, algo="rs", seed=0, vertex_count=None, count_retests=false, parallel=false))]
+#[allow(clippy::too_many_arguments)]
 fn reduce<'py>(
     py: Python<'py>,
     vertices: Option<PyReadonlyArray2<'py, f64>>,
@@ -486,11 +487,13 @@ fn reduce<'py>(
     seed: u64,
     vertex_count: Option<usize>,
     count_retests: bool,
+    parallel: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = ReduceOptions {
         algorithm: choice::<irreducible::Algorithm>(py, algo)?,
         seed,
         count_retests,
+        parallel,
         ..ReduceOptions::default()
     };
     let mesh = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
@@ -529,7 +532,7 @@ fn reduce<'py>(
 /// K, `(m, 3)`, row `i` is input face `i` after LRS's flips), `pairs` (`(m/2, 2)` rows of
 /// `triangles`), `vertices` (the input's, or None), `stats`.
 #[pyfunction(name = "quad")]
-#[pyo3(signature = (vertices, faces, algo="lrs", seed=0, vertex_count=None))]
+#[pyo3(signature = (vertices, faces, algo="lrs", seed=0, vertex_count=None, parallel=false))]
 fn quad_py<'py>(
     py: Python<'py>,
     vertices: Option<PyReadonlyArray2<'py, f64>>,
@@ -537,10 +540,12 @@ fn quad_py<'py>(
     algo: &str,
     seed: u64,
     vertex_count: Option<usize>,
+    parallel: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = QuadOptions {
         algorithm: choice::<quad::Algorithm>(py, algo)?,
         seed,
+        parallel,
         ..QuadOptions::default()
     };
     let mesh = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;

@@ -196,6 +196,25 @@ def test_reduce_nonorientable(nonorientable):
         assert surface_signature(r.faces) == sig
 
 
+def test_parallel_components_give_the_same_results(nonorientable):
+    """The five non-orientable surfaces as one mesh of five components: reduced and paired
+    with the components in parallel and one after another, the same outputs."""
+    F, n = [], 0
+    for p in nonorientable:
+        _, f = c.read(p)
+        F.append(f + n)
+        n += int(f.max()) + 1
+    F = np.concatenate(F)
+    one, par = c.reduce(None, F), c.reduce(None, F, parallel=True)
+    assert np.array_equal(one.faces, par.faces)
+    assert np.array_equal(one.vertex_map, par.vertex_map)
+    assert len(par.stats["component_list"]) == len(nonorientable)
+    for algo in ("lrs", "ds"):
+        one, par = c.quad(None, F, algo=algo), c.quad(None, F, algo=algo, parallel=True)
+        assert np.array_equal(one.quads, par.quads)
+        assert np.array_equal(one.pairs, par.pairs)
+
+
 # ------------------------------------------------------------------------------- quad
 
 def check_pairing(F, q):

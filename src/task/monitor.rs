@@ -34,8 +34,15 @@ pub enum Event {
         /// Faces concerned.
         faces: usize,
     },
-    /// Progress inside the algorithm of the current component (see [`crate::progress`]).
-    Progress(Progress),
+    /// Progress inside the algorithm of component `component` (see
+    /// [`crate::progress`]). Components run in parallel (the options' `parallel`) report
+    /// interleaved, each under its own index.
+    Progress {
+        /// The component (0-based) whose algorithm reports.
+        component: usize,
+        /// The report.
+        progress: Progress,
+    },
     /// `simplify` only: a pass over the current component ended.
     Pass(PassReport),
 }
@@ -117,9 +124,57 @@ impl Monitor {
         Ok(())
     }
 
-    /// The observer an algorithm takes, forwarding its reports as [`Event::Progress`].
-    pub(crate) fn progress(&self) -> impl FnMut(Progress) + '_ {
-        move |p| self.report(&Event::Progress(p))
+    /// The observer an algorithm takes, forwarding its reports as [`Event::Progress`]
+    /// of component `component`.
+    pub(crate) fn progress(&self, component: usize) -> impl FnMut(Progress) + '_ {
+        move |progress| {
+            self.report(&Event::Progress {
+                component,
+                progress,
+            })
+        }
+    }
+
+    /// `run(i, item, observer)` on every item `i` of `items` (pairs of a face count,
+    /// reported with the step, and the item), each after [`Monitor::step`] `(step, i,
+    /// n)`; the results in the items' order.
+    ///
+    /// With `parallel` (and the crate's `parallel` feature; without it the flag is
+    /// ignored) the items run on the current rayon thread pool, the global one unless
+    /// the caller runs the call inside `ThreadPool::install`; events of different items
+    /// then interleave. Either way the result is the same: the outputs in item order or,
+    /// if any item fails, the error of the first failing item in item order (in
+    /// parallel the later items may have run too; their results are dropped).
+    pub(crate) fn each_component<I: Send, T: Send>(
+        &self,
+        step: Step,
+        parallel: bool,
+        items: Vec<(usize, I)>,
+        run: impl Fn(usize, I, &mut dyn FnMut(Progress)) -> Result<T, crate::Error> + Sync,
+    ) -> Result<Vec<T>, crate::Error> {
+        let n = items.len();
+        let one = |i: usize, faces: usize, item: I| {
+            self.step(step, i, n, faces)?;
+            run(i, item, &mut self.progress(i))
+        };
+        #[cfg(feature = "parallel")]
+        if parallel && n > 1 {
+            use rayon::prelude::*;
+            let results: Vec<Result<T, crate::Error>> = items
+                .into_par_iter()
+                .enumerate()
+                .map(|(i, (faces, item))| one(i, faces, item))
+                .collect();
+            // The first error in item order, as the sequential loop would stop at.
+            return results.into_iter().collect();
+        }
+        #[cfg(not(feature = "parallel"))]
+        let _ = parallel;
+        items
+            .into_iter()
+            .enumerate()
+            .map(|(i, (faces, item))| one(i, faces, item))
+            .collect()
     }
 }
 
@@ -148,5 +203,92 @@ mod tests {
         ));
         assert_eq!(*seen.lock().expect("not poisoned"), vec![Step::Build]);
         assert!(format!("{m:?}").contains("cancelled: true"));
+    }
+
+    /// The helper behind the tasks' component loops: results in item order, the first
+    /// failing item's error (in parallel too, where later items may fail first in
+    /// time), each item's step and progress reported under its own index, and in
+    /// sequence no item run after a failure.
+    #[test]
+    #[cfg(feature = "parallel")]
+    fn components_run_in_order_or_in_parallel_with_the_same_result() {
+        let events = Arc::new(Mutex::new(Vec::new()));
+        let e = Arc::clone(&events);
+        let m = Monitor::new().observe(move |ev| {
+            let mut e = e.lock().expect("not poisoned");
+            match *ev {
+                Event::Step {
+                    step,
+                    component,
+                    components,
+                    faces,
+                } => e.push((step, component, components, faces, None)),
+                Event::Progress {
+                    component,
+                    progress,
+                } => e.push((Step::Run, component, 0, 0, Some(progress.done))),
+                Event::Pass(_) => {}
+            }
+        });
+        let items = |k: usize| (0..k).map(|i| (10 * i, i)).collect::<Vec<_>>();
+        let ran = Arc::new(Mutex::new(Vec::new()));
+        let run = |i: usize, item: usize, observer: &mut dyn FnMut(Progress)| {
+            ran.lock().expect("not poisoned").push(i);
+            observer(Progress {
+                stage: "item",
+                done: item as u64 + 100,
+                total: 200,
+            });
+            // Items 3 and 5 fail: the call returns item 3's error, whichever fails
+            // first in time.
+            if item == 3 || item == 5 {
+                Err(crate::Error::BadOption {
+                    option: "item",
+                    value: item.to_string(),
+                    expected: String::new(),
+                })
+            } else {
+                Ok(item * item)
+            }
+        };
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(3)
+            .build()
+            .expect("a pool");
+        for parallel in [false, true] {
+            events.lock().expect("not poisoned").clear();
+            ran.lock().expect("not poisoned").clear();
+            let ok = pool.install(|| m.each_component(Step::Verify, parallel, items(3), run));
+            assert_eq!(ok.expect("no failing item"), vec![0, 1, 4]);
+            let mut seen = events.lock().expect("not poisoned").clone();
+            seen.sort_by_key(|e| (e.1, e.4.is_some()));
+            assert_eq!(
+                seen,
+                vec![
+                    (Step::Verify, 0, 3, 0, None),
+                    (Step::Run, 0, 0, 0, Some(100)),
+                    (Step::Verify, 1, 3, 10, None),
+                    (Step::Run, 1, 0, 0, Some(101)),
+                    (Step::Verify, 2, 3, 20, None),
+                    (Step::Run, 2, 0, 0, Some(102)),
+                ],
+                "parallel: {parallel}"
+            );
+            ran.lock().expect("not poisoned").clear();
+            let err = pool
+                .install(|| m.each_component(Step::Run, parallel, items(8), run))
+                .unwrap_err();
+            assert!(
+                matches!(&err, crate::Error::BadOption { value, .. } if value == "3"),
+                "parallel: {parallel}: {err}"
+            );
+            let mut ran = ran.lock().expect("not poisoned").clone();
+            ran.sort_unstable();
+            if parallel {
+                assert!(ran.starts_with(&[0, 1, 2, 3]), "{ran:?}");
+            } else {
+                assert_eq!(ran, vec![0, 1, 2, 3]);
+            }
+        }
     }
 }

@@ -20,6 +20,10 @@ pub struct QuadOptions {
     /// Check every pairing independently ([`verify_quadrangulation`]) and fail with
     /// [`Error::Unverified`] if one is wrong.
     pub verify: bool,
+    /// Run the components on rayon's current thread pool (the crate's `parallel`
+    /// feature; ignored without it). The result is the sequential run's, errors
+    /// included; only the order of the monitor's events differs.
+    pub parallel: bool,
     /// Progress and cancellation.
     pub monitor: Monitor,
 }
@@ -30,6 +34,7 @@ impl Default for QuadOptions {
             algorithm: Algorithm::default(),
             seed: 0,
             verify: true,
+            parallel: false,
             monitor: Monitor::default(),
         }
     }
@@ -237,32 +242,41 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
         }
     }
     let qopts = quad::Options { seed: options.seed };
-    let mut done = Vec::with_capacity(n);
-    for (i, c) in surfaces.components.iter().enumerate() {
-        monitor.step(Step::Run, i, n, c.tri.face_count())?;
-        let q = quad::convert_observed(c.tri.clone(), algorithm, &qopts, &mut monitor.progress())
-            .map_err(|source| match source {
-            quad::ConvertError::TooLarge { faces, limit, .. } => Error::TooLarge {
-                algorithm,
-                component: i,
-                faces,
-                limit,
-            },
-            source => Error::Convert {
-                component: i,
-                source,
-            },
-        })?;
-        done.push(q);
-    }
+    let items = surfaces
+        .components
+        .iter()
+        .map(|c| (c.tri.face_count(), c))
+        .collect();
+    let done = monitor.each_component(Step::Run, options.parallel, items, |i, c, observer| {
+        quad::convert_observed(c.tri.clone(), algorithm, &qopts, observer).map_err(|source| {
+            match source {
+                quad::ConvertError::TooLarge { faces, limit, .. } => Error::TooLarge {
+                    algorithm,
+                    component: i,
+                    faces,
+                    limit,
+                },
+                source => Error::Convert {
+                    component: i,
+                    source,
+                },
+            }
+        })
+    })?;
     let mut verdicts = vec![true; n];
     let mut seconds_verify = None;
     if options.verify {
         let started = std::time::Instant::now();
-        for (i, (c, q)) in surfaces.components.iter().zip(&done).enumerate() {
-            monitor.step(Step::Verify, i, n, q.tri.face_count())?;
-            verdicts[i] = verify_quadrangulation(&c.tri, q);
-        }
+        let items = surfaces
+            .components
+            .iter()
+            .zip(&done)
+            .map(|(c, q)| (q.tri.face_count(), (c, q)))
+            .collect();
+        verdicts =
+            monitor.each_component(Step::Verify, options.parallel, items, |_, (c, q), _| {
+                Ok(verify_quadrangulation(&c.tri, q))
+            })?;
         seconds_verify = Some(started.elapsed().as_secs_f64());
         let bad: Vec<usize> = (0..n).filter(|&i| !verdicts[i]).collect();
         if !bad.is_empty() {

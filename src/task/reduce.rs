@@ -26,6 +26,10 @@ pub struct ReduceOptions {
     /// Check every output independently ([`check_irreducible`]) and fail with
     /// [`Error::Unverified`] if one still has a contractible edge.
     pub verify: bool,
+    /// Run the components on rayon's current thread pool (the crate's `parallel`
+    /// feature; ignored without it). The result is the sequential run's, errors
+    /// included; only the order of the monitor's events differs.
+    pub parallel: bool,
     /// Progress and cancellation.
     pub monitor: Monitor,
 }
@@ -38,6 +42,7 @@ impl Default for ReduceOptions {
             count_retests: false,
             keep_history: true,
             verify: true,
+            parallel: false,
             monitor: Monitor::default(),
         }
     }
@@ -295,25 +300,33 @@ pub fn reduce(mesh: &TriMesh, options: &ReduceOptions) -> Result<ReduceResult, E
         count_retests: options.count_retests,
         keep_history: options.keep_history,
     };
-    let mut components = Vec::with_capacity(n);
-    for (i, c) in surfaces.components.into_iter().enumerate() {
-        monitor.step(Step::Run, i, n, c.tri.face_count())?;
-        let input = SurfaceType::of(&c.tri);
-        let reduction =
-            irreducible::reduce_observed(c.tri, options.algorithm, &algo, &mut monitor.progress());
-        components.push(ReducedComponent {
-            stats: ReduceStats::of(&reduction, input),
-            reduction,
-            vertex_origin: c.vertex_origin,
-            face_origin: c.face_origin,
-        });
-    }
+    let items = surfaces
+        .components
+        .into_iter()
+        .map(|c| (c.tri.face_count(), c))
+        .collect();
+    let mut components =
+        monitor.each_component(Step::Run, options.parallel, items, |_, c, observer| {
+            let input = SurfaceType::of(&c.tri);
+            let reduction = irreducible::reduce_observed(c.tri, options.algorithm, &algo, observer);
+            Ok(ReducedComponent {
+                stats: ReduceStats::of(&reduction, input),
+                reduction,
+                vertex_origin: c.vertex_origin,
+                face_origin: c.face_origin,
+            })
+        })?;
     let mut seconds_verify = None;
     if options.verify {
         let started = std::time::Instant::now();
-        for (i, c) in components.iter_mut().enumerate() {
-            monitor.step(Step::Verify, i, n, c.reduction.tri.face_count())?;
-            let check = check_irreducible(&c.reduction.tri);
+        let items = components
+            .iter()
+            .map(|c| (c.reduction.tri.face_count(), &c.reduction.tri))
+            .collect();
+        let checks = monitor.each_component(Step::Verify, options.parallel, items, |_, t, _| {
+            Ok(check_irreducible(t))
+        })?;
+        for (c, check) in components.iter_mut().zip(checks) {
             c.stats.irreducible = Some(check.irreducible);
             c.stats.verified_by = Some(check.method);
         }
@@ -471,13 +484,13 @@ mod tests {
         );
         let mesh = TriMesh::combinatorial(n + 6, faces);
         let steps = Arc::new(Mutex::new(Vec::new()));
-        let progress = Arc::new(Mutex::new(0usize));
+        let progress = Arc::new(Mutex::new([0usize; 2]));
         let (s, p) = (Arc::clone(&steps), Arc::clone(&progress));
         let monitor = Monitor::new().observe(move |e| match e {
             Event::Step {
                 step, component, ..
             } => s.lock().expect("not poisoned").push((*step, *component)),
-            Event::Progress(_) => *p.lock().expect("not poisoned") += 1,
+            Event::Progress { component, .. } => p.lock().expect("not poisoned")[*component] += 1,
             Event::Pass(_) => {}
         });
         let r = reduce(
@@ -500,8 +513,12 @@ mod tests {
             ]
         );
         assert!(
-            *progress.lock().expect("not poisoned") >= 4,
-            "start and end of each run"
+            progress
+                .lock()
+                .expect("not poisoned")
+                .iter()
+                .all(|&k| k >= 2),
+            "start and end of each run, under its component"
         );
 
         let flag = Arc::new(AtomicBool::new(false));

@@ -309,7 +309,12 @@ pub fn simplify(mesh: &TriMesh, options: &SimplifyOptions) -> Result<SimplifyRes
         positions,
         &algo,
         &mut on_pass,
-        &mut monitor.progress(),
+        &mut |progress| {
+            monitor.report(&Event::Progress {
+                component: current.get(),
+                progress,
+            })
+        },
     )
     .map_err(|e| match e {
         SimplifyError::Build(b) => Error::Mesh(b),

@@ -85,7 +85,7 @@ fn placed(mesh: &TriMesh, seed: u64) -> TriMesh {
 }
 
 /// The disjoint union of `parts`, each moved by 3 along `x` from the previous one.
-fn union(parts: &[&TriMesh]) -> TriMesh {
+pub fn union(parts: &[&TriMesh]) -> TriMesh {
     let (mut pos, mut faces) = (Vec::new(), Vec::new());
     for (k, m) in parts.iter().enumerate() {
         let n = pos.len() as u32;

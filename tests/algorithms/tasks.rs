@@ -78,3 +78,132 @@ fn the_readme_shows_the_example_file() {
     );
     assert!(example.lines().count() <= 25, "the example stays short");
 }
+
+/// Every generated closed surface in one mesh (16 components of both orientabilities),
+/// every reduction and tri-quad algorithm run with the components in parallel on a pool
+/// of 4 threads and one after another: the outputs are the same, timings aside; the
+/// parallel runs do use several threads; and a cancellation during the parallel runs
+/// still cancels the call.
+#[test]
+fn parallel_components_give_the_sequential_results() {
+    use contractible::task::{Event, Monitor, Step};
+    use contractible::{quadrangulate, reduce, Error, QuadOptions, ReduceOptions};
+    use std::sync::atomic::{AtomicBool, Ordering};
+    use std::sync::Arc;
+
+    let all = crate::closed_inputs::closed_surfaces();
+    let parts: Vec<&TriMesh> = all.iter().map(|g| &g.mesh).collect();
+    let mesh = crate::closed_inputs::union(&parts);
+    let components = crate::closed_inputs::COMPONENTS;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(4)
+        .build()
+        .expect("a pool");
+    for algorithm in contractible::irreducible::Algorithm::ALL {
+        let run = |parallel| {
+            let options = ReduceOptions {
+                algorithm,
+                seed: 5,
+                count_retests: true,
+                parallel,
+                ..ReduceOptions::default()
+            };
+            let mut r = pool.install(|| reduce(&mesh, &options)).expect("closed");
+            for c in &mut r.components {
+                c.stats.seconds = 0.0;
+            }
+            r.totals.seconds = 0.0;
+            r
+        };
+        let (one, par) = (run(false), run(true));
+        assert_eq!(par.components.len(), components);
+        assert_eq!(par.mesh, one.mesh, "{algorithm}");
+        assert_eq!(par.vertex_map, one.vertex_map, "{algorithm}");
+        assert_eq!(par.totals, one.totals, "{algorithm}");
+        for (p, o) in par.components.iter().zip(&one.components) {
+            assert_eq!(p.stats, o.stats, "{algorithm}");
+            assert_eq!(p.reduction.history, o.reduction.history, "{algorithm}");
+            assert_eq!(p.vertex_origin, o.vertex_origin, "{algorithm}");
+        }
+    }
+    for algorithm in contractible::quad::Algorithm::ALL {
+        let run = |parallel| {
+            let options = QuadOptions {
+                algorithm,
+                seed: 5,
+                parallel,
+                ..QuadOptions::default()
+            };
+            let mut q = pool
+                .install(|| quadrangulate(&mesh, &options))
+                .expect("closed");
+            for s in q
+                .components
+                .iter_mut()
+                .map(|c| &mut c.stats)
+                .chain([&mut q.totals])
+            {
+                (s.initial_seconds, s.completion_seconds, s.total_seconds) = (0.0, 0.0, 0.0);
+            }
+            q
+        };
+        let (one, par) = (run(false), run(true));
+        assert_eq!(par.components.len(), components);
+        assert_eq!(par.mesh, one.mesh, "{algorithm}");
+        assert_eq!(par.triangles, one.triangles, "{algorithm}");
+        assert_eq!(par.pairs, one.pairs, "{algorithm}");
+        assert_eq!(par.totals, one.totals, "{algorithm}");
+        let stats = |q: &contractible::QuadResult| -> Vec<_> {
+            q.components.iter().map(|c| c.stats.clone()).collect()
+        };
+        assert_eq!(stats(&par), stats(&one), "{algorithm}");
+    }
+
+    // The parallel run does use several threads of the pool; the sequential one, one.
+    for (parallel, several) in [(false, false), (true, true)] {
+        let threads = Arc::new(std::sync::Mutex::new(std::collections::BTreeSet::new()));
+        let t = Arc::clone(&threads);
+        let monitor = Monitor::new().observe(move |e| {
+            if let Event::Step {
+                step: Step::Run, ..
+            } = e
+            {
+                let id = format!("{:?}", std::thread::current().id());
+                t.lock().expect("not poisoned").insert(id);
+            }
+        });
+        let options = ReduceOptions {
+            parallel,
+            monitor,
+            ..ReduceOptions::default()
+        };
+        pool.install(|| reduce(&mesh, &options)).expect("closed");
+        let used = threads.lock().expect("not poisoned").len();
+        assert_eq!(used > 1, several, "{parallel}: {used} threads");
+    }
+
+    // Cancelled as soon as a component starts: each thread had at most one component
+    // under way, every component started later fails, and the call returns the
+    // cancellation, in parallel as in sequence.
+    for parallel in [false, true] {
+        let flag = Arc::new(AtomicBool::new(false));
+        let f = Arc::clone(&flag);
+        let monitor = Monitor::new()
+            .observe(move |e| {
+                if let Event::Step {
+                    step: Step::Run, ..
+                } = e
+                {
+                    f.store(true, Ordering::Relaxed);
+                }
+            })
+            .cancel_on(flag);
+        let options = ReduceOptions {
+            parallel,
+            monitor,
+            ..ReduceOptions::default()
+        };
+        let e = pool.install(|| reduce(&mesh, &options)).unwrap_err();
+        assert!(matches!(e, Error::Cancelled), "{parallel}: {e}");
+    }
+}

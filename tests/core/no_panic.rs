@@ -140,7 +140,7 @@ proptest! {
         eps in eps(),
         seed in any::<u64>(),
         cancelled in prop::bool::weighted(0.1),
-        flags in any::<[bool; 3]>(),
+        flags in any::<[bool; 4]>(),
     ) {
         let _ = describe(&mesh);
         let _ = reduce(&mesh, &ReduceOptions {
@@ -149,12 +149,14 @@ proptest! {
             count_retests: flags[0],
             keep_history: true,
             verify: flags[1],
+            parallel: flags[3],
             monitor: monitor(cancelled),
         });
         let _ = quadrangulate(&mesh, &QuadOptions {
             algorithm: q_algo,
             seed,
             verify: flags[1],
+            parallel: flags[3],
             monitor: monitor(cancelled),
         });
         let _ = simplify(&mesh, &SimplifyOptions {
