@@ -165,3 +165,55 @@ mod rs_b0 {
         );
     }
 }
+
+/// The whole task calls `contractible::reduce` (RS) and `contractible::quadrangulate`
+/// (Diks–Stańczyk) on one mesh of eight components (subdivided spheres, tori, Klein
+/// bottles and projective planes, 41k–82k faces each, 0.51M in all), with the components
+/// one after another and in parallel on rayon's global pool (one thread per CPU):
+/// building, the algorithm and the verification. The ratio is what `parallel: true`
+/// (the command line's default `--jobs`) gains on this machine.
+#[divan::bench_group(sample_count = 10, sample_size = 1)]
+mod components {
+    use contractible::gen::{icosahedron, klein_bottle, projective_plane6, subdivide, torus7};
+    use contractible::{quadrangulate, reduce, QuadOptions, ReduceOptions, TriMesh};
+    use std::sync::OnceLock;
+
+    fn eight() -> &'static TriMesh {
+        static MESH: OnceLock<TriMesh> = OnceLock::new();
+        MESH.get_or_init(|| {
+            let (mut faces, mut n) = (Vec::new(), 0u32);
+            for base in [icosahedron(), torus7(), klein_bottle(), projective_plane6()] {
+                // The first 1-to-4 subdivision level with at least 40k faces.
+                let levels = (0..).find(|&k| base.faces.len() << (2 * k) >= 40_000);
+                let m = subdivide(&base, levels.unwrap_or(6)).expect("within the limits");
+                for _ in 0..2 {
+                    faces.extend(m.faces.iter().map(|f| f.map(|v| v + n)));
+                    n += m.vertex_count as u32;
+                }
+            }
+            TriMesh::combinatorial(n as usize, faces)
+        })
+    }
+
+    #[divan::bench(args = [false, true])]
+    fn reduce_rs(b: divan::Bencher, parallel: bool) {
+        let mesh = eight();
+        let options = ReduceOptions {
+            keep_history: false,
+            parallel,
+            ..ReduceOptions::default()
+        };
+        b.bench_local(|| reduce(mesh, &options).expect("closed"));
+    }
+
+    #[divan::bench(args = [false, true])]
+    fn quad_ds(b: divan::Bencher, parallel: bool) {
+        let mesh = eight();
+        let options = QuadOptions {
+            algorithm: contractible::quad::Algorithm::DiksStanczyk,
+            parallel,
+            ..QuadOptions::default()
+        };
+        b.bench_local(|| quadrangulate(mesh, &options).expect("closed"));
+    }
+}

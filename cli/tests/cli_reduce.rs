@@ -264,3 +264,79 @@ fn demo_exits_0() {
     assert_eq!(out.status.code(), Some(0), "{}", cli_common::stderr(&out));
     assert!(out.stdout.is_empty());
 }
+
+/// `value` without the keys that hold timings (any key containing `seconds`) and the
+/// output's name, at any depth.
+fn without_timings(value: &serde_json::Value) -> serde_json::Value {
+    match value {
+        serde_json::Value::Object(m) => m
+            .iter()
+            .filter(|(k, _)| !k.contains("seconds") && *k != "output")
+            .map(|(k, v)| (k.clone(), without_timings(v)))
+            .collect(),
+        serde_json::Value::Array(a) => a.iter().map(without_timings).collect(),
+        v => v.clone(),
+    }
+}
+
+/// `--jobs`: the components of a mesh (here 5 surfaces of both orientabilities)
+/// reduced and paired one after another and three at once give the same files and the
+/// same statistics, timings aside; `--jobs 0` is refused as bad input.
+#[test]
+fn jobs_change_nothing_but_the_time() {
+    use contractible::gen;
+    let d = Scratch::new("reduce-jobs");
+    let parts = [
+        gen::subdivide(&gen::icosahedron(), 2).unwrap(),
+        gen::subdivide(&gen::torus7(), 2).unwrap(),
+        gen::subdivide(&gen::klein_bottle(), 2).unwrap(),
+        gen::subdivide(&gen::projective_plane6(), 3).unwrap(),
+        gen::octahedron(),
+    ];
+    let (mut faces, mut n) = (Vec::new(), 0u32);
+    for p in &parts {
+        faces.extend(p.faces.iter().map(|f| f.map(|v| v + n)));
+        n += p.vertex_count as u32;
+    }
+    let input = d.path("five.off");
+    contractible::io::write_mesh(
+        &input,
+        &contractible::TriMesh::combinatorial(n as usize, faces),
+    )
+    .unwrap();
+    for (task, extra) in [("reduce", &[][..]), ("quad", &["--algo", "ds"][..])] {
+        let mut seen = Vec::new();
+        for jobs in ["1", "3"] {
+            let out = d.path(&format!("{task}-{jobs}.off"));
+            let mut args: Vec<&OsStr> = vec![
+                OsStr::new(task),
+                input.as_os_str(),
+                OsStr::new("-o"),
+                out.as_os_str(),
+                OsStr::new("--jobs"),
+                OsStr::new(jobs),
+            ];
+            args.extend(extra.iter().map(OsStr::new));
+            let j = run_json(&args);
+            assert_eq!(
+                j["component_list"].as_array().map(Vec::len),
+                Some(5),
+                "{task}"
+            );
+            seen.push((without_timings(&j), std::fs::read(&out).unwrap()));
+        }
+        assert_eq!(seen[0], seen[1], "{task}");
+    }
+    let out = run(&[
+        OsStr::new("reduce"),
+        input.as_os_str(),
+        OsStr::new("--jobs"),
+        OsStr::new("0"),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        cli_common::stderr(&out).contains("--jobs"),
+        "{}",
+        cli_common::stderr(&out)
+    );
+}
