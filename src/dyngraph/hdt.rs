@@ -916,6 +916,16 @@ impl Hdt {
 }
 
 #[cfg(test)]
+impl Hdt {
+    /// Moves edge `e` to `level` without touching its lists or forests: a broken
+    /// invariant for the tests that show [`Hdt::check`] (and the checks built on it)
+    /// can fail.
+    pub(crate) fn set_level_for_tests(&mut self, e: u32, level: u8) {
+        self.state[e as usize] = level;
+    }
+}
+
+#[cfg(test)]
 mod tests {
     use super::*;
     use std::collections::{BTreeMap, BTreeSet};
@@ -1157,7 +1167,7 @@ mod tests {
         let e = (0..4)
             .find(|&e| !hdt.is_tree_edge(e))
             .expect("one non-tree edge");
-        hdt.state[e as usize] = 3;
+        hdt.set_level_for_tests(e, 3);
         assert!(hdt.check().is_err());
     }
 

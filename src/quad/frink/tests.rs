@@ -100,6 +100,39 @@ fn small_graphs() -> Vec<(&'static str, Cubic)> {
     ]
 }
 
+/// `H'` two triangles `{a, x1, x4}` and `{a', x2, x3}` joined by the bridge `aa'`, and
+/// `u` (node 0) joined to `x1`, `x2` and `v` (node 1) to `x3`, `x4`: the reduction at
+/// `uv` from `u` (slot order) splits its `x_i` by a bridge of `H'` as
+/// `{x1, x4} | {x2, x3}`, where only `H1` passes; with `x3_first = false`, `v`'s two
+/// edges are the other way round and the split is `{x1, x3} | {x2, x4}`, where only `H2`
+/// passes. The random graphs of the tests give the first kind rarely or never (their
+/// slot orders come from how they are generated), so it is written down.
+fn bridge_split(x3_first: bool) -> Cubic {
+    let (u, v, a, x1, x4, b, x2, x3) = (0, 1, 2, 3, 4, 5, 6, 7);
+    let at_v = if x3_first {
+        [[v, x3], [v, x4]]
+    } else {
+        [[v, x4], [v, x3]]
+    };
+    graph(
+        8,
+        &[
+            [u, v],
+            [u, x1],
+            [u, x2],
+            at_v[0],
+            at_v[1],
+            [a, x1],
+            [x1, x4],
+            [x4, a],
+            [b, x2],
+            [x2, x3],
+            [x3, b],
+            [a, b],
+        ],
+    )
+}
+
 /// Every reduction candidate of `g`: every live `u` and every simple edge `uv` at it,
 /// with the other edges in slot order (as [`Cubic::candidate_at`] builds them, but not
 /// only the first).
@@ -1065,9 +1098,34 @@ fn f3_catches_a_forest_that_stops_spanning() {
     }
 }
 
+/// F3 also reads the HDT structure's own invariants, through the forest interface
+/// Diks–Stańczyk uses: an edge moved to a level its lists do not hold fails it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f3_reads_the_connectivity_structures_invariants() {
+    use ds::SpanningForest;
+    let g = prism();
+    let cand = g.candidate_at(0).expect("a simple edge at node 0");
+    let mut hdt = hdt::Hdt::new(g.node_capacity());
+    let mut changes = Vec::new();
+    for e in 0..g.ends.len() as u32 {
+        let [a, b] = g.ends(e);
+        SpanningForest::insert(&mut hdt, e, a, b, &mut changes);
+    }
+    assert!(SpanningForest::check(&hdt).is_ok());
+    let e = (0..g.ends.len() as u32)
+        .find(|&e| !hdt.is_tree_edge(e))
+        .expect("a non-tree edge");
+    hdt.set_level_for_tests(e, 3);
+    assert!(SpanningForest::check(&hdt).is_err());
+    assert_fails("F3", || {
+        spec::ds_forest(&g, &cand, |_| true, || SpanningForest::check(&hdt));
+    });
+}
+
 /// A strategy's decision against the naive DFS test on *every* reduction of small graphs
-/// (not only those it would pick itself): the small graphs and random connected
-/// bridgeless cubic multigraphs of 4 to 20 nodes from `seed`, `graphs` in all; for every
+/// (not only those it would pick itself): the small graphs, both [`bridge_split`]s, and
+/// random connected bridgeless cubic multigraphs of 4 to 20 nodes from `seed`, `graphs` in all; for every
 /// candidate a fresh strategy from `fresh` (its structure is reduced by `choose`) is
 /// started on the graph and asked, and both reconnections are classified by the naive
 /// test. The decision must take a valid one, so wherever only one is valid it is that
@@ -1083,6 +1141,12 @@ fn decide_every_reduction<S: Strategy>(
         .into_iter()
         .map(|(n, g)| (n.to_string(), g))
         .collect();
+    for x3_first in [true, false] {
+        all.push((
+            format!("bridge split, x3 first: {x3_first}"),
+            bridge_split(x3_first),
+        ));
+    }
     let mut rng = Rng::new(seed);
     while all.len() < graphs {
         let g = random_cubic(2 * (2 + rng.index(9)), &mut rng);
@@ -1437,4 +1501,84 @@ fn inputs_above_the_strategy_limit_are_refused() {
     assert!(pool(ds) < u32::MAX as usize && pool(ds + 1) >= u32::MAX as usize);
     assert_eq!(ds, 55_063_683);
     assert_eq!(Naive::new().max_nodes(), usize::MAX);
+}
+
+/// The [`bridge_split`] graphs are what their documentation says: connected and
+/// bridgeless, and at `uv` from `u` only `H1` passes on the first, only `H2` on the
+/// second (by the naive DFS); Diks–Stańczyk, started fresh, takes that one on each.
+#[test]
+fn a_bridge_between_the_pairs_forces_each_reconnection() {
+    let mut dfs = Dfs::default();
+    for (x3_first, only) in [(true, Reconnection::H1), (false, Reconnection::H2)] {
+        let g = bridge_split(x3_first);
+        assert!(spec::connected_bridgeless_by_definition(&g));
+        let cand = all_candidates(&g)
+            .into_iter()
+            .find(|c| (c.u, c.v) == (0, 1))
+            .expect("uv from u");
+        assert_eq!(cand.x, if x3_first { [3, 6, 7, 4] } else { [3, 6, 4, 7] });
+        let mut h = g.clone();
+        let ok = [Reconnection::H1, Reconnection::H2].map(|recon| {
+            let r = h.reduce(&cand, recon);
+            let ok = dfs.connected_bridgeless(&h, cand.x[0]);
+            h.undo(&r);
+            ok
+        });
+        assert_eq!(ok, [only == Reconnection::H1, only == Reconnection::H2]);
+        let mut s = DiksStanczyk::new();
+        s.start(&h);
+        assert_eq!(s.choose(&mut h, &cand), Some(only), "x3 first: {x3_first}");
+        let c = s.counters();
+        assert_eq!((c.forced, c.free, c.disconnected), (1, 0, 0));
+    }
+}
+
+/// Counters of several runs add field by field, except the highest level, which is the
+/// maximum of the two.
+#[test]
+fn ds_counters_add_field_by_field() {
+    let a = DsCounters {
+        disconnected: 1,
+        forced: 2,
+        free: 3,
+        digon_steps: 4,
+        restarts: 5,
+        cuts: 6,
+        replacements: 7,
+        promotions: 8,
+        max_level: 9,
+        forest_bytes: 10,
+    };
+    let b = DsCounters {
+        disconnected: 100,
+        forced: 200,
+        free: 300,
+        digon_steps: 400,
+        restarts: 500,
+        cuts: 600,
+        replacements: 700,
+        promotions: 800,
+        max_level: 3,
+        forest_bytes: 1000,
+    };
+    let mut sum = a;
+    sum += b;
+    assert_eq!(
+        sum,
+        DsCounters {
+            disconnected: 101,
+            forced: 202,
+            free: 303,
+            digon_steps: 404,
+            restarts: 505,
+            cuts: 606,
+            replacements: 707,
+            promotions: 808,
+            max_level: 9,
+            forest_bytes: 1010,
+        }
+    );
+    let mut sum = b;
+    sum += a;
+    assert_eq!(sum.max_level, 9);
 }
