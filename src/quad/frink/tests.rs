@@ -105,8 +105,7 @@ fn small_graphs() -> Vec<(&'static str, Cubic)> {
 /// `uv` from `u` (slot order) splits its `x_i` by a bridge of `H'` as
 /// `{x1, x4} | {x2, x3}`, where only `H1` passes; with `x3_first = false`, `v`'s two
 /// edges are the other way round and the split is `{x1, x3} | {x2, x4}`, where only `H2`
-/// passes. The random graphs of the tests give the first kind rarely or never (their
-/// slot orders come from how they are generated), so it is written down.
+/// passes: both forced branches of a decision, whatever random graphs give.
 fn bridge_split(x3_first: bool) -> Cubic {
     let (u, v, a, x1, x4, b, x2, x3) = (0, 1, 2, 3, 4, 5, 6, 7);
     let at_v = if x3_first {
