@@ -2318,9 +2318,11 @@ pub struct TaskInput {
     pub vertices: VertexCount,
     /// The positions.
     pub positions: Positions,
-    /// The reduction algorithm (`% 3` of [`contractible::irreducible::Algorithm::ALL`]).
+    /// The reduction algorithm (`% 3` of [`contractible::irreducible::Algorithm::ALL`]);
+    /// its high bit runs the components in parallel.
     pub reduce: u8,
-    /// The tri-quad algorithm (`% 8` of [`contractible::quad::Algorithm::ALL`]).
+    /// The tri-quad algorithm (`% 8` of [`contractible::quad::Algorithm::ALL`]); its high
+    /// bit runs the components in parallel.
     pub quad: u8,
     /// The seed of both.
     pub seed: u64,
@@ -3083,12 +3085,14 @@ pub fn check_tasks(input: &TaskInput) {
         algorithm: contractible::irreducible::Algorithm::ALL[usize::from(input.reduce % 3)],
         seed: input.seed,
         count_retests: true,
+        parallel: input.reduce >= 128,
         ..contractible::ReduceOptions::default()
     };
     let qalg = QAlg::ALL[usize::from(input.quad % 8)];
     let quad_opts = contractible::QuadOptions {
         algorithm: qalg,
         seed: input.seed,
+        parallel: input.quad >= 128,
         ..contractible::QuadOptions::default()
     };
     let fraction = eps_fraction(input.eps);
