@@ -28,6 +28,16 @@ pub(crate) fn max_nodes_for_edge_ids(limit: usize) -> usize {
     n
 }
 
+/// The most nodes [`Cubic::from_edges`] accepts, 1,431,655,764: the `3n/2` edges of a
+/// cubic graph on them stay below `2^31 − 1`, so that every edge id a run creates
+/// ([`edge_ids`], `5n/2 − 2`) fits below [`NONE`].
+pub(crate) const MAX_NODES: usize = (NONE as usize / 2 - 1) * 2 / 3;
+
+/// Whether `n` nodes are within [`MAX_NODES`].
+pub(crate) fn fits_ids(n: usize) -> bool {
+    n <= MAX_NODES
+}
+
 /// A cubic multigraph with stable ids on flat arrays: `ends[e]` are the two end nodes of
 /// edge `e` (equal for a loop), `slots[x]` the three edge ids at node `x` (a loop twice).
 /// Reductions remove two nodes and five edges and append two new edges; an edge is live
@@ -95,7 +105,9 @@ impl Cubic {
     /// edges allowed). O(n + m). Errors if an end is out of range or a node's degree is
     /// not 3 (a loop counts twice).
     pub fn from_edges(n: usize, edges: &[[u32; 2]]) -> Result<Cubic, FrinkError> {
-        if n >= NONE as usize || edges.len() >= NONE as usize / 2 {
+        // Checked on `n` alone, before any allocation: a longer edge list than `3n/2`
+        // fails the degree check below, at an index that still fits in 32 bits.
+        if !fits_ids(n) {
             return Err(FrinkError::TooLarge(n));
         }
         let mut slots = vec![[NONE; 3]; n];

@@ -1410,6 +1410,24 @@ fn outputs_are_pinned() {
     );
 }
 
+/// [`Cubic::from_edges`] takes up to [`graph::MAX_NODES`] nodes, whose `3n/2` edges stay
+/// below `2^31 − 1` and whose run's ids below [`NONE`], and refuses more before it
+/// allocates anything (the refusals here would need 60 GB and more if it did not).
+#[test]
+fn node_counts_past_the_id_limit_are_refused_first() {
+    use super::graph::{edge_ids, fits_ids, MAX_NODES};
+    assert_eq!(MAX_NODES, 1_431_655_764);
+    assert!(MAX_NODES / 2 * 3 < (1 << 31) - 1 && (MAX_NODES + 2) / 2 * 3 >= (1 << 31) - 1);
+    assert!(edge_ids(MAX_NODES) < NONE as usize);
+    assert!(fits_ids(MAX_NODES) && !fits_ids(MAX_NODES + 1));
+    for n in [NONE as usize, usize::MAX] {
+        assert_eq!(
+            Cubic::from_edges(n, &[]).map(|_| ()),
+            Err(FrinkError::TooLarge(n))
+        );
+    }
+}
+
 /// [`graph::edge_ids`] bounds the ids a run creates (checked on real runs: the ids of the
 /// reductions' new edges), and [`graph::max_nodes_for_edge_ids`] inverts it exactly.
 #[test]
