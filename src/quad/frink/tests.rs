@@ -1417,7 +1417,11 @@ fn outputs_are_pinned() {
 fn node_counts_past_the_id_limit_are_refused_first() {
     use super::graph::{edge_ids, fits_ids, MAX_NODES};
     assert_eq!(MAX_NODES, 1_431_655_764);
-    assert!(MAX_NODES / 2 * 3 < (1 << 31) - 1 && (MAX_NODES + 2) / 2 * 3 >= (1 << 31) - 1);
+    // Its edges are the most below 2^31 − 1; two nodes more would reach it.
+    assert_eq!(
+        [MAX_NODES / 2 * 3, (MAX_NODES + 2) / 2 * 3],
+        [(1 << 31) - 2, (1 << 31) + 1]
+    );
     assert!(edge_ids(MAX_NODES) < NONE as usize);
     assert!(fits_ids(MAX_NODES) && !fits_ids(MAX_NODES + 1));
     for n in [NONE as usize, usize::MAX] {
