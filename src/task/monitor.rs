@@ -23,7 +23,9 @@ pub enum Step {
 pub enum Event {
     /// A step starts: [`Step::Build`] once (with `component == 0`, `components == 0`
     /// and `faces` the input's face count); [`Step::Run`] and [`Step::Verify`] once per
-    /// component `component` of `components` (`faces`: that component's).
+    /// component `component` of `components` (`faces`: that component's), in component
+    /// order unless the components run in parallel (then in any order, every run
+    /// before every verification).
     Step {
         /// Which step.
         step: Step,
