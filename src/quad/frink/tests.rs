@@ -1558,48 +1558,23 @@ fn a_bridge_between_the_pairs_forces_each_reconnection() {
 /// maximum of the two.
 #[test]
 fn ds_counters_add_field_by_field() {
-    let a = DsCounters {
-        disconnected: 1,
-        forced: 2,
-        free: 3,
-        digon_steps: 4,
-        restarts: 5,
-        cuts: 6,
-        replacements: 7,
-        promotions: 8,
-        max_level: 9,
-        forest_bytes: 10,
+    // Field k (in declaration order, the level aside) holds `k · scale`.
+    let counters = |scale: u64, max_level: u32| DsCounters {
+        disconnected: scale,
+        forced: 2 * scale,
+        free: 3 * scale,
+        digon_steps: 4 * scale,
+        restarts: 5 * scale,
+        cuts: 6 * scale,
+        replacements: 7 * scale,
+        promotions: 8 * scale,
+        max_level,
+        forest_bytes: 10 * scale,
     };
-    let b = DsCounters {
-        disconnected: 100,
-        forced: 200,
-        free: 300,
-        digon_steps: 400,
-        restarts: 500,
-        cuts: 600,
-        replacements: 700,
-        promotions: 800,
-        max_level: 3,
-        forest_bytes: 1000,
-    };
-    let mut sum = a;
-    sum += b;
-    assert_eq!(
-        sum,
-        DsCounters {
-            disconnected: 101,
-            forced: 202,
-            free: 303,
-            digon_steps: 404,
-            restarts: 505,
-            cuts: 606,
-            replacements: 707,
-            promotions: 808,
-            max_level: 9,
-            forest_bytes: 1010,
-        }
-    );
-    let mut sum = b;
-    sum += a;
-    assert_eq!(sum.max_level, 9);
+    let mut sum = counters(1, 9);
+    sum += counters(100, 3);
+    assert_eq!(sum, counters(101, 9));
+    let mut sum = counters(100, 3);
+    sum += counters(1, 9);
+    assert_eq!(sum, counters(101, 9));
 }
