@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde_json::Value;
 
 use crate::cli_common::{
-    data_closed, data_meshes, read_mesh, run, run_json, stderr, with_duplicate_faces,
+    data_closed, data_meshes, read_mesh, run, run_json, stderr, untimed, with_duplicate_faces,
     write_off_text, Scratch,
 };
 
@@ -16,21 +16,6 @@ fn lines(text: &str) -> Vec<Value> {
     text.lines()
         .map(|l| serde_json::from_str(l).unwrap_or_else(|e| panic!("{e}: {l}")))
         .collect()
-}
-
-/// A JSON value without its timings (keys starting with `seconds` or ending in
-/// `_seconds`), recursively, so that two runs can be compared.
-fn untimed(v: &Value) -> Value {
-    match v {
-        Value::Object(m) => Value::Object(
-            m.iter()
-                .filter(|(k, _)| !k.starts_with("seconds") && !k.ends_with("_seconds"))
-                .map(|(k, v)| (k.clone(), untimed(v)))
-                .collect(),
-        ),
-        Value::Array(a) => Value::Array(a.iter().map(untimed).collect()),
-        v => v.clone(),
-    }
 }
 
 /// Every mesh file of `dir` (one level), sorted: what batch must list.

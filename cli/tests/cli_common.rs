@@ -325,3 +325,19 @@ pub fn with_duplicate_faces(mesh: &TriMesh) -> (TriMesh, usize) {
     out.faces.extend(copies);
     (out, n)
 }
+
+/// A JSON value without its timings (keys starting with `seconds` or ending in
+/// `_seconds`), recursively, so that two runs can be compared.
+pub fn untimed(v: &serde_json::Value) -> serde_json::Value {
+    use serde_json::Value;
+    match v {
+        Value::Object(m) => Value::Object(
+            m.iter()
+                .filter(|(k, _)| !k.starts_with("seconds") && !k.ends_with("_seconds"))
+                .map(|(k, v)| (k.clone(), untimed(v)))
+                .collect(),
+        ),
+        Value::Array(a) => Value::Array(a.iter().map(untimed).collect()),
+        v => v.clone(),
+    }
+}

@@ -207,10 +207,10 @@ mod tests {
         assert!(format!("{m:?}").contains("cancelled: true"));
     }
 
-    /// The helper behind the tasks' component loops: results in item order, the first
-    /// failing item's error (in parallel too, where later items may fail first in
-    /// time), each item's step and progress reported under its own index, and in
-    /// sequence no item run after a failure.
+    /// [`Monitor::each_component`], which every task's component loop uses: results in
+    /// item order, the first failing item's error (in parallel too, where later items
+    /// may fail first in time), each item's step and progress reported under its own
+    /// index, and in sequence no item run after a failure.
     #[test]
     #[cfg(feature = "parallel")]
     fn components_run_in_order_or_in_parallel_with_the_same_result() {
