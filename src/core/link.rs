@@ -16,45 +16,59 @@ impl Triangulation {
         Some([self.vertex(c1), self.vertex(c2)])
     }
 
-    /// The link condition by definition: builds `lk(u)` and `lk(v)` as vertex and edge
-    /// sets and intersects them pairwise. O(d_u · d_v). Shares nothing with the fast
-    /// test but [`Self::link`]; it is the reference the fast paths are checked against.
+    /// The link condition by definition: `lk(u) ∩ lk(v)` read from the smaller link,
+    /// `lk(s)`, one simplex at a time — a vertex `a` of `lk(s)` is in `lk(l)` iff
+    /// `[a, l]` is an edge, an edge `[a, b]` of `lk(s)` is in `lk(l)` iff `[b, l]` is an
+    /// edge of `lk(a)` (the face `{a, b, l}`), each asked of the lower-degree end. So the
+    /// cost does not grow with the larger degree: O(d_s · max over `a` of min(d_a, d_l)),
+    /// `d_s = min(d_u, d_v)`, which keeps checks at low-degree vertices cheap beside a
+    /// vertex of very high degree. Shares nothing with the fast test but [`Self::link`]
+    /// and [`Self::has_edge`]; it is the reference the fast paths are checked against.
     ///
     /// Returns `false` if `[u, v]` is not an edge.
     pub fn link_condition_naive(&self, u: VertexId, v: VertexId) -> bool {
-        let Some([x, y]) = self.edge_link(u, v) else {
+        let (s, l) = if self.degree(u) <= self.degree(v) {
+            (u, v)
+        } else {
+            (v, u)
+        };
+        let Some([x, y]) = self.edge_link(s, l) else {
             return false;
         };
-        let lu: Vec<VertexId> = self.link(u).collect();
-        let lv: Vec<VertexId> = self.link(v).collect();
-        // Vertices of lk(u) ∩ lk(v), with u and v themselves excluded (u ∈ lk(v) and
-        // v ∈ lk(u), but neither is in both links).
-        let mut common = Vec::new();
-        for &a in &lu {
-            for &b in &lv {
-                if a == b {
-                    common.push(a);
-                }
-            }
-        }
-        common.sort();
+        // lk(s) is a cycle of distinct vertices (a simplicial surface), so each vertex
+        // of the intersection is found once. `l` is in lk(s) but not in lk(l).
+        let ls: Vec<VertexId> = self.link(s).collect();
+        let mut common: Vec<VertexId> = ls
+            .iter()
+            .copied()
+            .filter(|&a| a != l && self.has_edge(a, l))
+            .collect();
+        common.sort_unstable();
         let mut expect = vec![x, y];
-        expect.sort();
+        expect.sort_unstable();
         if common != expect {
             return false;
         }
-        // Edges of lk(u) ∩ lk(v): consecutive pairs of each link cycle.
-        let cyc = |l: &[VertexId]| -> Vec<(VertexId, VertexId)> {
-            (0..l.len())
-                .map(|i| {
-                    let (a, b) = (l[i], l[(i + 1) % l.len()]);
-                    (a.min(b), a.max(b))
-                })
-                .collect()
-        };
-        let eu = cyc(&lu);
-        let ev = cyc(&lv);
-        !eu.iter().any(|e| ev.contains(e))
+        // Edges of lk(s): consecutive pairs of its cycle; none may be an edge of lk(l).
+        let in_link_of_l = |a: VertexId, b: VertexId| a != l && b != l && self.has_face(a, b, l);
+        !(0..ls.len()).any(|i| in_link_of_l(ls[i], ls[(i + 1) % ls.len()]))
+    }
+
+    /// Whether some face has the three vertices `a`, `b`, `c`: whether two of them are
+    /// consecutive in the link of the third, asked of the lowest-degree one.
+    /// O(min(d_a, d_b, d_c)).
+    fn has_face(&self, a: VertexId, b: VertexId, c: VertexId) -> bool {
+        let mut abc = [a, b, c];
+        abc.sort_by_key(|&w| self.degree(w));
+        let [p, q, r] = abc;
+        if !self.is_vertex(p) || !self.is_vertex(q) || !self.is_vertex(r) {
+            return false;
+        }
+        let lp: Vec<VertexId> = self.link(p).collect();
+        (0..lp.len()).any(|i| {
+            let (m, n) = (lp[i], lp[(i + 1) % lp.len()]);
+            (m == q && n == r) || (m == r && n == q)
+        })
     }
 
     /// Whether `[u, v]` is an edge that passes the link condition, without any scratch:
