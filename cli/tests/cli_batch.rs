@@ -258,13 +258,13 @@ fn bad_arguments_fail_before_any_work() {
     assert!(stderr(&out).contains("no file matches"), "{}", stderr(&out));
 }
 
-/// Over the real-mesh corpus (`--features corpus`).
-#[cfg(feature = "corpus")]
+/// Over the real-mesh corpus (ignored unless asked for: `-- --ignored ::corpus::`).
 mod corpus {
     use super::*;
     use crate::cli_common::corpus_meshes;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn reduce_over_all_shared_meshes_gives_one_line_per_file_and_located_errors() {
         reduce_over_a_mesh_folder(
             &corpus_meshes(),

@@ -12,9 +12,8 @@ pub fn data_meshes() -> PathBuf {
     crate::common::data_meshes()
 }
 
-/// The opt-in real-mesh corpus's meshes (`--features corpus`; panics, naming the place,
+/// The opt-in real-mesh corpus's meshes (ignored unless asked for; panics, naming the place,
 /// when the corpus is absent).
-#[cfg(feature = "corpus")]
 pub fn corpus_meshes() -> PathBuf {
     crate::common::corpus_meshes()
 }

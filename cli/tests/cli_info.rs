@@ -1,5 +1,5 @@
 //! `contractible info` against a mesh manifest (the repository's, and with
-//! `--features corpus` the real-mesh corpus's): every closed mesh, through the binary,
+//! `-- --ignored ::corpus::` the real-mesh corpus's): every closed mesh, through the binary,
 //! must report exactly the manifest's counts, components, genera, χ and orientability.
 
 use crate::cli_common;
@@ -131,14 +131,14 @@ fn info_warns_about_unused_vertices() {
     );
 }
 
-/// Over the real-mesh corpus (`--features corpus`).
-#[cfg(feature = "corpus")]
+/// Over the real-mesh corpus (ignored unless asked for: `-- --ignored ::corpus::`).
 mod corpus {
     use super::*;
     use crate::cli_common::corpus_meshes;
     use crate::common::corpus_manifest;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn info_matches_the_manifest_for_every_closed_mesh() {
         info_matches_the_manifest(&corpus_meshes(), corpus_manifest(), 91);
     }

@@ -579,14 +579,14 @@ fn triangulating_quads_of_a_coarse_torus_gives_a_torus() {
     triangulated_quads_are_a_torus(input, v, 2 * v, "coarse_torus_quads");
 }
 
-/// Over the real-mesh corpus (`--features corpus`).
-#[cfg(feature = "corpus")]
+/// Over the real-mesh corpus (ignored unless asked for: `-- --ignored ::corpus::`).
 mod corpus {
     use super::*;
     use crate::cli_common::corpus_meshes;
     use crate::common::corpus_manifest;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn info_lists_every_duplicate_face_and_non_manifold_edge_of_the_crank() {
         let file = corpus_meshes().join("invalid/dupfaces_crank.off.gz");
         // The manifest's notes: "12 duplicate faces, 24 non-manifold edges".
@@ -597,6 +597,7 @@ mod corpus {
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn every_invalid_mesh_gets_a_multi_problem_report_matching_raw_counts() {
         every_invalid_mesh_matches_raw_counts(&corpus_meshes(), corpus_manifest(), 7);
     }
@@ -604,6 +605,7 @@ mod corpus {
     /// The coarse torus of the corpus (288 vertices, 576 faces): its quads cut by the
     /// shorter diagonal alone gave 48 duplicate faces and non-manifold edges.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn triangulating_quads_of_a_coarse_torus_gives_a_torus() {
         let input = corpus_meshes().join("closed/torus_288.off.gz");
         triangulated_quads_are_a_torus(

@@ -1,6 +1,6 @@
 //! Invalid and malformed inputs: exit code 2, one clean located message on stderr; the
 //! library's error kind for each invalid real mesh (the repository's, and with
-//! `--features corpus` the corpus's) matches the manifest's notes.
+//! `-- --ignored ::corpus::` the corpus's) matches the manifest's notes.
 
 use crate::cli_common;
 use crate::common;
@@ -293,19 +293,20 @@ fn convert_rejects_invalid_input_unless_told_not_to_validate() {
     assert_eq!(a.positions, b.positions);
 }
 
-/// Over the real-mesh corpus (`--features corpus`).
-#[cfg(feature = "corpus")]
+/// Over the real-mesh corpus (ignored unless asked for: `-- --ignored ::corpus::`).
 mod corpus {
     use super::*;
     use crate::cli_common::corpus_meshes;
     use crate::common::corpus_manifest;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn library_error_kinds_match_the_manifest_notes() {
         library_error_kinds_match_the_notes(&corpus_meshes(), corpus_manifest(), 7);
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn info_rejects_every_non_manifold_mesh_with_exit_code_2() {
         info_rejects_every_non_manifold_mesh_in(&corpus_meshes().join("invalid"), 5);
     }

@@ -599,20 +599,17 @@ mod tests {
 
 /// Measurement of the rule choices on the real-mesh corpus (`spec/quad.md`): reads every
 /// closed mesh of the corpus (`CONTRACTIBLE_CORPUS`, else `../shared` beside the
-/// checkout; feature `corpus`) and fails if another rule set leaves fewer faces unpaired
-/// on the meshes of at least 10k faces. Release builds only (about 6 s). Print the table
-/// with `cargo test --release --features corpus --lib rule_variants -- --nocapture`.
-#[cfg(all(test, feature = "corpus"))]
+/// checkout; ignored unless asked for) and fails if another rule set leaves fewer faces
+/// unpaired on the meshes of at least 10k faces. About 6 s in release builds. Print the
+/// table with `cargo test --release --lib rule_variants -- --ignored --nocapture`.
+#[cfg(test)]
 mod corpus {
     use super::*;
     use crate::core::Surfaces;
     use crate::gen::{random, RandomParams, SurfaceKind};
 
     #[test]
-    #[cfg_attr(
-        debug_assertions,
-        ignore = "reads every corpus mesh: runs in release builds"
-    )]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn rule_variants_on_real_meshes() {
         let corpus = std::env::var_os("CONTRACTIBLE_CORPUS")
             .map(std::path::PathBuf::from)
@@ -621,7 +618,7 @@ mod corpus {
         let mut names: Vec<_> = std::fs::read_dir(&dir)
             .unwrap_or_else(|e| {
                 panic!(
-                    "the real-mesh corpus (feature `corpus`) is expected at {}: {e} \
+                    "the real-mesh corpus is expected at {}: {e} \
                      (put `shared` beside the checkout or set CONTRACTIBLE_CORPUS)",
                     dir.display()
                 )

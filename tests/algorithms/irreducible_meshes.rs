@@ -2,8 +2,8 @@
 //! component, with the independent checks of `common::check` (naive irreducibility,
 //! validation, topology, Joret–Wood, exact expansion, counters): by default the
 //! repository's meshes (`tests/data/meshes/closed`) and the generated closed surfaces of
-//! `closed_inputs` (orientable and non-orientable, several components), with the
-//! feature `corpus` every mesh of the real-mesh corpus. Restrict the algorithms with
+//! `closed_inputs` (orientable and non-orientable, several components), in the
+//! ignored `corpus` tests every mesh of the real-mesh corpus. Restrict the algorithms with
 //! `CONTRACTIBLE_TEST_ALGORITHMS`.
 //!
 //! The largest corpus meshes make this slow in debug builds; `cargo test --release`
@@ -99,12 +99,12 @@ fn every_generated_closed_surface_reduces_to_irreducible_components() {
     assert_eq!(components_checked, closed_inputs::COMPONENTS);
 }
 
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     /// Every closed mesh of the real-mesh corpus (99).
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn every_closed_mesh_reduces_to_irreducible_components() {
         every_closed_mesh_of(&common::corpus_meshes(), 90);
     }

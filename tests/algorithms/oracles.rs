@@ -18,7 +18,7 @@
 //! - **Perfect matchings of the dual graph** (`common::dual_graph`,
 //!   `petgraph::algo::maximum_matching`): perfect (F/2 edges, checked to be a matching
 //!   of dual edges) on every component of the closed real meshes (the repository's, and
-//!   with the feature `corpus` the corpus's) with at most `MATCHING_FACE_CAP` faces (the
+//!   in the ignored `corpus` tests the corpus's) with at most `MATCHING_FACE_CAP` faces (the
 //!   others are skipped because Gabow's algorithm is cubic in the worst case; set
 //!   `CONTRACTIBLE_ORACLE_ALL_MESHES=1`, best with `--release`, to include every mesh),
 //!   on the generated closed surfaces of `closed_inputs` (bricks, subdivisions, an
@@ -450,12 +450,12 @@ fn face_list_oracle_agrees_with_list_names_and_the_core() {
     );
 }
 
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     /// The corpus meshes double_torus, helmet, socket, fertility and casting, every edge.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn critical_cycles_agree_on_real_meshes() {
         critical_cycles_on_real_meshes(
             &common::corpus_meshes(),
@@ -466,6 +466,7 @@ mod corpus {
 
     /// Every closed corpus mesh up to [`MATCHING_FACE_CAP`] faces.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn dual_graphs_of_closed_meshes_have_perfect_matchings() {
         let (components, _) = perfect_matchings_on_closed_meshes(&common::corpus_meshes());
         assert!(components >= 40, "{components}");

@@ -5,7 +5,7 @@
 //!
 //! Inputs: random surfaces of every kind, the repository's closed meshes, the generated
 //! closed surfaces of `closed_inputs`, the published small surfaces, the paper's C0, and
-//! with the feature `corpus` every closed mesh of the real-mesh corpus (the biggest are
+//! in the ignored `corpus` tests every closed mesh of the real-mesh corpus (the biggest are
 //! slow in debug builds; the README's test command is a release build).
 
 use std::collections::BTreeSet;
@@ -625,12 +625,12 @@ fn the_linear_pass_pairs_and_counts_as_documented() {
     );
 }
 
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     /// Every component of every closed corpus mesh.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn every_shared_closed_mesh_component_is_completed() {
         let totals = complete_every_closed_mesh_of(&common::corpus_meshes(), 90);
         assert_near_linear(totals, "closed meshes");

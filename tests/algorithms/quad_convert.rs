@@ -1,6 +1,6 @@
 //! `quad::convert` end to end, every algorithm (initial step + completion), on every
 //! component of every closed mesh the repository carries, of the generated closed
-//! surfaces of `closed_inputs`, with the feature `corpus` of every closed corpus mesh,
+//! surfaces of `closed_inputs`, in the ignored `corpus` tests of every closed corpus mesh,
 //! and on random surfaces of genus 0..8 and cross-caps 1..6, checked by code that shares
 //! nothing with the algorithms: the fuzz harness's `check_quadrangulation` (face lists,
 //! pairs and quads only) and, on inputs up to 2,000 faces, petgraph's
@@ -127,12 +127,12 @@ fn the_same_input_and_seed_give_the_same_quads() {
     }
 }
 
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     /// Every component of every closed corpus mesh.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn every_algorithm_on_every_component_of_every_shared_mesh() {
         let components = every_component_of_every_closed_mesh_of(&common::corpus_meshes());
         assert!(components >= 100, "{components} components");

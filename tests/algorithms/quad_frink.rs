@@ -7,7 +7,7 @@
 //!
 //! Inputs: the standard small surfaces, random surfaces of every kind, the closed meshes
 //! the repository carries and the generated closed surfaces of `closed_inputs` (by
-//! default), and with the feature `corpus` every closed mesh of the real-mesh corpus. The
+//! default), and in the ignored `corpus` tests every closed mesh of the real-mesh corpus. The
 //! naive strategy is O(F²), so meshes are covered up to [`MAX_FACES`] faces per
 //! component (every face of every mesh with `FRINK_FULL=1`, see [`full`]). The link–cut
 //! (`CoverTree`) and Diks–Stańczyk strategies run on every component, whatever its size.
@@ -32,8 +32,8 @@ const BBDL_MAX_FACES: usize = 15_000;
 /// With `FRINK_FULL` set, the naive and BBDL tests run every component of every closed
 /// mesh (up to 199,034 faces in the corpus) instead of stopping at [`MAX_FACES`] and
 /// [`BBDL_MAX_FACES`]: the one-off run that shows each strategy on every corpus mesh
-/// (`FRINK_FULL=1 cargo test --release --features invariants,corpus --test algorithms
-/// quad_frink::`; tens of minutes, the naive strategy being O(F²)).
+/// (`FRINK_FULL=1 cargo test --release --features invariants --test algorithms
+/// quad_frink:: -- --include-ignored`; tens of minutes, the naive strategy being O(F²)).
 fn full() -> bool {
     std::env::var_os("FRINK_FULL").is_some()
 }
@@ -470,12 +470,12 @@ proptest! {
     }
 }
 
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     /// Every component of the closed corpus meshes with at most [`MAX_FACES`] faces.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_closed_mesh_components() {
         let got = naive_on_closed_meshes(&common::corpus_meshes(), 90);
         let want = if full() { (339 + 65, 0) } else { (339, 65) };
@@ -492,6 +492,7 @@ mod corpus {
     /// 199k faces), random surfaces of every kind (orientable genus 0..8, non-orientable
     /// 1..6) at two sizes.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn diks_stanczyk_on_every_shared_closed_mesh_and_random_surfaces() {
         let mut total = frink::DsCounters::default();
         let clock = std::time::Instant::now();
@@ -513,6 +514,7 @@ mod corpus {
     /// [`BBDL_MAX_FACES`] faces (its 2-edge structure is not polylogarithmic: module
     /// `dyngraph::two_edge`) and random surfaces of every kind at two sizes.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn bbdl_on_shared_closed_meshes_and_random_surfaces() {
         let (mut runs, mut skipped, mut h2, mut digons, mut swaps) = (0, 0, 0, 0, 0);
         let clock = std::time::Instant::now();
@@ -542,6 +544,7 @@ mod corpus {
     /// The link–cut strategy on every component of every closed corpus mesh (no size limit:
     /// up to 199k faces), random surfaces of every kind and the standard ones.
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn cover_tree_on_every_shared_closed_mesh_and_random_surfaces() {
         let mut fallbacks = 0;
         let clock = std::time::Instant::now();

@@ -1211,7 +1211,6 @@ fn the_topology_checker_rejects_non_surfaces_and_tells_surfaces_apart() {
     assert!(surface_topology(&[[0, 1, 2], [0, 3, 4]]).is_err());
 }
 
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
@@ -1219,21 +1218,25 @@ mod corpus {
     const SHARDS: usize = 3;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_closed_meshes_shard_0() {
         closed_meshes(&common::corpus_meshes(), 90, 0, SHARDS);
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_closed_meshes_shard_1() {
         closed_meshes(&common::corpus_meshes(), 90, 1, SHARDS);
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_closed_meshes_shard_2() {
         closed_meshes(&common::corpus_meshes(), 90, 2, SHARDS);
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_open_manifold_meshes_keep_their_boundary_loops() {
         let (qualified, total) = open_manifold_meshes(&common::corpus_meshes());
         // open_bunny_stanford (5 loops) and open_camelhead (1 loop); the others are

@@ -33,13 +33,12 @@ pub fn data_meshes() -> PathBuf {
     data_dir().join("meshes")
 }
 
-/// The opt-in real-mesh corpus (`--features corpus`): the folder given by the environment
+/// The opt-in real-mesh corpus (ignored unless asked for: `-- --ignored ::corpus::`): the folder given by the environment
 /// variable `CONTRACTIBLE_CORPUS`, or else `../shared` beside the checkout; it holds
 /// `meshes/manifest.csv`, `meshes/closed/` and `meshes/invalid/`.
 ///
 /// Panics, naming the folder it looked for, when the corpus is not there: a corpus run
 /// asked for never passes by skipping.
-#[cfg(feature = "corpus")]
 pub fn corpus_dir() -> PathBuf {
     let dir = match std::env::var_os("CONTRACTIBLE_CORPUS") {
         Some(d) => PathBuf::from(d),
@@ -48,7 +47,7 @@ pub fn corpus_dir() -> PathBuf {
     let manifest = dir.join("meshes/manifest.csv");
     assert!(
         manifest.is_file(),
-        "the real-mesh corpus (feature `corpus`) is expected at {} (no {} there): put the \
+        "the real-mesh corpus is expected at {} (no {} there): put the \
          corpus folder `shared` beside the checkout or set CONTRACTIBLE_CORPUS to its path",
         dir.display(),
         manifest.display()
@@ -57,7 +56,6 @@ pub fn corpus_dir() -> PathBuf {
 }
 
 /// The corpus meshes, `corpus_dir()/meshes`.
-#[cfg(feature = "corpus")]
 pub fn corpus_meshes() -> PathBuf {
     corpus_dir().join("meshes")
 }
@@ -132,7 +130,6 @@ pub fn data_manifest() -> Vec<ManifestRow> {
 }
 
 /// The rows of the corpus manifest (panics, naming the place, when the corpus is absent).
-#[cfg(feature = "corpus")]
 pub fn corpus_manifest() -> Vec<ManifestRow> {
     manifest_in(&corpus_meshes())
 }

@@ -689,11 +689,11 @@ fn non_manifold_meshes_stay_errors(dir: &std::path::Path, names: &[&str]) {
 }
 
 /// The open and non-manifold meshes of the real-mesh corpus.
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_open_meshes_report_their_loops() {
         let dir = common::corpus_meshes().join("invalid");
         for (name, loops) in [("open_camelhead", 1), ("open_bunny_stanford", 5)] {
@@ -703,6 +703,7 @@ mod corpus {
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn shared_non_manifold_meshes_stay_errors() {
         non_manifold_meshes_stay_errors(
             &common::corpus_meshes().join("invalid"),

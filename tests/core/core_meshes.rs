@@ -1,8 +1,8 @@
 //! The core on real meshes: the manifest's counts, genus per component and orientability;
 //! both link-condition implementations agree on every edge; every invalid mesh is
 //! rejected with the error kind its manifest note names. By default on the small meshes
-//! the repository carries (`tests/data/meshes`); with `--features corpus`, on every mesh
-//! of the real-mesh corpus too.
+//! the repository carries (`tests/data/meshes`); with `-- --ignored ::corpus::`, on every
+//! mesh of the real-mesh corpus too.
 
 use std::path::Path;
 
@@ -226,11 +226,11 @@ fn every_build_error_kind_is_reported_where_it_happens() {
 }
 
 /// The same checks over the real-mesh corpus.
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn closed_meshes_match_the_manifest() {
         let rows = rows_of(&common::corpus_manifest(), "closed");
         assert!(
@@ -242,6 +242,7 @@ mod corpus {
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn both_link_tests_agree_on_every_edge_of_every_mesh() {
         let rows = rows_of(&common::corpus_manifest(), "closed");
         let (edges, contractible) = link_tests_agree(&rows, &common::corpus_meshes());
@@ -250,6 +251,7 @@ mod corpus {
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn invalid_meshes_are_rejected_with_the_right_error() {
         let rows = rows_of(&common::corpus_manifest(), "invalid");
         assert_eq!(rows.len(), 7);

@@ -523,7 +523,6 @@ fn invalid_real_meshes_still_parse() {
 }
 
 /// The same over the real-mesh corpus.
-#[cfg(feature = "corpus")]
 mod corpus {
     use super::*;
 
@@ -532,11 +531,13 @@ mod corpus {
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn every_closed_shared_mesh_reads_with_manifest_counts() {
         assert!(closed_meshes_read_with_manifest_counts(&dir()) >= 90);
     }
 
     #[test]
+    #[ignore = "reads the real-mesh corpus: run with `-- --ignored ::corpus::`"]
     fn invalid_shared_meshes_still_parse() {
         assert_eq!(invalid_meshes_parse(&dir()), 7);
     }
