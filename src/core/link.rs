@@ -56,14 +56,12 @@ impl Triangulation {
 
     /// Whether some face has the three vertices `a`, `b`, `c`: whether two of them are
     /// consecutive in the link of the third, asked of the lowest-degree one.
-    /// O(min(d_a, d_b, d_c)).
+    /// O(min(d_a, d_b, d_c)). The three must be live vertices: its one caller passes the
+    /// endpoint of an edge and two vertices of a link.
     fn has_face(&self, a: VertexId, b: VertexId, c: VertexId) -> bool {
         let mut abc = [a, b, c];
         abc.sort_by_key(|&w| self.degree(w));
         let [p, q, r] = abc;
-        if !self.is_vertex(p) || !self.is_vertex(q) || !self.is_vertex(r) {
-            return false;
-        }
         let lp: Vec<VertexId> = self.link(p).collect();
         (0..lp.len()).any(|i| {
             let (m, n) = (lp[i], lp[(i + 1) % lp.len()]);
