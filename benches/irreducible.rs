@@ -206,6 +206,47 @@ mod components {
         b.bench_local(|| reduce(mesh, &options).expect("closed"));
     }
 
+    /// Eight marching-tetrahedra surfaces side by side (two each of a sphere, a torus
+    /// and surfaces of genus 2 and 3), with positions, for `simplify`.
+    fn eight_with_positions() -> &'static TriMesh {
+        use contractible::gen::{isosurface, Implicit, IsoParams, Tessellation};
+        static MESH: OnceLock<TriMesh> = OnceLock::new();
+        MESH.get_or_init(|| {
+            let shapes = [
+                Implicit::Sphere { radius: 1.0 },
+                Implicit::Torus {
+                    major: 1.0,
+                    minor: 0.4,
+                },
+                Implicit::GenusG { g: 2 },
+                Implicit::GenusG { g: 3 },
+            ];
+            let (mut positions, mut faces) = (Vec::new(), Vec::new());
+            for (k, shape) in shapes.iter().chain(&shapes).enumerate() {
+                let params = IsoParams::new(*shape, Tessellation::SixTetrahedra, 72);
+                let m = isosurface(&params).expect("valid parameters");
+                let n = positions.len() as u32;
+                let shift = 8.0 * k as f64;
+                let p = m.positions.expect("positions");
+                positions.extend(p.iter().map(|q| [q[0] + shift, q[1], q[2]]));
+                faces.extend(m.faces.iter().map(|f| f.map(|v| v + n)));
+            }
+            TriMesh::with_positions(positions, faces)
+        })
+    }
+
+    /// The nested mode (the default options) with the absolute ε = 0.02, below the
+    /// marching-tetrahedra cells (72 along each surface's longest side: 0.035–0.09).
+    #[divan::bench(args = [false, true])]
+    fn simplify_nested(b: divan::Bencher, parallel: bool) {
+        let mesh = eight_with_positions();
+        let options = contractible::SimplifyOptions {
+            parallel,
+            ..contractible::SimplifyOptions::absolute(0.02)
+        };
+        b.bench_local(|| contractible::simplify(mesh, &options).expect("surfaces"));
+    }
+
     #[divan::bench(args = [false, true])]
     fn quad_ds(b: divan::Bencher, parallel: bool) {
         let mesh = eight();

@@ -434,6 +434,10 @@ pub struct SimplifyArgs {
     /// kept either way.
     #[arg(long)]
     pub allow_foldover: bool,
+    /// Components of the mesh simplified at once (default: one per CPU; 1 processes
+    /// them one after another). The output is the same for every value.
+    #[arg(long, short = 'j')]
+    pub jobs: Option<usize>,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

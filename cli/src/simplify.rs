@@ -20,6 +20,7 @@ use contractible::{Eps, SimplifyOptions, SimplifyResult, TriMesh};
 use serde::Serialize;
 
 use super::args::SimplifyArgs;
+use super::jobs::with_jobs;
 use super::progress::{finish, TaskBars};
 use super::{meshio, print_json, CliError, Ui};
 
@@ -128,7 +129,17 @@ pub fn compute(a: &SimplifyArgs, ui: Ui) -> Result<SimplifyReport, CliError> {
         allow_foldover: a.allow_foldover,
         ..SimplifyOptions::default()
     };
-    let out = simplify_with_bars(&mesh, options.clone(), ui).map_err(|e| match e {
+    let out = with_jobs(a.jobs, |parallel| {
+        simplify_with_bars(
+            &mesh,
+            SimplifyOptions {
+                parallel,
+                ..options.clone()
+            },
+            ui,
+        )
+    })?
+    .map_err(|e| match e {
         // The flags themselves were checked above: what is left is a relative ε that
         // gives no usable absolute one.
         contractible::Error::BadOption { expected, .. } => {

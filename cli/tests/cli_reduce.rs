@@ -314,6 +314,54 @@ fn jobs_change_nothing_but_the_time() {
         }
         assert_eq!(seen[0], seen[1], "{task}");
     }
+    // simplify, on three marching-tetrahedra surfaces side by side.
+    let shapes = [
+        gen::Implicit::Sphere { radius: 1.0 },
+        gen::Implicit::Torus {
+            major: 1.0,
+            minor: 0.4,
+        },
+        gen::Implicit::GenusG { g: 2 },
+    ];
+    let (mut positions, mut faces) = (Vec::new(), Vec::new());
+    for (k, shape) in shapes.into_iter().enumerate() {
+        let params = gen::IsoParams::new(shape, gen::Tessellation::SixTetrahedra, 12);
+        let m = gen::isosurface(&params).unwrap();
+        let n = positions.len() as u32;
+        let shift = 6.0 * k as f64;
+        positions.extend(
+            m.positions
+                .unwrap()
+                .iter()
+                .map(|p| [p[0] + shift, p[1], p[2]]),
+        );
+        faces.extend(m.faces.iter().map(|f| f.map(|v| v + n)));
+    }
+    let input = d.path("three.off");
+    contractible::io::write_mesh(
+        &input,
+        &contractible::TriMesh::with_positions(positions, faces),
+    )
+    .unwrap();
+    let mut seen = Vec::new();
+    for jobs in ["1", "3"] {
+        let out = d.path(&format!("simplify-{jobs}.off"));
+        let mut j = run_json(&[
+            OsStr::new("simplify"),
+            input.as_os_str(),
+            OsStr::new("-o"),
+            out.as_os_str(),
+            OsStr::new("--eps-rel"),
+            OsStr::new("0.02"),
+            OsStr::new("--jobs"),
+            OsStr::new(jobs),
+        ]);
+        j.as_object_mut().map(|o| o.remove("output"));
+        assert_eq!(j["components"].as_u64(), Some(3), "{j}");
+        assert!(j["edges_contracted"].as_u64() > Some(0), "{j}");
+        seen.push((cli_common::untimed(&j), std::fs::read(&out).unwrap()));
+    }
+    assert_eq!(seen[0], seen[1], "simplify");
     let out = run(&[
         OsStr::new("reduce"),
         input.as_os_str(),

@@ -211,7 +211,7 @@ def quad(V: Any, F: Any = None, algo: str = "lrs", seed: int = 0,
 
 def simplify(V: Any, F: Any = None, eps: Optional[float] = None, *, eps_rel: Optional[float] = None,
              mode: str = "nested", side: str = "count", position: str = "midpoint",
-             guard: bool = True) -> Simplified:
+             guard: bool = True, parallel: bool = False) -> Simplified:
     """Contracts every edge shorter than ``eps`` (absolute) or ``eps_rel`` (a fraction of
     the bounding-box diagonal) without changing the surface: closed surfaces and surfaces
     with boundary, orientable or not; every boundary loop is kept.
@@ -219,11 +219,13 @@ def simplify(V: Any, F: Any = None, eps: Optional[float] = None, *, eps_rel: Opt
     ``mode``: ``nested`` (the paper's processEdge, default) or ``naive`` (skip edges that
     fail the link condition). ``side``: ``count``, ``path`` or ``euclidean``.
     ``position``: ``midpoint`` or ``quadric``. ``guard=False`` allows fold-overs.
+    ``parallel=True`` simplifies the components of the mesh on one thread per CPU; the
+    result is the same (the GIL is released either way).
     """
     V, F = _vf(V, F)
     if (eps is None) == (eps_rel is None):
         raise ValueError("give exactly one of eps and eps_rel")
     value = eps if eps is not None else eps_rel
     d = _native.simplify(_vertices(V), _faces(F), float(value), eps_rel is not None,
-                         mode, side, position, bool(guard))
+                         mode, side, position, bool(guard), bool(parallel))
     return Simplified(d["vertices"], d["faces"], d["stats"])

@@ -575,7 +575,7 @@ fn quad_py<'py>(
 /// boundary). `eps` is absolute, or with `relative=True` a fraction of the bounding-box
 /// diagonal of the vertices the faces use. Returns a dict: `vertices`, `faces`, `stats`.
 #[pyfunction(name = "simplify")]
-#[pyo3(signature = (vertices, faces, eps, relative=false, mode="nested", side="count", position="midpoint", guard=true))]
+#[pyo3(signature = (vertices, faces, eps, relative=false, mode="nested", side="count", position="midpoint", guard=true, parallel=false))]
 #[allow(clippy::too_many_arguments)]
 fn simplify_py<'py>(
     py: Python<'py>,
@@ -587,6 +587,7 @@ fn simplify_py<'py>(
     side: &str,
     position: &str,
     guard: bool,
+    parallel: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = SimplifyOptions {
         eps: if relative {
@@ -598,6 +599,7 @@ fn simplify_py<'py>(
         side: choice::<simplify::Side>(py, side)?,
         position: choice::<simplify::Position>(py, position)?,
         allow_foldover: !guard,
+        parallel,
         ..SimplifyOptions::default()
     };
     let mesh = mesh::<3>(py, vertices.as_ref(), &faces, None)?;

@@ -215,6 +215,20 @@ def test_parallel_components_give_the_same_results(nonorientable):
         assert np.array_equal(one.pairs, par.pairs)
 
 
+def test_parallel_simplification_gives_the_same_result(mesh_file):
+    """box_stl (10 components), simplified with the components in parallel and one after
+    another: the same output and statistics."""
+    V, F = c.read(mesh_file("box_stl"))
+    for mode in ("nested", "naive"):
+        one = c.simplify(V, F, eps_rel=0.02, mode=mode)
+        par = c.simplify(V, F, eps_rel=0.02, mode=mode, parallel=True)
+        assert np.array_equal(one.vertices, par.vertices)
+        assert np.array_equal(one.faces, par.faces)
+        assert one.stats["components"] == 10 and one.stats["edges_contracted"] > 0
+        untimed = {k: v for k, v in one.stats.items() if "seconds" not in k}
+        assert untimed == {k: v for k, v in par.stats.items() if "seconds" not in k}
+
+
 # ------------------------------------------------------------------------------- quad
 
 def check_pairing(F, q):

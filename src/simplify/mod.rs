@@ -30,7 +30,9 @@
 //! contracts every edge the naive mode contracts, and more, on every input.
 //!
 //! **Determinism.** The output depends only on the input mesh (its face and vertex
-//! order) and the options: no randomness, no hashing, no threads.
+//! order) and the options: no randomness, no hashing, no threads here (the task call
+//! [`crate::simplify()`] with `parallel` runs components on several threads; each
+//! reads only the shared positions, so the output is the same).
 //!
 //! **Complexity.** Per pass O(F) plus, per processed edge, O(d_p + d_q) for the link
 //! walk and contraction and, in the nested mode, O(size of the regions grown) (two
@@ -414,7 +416,42 @@ pub fn simplify_surfaces_observed(
     observer: &mut dyn FnMut(crate::progress::Progress),
 ) -> Result<Simplified, SimplifyError> {
     let start = Instant::now();
-    let eps = options.eps;
+    check_surfaces(&surfaces, positions, options.eps)?;
+    let mut stats = input_stats(&surfaces);
+    let parts = surfaces
+        .components
+        .into_iter()
+        .enumerate()
+        .map(|(k, component)| {
+            simplify_component(
+                component,
+                positions,
+                options,
+                &mut |pass, contracted, faces| {
+                    on_pass(&PassReport {
+                        component: k,
+                        pass,
+                        contracted,
+                        faces,
+                    })
+                },
+                observer,
+            )
+        })
+        .collect();
+    let mesh = assemble(&mut stats, parts);
+    stats.seconds = start.elapsed().as_secs_f64();
+    Ok(Simplified { mesh, stats })
+}
+
+/// The errors [`simplify_surfaces`] reports before any work: ε not a finite number > 0,
+/// a position list of the wrong length, a non-finite coordinate at a vertex the
+/// surfaces use.
+pub(crate) fn check_surfaces(
+    surfaces: &ConedSurfaces,
+    positions: &[[f64; 3]],
+    eps: f64,
+) -> Result<(), SimplifyError> {
     if !(eps.is_finite() && eps > 0.0) {
         return Err(SimplifyError::BadEpsilon(eps));
     }
@@ -436,7 +473,12 @@ pub fn simplify_surfaces_observed(
             }
         }
     }
-    let mut stats = Stats {
+    Ok(())
+}
+
+/// The statistics of the input, before any component is simplified.
+pub(crate) fn input_stats(surfaces: &ConedSurfaces) -> Stats {
+    Stats {
         faces_in: surfaces
             .components
             .iter()
@@ -450,22 +492,41 @@ pub fn simplify_surfaces_observed(
         components: surfaces.components.len(),
         boundary_loops: surfaces.loop_count(),
         ..Stats::default()
-    };
+    }
+}
+
+/// One component simplified by [`simplify_component`]: its faces (vertex ids local to
+/// the component, 0-based), their positions and what was done.
+pub(crate) struct ComponentOutput {
+    faces: Vec<[u32; 3]>,
+    points: Vec<Point>,
+    run: state::Run,
+}
+
+/// Simplifies one component on its own (components share nothing but the read-only
+/// `positions`, so they may run on different threads): `on_pass(pass, contracted,
+/// faces)` after every pass, `observer` inside the passes. Positions and ε must have
+/// passed [`check_surfaces`].
+pub(crate) fn simplify_component(
+    component: crate::core::ConedComponent,
+    positions: &[[f64; 3]],
+    options: &Options,
+    on_pass: &mut dyn FnMut(usize, usize, usize),
+    observer: &mut dyn FnMut(crate::progress::Progress),
+) -> ComponentOutput {
+    let mut sim = state::Simplifier::new(component, positions, options);
+    let run = sim.run(on_pass, observer);
+    let (faces, points) = sim.into_mesh();
+    ComponentOutput { faces, points, run }
+}
+
+/// The output mesh: the components' outputs in order, each one's vertex ids shifted past
+/// those before it; their statistics added into `stats` (passes: the most any
+/// component needed; the shortest remaining edge: over all).
+pub(crate) fn assemble(stats: &mut Stats, parts: Vec<ComponentOutput>) -> TriMesh {
     let mut out_positions = Vec::new();
     let mut out_faces = Vec::new();
-    for (k, component) in surfaces.components.into_iter().enumerate() {
-        let mut sim = state::Simplifier::new(component, positions, options);
-        let run = sim.run(
-            &mut |pass, contracted, faces| {
-                on_pass(&PassReport {
-                    component: k,
-                    pass,
-                    contracted,
-                    faces,
-                })
-            },
-            observer,
-        );
+    for ComponentOutput { faces, points, run } in parts {
         stats.edges_contracted += run.edges_contracted;
         stats.discs_removed += run.discs_removed;
         stats.vertices_removed_inside += run.vertices_removed_inside;
@@ -477,16 +538,11 @@ pub fn simplify_surfaces_observed(
             (a, b) => a.or(b),
         };
         let base = out_positions.len() as u32;
-        let (faces, points) = sim.into_mesh();
         out_faces.extend(faces.into_iter().map(|f| f.map(|v| v + base)));
         out_positions.extend(points);
     }
     stats.short_edges_remaining = stats.remaining.total();
     stats.vertices_out = out_positions.len();
     stats.faces_out = out_faces.len();
-    stats.seconds = start.elapsed().as_secs_f64();
-    Ok(Simplified {
-        mesh: TriMesh::with_positions(out_positions, out_faces),
-        stats,
-    })
+    TriMesh::with_positions(out_positions, out_faces)
 }

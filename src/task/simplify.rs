@@ -42,6 +42,10 @@ pub struct SimplifyOptions {
     pub allow_foldover: bool,
     /// Skip the independent check of the output ([`verify_simplification`]).
     pub skip_verify: bool,
+    /// Simplify the components on rayon's current thread pool (the crate's `parallel`
+    /// feature; ignored without it). The result is the sequential run's, errors
+    /// included; only the order of the monitor's events differs.
+    pub parallel: bool,
     /// Progress and cancellation.
     pub monitor: Monitor,
 }
@@ -212,7 +216,8 @@ fn checked_positions(mesh: &TriMesh) -> Result<(&[[f64; 3]], Vec<usize>), Error>
 /// `options.skip_verify`.
 ///
 /// Deterministic for a given mesh and options (timings aside): no randomness, no
-/// hashing, no threads.
+/// hashing; with `options.parallel`, the components run on several threads but each
+/// only reads the shared positions, so the output is the same.
 ///
 /// # Errors
 /// [`Error::MissingPositions`], [`Error::PositionCount`],
@@ -276,47 +281,8 @@ pub fn simplify(mesh: &TriMesh, options: &SimplifyOptions) -> Result<SimplifyRes
     };
     let seconds_build = started.elapsed().as_secs_f64();
     let n = surfaces.components.len();
-    // The algorithm reports passes per component; the monitor hears of each component
-    // when its first pass starts.
-    let current = std::cell::Cell::new(usize::MAX);
-    let faces_of: Vec<usize> = surfaces
-        .components
-        .iter()
-        .map(|c| c.real_face_count())
-        .collect();
-    let cancelled = std::cell::Cell::new(false);
-    let announce = |k: usize| {
-        if current.get() != k && k < n {
-            current.set(k);
-            if monitor
-                .step(Step::Run, k, n, faces_of.get(k).copied().unwrap_or(0))
-                .is_err()
-            {
-                cancelled.set(true);
-            }
-        }
-    };
-    announce(0);
-    if cancelled.get() {
-        return Err(Error::Cancelled);
-    }
-    let mut on_pass = |r: &PassReport| {
-        monitor.report(&Event::Pass(*r));
-        announce(r.component + 1);
-    };
-    let out = simplify::simplify_surfaces_observed(
-        surfaces,
-        positions,
-        &algo,
-        &mut on_pass,
-        &mut |progress| {
-            monitor.report(&Event::Progress {
-                component: current.get(),
-                progress,
-            })
-        },
-    )
-    .map_err(|e| match e {
+    let run_started = std::time::Instant::now();
+    simplify::check_surfaces(&surfaces, positions, eps).map_err(|e| match e {
         SimplifyError::Build(b) => Error::Mesh(b),
         SimplifyError::NonFiniteCoordinate {
             vertex,
@@ -341,9 +307,36 @@ pub fn simplify(mesh: &TriMesh, options: &SimplifyOptions) -> Result<SimplifyRes
             expected: "ε must be a finite number > 0".into(),
         },
     })?;
-    if cancelled.get() {
-        return Err(Error::Cancelled);
-    }
+    let mut stats = simplify::input_stats(&surfaces);
+    let items: Vec<_> = surfaces
+        .components
+        .into_iter()
+        .map(|c| (c.real_face_count(), c))
+        .collect();
+    let parts = monitor.each_component(
+        Step::Run,
+        options.parallel,
+        items,
+        |k, component, progress| {
+            Ok(simplify::simplify_component(
+                component,
+                positions,
+                &algo,
+                &mut |pass, contracted, faces| {
+                    monitor.report(&Event::Pass(PassReport {
+                        component: k,
+                        pass,
+                        contracted,
+                        faces,
+                    }))
+                },
+                progress,
+            ))
+        },
+    )?;
+    let mesh = simplify::assemble(&mut stats, parts);
+    stats.seconds = run_started.elapsed().as_secs_f64();
+    let out = simplify::Simplified { mesh, stats };
     let mut seconds_verify = None;
     if !options.skip_verify {
         let started = std::time::Instant::now();

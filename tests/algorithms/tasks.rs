@@ -158,6 +158,46 @@ fn parallel_components_give_the_sequential_results() {
         };
         assert_eq!(stats(&par), stats(&one), "{algorithm}");
     }
+    // Simplification, both modes, on the closed components and on a mesh of two discs
+    // with boundary beside them.
+    let hyperboloid = contractible::gen::isosurface(&contractible::gen::IsoParams::new(
+        contractible::gen::Implicit::TwoSheetHyperboloid {
+            c: 0.25,
+            half_width: 1.0,
+            half_height: 1.0,
+        },
+        contractible::gen::Tessellation::SixTetrahedra,
+        10,
+    ))
+    .expect("a hyperboloid");
+    let bounded = crate::closed_inputs::union(&[&mesh, &hyperboloid]);
+    for input in [&mesh, &bounded] {
+        for mode in contractible::simplify::Mode::ALL {
+            let run = |parallel| {
+                let options = contractible::SimplifyOptions {
+                    mode,
+                    parallel,
+                    ..contractible::SimplifyOptions::relative(0.05)
+                };
+                let mut s = pool
+                    .install(|| contractible::simplify(input, &options))
+                    .expect("surfaces with positions");
+                s.stats.seconds = 0.0;
+                (s.seconds_build, s.seconds_verify) = (0.0, None);
+                s
+            };
+            let (one, par) = (run(false), run(true));
+            assert!(par.stats.components >= components, "{mode:?}");
+            assert!(par.stats.edges_contracted > 0, "{mode:?}");
+            assert_eq!(par.mesh, one.mesh, "{mode:?}");
+            assert_eq!(par.stats, one.stats, "{mode:?}");
+            assert_eq!(
+                (par.eps, par.bbox_diagonal, par.dropped_vertices),
+                (one.eps, one.bbox_diagonal, one.dropped_vertices),
+                "{mode:?}"
+            );
+        }
+    }
 
     // The parallel run does use several threads of the pool; the sequential one, one.
     for (parallel, several) in [(false, false), (true, true)] {

@@ -166,6 +166,7 @@ proptest! {
             position,
             allow_foldover: flags[2],
             skip_verify: !flags[1],
+            parallel: flags[3],
             monitor: monitor(cancelled),
         });
     }
