@@ -228,6 +228,20 @@ fn digon_exit(g: &Cubic, f: u32, x: u32) -> Option<(u32, u32)> {
 mod tests {
     use super::*;
 
+    /// The fallback for a broken invariant (a connected bridgeless graph always has a
+    /// reduction next to the forbidden edge): on the theta graph, where no reduction
+    /// exists, the edge is dropped and every such step counted.
+    #[test]
+    fn without_a_reduction_next_to_it_the_forbidden_edge_is_dropped_and_counted() {
+        let g = Cubic::from_edges(2, &[[0, 1], [0, 1], [0, 1]]).expect("cubic");
+        let mut fe = ForbiddenEdge::start(&g);
+        assert_eq!(fe.get(), Some(g.incident(0)[0]));
+        assert!(fe.pick(&g, |_| false).is_none());
+        assert_eq!((fe.get(), fe.restarts, fe.digon_steps), (None, 1, 0));
+        assert!(fe.pick(&g, |_| false).is_none());
+        assert_eq!((fe.get(), fe.restarts, fe.digon_steps), (None, 2, 0));
+    }
+
     #[test]
     fn non_tree_first_is_a_stable_partition() {
         let order = non_tree_first([5, 1, 4, 2, 3], |e| e % 2 == 1);
