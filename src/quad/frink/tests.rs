@@ -517,6 +517,52 @@ fn f1_catches_a_wrong_reconnection() {
     }
 }
 
+/// F1's structure part catches inconsistent slots: on the prism reduced by its valid
+/// reconnection, an edge listed twice at a node, an edge at a node that is not one of
+/// its ends, and an edge leading to a removed node each fail as "not a cubic
+/// multigraph" (the message the connectivity part never gives).
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f1_catches_an_inconsistent_structure() {
+    const WHAT: &str = "not a cubic multigraph";
+    let mut g = prism();
+    let cand = g.candidate_at(0).expect("simple");
+    let recon = [Reconnection::H1, Reconnection::H2]
+        .into_iter()
+        .find(|&recon| {
+            let r = g.reduce(&cand, recon);
+            let good = spec::connected_bridgeless_by_definition(&g);
+            g.undo(&r);
+            good
+        })
+        .expect("one reconnection keeps the prism bridgeless");
+    let r = g.reduce(&cand, recon);
+    spec::after_reduction(&g, &r);
+    let live: Vec<u32> = (0..g.node_capacity() as u32)
+        .filter(|&x| g.is_alive(x))
+        .collect();
+    let x = live[0];
+    let s = g.incident(x);
+
+    let mut twice = g.clone();
+    twice.slots[x as usize][1] = s[0];
+    assert_fails(WHAT, || spec::after_reduction(&twice, &r));
+
+    let foreign = live
+        .iter()
+        .flat_map(|&y| g.incident(y))
+        .find(|&e| !g.ends(e).contains(&x))
+        .expect("an edge away from x");
+    let mut elsewhere = g.clone();
+    elsewhere.slots[x as usize][2] = foreign;
+    assert_fails(WHAT, || spec::after_reduction(&elsewhere, &r));
+
+    let mut dead_end = g.clone();
+    dead_end.alive[g.other(s[0], x) as usize] = false;
+    dead_end.live -= 1;
+    assert_fails(WHAT, || spec::after_reduction(&dead_end, &r));
+}
+
 /// F2 catches a lift that leaves the matching imperfect.
 #[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
