@@ -563,6 +563,52 @@ fn f1_catches_an_inconsistent_structure() {
     assert_fails(WHAT, || spec::after_reduction(&dead_end, &r));
 }
 
+/// F1 runs in full up to [`spec::SMALL_NODES`] nodes, that count included: two ladders
+/// (two 16-cycles joined by rungs), each with one cycle edge subdivided, joined by a
+/// bridge between the two subdividing nodes (`SMALL_NODES + 2` nodes), reduced at a rung
+/// far from the bridge: every loop-free reconnection keeps the bridge, and F1 fails at
+/// exactly `SMALL_NODES` nodes.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f1_checks_in_full_up_to_its_node_bound() {
+    const M: u32 = 16;
+    let half = 2 * M + 1;
+    let mut edges = Vec::new();
+    for base in [0, half] {
+        for i in 0..M {
+            let j = (i + 1) % M;
+            if i != 0 {
+                edges.push([base + i, base + j]);
+            }
+            edges.push([base + M + i, base + M + j]);
+            edges.push([base + i, base + M + i]);
+        }
+        // The subdividing node of cycle edge 0–1.
+        edges.extend([[base, base + 2 * M], [base + 2 * M, base + 1]]);
+    }
+    edges.push([2 * M, half + 2 * M]);
+    let n = 2 * half as usize;
+    assert_eq!(n, spec::SMALL_NODES + 2);
+    let mut g = graph(n, &edges);
+    let rung = edges
+        .iter()
+        .position(|&e| e == [M / 2, M + M / 2])
+        .expect("a rung") as u32;
+    let cand = g.candidate_for(M / 2, rung).expect("a simple edge");
+    let mut failed = 0;
+    for recon in [Reconnection::H1, Reconnection::H2] {
+        let r = g.reduce(&cand, recon);
+        assert_eq!(g.node_count(), spec::SMALL_NODES);
+        if r.new.iter().all(|&e| g.ends(e)[0] != g.ends(e)[1]) {
+            assert!(!spec::connected_bridgeless_by_definition(&g));
+            assert_fails("F1", || spec::after_reduction(&g, &r));
+            failed += 1;
+        }
+        g.undo(&r);
+    }
+    assert!(failed > 0, "a loop-free reconnection");
+}
+
 /// F2 catches a lift that leaves the matching imperfect.
 #[cfg(any(debug_assertions, feature = "invariants"))]
 #[test]
