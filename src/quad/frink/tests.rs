@@ -1214,6 +1214,30 @@ fn f3_reads_the_connectivity_structures_invariants() {
     });
 }
 
+/// F3 runs up to [`spec::SMALL_NODES`] live nodes, that count included, and not above:
+/// on ladders (two cycles joined by rungs) of that many nodes and two more, a structure
+/// whose own check fails is reported at the bound and not past it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f3_checks_up_to_its_node_bound() {
+    for n in [spec::SMALL_NODES, spec::SMALL_NODES + 2] {
+        let k = (n / 2) as u32;
+        let mut edges = Vec::new();
+        for i in 0..k {
+            let j = (i + 1) % k;
+            edges.extend([[i, j], [k + i, k + j], [i, k + i]]);
+        }
+        let g = graph(n, &edges);
+        let cand = g.candidate_at(0).expect("a simple edge at node 0");
+        let run = || spec::ds_forest(&g, &cand, |_| true, || Err("broken".into()));
+        if n <= spec::SMALL_NODES {
+            assert_fails("F3", run);
+        } else {
+            run();
+        }
+    }
+}
+
 /// A strategy's decision against the naive DFS test on *every* reduction of small graphs
 /// (not only those it would pick itself): the small graphs, both [`bridge_split`]s, and
 /// random connected bridgeless cubic multigraphs of 4 to 20 nodes from `seed`, `graphs` in all; for every
