@@ -639,6 +639,80 @@ fn f2_catches_a_broken_lift() {
     assert_fails("F2", || spec::after_lift(&g, &mate, 1, &changed, &r));
 }
 
+/// The ladder of `2k` nodes: the cycles `0 … k−1` and `k … 2k−1`, and the rungs
+/// `i`–`k+i`, which are edge `3i + 2` and together a perfect matching.
+fn ladder(k: u32) -> Cubic {
+    let mut edges = Vec::new();
+    for i in 0..k {
+        let j = (i + 1) % k;
+        edges.extend([[i, j], [k + i, k + j], [i, k + i]]);
+    }
+    graph(2 * k as usize, &edges)
+}
+
+/// F2 refuses a mate that is not an edge of its node, even when the edge's own ends
+/// are matched by it, and a loop as mate.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f2_refuses_a_foreign_edge_and_a_loop_as_mate() {
+    let g = ladder(4);
+    let rungs: Vec<u32> = (0..g.node_capacity() as u32)
+        .map(|x| 3 * (x % 4) + 2)
+        .collect();
+    spec::at_end(&g, &rungs, 4);
+    // Nodes 0 and 4 take the rung 1–5, which 1 and 5 keep.
+    let mut foreign = rungs.clone();
+    foreign[0] = rungs[1];
+    foreign[4] = rungs[1];
+    assert_fails("F2", || spec::at_end(&g, &foreign, 4));
+
+    // Two nodes, each with a loop, joined by an edge: only that edge can be the mate.
+    let g = graph(2, &[[0, 0], [0, 1], [1, 1]]);
+    spec::at_end(&g, &[1, 1], 1);
+    assert_fails("F2", || spec::at_end(&g, &[0, 2], 1));
+}
+
+/// F2 after a lift checks every node up to [`spec::FULL_LIFT_NODES`] nodes, that count
+/// included, and only the nodes the lift changed above it: on ladders of that many nodes
+/// and two more, reduced at rung 0 and lifted with the other rungs matched, a wrong mate
+/// far from the reduction fails the check at the bound and passes past it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f2_checks_every_node_after_a_lift_up_to_its_node_bound() {
+    for n in [spec::FULL_LIFT_NODES, spec::FULL_LIFT_NODES + 2] {
+        let k = (n / 2) as u32;
+        let mut g = ladder(k);
+        let cand = g.candidate_for(0, 2).expect("rung 0 is a simple edge");
+        let r = g.reduce(&cand, Reconnection::H1);
+        let mut mate: Vec<u32> = (0..n as u32).map(|x| 3 * (x % k) + 2).collect();
+        mate[0] = NONE;
+        mate[k as usize] = NONE;
+        let mut stats = Stats::default();
+        let changed = lift(
+            &mut g,
+            &mut mate,
+            &r,
+            &mut cycle::CycleSearch::default(),
+            &mut stats,
+        )
+        .expect("lift");
+        assert_eq!(g.node_count(), n);
+        spec::after_lift(&g, &mate, n / 2, &changed, &r);
+        // Node k/2 takes its cycle edge to k/2 + 1, which keeps its rung.
+        let z = k / 2;
+        assert!(!changed.contains(&z) && !changed.contains(&(z + 1)));
+        assert!(!changed.contains(&(k + z)));
+        let mut wrong = mate.clone();
+        wrong[z as usize] = 3 * z;
+        let run = || spec::after_lift(&g, &wrong, n / 2, &changed, &r);
+        if n <= spec::FULL_LIFT_NODES {
+            assert_fails("F2", run);
+        } else {
+            run();
+        }
+    }
+}
+
 /// The public entry on the standard surfaces: a perfect pairing of edge-adjacent faces.
 #[test]
 fn perfect_matching_pairs_the_standard_surfaces() {
@@ -1221,13 +1295,7 @@ fn f3_reads_the_connectivity_structures_invariants() {
 #[test]
 fn f3_checks_up_to_its_node_bound() {
     for n in [spec::SMALL_NODES, spec::SMALL_NODES + 2] {
-        let k = (n / 2) as u32;
-        let mut edges = Vec::new();
-        for i in 0..k {
-            let j = (i + 1) % k;
-            edges.extend([[i, j], [k + i, k + j], [i, k + i]]);
-        }
-        let g = graph(n, &edges);
+        let g = ladder((n / 2) as u32);
         let cand = g.candidate_at(0).expect("a simple edge at node 0");
         let run = || spec::ds_forest(&g, &cand, |_| true, || Err("broken".into()));
         if n <= spec::SMALL_NODES {
@@ -1401,6 +1469,27 @@ fn f4_catches_a_structure_out_of_step_with_the_graph() {
     let [a, _] = g.ends(3);
     moved.insert(3, a, a);
     assert_fails("F4", || spec::bbdl_structure(&g, &mut moved));
+}
+
+/// F4 runs up to [`spec::SMALL_NODES`] live nodes, that count included, and not above:
+/// on ladders of that many nodes and two more, a structure missing an edge is reported
+/// at the bound and not past it.
+#[cfg(any(debug_assertions, feature = "invariants"))]
+#[test]
+fn f4_checks_up_to_its_node_bound() {
+    for n in [spec::SMALL_NODES, spec::SMALL_NODES + 2] {
+        let g = ladder((n / 2) as u32);
+        let mut te = TwoEdge::new(g.node_capacity());
+        for e in 1..g.ends.len() as u32 {
+            let [a, b] = g.ends(e);
+            te.insert(e, a, b);
+        }
+        if n <= spec::SMALL_NODES {
+            assert_fails("F4", || spec::bbdl_structure(&g, &mut te));
+        } else {
+            spec::bbdl_structure(&g, &mut te);
+        }
+    }
 }
 
 /// Duals of random closed surfaces: every BBDL step checked, the pairing perfect, no
