@@ -62,11 +62,19 @@ impl Triangulation {
         let mut abc = [a, b, c];
         abc.sort_by_key(|&w| self.degree(w));
         let [p, q, r] = abc;
-        let lp: Vec<VertexId> = self.link(p).collect();
-        (0..lp.len()).any(|i| {
-            let (m, n) = (lp[i], lp[(i + 1) % lp.len()]);
-            (m == q && n == r) || (m == r && n == q)
-        })
+        let joins = |m: VertexId, n: VertexId| (m == q && n == r) || (m == r && n == q);
+        let mut link = self.link(p);
+        let Some(first) = link.next() else {
+            return false;
+        };
+        let mut prev = first;
+        for next in link {
+            if joins(prev, next) {
+                return true;
+            }
+            prev = next;
+        }
+        joins(prev, first)
     }
 
     /// Whether `[u, v]` is an edge that passes the link condition, without any scratch:
@@ -230,5 +238,54 @@ mod tests {
             assert!(!t.is_contractible_with(x, y, &mut tester), "{x} {y}");
             assert!(!t.link_condition_naive(x, y), "{x} {y}");
         }
+    }
+
+    /// Every test refuses every edge of the tetrahedron boundary (only the edge
+    /// `[x, y]` of the intersection tells, and the face `{x, y, l}` is seen in either
+    /// direction of a link) under all 24 labellings of its vertices, in both
+    /// orientations.
+    #[test]
+    fn the_tetrahedron_is_refused_in_every_labelling_and_orientation() {
+        let base = crate::gen::tetrahedron();
+        let mut seen = 0;
+        for p in 0..24u32 {
+            // The permutation of rank `p` (factorial base).
+            let mut left: Vec<u32> = (0..4).collect();
+            let mut rank = p;
+            let mut perm = [0u32; 4];
+            for (i, slot) in perm.iter_mut().enumerate() {
+                let radix = (4 - i) as u32;
+                *slot = left.remove((rank % radix) as usize);
+                rank /= radix;
+            }
+            for reversed in [false, true] {
+                let faces: Vec<[u32; 3]> = base
+                    .faces
+                    .iter()
+                    .map(|f| {
+                        let g = f.map(|v| perm[v as usize]);
+                        if reversed {
+                            [g[0], g[2], g[1]]
+                        } else {
+                            g
+                        }
+                    })
+                    .collect();
+                let t = Triangulation::from_faces(4, &faces).expect("the tetrahedron");
+                let mut tester = LinkTester::new(t.vertex_capacity());
+                for (u, v, _) in t.edges() {
+                    for (a, b) in [(u, v), (v, u)] {
+                        assert!(
+                            !t.link_condition_naive(a, b),
+                            "{perm:?} {reversed}: {a} {b}"
+                        );
+                        assert!(!t.is_contractible(a, b), "{perm:?} {reversed}: {a} {b}");
+                        assert!(!t.is_contractible_with(a, b, &mut tester));
+                        seen += 1;
+                    }
+                }
+            }
+        }
+        assert_eq!(seen, 24 * 2 * 12);
     }
 }
