@@ -2,9 +2,7 @@
 
 use crate::core::{ConedSurfaces, Surfaces};
 use crate::mesh::TriMesh;
-use crate::simplify::{
-    self, bbox_diagonal, Mode, PassReport, Position, Side, SimplifyError, Stats,
-};
+use crate::simplify::{self, bbox_diagonal, Mode, PassReport, Position, Side, Stats};
 
 use super::{Error, Event, Monitor, Step};
 
@@ -282,31 +280,10 @@ pub fn simplify(mesh: &TriMesh, options: &SimplifyOptions) -> Result<SimplifyRes
     let seconds_build = started.elapsed().as_secs_f64();
     let n = surfaces.components.len();
     let run_started = std::time::Instant::now();
-    simplify::check_surfaces(&surfaces, positions, eps).map_err(|e| match e {
-        SimplifyError::Build(b) => Error::Mesh(b),
-        SimplifyError::NonFiniteCoordinate {
-            vertex,
-            axis,
-            value,
-        } => Error::NonFiniteCoordinate {
-            vertex,
-            axis,
-            value,
-        },
-        SimplifyError::PositionCount {
-            vertices,
-            positions,
-        } => Error::PositionCount {
-            vertices,
-            positions,
-        },
-        SimplifyError::MissingPositions => Error::MissingPositions { task: "simplify" },
-        SimplifyError::BadEpsilon(v) => Error::BadOption {
-            option: "eps",
-            value: format!("{v:?}"),
-            expected: "ε must be a finite number > 0".into(),
-        },
-    })?;
+    // `checked_positions` and the ε checks above refuse everything
+    // `simplify::check_surfaces` would (the position count, every coordinate, ε), each
+    // with the task's own error, so its O(V) scan is not repeated here.
+    debug_assert!(simplify::check_surfaces(&surfaces, positions, eps).is_ok());
     let mut stats = simplify::input_stats(&surfaces);
     let items: Vec<_> = surfaces
         .components
