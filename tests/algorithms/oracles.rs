@@ -9,8 +9,8 @@
 //!   `LinkTester` all say "contractible" iff the count is 0 and the surface is not T4.
 //!   Inputs: the 57 small surfaces, the published tori and projective planes, random
 //!   surfaces of genus 0..8 and non-orientable genus 1..6 (100 and 2000 faces), and real
-//!   meshes (every edge): every closed mesh the repository carries, and with the feature
-//!   `corpus` the corpus meshes socket, casting, double_torus, helmet, fertility.
+//!   meshes (every edge): every closed mesh the repository carries, and in the ignored
+//!   `corpus` tests the corpus meshes socket, casting, double_torus, helmet, fertility.
 //!   After random contraction sequences: **every step** on the small inputs (the 57
 //!   surfaces, the published lists, the 100-face random surfaces); **sampled** on the
 //!   large ones (every 100th contraction and the final state for the 2000-face random

@@ -9,8 +9,8 @@
 //! 1. The must-show matrix: marching-tetrahedra surfaces of genus 0..5, a sphere and a
 //!    torus with both tessellations, a two-sheet hyperboloid with boundary, every closed
 //!    mesh the repository carries, the generated closed surfaces of `closed_inputs` and
-//!    the same with vertex stars removed (surfaces with boundary), and with the feature
-//!    `corpus` every closed corpus mesh and the corpus's open meshes that are manifold
+//!    the same with vertex stars removed (surfaces with boundary), and in the ignored
+//!    `corpus` tests every closed corpus mesh and the corpus's open meshes that are manifold
 //!    with boundary; each at ε = 1 % and 3 % of the bounding-box diagonal, in both
 //!    modes, and on a seeded random perturbation of it (for the real and generated
 //!    closed meshes, to bound the run time: the perturbed copy at one ε, alternating,
