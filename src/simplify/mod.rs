@@ -546,3 +546,107 @@ pub(crate) fn assemble(stats: &mut Stats, parts: Vec<ComponentOutput>) -> TriMes
     stats.faces_out = out_faces.len();
     TriMesh::with_positions(out_positions, out_faces)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The octahedron with a seventh vertex that no face uses.
+    fn octahedron_and_a_stray_vertex() -> TriMesh {
+        let mut m = crate::gen::octahedron();
+        let mut positions = m.positions.take().expect("positions");
+        positions.push([5.0, 5.0, 5.0]);
+        TriMesh::with_positions(positions, m.faces)
+    }
+
+    /// The sum counts every reason once.
+    #[test]
+    fn skip_counts_total_every_reason() {
+        let s = SkipCounts {
+            link_condition: 1,
+            non_disc: 2,
+            foldover: 4,
+            frozen: 8,
+        };
+        assert_eq!(s.total(), 15);
+    }
+
+    /// ε must be a finite number > 0, in both entry points: 0, negative, infinite and
+    /// NaN are refused before anything is built.
+    #[test]
+    fn epsilon_must_be_finite_and_positive() {
+        let m = crate::gen::octahedron();
+        for eps in [0.0, -0.5, f64::INFINITY, f64::NEG_INFINITY, f64::NAN] {
+            let is_bad = |r: Result<_, SimplifyError>| matches!(r, Err(SimplifyError::BadEpsilon(e)) if e.to_bits() == eps.to_bits());
+            assert!(is_bad(check_input(&m, eps).map(|_| ())), "{eps}");
+            assert!(
+                is_bad(simplify(&m, &Options::new(eps)).map(|_| ())),
+                "{eps}"
+            );
+            let surfaces = ConedSurfaces::from_mesh(&m).expect("octahedron");
+            let positions = m.positions.as_deref().expect("positions");
+            let r = simplify_surfaces(surfaces, positions, &Options::new(eps), &mut |_| {});
+            assert!(is_bad(r.map(|_| ())), "{eps}");
+        }
+        assert!(check_input(&m, f64::MIN_POSITIVE).is_ok());
+    }
+
+    /// Positions: present, one per mesh vertex, finite where a face uses them; each
+    /// error names the vertex and the axis. The surfaces' entry point reads only the
+    /// vertices the surfaces use, so a non-finite position of a vertex no face uses is
+    /// refused by [`check_input`] and accepted by [`simplify_surfaces`].
+    #[test]
+    fn positions_are_checked_where_they_are_used() {
+        let m = octahedron_and_a_stray_vertex();
+        let positions = m.positions.clone().expect("positions");
+        let bare = TriMesh {
+            positions: None,
+            ..m.clone()
+        };
+        assert_eq!(
+            check_input(&bare, 0.1).err(),
+            Some(SimplifyError::MissingPositions)
+        );
+        let surfaces = || ConedSurfaces::from_mesh(&m).expect("octahedron");
+        let run = |p: &[[f64; 3]]| {
+            simplify_surfaces(surfaces(), p, &Options::new(0.1), &mut |_| {}).map(|_| ())
+        };
+        let n = positions.len();
+        let short = &positions[..n - 1];
+        let count = SimplifyError::PositionCount {
+            vertices: n,
+            positions: n - 1,
+        };
+        assert_eq!(run(short).err(), Some(count.clone()));
+        let shortened = TriMesh::with_positions(short.to_vec(), m.faces.clone());
+        let shortened = TriMesh {
+            vertex_count: n,
+            ..shortened
+        };
+        assert_eq!(check_input(&shortened, 0.1).err(), Some(count));
+
+        let mut used = positions.clone();
+        used[3][1] = f64::NAN;
+        match run(&used) {
+            Err(SimplifyError::NonFiniteCoordinate {
+                vertex: 3,
+                axis: 'y',
+                value,
+            }) if value.is_nan() => {}
+            other => panic!("{other:?}"),
+        }
+        let mut stray = positions.clone();
+        stray[n - 1][2] = f64::INFINITY;
+        assert!(run(&stray).is_ok());
+        let with_stray = TriMesh::with_positions(stray, m.faces.clone());
+        assert_eq!(
+            check_input(&with_stray, 0.1).err(),
+            Some(SimplifyError::NonFiniteCoordinate {
+                vertex: n - 1,
+                axis: 'z',
+                value: f64::INFINITY,
+            })
+        );
+        assert!(run(&positions).is_ok());
+    }
+}
