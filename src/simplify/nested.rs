@@ -19,9 +19,10 @@
 //! specification re-derives every disc independently (`spec::disc`).
 //!
 //! **How the cycles are split between the sides** ([`super::Side`]). `Count` (default):
-//! both sides grow in lockstep, face by face, always extending the smaller region; a side
-//! whose region closes on its current cycle claims it and goes on to the next cycle
-//! inwards-out; so the side with fewer vertices inside takes each cycle. `Path` and
+//! both sides grow in lockstep, face by face, always extending the smaller region (`a`'s
+//! on a tie); a side whose region closes on its current cycle claims it and goes on to
+//! the next cycle inwards-out; so the side with fewer vertices inside takes each cycle,
+//! and of two that close on the same cycle with as many faces, `a`'s. `Path` and
 //! `Euclidean` fix the split first (each cycle to the side whose opposite vertex is
 //! nearer, in edge hops avoiding `p` and `q`, or in space; the `a` side takes as many
 //! cycles, from `x₁` on, as were assigned to it) and then grow the same way. If a side
