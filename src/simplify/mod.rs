@@ -53,6 +53,7 @@ use crate::core::{BuildError, ConedSurfaces};
 use crate::mesh::TriMesh;
 
 pub use geometry::{bbox_diagonal, Point, Quadric};
+pub use pass::SCANNED;
 
 /// Which edges failing the link condition are still contracted.
 #[derive(Copy, Clone, Debug, PartialEq, Eq, Default)]

@@ -176,3 +176,51 @@ fn simplification_reports_every_pass_and_matches_the_unobserved_result() {
     assert_eq!(starts, passes);
     assert!(reports.iter().any(|p| p.done > 0 && p.done < p.total));
 }
+
+/// Simplification compacts its face slots once a third of them are dead: each pass
+/// scans (reports as its total) the slots left by the pass before, which are that
+/// pass's live faces if more than a third of its slots were dead, and the same slots
+/// otherwise. On a closed surface (no cone faces) of one component, over every pass.
+#[test]
+fn simplification_compacts_once_a_third_of_the_slots_are_dead() {
+    let params = IsoParams::new(Implicit::GenusG { g: 2 }, Tessellation::BodyCentred, 48);
+    let mesh = gen::isosurface(&params).expect("isosurface");
+    let surfaces = ConedSurfaces::from_mesh(&mesh).expect("surface");
+    assert!(surfaces.is_closed() && surfaces.components.len() == 1);
+    let positions = mesh.positions.clone().expect("positions");
+    let diagonal = simplify::bbox_diagonal(positions.iter().copied());
+    let (mut compacted, mut kept) = (0, 0);
+    for fraction in [0.01, 0.03, 0.1] {
+        let options = simplify::Options::new(fraction * diagonal);
+        let mut slots = Vec::new();
+        let mut faces = Vec::new();
+        simplify::simplify_surfaces_observed(
+            surfaces.clone(),
+            &positions,
+            &options,
+            &mut |r| faces.push(r.faces),
+            &mut |p| {
+                if p.stage == simplify::SCANNED && p.done == 0 {
+                    slots.push(p.total as usize);
+                }
+            },
+        )
+        .expect("simplify");
+        assert_eq!(slots.len(), faces.len(), "one start per pass");
+        assert_eq!(slots[0], mesh.faces.len());
+        for k in 1..slots.len() {
+            let (before, live) = (slots[k - 1], faces[k - 1]);
+            if 3 * (before - live) > before {
+                assert_eq!(slots[k], live, "{fraction}: pass {k}");
+                compacted += 1;
+            } else {
+                assert_eq!(slots[k], before, "{fraction}: pass {k}");
+                kept += 1;
+            }
+        }
+    }
+    assert!(
+        compacted > 0 && kept > 0,
+        "{compacted} compactions, {kept} kept"
+    );
+}

@@ -304,11 +304,7 @@ fn suspension(hole: bool) -> TriMesh {
     }
     let mut faces = vec![[0, 1, w(0)], [0, w(m), 1]];
     for t in 0..m {
-        faces.extend([
-            [0, w(t), c(t)],
-            [0, c(t), w(t + 1)],
-            [c(t), w(t), w(t + 1)],
-        ]);
+        faces.extend([[0, w(t), c(t)], [0, c(t), w(t + 1)], [c(t), w(t), w(t + 1)]]);
         if !(hole && t == 9) {
             faces.push([1, w(t + 1), w(t)]);
         }
