@@ -288,10 +288,177 @@ mod tests {
         assert!(!fan_move_ok(x, [0.8, 0.9, 0.0], p1, p2));
     }
 
+    /// Small integer vectors whose products and sums are exact in `f64`, with no two
+    /// entries alike, so that every operator of the vector functions shows in a result.
+    const A: Point = [2.0, 3.0, 5.0];
+    const B: Point = [7.0, 11.0, 13.0];
+    const C: Point = [-17.0, 19.0, 23.0];
+
+    #[test]
+    fn vector_functions_compute_exactly_their_formulas() {
+        assert_eq!(sub(A, B), [-5.0, -8.0, -8.0]);
+        assert_eq!(dot(A, B), 14.0 + 33.0 + 65.0);
+        assert_eq!(cross(A, B), [39.0 - 55.0, 35.0 - 26.0, 22.0 - 21.0]);
+        assert_eq!(dist2(A, B), 25.0 + 64.0 + 64.0);
+        assert_eq!(midpoint(A, B), [4.5, 7.0, 9.0]);
+        assert_eq!(midpoint(C, A), [-7.5, 11.0, 14.0]);
+        // (B − A) × (C − A) = (5, 8, 8) × (−19, 16, 18).
+        assert_eq!(
+            area_normal(A, B, C),
+            [144.0 - 128.0, -152.0 - 90.0, 80.0 + 152.0]
+        );
+    }
+
+    /// `det3` against the cofactor expansion done by hand, on a matrix whose every minor
+    /// differs from the others.
+    #[test]
+    fn det3_is_the_determinant() {
+        let m = [A, B, C];
+        // 2·(11·23 − 13·19) − 3·(7·23 − 13·(−17)) + 5·(7·19 − 11·(−17))
+        assert_eq!(det3(m), 2.0 * 6.0 - 3.0 * 382.0 + 5.0 * 320.0);
+        assert_eq!(det3([B, A, C]), -det3(m));
+    }
+
+    /// The plane's quadric holds the products of `(a, b, c, d)`, `d = −n·p`, times the
+    /// weight; its error is `[x 1] Q [x 1]ᵀ` of the full symmetric matrix.
+    #[test]
+    fn plane_quadric_entries_and_error() {
+        let q = Quadric::plane(A, [1.0, -1.0, 2.0], 3.0);
+        // d = −(2 − 3 + 10) = −9.
+        let expected = [4.0, 6.0, 10.0, -18.0, 9.0, 15.0, -27.0, 25.0, -45.0, 81.0];
+        assert_eq!(q.0, expected.map(|x| 3.0 * x));
+        // A quadric with ten different entries, against the 4×4 product.
+        let q = Quadric([3.0, -1.0, 2.0, 5.0, 7.0, -4.0, 0.5, 11.0, -6.0, 13.0]);
+        let full = [
+            [q.0[0], q.0[1], q.0[2], q.0[3]],
+            [q.0[1], q.0[4], q.0[5], q.0[6]],
+            [q.0[2], q.0[5], q.0[7], q.0[8]],
+            [q.0[3], q.0[6], q.0[8], q.0[9]],
+        ];
+        for x in [[1.0, 2.0, 3.0], [-3.0, 0.5, 2.0], [0.0, 0.0, 0.0]] {
+            let h = [x[0], x[1], x[2], 1.0];
+            let mut want = 0.0;
+            for (i, row) in full.iter().enumerate() {
+                for (j, v) in row.iter().enumerate() {
+                    want += h[i] * v * h[j];
+                }
+            }
+            assert_eq!(q.error(x), want, "at {x:?}");
+        }
+        // Summing adds entry by entry.
+        let mut s = q;
+        s.add(&Quadric::plane(A, [1.0, -1.0, 2.0], 1.0));
+        for k in 0..10 {
+            assert_eq!(
+                s.0[k],
+                q.0[k] + [4.0, 6.0, 10.0, -18.0, 9.0, 15.0, -27.0, 25.0, -45.0, 81.0][k]
+            );
+        }
+    }
+
+    /// The minimiser solves the full 3×3 system, and exists exactly when the system's
+    /// determinant exceeds `1e-9` times the cube of the mean diagonal entry: here the
+    /// diagonal `(t, 2, 4)`, mean about 2, so the bound is about `8e-9` against `det = 8t`.
+    #[test]
+    fn minimiser_solves_the_system_and_refuses_it_at_its_conditioning_bound() {
+        // Q's 3×3 block is [A; B'; C'] made symmetric and definite; the right-hand side
+        // is chosen so that the solution is (1, −2, 3).
+        let m = [[4.0, 1.0, 2.0], [1.0, 5.0, -1.0], [2.0, -1.0, 6.0]];
+        let x = [1.0, -2.0, 3.0];
+        let r: Vec<f64> = m.iter().map(|row| dot(*row, x)).collect();
+        let q = Quadric([
+            m[0][0], m[0][1], m[0][2], -r[0], m[1][1], m[1][2], -r[1], m[2][2], -r[2], 1.0,
+        ]);
+        let got = q.minimiser().expect("a definite system");
+        for k in 0..3 {
+            assert!((got[k] - x[k]).abs() < 1e-12, "{got:?}");
+        }
+        let diagonal = |t: f64| Quadric([t, 0.0, 0.0, -t, 2.0, 0.0, 2.0, 4.0, -4.0, 0.0]);
+        // Solution (1, −1, 1) whenever the system is accepted.
+        assert_eq!(diagonal(1.1e-9).minimiser(), Some([1.0, -1.0, 1.0]));
+        assert_eq!(diagonal(0.9e-9).minimiser(), None);
+        assert_eq!(Quadric::default().minimiser(), None);
+    }
+
+    /// Without a usable minimiser the position is the best of the midpoint, `p` and `q`,
+    /// ties going to the midpoint, then to `p`; a minimiser is used only within the
+    /// bound, a coordinate equal to it included.
+    #[test]
+    fn best_position_fallback_tie_rule_and_bound() {
+        let (p, q) = ([0.0, 0.0, 2.0], [4.0, 0.0, 2.0]);
+        // Every error is 0: the midpoint.
+        assert_eq!(Quadric::default().best_position(p, q), [2.0, 0.0, 2.0]);
+        // The plane x = 0 (singular): p is on it.
+        let plane = Quadric::plane([1.0, 0.0, 0.0], [0.0, 0.0, 0.0], 1.0);
+        assert_eq!(plane.best_position(p, q), p);
+        assert_eq!(plane.best_position(q, p), p);
+        // The plane x = 4: q is on it.
+        let plane = Quadric::plane([1.0, 0.0, 0.0], [4.0, 0.0, 0.0], 1.0);
+        assert_eq!(plane.best_position(p, q), q);
+        // Three planes meeting at (1, −1, 1): used within the bound, refused past it.
+        let mut corner = Quadric::default();
+        for (n, at) in [
+            ([1.0, 0.0, 0.0], 1.0),
+            ([0.0, 1.0, 0.0], -1.0),
+            ([0.0, 0.0, 1.0], 1.0),
+        ] {
+            corner.add(&Quadric::plane(n, n.map(|c| c * at), 1.0));
+        }
+        assert_eq!(corner.best_position(p, q), [1.0, -1.0, 1.0]);
+        assert_eq!(corner.best_position_within(p, q, 1.0), [1.0, -1.0, 1.0]);
+        assert_eq!(corner.best_position_within(p, q, 0.5), [2.0, 0.0, 2.0]);
+    }
+
+    /// The guard refuses a normal turned by exactly 90°, accepts any move of a triangle
+    /// that had no area (if it gets one), and refuses slivers by their longest edge: on
+    /// the edge `(0,0,0)–(1,0,0)`, a corner moved to height `h` above its middle has
+    /// `|n| = h` and longest edge 1, so it is refused for `h ≤ 1e-10` and accepted above.
+    #[test]
+    fn fan_move_guard_at_its_boundaries() {
+        let (p1, p2) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]);
+        // Before: normal (0, 1, 0); after: (0, 0, 1).
+        let x = [0.0, 0.0, -1.0];
+        assert_eq!(cross(sub(p1, x), sub(p2, p1)), [0.0, 1.0, 0.0]);
+        assert!(!fan_move_ok(x, [0.0, 1.0, 0.0], p1, p2));
+        assert!(fan_move_ok(x, [0.0, 1.0, -1e-3], p1, p2));
+        assert!(!fan_move_ok(x, [0.0, 1.0, 1e-3], p1, p2));
+        // A triangle without area may move anywhere that gives it one.
+        let flat = [0.5, 0.0, 0.0];
+        assert!(fan_move_ok(flat, [0.5, 1.0, 0.0], p1, p2));
+        assert!(fan_move_ok(flat, [0.5, -1.0, 0.0], p1, p2));
+        assert!(!fan_move_ok(flat, [2.0, 0.0, 0.0], p1, p2));
+        // Slivers, from the side of the old triangle (x below the edge in y).
+        let x = [0.5, 1.0, 0.0];
+        for (h, ok) in [
+            (0.9e-10, false),
+            (1e-10, false),
+            (1.1e-10, true),
+            (1e-9, true),
+        ] {
+            let to = [0.5, h, 0.0];
+            assert_eq!(fan_move_ok(x, to, p1, p2), ok, "h = {h}");
+            assert_eq!(moved_triangle_ok(area_normal(x, p1, p2), [to, p1, p2]), ok);
+        }
+        // The same slivers with the moved corner far along the edge's line, where the
+        // longest edge is the one from it: |n| = h, L = 10, refused for h ≤ 1e-10 · L².
+        for (h, ok) in [(0.9e-8, false), (1.1e-8, true)] {
+            let (x, to) = ([10.0, 1.0, 0.0], [10.0, h, 0.0]);
+            assert_eq!(fan_move_ok(x, to, p1, p2), ok, "h = {h}");
+            assert_eq!(moved_triangle_ok(area_normal(x, p1, p2), [to, p1, p2]), ok);
+        }
+    }
+
     #[test]
     fn bbox_diagonal_of_a_box() {
         let d = bbox_diagonal([[0.0, 0.0, 0.0], [3.0, 4.0, 0.0], [1.0, 1.0, 12.0]]);
         assert!((d - 13.0).abs() < 1e-12);
         assert_eq!(bbox_diagonal([]), 0.0);
+        assert_eq!(bbox_diagonal([[-1.0, 2.0, 5.0]]), 0.0);
+        // Sides (3, 4, 12) scaled by 2^300 and 2^−300: the plain formula's squares would
+        // overflow and underflow.
+        for s in [2f64.powi(300), 2f64.powi(-300)] {
+            let d = bbox_diagonal([[-s, 0.0, 0.0], [2.0 * s, 4.0 * s, 12.0 * s]]);
+            assert_eq!(d, 13.0 * s);
+        }
     }
 }
