@@ -650,4 +650,41 @@ mod tests {
         );
         assert!(run(&positions).is_ok());
     }
+    /// The cone apexes closing the boundary loops sit at the origin of the scaled
+    /// coordinates, but their faces are never visited: on a grid whose boundary passes
+    /// through the origin (a corner at (0, 0, 0), so an apex–corner "edge" of length 0),
+    /// with ε below the grid's spacing, nothing is contracted or skipped in any mode.
+    #[test]
+    fn cone_faces_are_never_visited() {
+        let n = 4u32;
+        let positions: Vec<[f64; 3]> = (0..n * n)
+            .map(|v| [f64::from(v % n), f64::from(v / n), 0.0])
+            .collect();
+        let mut faces = Vec::new();
+        for j in 0..n - 1 {
+            for i in 0..n - 1 {
+                let v = j * n + i;
+                faces.push([v, v + 1, v + n + 1]);
+                faces.push([v, v + n + 1, v + n]);
+            }
+        }
+        let mesh = TriMesh::with_positions(positions, faces);
+        for mode in [Mode::Naive, Mode::Nested] {
+            for position in [Position::Midpoint, Position::Quadric] {
+                let opts = Options {
+                    mode,
+                    position,
+                    ..Options::new(0.5)
+                };
+                let out = simplify(&mesh, &opts).expect("a disc");
+                let s = &out.stats;
+                assert_eq!(
+                    (s.edges_contracted, s.skipped.total(), s.faces_out),
+                    (0, 0, 18),
+                    "{mode:?} {position:?}"
+                );
+                assert_eq!(s.shortest_remaining_edge, Some(1.0));
+            }
+        }
+    }
 }
