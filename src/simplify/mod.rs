@@ -687,4 +687,91 @@ mod tests {
             }
         }
     }
+    /// The guard reads only faces that survive the contraction. The short edge `pq`
+    /// lies on the non-facial 3-cycle `p q x`, which splits a sphere into a flat cone
+    /// over the cycle from `d` (three faces, the side the nested mode removes) and a disc
+    /// of five faces with two vertices. Moving `p` to the edge's midpoint flips the
+    /// removed face `x p d` (ignored: the contraction is made); with the surviving
+    /// vertex `b2` moved next to `d`, it flips the surviving face `p b2 x` (refused).
+    #[test]
+    fn the_guard_reads_the_faces_that_survive_and_only_those() {
+        let (p, q, x, d, b1) = (0, 1, 2, 3, 4);
+        let b2 = 5;
+        let faces = vec![
+            [p, q, d],
+            [q, x, d],
+            [x, p, d],
+            [q, p, b1],
+            [x, q, b1],
+            [b2, x, b1],
+            [p, x, b2],
+            [b1, p, b2],
+        ];
+        let run = |b2_at: [f64; 3]| {
+            let positions = vec![
+                [0.0, 0.0, 0.0],
+                [0.1, 0.0, 0.0],
+                [0.05, 1.0, 0.0],
+                [0.03, 0.3, 0.0],
+                [0.05, 0.3, -0.5],
+                b2_at,
+            ];
+            let mesh = TriMesh::with_positions(positions, faces.clone());
+            let opts = Options::new(0.2);
+            simplify(&mesh, &opts).expect("a sphere").stats
+        };
+        let s = run([0.0, 0.6, -0.5]);
+        assert_eq!(
+            (
+                s.edges_contracted,
+                s.discs_removed,
+                s.vertices_removed_inside
+            ),
+            (1, 1, 1),
+            "{s:?}"
+        );
+        assert_eq!((s.faces_out, s.skipped.foldover), (4, 0));
+        let s = run([0.03, 0.3, -0.01]);
+        assert_eq!(
+            (s.edges_contracted, s.discs_removed, s.faces_out),
+            (0, 0, 8)
+        );
+        assert_eq!(s.remaining.foldover, 1, "{s:?}");
+    }
+
+    /// The guard ignores cone faces, whose apex sits at the origin: on a grid with a
+    /// boundary along the x axis, the short boundary edge from (1, 0, 0) to (1.1, 0, 0)
+    /// is contracted, although each endpoint's cone face would have no area after the
+    /// move.
+    #[test]
+    fn the_guard_ignores_cone_faces() {
+        let n = 4u32;
+        let mut positions: Vec<[f64; 3]> = (0..n * n)
+            .map(|v| [f64::from(v % n), f64::from(v / n), 0.0])
+            .collect();
+        positions[2] = [1.1, 0.0, 0.0];
+        let mut faces = Vec::new();
+        for j in 0..n - 1 {
+            for i in 0..n - 1 {
+                let v = j * n + i;
+                faces.push([v, v + 1, v + n + 1]);
+                faces.push([v, v + n + 1, v + n]);
+            }
+        }
+        let mesh = TriMesh::with_positions(positions, faces);
+        for mode in [Mode::Naive, Mode::Nested] {
+            let opts = Options {
+                mode,
+                ..Options::new(0.5)
+            };
+            let out = simplify(&mesh, &opts).expect("a disc");
+            assert_eq!(
+                (out.stats.edges_contracted, out.stats.skipped.foldover),
+                (1, 0),
+                "{mode:?}"
+            );
+            let merged = out.mesh.positions.as_deref().expect("positions");
+            assert!(merged.contains(&[1.05, 0.0, 0.0]), "{merged:?}");
+        }
+    }
 }
