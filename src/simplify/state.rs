@@ -269,3 +269,53 @@ impl<'o> Simplifier<'o> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{ConedSurfaces, TriMesh};
+
+    /// The quadrics start as the sum of each real face's plane weighted by its area, plus,
+    /// at the ends of every boundary edge, the plane through the edge perpendicular to its
+    /// face with ten times that weight. On a 2×2 grid of squares of side 2 in the plane
+    /// z = 0 (scaled by 1/4 to side 1/2, so every face has area 1/8): the middle vertex
+    /// has six faces, error 6/8 · z²; the boundary vertex (2, 0, 0) has three faces and
+    /// two boundary edges on the line y = 0, error 3/8 · z² + 2 · 10/8 · y² (scaled
+    /// coordinates).
+    #[test]
+    fn quadrics_start_from_the_area_weighted_face_and_boundary_planes() {
+        let n = 3u32;
+        let positions: Vec<[f64; 3]> = (0..n * n)
+            .map(|v| [2.0 * f64::from(v % n), 2.0 * f64::from(v / n), 0.0])
+            .collect();
+        let mut faces = Vec::new();
+        for j in 0..n - 1 {
+            for i in 0..n - 1 {
+                let v = j * n + i;
+                faces.push([v, v + 1, v + n + 1]);
+                faces.push([v, v + n + 1, v + n]);
+            }
+        }
+        let mesh = TriMesh::with_positions(positions.clone(), faces);
+        let mut surfaces = ConedSurfaces::from_mesh(&mesh).expect("a disc");
+        let component = surfaces.components.remove(0);
+        let id_of = |m: u32| {
+            let k = component.vertex_origin.iter().position(|&o| o == m);
+            k.expect("every mesh vertex is in the component")
+        };
+        let (middle, edge) = (id_of(4), id_of(1));
+        let opts = Options {
+            position: super::super::Position::Quadric,
+            ..Options::new(0.1)
+        };
+        let sim = Simplifier::new(component, &positions, &opts);
+        assert_eq!(sim.scale, 0.25);
+        let q = |v: usize, p: Point| sim.quadric[v].error(p);
+        assert_eq!(q(middle, [0.3, 0.7, 0.0]), 0.0);
+        assert_eq!(q(middle, [0.3, 0.7, 1.0]), 0.75);
+        assert_eq!(q(middle, [0.3, 0.7, 2.0]), 3.0);
+        assert_eq!(q(edge, [0.3, 0.0, 1.0]), 0.375);
+        assert_eq!(q(edge, [0.3, 2.0, 0.0]), 10.0);
+        assert_eq!(q(edge, [0.3, 2.0, 1.0]), 10.375);
+    }
+}
