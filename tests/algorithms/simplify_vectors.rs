@@ -24,7 +24,7 @@ use serde_json::Value;
 use crate::common;
 use crate::harness::{surface_topology, ComponentType};
 
-const GROUPS: [(&str, usize); 2] = [("simplify-closed", 9), ("simplify-bounded", 7)];
+const GROUPS: [(&str, usize); 2] = [("simplify-closed", 10), ("simplify-bounded", 7)];
 
 /// The runs of every vector, in order: (mode, side, guard, index of ε among the three).
 const RUNS: [(&str, &str, bool, usize); 10] = [

@@ -271,32 +271,39 @@ fn genus_on_both_sides() -> TriMesh {
 /// The suspension of a path with its lower faces subdivided: `p` = 0 at `(0, 0, −1/8)`
 /// and `q` = 1 at `(0, 0, 1/8)` (the edge `[p, q]`, 1/4 long), both joined to every
 /// vertex of the path `w_0 … w_14` (vertices 2 … 16) at the points 1 … 15 of [`square`]
-/// with four per side (1/2 apart), except `w_0`, moved from `(−1/2, −1)` to
-/// `(−1/2, −4)`; faces `[p, q, w_0]`, `[p, w_14, q]`, `[q, w_t+1, w_t]`, and
+/// with four per side (1/2 apart), except, with `far`, `w_0`, moved from `(−1/2, −1)`
+/// to `(−1/2, −4)`; faces `[p, q, w_0]`, `[p, w_14, q]`, `[q, w_t+1, w_t]`, and
 /// `[p, w_t, w_t+1]` split at a vertex `c_t` (vertex 17 + t, at half the midpoint of
-/// `w_t w_t+1`, `z = −1/16`; `c_0` at `(−1/4, −2, −1/16)`) into `[p, w_t, c_t]`, `[p, c_t, w_t+1]`,
-/// `[c_t, w_t, w_t+1]`. `w_0` and `w_14` are the opposite vertices of `[p, q]`, and each
-/// of `w_1 … w_13` closes a separating 3-cycle with it: 13 nested cycles, each slab
-/// between two of them a disc of four faces around its `c_t`. Only `[p, q]` is shorter
-/// than 1/2, so the nested mode contracts it after removing the discs the side
-/// heuristic assigns; the slab where the two sides meet stays, and its `c_t` tells
-/// where that was. `count` grows the sides in lockstep, and they reach the middle cycle
-/// `w_7` with regions of the same size (the tie rule decides); `path` splits by hops
-/// (the middle), `euclidean` by distance (nearly every cycle to `w_14`'s side, as `w_0`
-/// is far). With `hole`, the face `[q, w_10, w_9]` is removed: a boundary loop in the
-/// slab between the cycles through `w_9` and `w_10`, which neither side may remove.
-fn suspension(hole: bool) -> TriMesh {
+/// `w_t w_t+1`, `z = −1/16`) into `[p, w_t, c_t]`, `[p, c_t, w_t+1]`,
+/// `[c_t, w_t, w_t+1]` (with `far`, `c_0` at `(−1/4, −2, −1/16)`). `w_0` and `w_14` are
+/// the opposite vertices of `[p, q]`, and each of `w_1 … w_13` closes a separating
+/// 3-cycle with it: 13 nested cycles, each slab between two of them a disc of four
+/// faces around its `c_t`. Only `[p, q]` is shorter than 1/2, so the nested mode
+/// contracts it after removing the discs the side heuristic assigns; the slab where the
+/// two sides meet stays, and its `c_t` tells where that was. `count` grows the sides in
+/// lockstep, and they reach the middle cycle `w_7` with regions of the same size (the
+/// tie rule decides); `path` splits by hops (the middle), `euclidean` by distance (with
+/// `far`, every cycle to `w_14`'s side; without, the path is symmetric about the line
+/// through `w_7` = (1, 1), so `w_1 … w_6` go to `w_0`'s side, `w_8 … w_13` to `w_14`'s
+/// and `w_7`, as near one end as the other, to `w_0`'s by the tie rule). With `hole`,
+/// the face `[q, w_10, w_9]` is removed: a boundary loop in the slab between the cycles
+/// through `w_9` and `w_10`, which neither side may remove.
+fn suspension(far: bool, hole: bool) -> TriMesh {
     let m = 14u32;
     let w = |t: u32| 2 + t;
     let c = |t: u32| 2 + m + 1 + t;
     let mut positions = vec![[0.0, 0.0, -0.125], [0.0, 0.0, 0.125]];
     for t in 0..=m {
         let (x, y) = square(t + 1, 4);
-        positions.push(if t == 0 { [x, -4.0, 0.0] } else { [x, y, 0.0] });
+        positions.push(if far && t == 0 {
+            [x, -4.0, 0.0]
+        } else {
+            [x, y, 0.0]
+        });
     }
     for t in 0..m {
         let (a, b) = (positions[w(t) as usize], positions[w(t + 1) as usize]);
-        positions.push(if t == 0 {
+        positions.push(if far && t == 0 {
             [-0.25, -2.0, -0.0625]
         } else {
             [(a[0] + b[0]) / 4.0, (a[1] + b[1]) / 4.0, -0.0625]
@@ -425,13 +432,19 @@ fn inputs() -> Vec<Input> {
         Input {
             name: "simplify_nested_cycles",
             source: json!({"mesh": "the suspension of a 14-edge path, one end far: a short edge on 13 nested separating 3-cycles"}),
-            mesh: suspension(false),
+            mesh: suspension(true, false),
             eps: [0.3125, 0.375, 0.5],
         },
         Input {
             name: "simplify_nested_cycles_with_a_hole",
             source: json!({"mesh": "the suspension of a 14-edge path, one end far, with a hole between the 9th and 10th of its 13 nested 3-cycles"}),
-            mesh: suspension(true),
+            mesh: suspension(true, true),
+            eps: [0.3125, 0.375, 0.5],
+        },
+        Input {
+            name: "simplify_nested_cycles_symmetric",
+            source: json!({"mesh": "the suspension of a 14-edge path symmetric about its middle vertex: a short edge on 13 nested separating 3-cycles, split by distance at the middle"}),
+            mesh: suspension(false, false),
             eps: [0.3125, 0.375, 0.5],
         },
     ]
