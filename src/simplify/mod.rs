@@ -548,6 +548,30 @@ pub(crate) fn assemble(stats: &mut Stats, parts: Vec<ComponentOutput>) -> TriMes
     TriMesh::with_positions(out_positions, out_faces)
 }
 
+/// Test inputs shared by the simplifier's unit tests.
+#[cfg(test)]
+pub(crate) mod testing {
+    use crate::TriMesh;
+
+    /// The flat grid of `n × n` vertices `(side · i, side · j, 0)`, vertex `j n + i`, each
+    /// square split along its diagonal from `(i, j)` to `(i + 1, j + 1)`: a disc whose
+    /// corner vertex 0 is at the origin.
+    pub(crate) fn grid(n: u32, side: f64) -> TriMesh {
+        let positions: Vec<[f64; 3]> = (0..n * n)
+            .map(|v| [side * f64::from(v % n), side * f64::from(v / n), 0.0])
+            .collect();
+        let mut faces = Vec::new();
+        for j in 0..n - 1 {
+            for i in 0..n - 1 {
+                let v = j * n + i;
+                faces.push([v, v + 1, v + n + 1]);
+                faces.push([v, v + n + 1, v + n]);
+            }
+        }
+        TriMesh::with_positions(positions, faces)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -656,19 +680,7 @@ mod tests {
     /// with ε below the grid's spacing, nothing is contracted or skipped in any mode.
     #[test]
     fn cone_faces_are_never_visited() {
-        let n = 4u32;
-        let positions: Vec<[f64; 3]> = (0..n * n)
-            .map(|v| [f64::from(v % n), f64::from(v / n), 0.0])
-            .collect();
-        let mut faces = Vec::new();
-        for j in 0..n - 1 {
-            for i in 0..n - 1 {
-                let v = j * n + i;
-                faces.push([v, v + 1, v + n + 1]);
-                faces.push([v, v + n + 1, v + n]);
-            }
-        }
-        let mesh = TriMesh::with_positions(positions, faces);
+        let mesh = testing::grid(4, 1.0);
         for mode in [Mode::Naive, Mode::Nested] {
             for position in [Position::Midpoint, Position::Quadric] {
                 let opts = Options {
@@ -745,20 +757,8 @@ mod tests {
     /// move.
     #[test]
     fn the_guard_ignores_cone_faces() {
-        let n = 4u32;
-        let mut positions: Vec<[f64; 3]> = (0..n * n)
-            .map(|v| [f64::from(v % n), f64::from(v / n), 0.0])
-            .collect();
-        positions[2] = [1.1, 0.0, 0.0];
-        let mut faces = Vec::new();
-        for j in 0..n - 1 {
-            for i in 0..n - 1 {
-                let v = j * n + i;
-                faces.push([v, v + 1, v + n + 1]);
-                faces.push([v, v + n + 1, v + n]);
-            }
-        }
-        let mesh = TriMesh::with_positions(positions, faces);
+        let mut mesh = testing::grid(4, 1.0);
+        mesh.positions.as_mut().expect("positions")[2] = [1.1, 0.0, 0.0];
         for mode in [Mode::Naive, Mode::Nested] {
             let opts = Options {
                 mode,

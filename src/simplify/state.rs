@@ -273,7 +273,7 @@ impl<'o> Simplifier<'o> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{ConedSurfaces, TriMesh};
+    use crate::ConedSurfaces;
 
     /// The quadrics start as the sum of each real face's plane weighted by its area, plus,
     /// at the ends of every boundary edge, the plane through the edge perpendicular to its
@@ -284,19 +284,8 @@ mod tests {
     /// coordinates).
     #[test]
     fn quadrics_start_from_the_area_weighted_face_and_boundary_planes() {
-        let n = 3u32;
-        let positions: Vec<[f64; 3]> = (0..n * n)
-            .map(|v| [2.0 * f64::from(v % n), 2.0 * f64::from(v / n), 0.0])
-            .collect();
-        let mut faces = Vec::new();
-        for j in 0..n - 1 {
-            for i in 0..n - 1 {
-                let v = j * n + i;
-                faces.push([v, v + 1, v + n + 1]);
-                faces.push([v, v + n + 1, v + n]);
-            }
-        }
-        let mesh = TriMesh::with_positions(positions.clone(), faces);
+        let mesh = super::super::testing::grid(3, 2.0);
+        let positions = mesh.positions.clone().expect("positions");
         let mut surfaces = ConedSurfaces::from_mesh(&mesh).expect("a disc");
         let component = surfaces.components.remove(0);
         let id_of = |m: u32| {
