@@ -439,12 +439,17 @@ mod tests {
             assert_eq!(fan_move_ok(x, to, p1, p2), ok, "h = {h}");
             assert_eq!(moved_triangle_ok(area_normal(x, p1, p2), [to, p1, p2]), ok);
         }
-        // The same slivers with the moved corner far along the edge's line, where the
-        // longest edge is the one from it: |n| = h, L = 10, refused for h ≤ 1e-10 · L².
-        for (h, ok) in [(0.9e-8, false), (1.1e-8, true)] {
-            let (x, to) = ([10.0, 1.0, 0.0], [10.0, h, 0.0]);
-            assert_eq!(fan_move_ok(x, to, p1, p2), ok, "h = {h}");
-            assert_eq!(moved_triangle_ok(area_normal(x, p1, p2), [to, p1, p2]), ok);
+        // The same slivers with the moved corner on the edge's line outside the edge,
+        // where the longest edge is the one from it to the far end: |n| = h, refused for
+        // h ≤ 1e-10 · L². Past p2 at x = 10 (L² = 100), and before p1 at x = −1 and −3
+        // (L² = 4 and 16), where L² comes close to the cheap bound `2 (|e|² + |p1 − to|²)`
+        // (equal to it at −1, where p1 − to = e): a smaller bound would let them through.
+        for (along, l2) in [(10.0, 100.0), (-1.0, 4.0), (-3.0, 16.0)] {
+            for (h, ok) in [(0.9e-10 * l2, false), (1.1e-10 * l2, true)] {
+                let (x, to) = ([along, 1.0, 0.0], [along, h, 0.0]);
+                assert_eq!(fan_move_ok(x, to, p1, p2), ok, "at {along}, h = {h}");
+                assert_eq!(moved_triangle_ok(area_normal(x, p1, p2), [to, p1, p2]), ok);
+            }
         }
     }
 
