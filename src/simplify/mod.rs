@@ -674,6 +674,7 @@ mod tests {
         );
         assert!(run(&positions).is_ok());
     }
+
     /// The cone apexes closing the boundary loops sit at the origin of the scaled
     /// coordinates, but their faces are never visited: on a grid whose boundary passes
     /// through the origin (a corner at (0, 0, 0), so an apex–corner "edge" of length 0),
@@ -699,6 +700,7 @@ mod tests {
             }
         }
     }
+
     /// The guard reads only faces that survive the contraction. The short edge `pq`
     /// lies on the non-facial 3-cycle `p q x`, which splits a sphere into a flat cone
     /// over the cycle from `d` (three faces, the side the nested mode removes) and a disc
@@ -707,8 +709,7 @@ mod tests {
     /// vertex `b2` moved next to `d`, it flips the surviving face `p b2 x` (refused).
     #[test]
     fn the_guard_reads_the_faces_that_survive_and_only_those() {
-        let (p, q, x, d, b1) = (0, 1, 2, 3, 4);
-        let b2 = 5;
+        let (p, q, x, d, b1, b2) = (0, 1, 2, 3, 4, 5);
         let faces = vec![
             [p, q, d],
             [q, x, d],
