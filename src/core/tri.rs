@@ -612,6 +612,214 @@ mod tests {
         assert_eq!((clone.next, clone.end), (0, 0));
     }
 
+    /// The queries read from the arrays agree with the same facts read naively from the
+    /// face list (vertices, edges, directed edges, degrees), on orientable and
+    /// non-orientable surfaces, stored coherently and with faces reversed, fresh and with
+    /// removed faces and vertices after contractions.
+    #[test]
+    fn queries_agree_with_the_face_list() {
+        use crate::gen;
+        use std::collections::{BTreeMap, BTreeSet};
+        // (name, faces, Euler genus, orientable)
+        let surfaces = [
+            ("tetrahedron", gen::tetrahedron(), 0, true),
+            ("octahedron", gen::octahedron(), 0, true),
+            (
+                "torus",
+                gen::subdivide(&gen::torus7(), 1).expect("subdivision"),
+                2,
+                true,
+            ),
+            ("projective plane", gen::projective_plane6(), 1, false),
+            (
+                "Klein bottle",
+                gen::subdivide(&gen::klein_bottle(), 1).expect("subdivision"),
+                2,
+                false,
+            ),
+        ];
+        let mut cases = 0;
+        let mut tetrahedra = 0;
+        for (name, mesh, euler_genus, orientable) in surfaces {
+            let n = mesh.vertex_count;
+            let mut reversed = mesh.faces.clone();
+            for f in reversed.iter_mut().step_by(3) {
+                f.swap(1, 2);
+            }
+            for (order, faces) in [("as stored", &mesh.faces), ("reversed", &reversed)] {
+                let fresh = Triangulation::from_faces(n, faces).expect("a closed surface");
+                assert_eq!(
+                    &fresh.face_list(),
+                    faces,
+                    "{name}: face_list keeps the input"
+                );
+                let mut contracted = fresh.clone();
+                let mut history = crate::History::new();
+                for [a, b, _] in faces.iter().step_by(5) {
+                    // Errors (the edge is gone or fails the link condition) change nothing.
+                    let _ = contracted.contract(VertexId(*a), VertexId(*b), &mut history);
+                }
+                for (stage, t) in [("fresh", &fresh), ("contracted", &contracted)] {
+                    let what = format!("{name}, {order}, {stage}");
+                    check_queries(t, &what, euler_genus, orientable, &mut tetrahedra);
+                    cases += 1;
+                }
+                if !matches!(name, "tetrahedron" | "projective plane") {
+                    assert!(contracted.vertex_count() < fresh.vertex_count(), "{name}");
+                }
+            }
+        }
+        assert_eq!(cases, 20);
+        // The tetrahedron's four cases, and the octahedron contracted to it in one order.
+        assert_eq!(tetrahedra, 5);
+
+        fn check_queries(
+            t: &Triangulation,
+            what: &str,
+            euler_genus: i64,
+            orientable: bool,
+            tetrahedra: &mut usize,
+        ) {
+            let faces = t.face_list();
+            assert_eq!(faces.len(), t.face_count(), "{what}");
+            let live: BTreeSet<u32> = faces.iter().flatten().copied().collect();
+            let mut edges = BTreeSet::new();
+            let mut directed = BTreeMap::<(u32, u32), usize>::new();
+            let mut degree = BTreeMap::<u32, usize>::new();
+            for f in &faces {
+                for k in 0..3 {
+                    let (a, b) = (f[k], f[(k + 1) % 3]);
+                    edges.insert((a.min(b), a.max(b)));
+                    *directed.entry((a, b)).or_default() += 1;
+                    *degree.entry(a).or_default() += 1;
+                }
+            }
+            // Faces: each live face's corners name its vertices; the other two
+            // vertices of a corner are the endpoints of the edge opposite it.
+            for (f, fv) in t.faces().zip(&faces) {
+                for (s, c) in f.corners().into_iter().enumerate() {
+                    assert_eq!(t.vertex(c).0, fv[s], "{what}");
+                    let [a, b] = t.edge_endpoints(c);
+                    assert_eq!([a.0, b.0], [fv[(s + 1) % 3], fv[(s + 2) % 3]], "{what}");
+                }
+            }
+            let beyond = t.vertex_capacity() as u32 + 1;
+            for u in 0..beyond {
+                let u_id = VertexId(u);
+                assert_eq!(t.is_vertex(u_id), live.contains(&u), "{what}: vertex {u}");
+                if live.contains(&u) {
+                    let link: BTreeSet<u32> = t.link(u_id).map(|w| w.0).collect();
+                    let naive: BTreeSet<u32> = edges
+                        .iter()
+                        .filter_map(|&(a, b)| (a == u).then_some(b).or((b == u).then_some(a)))
+                        .collect();
+                    assert_eq!(link, naive, "{what}: link of {u}");
+                }
+                for v in 0..beyond {
+                    let v_id = VertexId(v);
+                    let is_edge = edges.contains(&(u.min(v), u.max(v))) && u != v;
+                    assert_eq!(t.has_edge(u_id, v_id), is_edge, "{what}: [{u}, {v}]");
+                    match t.find_edge(u_id, v_id) {
+                        Some(c) => {
+                            assert!(is_edge, "{what}: a corner for the non-edge [{u}, {v}]");
+                            assert_eq!(t.vertex(c), u_id, "{what}");
+                            assert!(
+                                t.vertex(c.next()) == v_id || t.vertex(c.prev()) == v_id,
+                                "{what}: the corner's face holds [{u}, {v}]"
+                            );
+                        }
+                        None => assert!(!is_edge, "{what}: [{u}, {v}] not found"),
+                    }
+                    match t.edge_corners(u_id, v_id) {
+                        Some([p, q]) => {
+                            assert!(is_edge, "{what}");
+                            assert_ne!(p.face(), q.face(), "{what}");
+                            assert_eq!(t.opposite(p), q, "{what}");
+                            for c in [p, q] {
+                                let mut ends = t.edge_endpoints(c);
+                                ends.sort();
+                                assert_eq!(
+                                    ends,
+                                    {
+                                        let mut e = [u_id, v_id];
+                                        e.sort();
+                                        e
+                                    },
+                                    "{what}: corner opposite [{u}, {v}]"
+                                );
+                            }
+                        }
+                        None => assert!(!is_edge, "{what}: [{u}, {v}] has corners"),
+                    }
+                }
+            }
+            // Every edge once, smaller endpoint first, with a corner opposite it.
+            let listed: Vec<(u32, u32)> = t
+                .edges()
+                .map(|(a, b, c)| {
+                    let mut ends = t.edge_endpoints(c);
+                    ends.sort();
+                    assert_eq!(ends, [a, b], "{what}: the corner is opposite its edge");
+                    (a.0, b.0)
+                })
+                .collect();
+            assert!(listed.iter().all(|(a, b)| a < b), "{what}");
+            assert_eq!(listed.len(), edges.len(), "{what}: each edge once");
+            assert_eq!(
+                listed.iter().copied().collect::<BTreeSet<_>>(),
+                edges,
+                "{what}"
+            );
+            // Counts and the Euler characteristic.
+            let chi = live.len() as i64 - edges.len() as i64 + faces.len() as i64;
+            assert_eq!(t.euler_characteristic(), chi, "{what}");
+            assert_eq!(t.euler_genus(), euler_genus, "{what}");
+            assert_eq!(2 - chi, euler_genus, "{what}");
+            // Orientation: stored coherently when every directed edge occurs once.
+            let coherent = directed.values().all(|&k| k == 1);
+            assert_eq!(t.is_coherent(), coherent, "{what}");
+            assert_eq!(t.is_orientable(), orientable, "{what}");
+            assert_eq!(t.genus(), orientable.then_some(euler_genus / 2), "{what}");
+            match t.orientation() {
+                None => assert!(!orientable, "{what}: an orientation exists"),
+                Some(flip) => {
+                    assert!(orientable, "{what}");
+                    assert_eq!(flip.len(), t.face_capacity(), "{what}");
+                    let mut once = BTreeSet::new();
+                    for f in 0..t.face_capacity() {
+                        let f_id = FaceId(f as u32);
+                        if !t.is_face(f_id) {
+                            assert!(!flip[f], "{what}: a removed face is not flipped");
+                            continue;
+                        }
+                        let [a, b, c] = t.face_vertices(f_id).map(|v| v.0);
+                        let oriented = if flip[f] { [a, c, b] } else { [a, b, c] };
+                        for k in 0..3 {
+                            let e = (oriented[k], oriented[(k + 1) % 3]);
+                            assert!(once.insert(e), "{what}: {e:?} twice after flipping");
+                        }
+                    }
+                    assert_eq!(coherent, flip.iter().all(|&x| !x), "{what}");
+                }
+            }
+            // Degrees.
+            let histogram = t.degree_histogram();
+            let max = degree.values().copied().max().unwrap_or(0);
+            assert_eq!(histogram.len(), max + 1, "{what}");
+            for (d, &count) in histogram.iter().enumerate() {
+                let naive = degree.values().filter(|&&k| k == d).count();
+                assert_eq!(count, naive, "{what}: vertices of degree {d}");
+            }
+            // T4: four vertices, every pair an edge (K4).
+            let k4 = live.len() == 4 && edges.len() == 6;
+            assert_eq!(t.is_tetrahedron(), k4, "{what}");
+            *tetrahedra += usize::from(k4);
+            let arrays = 2 * 3 * t.face_capacity() + 2 * t.vertex_capacity();
+            assert!(t.heap_bytes() >= 4 * arrays, "{what}");
+            assert!(t.heap_bytes() <= 4 * 4 * arrays, "{what}");
+        }
+    }
+
     /// `==` compares every array and count (each changed alone makes triangulations
     /// unequal) and ignores the state stamp.
     #[test]
