@@ -786,14 +786,14 @@ mod tests {
                     assert!(orientable, "{what}");
                     assert_eq!(flip.len(), t.face_capacity(), "{what}");
                     let mut once = BTreeSet::new();
-                    for f in 0..t.face_capacity() {
+                    for (f, &flipped) in flip.iter().enumerate() {
                         let f_id = FaceId(f as u32);
                         if !t.is_face(f_id) {
-                            assert!(!flip[f], "{what}: a removed face is not flipped");
+                            assert!(!flipped, "{what}: a removed face is not flipped");
                             continue;
                         }
                         let [a, b, c] = t.face_vertices(f_id).map(|v| v.0);
-                        let oriented = if flip[f] { [a, c, b] } else { [a, b, c] };
+                        let oriented = if flipped { [a, c, b] } else { [a, b, c] };
                         for k in 0..3 {
                             let e = (oriented[k], oriented[(k + 1) % 3]);
                             assert!(once.insert(e), "{what}: {e:?} twice after flipping");
