@@ -576,6 +576,301 @@ mod tests {
         ));
     }
 
+    /// A triangulation glued naively from a face list in which every edge lies in
+    /// exactly two faces: no check of links or connectivity, so that pinched vertices and
+    /// disconnected surfaces can be written down.
+    fn glued(vertex_count: usize, faces: &[[u32; 3]]) -> Triangulation {
+        let mut sides = std::collections::BTreeMap::<[u32; 2], Vec<u32>>::new();
+        let mut vertex_corner = vec![NONE; vertex_count];
+        let mut degree = vec![0u32; vertex_count];
+        let mut corner_vertex = Vec::new();
+        for (f, vs) in faces.iter().enumerate() {
+            for i in 0..3 {
+                let c = (3 * f + i) as u32;
+                let (a, b) = (vs[(i + 1) % 3], vs[(i + 2) % 3]);
+                sides.entry([a.min(b), a.max(b)]).or_default().push(c);
+                let v = vs[i] as usize;
+                if vertex_corner[v] == NONE {
+                    vertex_corner[v] = c;
+                }
+                degree[v] += 1;
+                corner_vertex.push(vs[i]);
+            }
+        }
+        let mut opposite = vec![NONE; corner_vertex.len()];
+        for corners in sides.values() {
+            let &[c, o] = corners.as_slice() else {
+                panic!("an edge in {} faces", corners.len())
+            };
+            opposite[c as usize] = o;
+            opposite[o as usize] = c;
+        }
+        Triangulation {
+            corner_vertex,
+            opposite,
+            live_vertices: vertex_corner.iter().filter(|&&c| c != NONE).count(),
+            vertex_corner,
+            degree,
+            live_faces: faces.len(),
+            state: crate::core::StateStamp::fresh(),
+            stamps: Default::default(),
+        }
+    }
+
+    /// Every problem the validation can see is reported exactly: the variant, the
+    /// element and the numbers, for one corruption at a time of a valid triangulation,
+    /// itself accepted fresh and with removed faces and vertices.
+    #[test]
+    fn every_problem_is_reported_with_its_element_and_numbers() {
+        use ValidationError as E;
+        let octahedron = octahedron();
+        let fresh = octa();
+        assert_eq!(
+            glued(6, &octahedron.faces),
+            fresh,
+            "the naive gluing is the build's"
+        );
+        // Contracting [0, 2] removes vertex 2 and faces 0 = [0, 2, 4] and 4 = [2, 0, 5].
+        let mut contracted = fresh.clone();
+        contracted
+            .contract(VertexId(0), VertexId(2), &mut crate::History::new())
+            .expect("an octahedron edge is contractible");
+        assert!(!contracted.is_vertex(VertexId(2)));
+        assert!(!contracted.is_face(FaceId(0)) && !contracted.is_face(FaceId(4)));
+        assert_eq!(fresh.validate(), Ok(()));
+        assert_eq!(contracted.validate(), Ok(()));
+
+        type Corrupt = fn(&mut Triangulation);
+        let fresh_cases: Vec<(Corrupt, ValidationError)> = vec![
+            (
+                |t| t.corner_vertex.push(0),
+                E::ArrayShape {
+                    array: "corner_vertex",
+                    len: 25,
+                    expected: 24,
+                },
+            ),
+            (
+                |t| drop(t.opposite.pop()),
+                E::ArrayShape {
+                    array: "opposite",
+                    len: 23,
+                    expected: 24,
+                },
+            ),
+            (
+                |t| drop(t.degree.pop()),
+                E::ArrayShape {
+                    array: "degree",
+                    len: 5,
+                    expected: 6,
+                },
+            ),
+            (
+                |t| t.corner_vertex[3] = NONE,
+                E::RemovedFaceHasData { face: 1 },
+            ),
+            (
+                |t| t.corner_vertex[7] = 6,
+                E::VertexOutOfRange { face: 2, vertex: 6 },
+            ),
+            (
+                |t| t.corner_vertex[6] = 3,
+                E::DegenerateFace {
+                    face: 2,
+                    vertices: [3, 3, 4],
+                },
+            ),
+            (
+                |t| t.corner_vertex[7] = 4,
+                E::DegenerateFace {
+                    face: 2,
+                    vertices: [1, 4, 4],
+                },
+            ),
+            (
+                |t| t.corner_vertex[8] = 1,
+                E::DegenerateFace {
+                    face: 2,
+                    vertices: [1, 3, 1],
+                },
+            ),
+            (
+                |t| t.live_faces += 1,
+                E::LiveCount {
+                    what: "face",
+                    recorded: 9,
+                    actual: 8,
+                },
+            ),
+            (
+                |t| {
+                    t.corner_vertex.fill(NONE);
+                    t.opposite.fill(NONE);
+                    t.live_faces = 0;
+                },
+                E::NoFaces,
+            ),
+            (
+                |t| t.opposite[0] = 24,
+                E::Gluing {
+                    corner: 0,
+                    problem: GluingProblem::NotLive { opposite: 24 },
+                },
+            ),
+            (
+                |t| t.opposite[0] = 2,
+                E::Gluing {
+                    corner: 0,
+                    problem: GluingProblem::SameFace { opposite: 2 },
+                },
+            ),
+            (
+                // Corner 0 (vertex 0 of [0, 2, 4]) faces [2, 4], glued to corner 4 of
+                // [2, 1, 4]; pointed at corner 3, whose partner is corner 7 of [1, 3, 4].
+                |t| t.opposite[0] = 3,
+                E::Gluing {
+                    corner: 0,
+                    problem: GluingProblem::NotInvolution {
+                        opposite: 3,
+                        back: 7,
+                    },
+                },
+            ),
+            (
+                // Corners 0 ([2, 4]) and 1 ([4, 0]) swap their partners: still an
+                // involution, but across different edges.
+                |t| {
+                    let (o0, o1) = (t.opposite[0], t.opposite[1]);
+                    t.opposite[0] = o1;
+                    t.opposite[1] = o0;
+                    t.opposite[o1 as usize] = 0;
+                    t.opposite[o0 as usize] = 1;
+                },
+                E::Gluing {
+                    corner: 0,
+                    problem: GluingProblem::DifferentEdges {
+                        edge: [2, 4],
+                        other: [0, 4],
+                    },
+                },
+            ),
+            (
+                // The poles merged: every edge from the equator to pole 5 lies in four
+                // faces, the first of them from vertex 0.
+                |t| {
+                    for v in t.corner_vertex.iter_mut().filter(|v| **v == 4) {
+                        *v = 5;
+                    }
+                },
+                E::EdgeFaceCount {
+                    edge: [0, 5],
+                    faces: 4,
+                },
+            ),
+            (
+                |t| t.vertex_corner[3] = 0,
+                E::VertexCorner {
+                    vertex: 3,
+                    corner: 0,
+                },
+            ),
+            (
+                |t| t.vertex_corner[3] = 24,
+                E::VertexCorner {
+                    vertex: 3,
+                    corner: 24,
+                },
+            ),
+            (
+                |t| t.degree[2] += 1,
+                E::Degree {
+                    vertex: 2,
+                    degree: 5,
+                    faces: 4,
+                },
+            ),
+            (
+                |t| t.live_vertices += 1,
+                E::LiveCount {
+                    what: "vertex",
+                    recorded: 7,
+                    actual: 6,
+                },
+            ),
+        ];
+        // On the contracted octahedron: vertex 2 and faces 0 and 4 are removed.
+        let contracted_cases: Vec<(Corrupt, ValidationError)> = vec![
+            (|t| t.opposite[12] = 0, E::RemovedFaceHasData { face: 4 }),
+            (
+                |t| t.corner_vertex[3] = 2,
+                E::RemovedVertexInFace { face: 1, vertex: 2 },
+            ),
+            (
+                |t| {
+                    let c = t.opposite[3];
+                    t.opposite[3] = 0;
+                    t.opposite[c as usize] = NONE;
+                },
+                E::Gluing {
+                    corner: 3,
+                    problem: GluingProblem::NotLive { opposite: 0 },
+                },
+            ),
+            (
+                |t| t.live_faces += 1,
+                E::LiveCount {
+                    what: "face",
+                    recorded: 7,
+                    actual: 6,
+                },
+            ),
+            (
+                |t| t.live_vertices -= 1,
+                E::LiveCount {
+                    what: "vertex",
+                    recorded: 4,
+                    actual: 5,
+                },
+            ),
+        ];
+        for (base, cases) in [(&fresh, fresh_cases), (&contracted, contracted_cases)] {
+            for (k, (corrupt, expected)) in cases.into_iter().enumerate() {
+                let mut t = base.clone();
+                corrupt(&mut t);
+                assert_eq!(t.validate(), Err(expected), "case {k}");
+            }
+        }
+
+        // Two tetrahedra sharing vertex 0: the star walk from vertex 0 sees one of its
+        // two fans.
+        let tetrahedron = [[0, 1, 2], [0, 3, 1], [0, 2, 3], [1, 3, 2]];
+        let other = tetrahedron.map(|f| f.map(|v| if v == 0 { 0 } else { v + 3 }));
+        let pinched = glued(7, &[tetrahedron, other].concat());
+        assert_eq!(
+            pinched.validate(),
+            Err(E::Link {
+                vertex: 0,
+                problem: LinkProblem::Short {
+                    walked: 3,
+                    faces: 6
+                }
+            })
+        );
+        // Two disjoint tetrahedra.
+        let apart = tetrahedron.map(|f| f.map(|v| v + 4));
+        let two = glued(8, &[tetrahedron, apart].concat());
+        assert_eq!(
+            two.validate(),
+            Err(E::Disconnected {
+                reached: 4,
+                faces: 8,
+                from: FaceId(0)
+            })
+        );
+        assert_eq!(glued(4, &tetrahedron).validate(), Ok(()));
+    }
+
     /// The pillow (two triangles on the same three vertices, glued along all three
     /// edges), which mesh libraries that collapse a tetrahedron make, is refused at its
     /// first vertex: its link is a 2-cycle. Any two faces on the same vertices put the
