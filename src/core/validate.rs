@@ -651,7 +651,9 @@ mod tests {
                 },
             ),
             (
-                |t| drop(t.opposite.pop()),
+                |t| {
+                    t.opposite.pop();
+                },
                 E::ArrayShape {
                     array: "opposite",
                     len: 23,
@@ -659,7 +661,9 @@ mod tests {
                 },
             ),
             (
-                |t| drop(t.degree.pop()),
+                |t| {
+                    t.degree.pop();
+                },
                 E::ArrayShape {
                     array: "degree",
                     len: 5,
