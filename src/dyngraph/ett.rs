@@ -439,9 +439,218 @@ impl Pool {
 
 #[cfg(test)]
 mod tests {
+    use super::*;
+    use crate::rng::Rng;
+
     /// The node size the documentation states.
     #[test]
     fn node_size() {
         assert_eq!(std::mem::size_of::<super::Node>(), 24);
+    }
+
+    /// A forest kept naively: tree edges as `(x, y, p)` (vertex nodes and the arc pair),
+    /// components by a search over them.
+    struct Naive {
+        vertices: Vec<u32>,
+        edges: Vec<(u32, u32, u32)>,
+    }
+
+    impl Naive {
+        fn component(&self, x: u32) -> Vec<u32> {
+            let mut seen = vec![x];
+            let mut k = 0;
+            while k < seen.len() {
+                let v = seen[k];
+                for &(a, b, _) in &self.edges {
+                    for (from, to) in [(a, b), (b, a)] {
+                        if from == v && !seen.contains(&to) {
+                            seen.push(to);
+                        }
+                    }
+                }
+                k += 1;
+            }
+            seen
+        }
+    }
+
+    /// Checks that the sequence of `x`'s tree is an Euler tour of its naive tree: its
+    /// vertex nodes and both arcs of each of its edges once; cyclically, each arc ends
+    /// where the next arc starts, and each vertex node stands right after an arc
+    /// entering it (or alone). Returns the sequence.
+    fn check_tour(pool: &Pool, naive: &Naive, x: u32) -> Vec<u32> {
+        let seq = pool.sequence(pool.root_of(x));
+        let component = naive.component(x);
+        // arc node -> (from, to)
+        let mut arcs = std::collections::BTreeMap::new();
+        for &(a, b, p) in &naive.edges {
+            if component.contains(&a) {
+                arcs.insert(p, (a, b));
+                arcs.insert(p + 1, (b, a));
+            }
+        }
+        let mut expected: Vec<u32> = component
+            .iter()
+            .copied()
+            .chain(arcs.keys().copied())
+            .collect();
+        expected.sort();
+        let mut sorted = seq.clone();
+        sorted.sort();
+        assert_eq!(sorted, expected, "the nodes of the tree of {x}");
+        if seq.len() == 1 {
+            return seq;
+        }
+        let tour: Vec<(u32, u32)> = seq.iter().filter_map(|n| arcs.get(n).copied()).collect();
+        for (k, &(_, to)) in tour.iter().enumerate() {
+            assert_eq!(
+                to,
+                tour[(k + 1) % tour.len()].0,
+                "the tour of {x} continues"
+            );
+        }
+        for (k, &n) in seq.iter().enumerate() {
+            if pool.is_vertex(n) {
+                let before = seq[(k + seq.len() - 1) % seq.len()];
+                assert_eq!(
+                    arcs.get(&before).map(|a| a.1),
+                    Some(n),
+                    "{n} after an arc into it"
+                );
+            }
+        }
+        seq
+    }
+
+    /// Links, cuts, flags and queries on random forests agree with a naive forest: each
+    /// tree's sequence is an Euler tour of it, sizes, membership and the flagged-node
+    /// searches (read off that sequence) are the naive ones, every node's packed count
+    /// and flags are those of its children, freed nodes are reused last-in first-out,
+    /// and the byte count is that of the nodes allocated.
+    #[test]
+    fn operations_agree_with_a_naive_forest() {
+        let mut links = 0;
+        for seed in 0..40 {
+            let mut rng = Rng::new(seed);
+            let mut pool = Pool::with_capacity(4);
+            let mut naive = Naive {
+                vertices: Vec::new(),
+                edges: Vec::new(),
+            };
+            let n = 2 + rng.index(12);
+            let mut allocated = 0;
+            let mut free_pairs = Vec::new();
+            for _ in 0..n {
+                naive.vertices.push(pool.new_vertex());
+                allocated += 1;
+            }
+            assert_eq!(naive.vertices, (0..n as u32).collect::<Vec<_>>());
+            for step in 0..300 {
+                match rng.index(6) {
+                    0 | 1 => {
+                        let x = naive.vertices[rng.index(n)];
+                        let y = naive.vertices[rng.index(n)];
+                        if naive.component(x).contains(&y) {
+                            assert!(pool.same_tree(x, y), "seed {seed} step {step}");
+                            continue;
+                        }
+                        assert!(!pool.same_tree(x, y), "seed {seed} step {step}");
+                        let p = pool.new_pair();
+                        // Freed pairs first, last freed first; else two new nodes.
+                        if let Some(freed) = free_pairs.pop() {
+                            assert_eq!(p, freed, "seed {seed} step {step}");
+                        } else {
+                            assert_eq!(p as usize, allocated, "seed {seed} step {step}");
+                            allocated += 2;
+                        }
+                        assert_eq!((pool.a(p), pool.b(p + 1)), (NIL, NIL));
+                        assert!(!pool.is_vertex(p) && !pool.is_vertex(p + 1));
+                        pool.link(x, y, p);
+                        naive.edges.push((x, y, p));
+                        links += 1;
+                        let seq = check_tour(&pool, &naive, x);
+                        let at = seq.iter().position(|&v| v == x).expect("x in its tour");
+                        assert_eq!(seq[(at + 1) % seq.len()], p, "p right after x");
+                    }
+                    2 if !naive.edges.is_empty() => {
+                        let (x, y, p) = naive.edges.swap_remove(rng.index(naive.edges.len()));
+                        pool.cut(p);
+                        assert!(pool.is_singleton(p) && pool.is_singleton(p + 1));
+                        assert!(!pool.same_tree(x, y), "seed {seed} step {step}");
+                        check_tour(&pool, &naive, x);
+                        check_tour(&pool, &naive, y);
+                        pool.free_pair(p);
+                        // The freed pair is the next one handed out.
+                        let q = pool.new_pair();
+                        assert_eq!(q, p, "seed {seed} step {step}");
+                        pool.free_pair(q);
+                        free_pairs.push(p);
+                    }
+                    3 => {
+                        let x = rng.index(pool.len()) as u32;
+                        let f = if rng.chance(1, 2) { Flag::F0 } else { Flag::F1 };
+                        let on = rng.chance(1, 2);
+                        pool.set_flag(x, f, on);
+                        assert_eq!(pool.has(x, f), on);
+                    }
+                    _ => {
+                        let x = naive.vertices[rng.index(n)];
+                        let component = naive.component(x);
+                        assert_eq!(pool.tree_size(x) as usize, component.len());
+                        let seq = check_tour(&pool, &naive, x);
+                        for f in [Flag::F0, Flag::F1] {
+                            let flagged: Vec<u32> =
+                                seq.iter().copied().filter(|&v| pool.has(v, f)).collect();
+                            assert_eq!(pool.first_flagged(x, f), flagged.first().copied());
+                            assert_eq!(pool.last_flagged(x, f), flagged.last().copied());
+                            let at = seq.iter().position(|&v| v == x).expect("x in its tour");
+                            let after = seq[at + 1..].iter().find(|&&v| pool.has(v, f));
+                            let before = seq[..at].iter().rev().find(|&&v| pool.has(v, f));
+                            assert_eq!(pool.next_flagged(x, f), after.copied());
+                            assert_eq!(pool.prev_flagged(x, f), before.copied());
+                            // Splaying does not change the sequence.
+                            assert_eq!(pool.sequence(pool.root_of(x)), seq);
+                        }
+                    }
+                }
+                for v in 0..pool.len() as u32 {
+                    assert!(pool.node_consistent(v), "seed {seed} step {step}: node {v}");
+                }
+                assert_eq!(pool.len(), allocated, "seed {seed}");
+                assert_eq!(pool.bytes(), 24 * allocated, "seed {seed}");
+            }
+            // Caller words are the caller's; a freed single vertex is handed out again.
+            let x = naive.vertices[0];
+            pool.set_a(x, 7);
+            pool.set_b(x, 9);
+            assert_eq!((pool.a(x), pool.b(x)), (7, 9));
+            let v = pool.new_vertex();
+            assert_eq!((v as usize, pool.tree_size(v)), (pool.len() - 1, 1));
+            pool.free_vertex(v);
+            assert_eq!(pool.new_vertex(), v);
+            assert_eq!((pool.a(v), pool.b(v)), (NIL, NIL));
+        }
+        assert!(links > 1000, "{links} links");
+    }
+
+    /// A bulk build gives the tree whose sequence is the one given, with exact counts.
+    #[test]
+    fn build_keeps_the_given_order() {
+        let mut pool = Pool::with_capacity(0);
+        // The path 0 - 1 - 2 as the tour 0 p 1 q 2 (q+1) (p+1).
+        let [a, b, c] = [pool.new_vertex(), pool.new_vertex(), pool.new_vertex()];
+        let (p, q) = (pool.new_pair(), pool.new_pair());
+        pool.set_flag(b, Flag::F0, true);
+        pool.set_flag(q + 1, Flag::F1, true);
+        let seq = [a, p, b, q, c, q + 1, p + 1];
+        pool.build(&seq);
+        assert_eq!(pool.sequence(pool.root_of(a)), seq);
+        assert_eq!(pool.tree_size(c), 3);
+        assert!(pool.same_tree(a, p + 1));
+        assert_eq!(pool.first_flagged(c, Flag::F0), Some(b));
+        assert_eq!(pool.first_flagged(c, Flag::F1), Some(q + 1));
+        for x in seq {
+            assert!(pool.node_consistent(x));
+        }
     }
 }
