@@ -563,8 +563,12 @@ mod tests {
                             assert_eq!(p as usize, allocated, "seed {seed} step {step}");
                             allocated += 2;
                         }
-                        assert_eq!((pool.a(p), pool.b(p + 1)), (NIL, NIL));
-                        assert!(!pool.is_vertex(p) && !pool.is_vertex(p + 1));
+                        // A pair, reused or not, comes clean: no caller words, no flags.
+                        for q in [p, p + 1] {
+                            assert_eq!((pool.a(q), pool.b(q)), (NIL, NIL), "seed {seed}");
+                            assert!(!pool.is_vertex(q) && !pool.has(q, Flag::F0));
+                            assert!(!pool.has(q, Flag::F1), "seed {seed} step {step}");
+                        }
                         pool.link(x, y, p);
                         naive.edges.push((x, y, p));
                         links += 1;
@@ -592,6 +596,11 @@ mod tests {
                         let on = rng.chance(1, 2);
                         pool.set_flag(x, f, on);
                         assert_eq!(pool.has(x, f), on);
+                        // Free nodes chain through `a`: only linked arcs get words.
+                        if naive.edges.iter().any(|&(_, _, p)| x == p || x == p + 1) {
+                            pool.set_a(x, step);
+                            pool.set_b(x, step + 1);
+                        }
                     }
                     _ => {
                         let x = naive.vertices[rng.index(n)];
@@ -631,6 +640,31 @@ mod tests {
             assert_eq!((pool.a(v), pool.b(v)), (NIL, NIL));
         }
         assert!(links > 1000, "{links} links");
+    }
+
+    /// The pool grows by a quarter of its capacity (at least the nodes asked for, and
+    /// 64), only when full, and to exactly that: never by doubling.
+    #[test]
+    fn the_pool_grows_by_a_quarter_when_full() {
+        let mut pool = Pool::with_capacity(10);
+        let mut grown = 0;
+        for k in 0..5000 {
+            let (len, cap) = (pool.len(), pool.s.t.capacity());
+            let want = if k % 3 == 0 { 2 } else { 1 };
+            if want == 2 {
+                pool.new_pair();
+            } else {
+                pool.new_vertex();
+            }
+            let expected = if len + want > cap {
+                grown += 1;
+                len + (cap / 4).max(want).max(64)
+            } else {
+                cap
+            };
+            assert_eq!(pool.s.t.capacity(), expected, "after {k} allocations");
+        }
+        assert!(grown > 10, "{grown} growths");
     }
 
     /// A bulk build gives the tree whose sequence is the one given, with exact counts.
