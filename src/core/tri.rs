@@ -402,7 +402,9 @@ impl Triangulation {
     /// A corner at `u` whose face contains `v` (so `v` is at its `next()` or `prev()`),
     /// or `None` if `[u, v]` is not an edge. O(degree(u)).
     pub fn find_edge(&self, u: VertexId, v: VertexId) -> Option<Corner> {
-        if !self.is_vertex(u) || !self.is_vertex(v) || u == v {
+        // Only `u` needs a guard: a live vertex's link holds neither itself nor a
+        // removed or unknown vertex, so the search below finds no such `v`.
+        if !self.is_vertex(u) {
             return None;
         }
         self.star(u).find(|s| s.neighbour == v).map(|s| s.corner)
