@@ -562,7 +562,7 @@ impl Triangulation {
     /// Whether this is (isomorphic to) the tetrahedron boundary T4, the one irreducible
     /// genus-0 triangulation. O(1): a connected closed surface with 4 vertices is T4.
     pub fn is_tetrahedron(&self) -> bool {
-        self.live_vertices == 4 && self.live_faces == 4
+        self.live_vertices == 4
     }
 
     /// Approximate heap bytes held by the four core arrays.
