@@ -686,5 +686,13 @@ mod tests {
         for x in seq {
             assert!(pool.node_consistent(x));
         }
+        // The check fails on a wrong count, and on a child that names another parent.
+        let r = pool.root_of(a);
+        pool.s[r].w += 1;
+        assert!(!pool.node_consistent(r), "a wrong count");
+        pool.s[r].w -= 1;
+        let child = pool.s[r].ch.into_iter().find(|&c| c != NIL).expect("a child");
+        pool.s[child].par = child;
+        assert!(!pool.node_consistent(r), "a child with another parent");
     }
 }
