@@ -570,6 +570,7 @@ mod tests {
                             assert!(!pool.has(q, Flag::F1), "seed {seed} step {step}");
                         }
                         pool.link(x, y, p);
+                        assert!(!pool.is_singleton(x) && !pool.is_singleton(p + 1));
                         naive.edges.push((x, y, p));
                         links += 1;
                         let seq = check_tour(&pool, &naive, x);
