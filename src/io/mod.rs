@@ -625,3 +625,31 @@ fn fmt_f64_triple(buf: &mut String, p: Option<&[f64; 3]>) {
         None => buf.push_str("0 0 0"),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Sniffing looks past comments of any length up to the line limit, and decides on
+    /// a data line only once the line is whole: a keyword cut by the end of the first
+    /// look (4,096 bytes) is read again in full.
+    #[test]
+    fn sniffing_looks_past_long_comments_and_waits_for_a_whole_line() {
+        let bodies: [(&[u8], Format); 2] = [
+            (b"OFF\n4 4 0\n", Format::Off),
+            (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj),
+        ];
+        let pads = (4085..=4100).chain([20_000, 70_000]);
+        for pad in pads {
+            for (body, format) in bodies {
+                let mut bytes = vec![b'#'];
+                bytes.resize(pad - 1, b'x');
+                bytes.push(b'\n');
+                bytes.extend_from_slice(body);
+                assert_eq!(Format::sniff(&bytes), Some(format), "{pad} bytes of comment");
+                // A comment alone names no format, however long.
+                assert_eq!(Format::sniff(&bytes[..pad]), None, "{pad}");
+            }
+        }
+    }
+}
