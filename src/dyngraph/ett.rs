@@ -692,7 +692,11 @@ mod tests {
         pool.s[r].w += 1;
         assert!(!pool.node_consistent(r), "a wrong count");
         pool.s[r].w -= 1;
-        let child = pool.s[r].ch.into_iter().find(|&c| c != NIL).expect("a child");
+        let child = pool.s[r]
+            .ch
+            .into_iter()
+            .find(|&c| c != NIL)
+            .expect("a child");
         pool.s[child].par = child;
         assert!(!pool.node_consistent(r), "a child with another parent");
     }

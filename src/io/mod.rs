@@ -646,7 +646,11 @@ mod tests {
                 bytes.resize(pad - 1, b'x');
                 bytes.push(b'\n');
                 bytes.extend_from_slice(body);
-                assert_eq!(Format::sniff(&bytes), Some(format), "{pad} bytes of comment");
+                assert_eq!(
+                    Format::sniff(&bytes),
+                    Some(format),
+                    "{pad} bytes of comment"
+                );
                 // A comment alone names no format, however long.
                 assert_eq!(Format::sniff(&bytes[..pad]), None, "{pad}");
             }
