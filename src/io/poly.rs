@@ -521,6 +521,43 @@ mod tests {
 
     /// Faces read back as given, whether every face is a triangle (no face ends kept)
     /// or polygons come first, after triangles, or between them.
+    /// Skipped statements are counted per keyword, eight keywords at most in order of
+    /// first appearance (with the line of the first), the rest added up together.
+    #[test]
+    fn skipped_statements_keep_eight_keywords_and_add_up_the_rest() {
+        let mut skipped = SkippedStatements::default();
+        let keywords: [&[u8]; 10] = [
+            b"l", b"p", b"curv", b"l", b"k0", b"k1", b"k2", b"k3", b"k4", b"k5",
+        ];
+        for (line, kw) in keywords.iter().enumerate() {
+            skipped.add(kw, line + 1);
+        }
+        // `k5` is the ninth distinct keyword; more `l` and `k5` after it.
+        skipped.add(b"l", 20);
+        skipped.add(b"k5", 21);
+        skipped.add(b"k6", 22);
+        let kept: Vec<(&str, usize, usize)> = skipped
+            .kinds
+            .iter()
+            .map(|(k, n, l)| (k.as_str(), *n, *l))
+            .collect();
+        assert_eq!(
+            kept,
+            [
+                ("l", 3, 1),
+                ("p", 1, 2),
+                ("curv", 1, 3),
+                ("k0", 1, 5),
+                ("k1", 1, 6),
+                ("k2", 1, 7),
+                ("k3", 1, 8),
+                ("k4", 1, 9),
+            ]
+        );
+        assert_eq!(skipped.others, 3);
+        assert_eq!(skipped.total(), 13);
+    }
+
     #[test]
     fn faces_read_back_as_given_with_or_without_polygons() {
         let tri = |k: u32| vec![k, k + 1, k + 2];
