@@ -718,6 +718,80 @@ mod tests {
         assert!(queries > 1000, "{queries} walks");
     }
 
+    /// `Lct::with_parents` represents the forest of its parent array with its values:
+    /// on random forests, connectivity and path minima are those of the parent array's
+    /// ancestor chains.
+    #[test]
+    fn with_parents_is_the_parent_array_forest() {
+        const NONE: u32 = u32::MAX;
+        let mut asked = 0;
+        for seed in 1..=60u64 {
+            let mut s = seed.wrapping_mul(0x2545_F491_4F6C_DD1D) | 1;
+            let n = 1 + (next(&mut s) % 30) as usize;
+            let vals: Vec<i32> = (0..n).map(|_| (next(&mut s) % 50) as i32 - 10).collect();
+            let mut parent = vec![NONE; n];
+            for x in 1..n {
+                if next(&mut s) % 5 != 0 {
+                    parent[x] = (next(&mut s) % x as u64) as u32;
+                }
+            }
+            let ancestors = |mut x: u32| {
+                let mut chain = vec![x];
+                while parent[x as usize] != NONE {
+                    x = parent[x as usize];
+                    chain.push(x);
+                }
+                chain.reverse();
+                chain
+            };
+            let mut lct = super::Lct::with_parents(&vals, &parent);
+            for _ in 0..40 {
+                let x = (next(&mut s) % n as u64) as u32;
+                let y = (next(&mut s) % n as u64) as u32;
+                let (ax, ay) = (ancestors(x), ancestors(y));
+                assert_eq!(lct.connected(x, y), ax[0] == ay[0], "seed {seed}");
+                if ax[0] != ay[0] {
+                    continue;
+                }
+                let common = ax.iter().zip(&ay).take_while(|(p, q)| p == q).count();
+                let min = ax[common - 1..]
+                    .iter()
+                    .chain(&ay[common..])
+                    .map(|&v| vals[v as usize])
+                    .min();
+                assert_eq!(Some(lct.path_min(x, y)), min, "seed {seed}: {x} {y}");
+                asked += 1;
+            }
+        }
+        assert!(asked > 500, "{asked} paths");
+    }
+
+    /// `replace_path` leaves `y`–`k`–`z` with `k` valued as `copy_from`, and every
+    /// interior node alone with its value, pending additions included.
+    #[test]
+    fn replace_path_splices_in_one_node() {
+        for m in 4..12u32 {
+            // The path 0 - 1 - ... - (m - 1), and k = m alone.
+            let vals: Vec<i32> = (0..=m as i32).map(|v| 100 - 7 * v).collect();
+            let mut lct = super::Lct::new(&vals);
+            for x in 1..m {
+                lct.link(x - 1, x);
+            }
+            lct.path_add(0, m - 1, 5);
+            let copy_from = m / 2;
+            lct.replace_path(0, m - 1, m, copy_from);
+            assert!(lct.connected(0, m) && lct.connected(m, m - 1));
+            let ends = [0, m - 1, copy_from].map(|v| vals[v as usize] + 5);
+            let min = ends.into_iter().min();
+            assert_eq!(Some(lct.path_min(0, m - 1)), min, "{m}");
+            assert_eq!(lct.path_min(m, m), vals[copy_from as usize] + 5);
+            for x in 1..m - 1 {
+                assert!(!lct.connected(x, 0), "{m}: {x} is cut off");
+                assert_eq!(lct.isolated_value(x), vals[x as usize] + 5, "{m}: {x}");
+            }
+        }
+    }
+
     /// `PlainLct::with_parents` represents the forest of its parent array, rooted as the
     /// array roots it: on random forests (random parents in a random node order, about a
     /// fifth of the nodes roots), the walk LCAs before any re-rooting are those of the
