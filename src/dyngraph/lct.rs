@@ -730,9 +730,9 @@ mod tests {
             let n = 1 + (next(&mut s) % 30) as usize;
             let vals: Vec<i32> = (0..n).map(|_| (next(&mut s) % 50) as i32 - 10).collect();
             let mut parent = vec![NONE; n];
-            for x in 1..n {
+            for (x, p) in parent.iter_mut().enumerate().skip(1) {
                 if next(&mut s) % 5 != 0 {
-                    parent[x] = (next(&mut s) % x as u64) as u32;
+                    *p = (next(&mut s) % x as u64) as u32;
                 }
             }
             let ancestors = |mut x: u32| {
