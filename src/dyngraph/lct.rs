@@ -718,6 +718,18 @@ mod tests {
         assert!(queries > 1000, "{queries} walks");
     }
 
+    /// The chain from the root of `x`'s tree in a parent array (`u32::MAX`: a root)
+    /// down to `x`.
+    fn root_path(parent: &[u32], mut x: u32) -> Vec<u32> {
+        let mut chain = vec![x];
+        while parent[x as usize] != u32::MAX {
+            x = parent[x as usize];
+            chain.push(x);
+        }
+        chain.reverse();
+        chain
+    }
+
     /// `Lct::with_parents` represents the forest of its parent array with its values:
     /// on random forests, connectivity and path minima are those of the parent array's
     /// ancestor chains.
@@ -735,15 +747,7 @@ mod tests {
                     *p = (next(&mut s) % x as u64) as u32;
                 }
             }
-            let ancestors = |mut x: u32| {
-                let mut chain = vec![x];
-                while parent[x as usize] != NONE {
-                    x = parent[x as usize];
-                    chain.push(x);
-                }
-                chain.reverse();
-                chain
-            };
+            let ancestors = |x: u32| root_path(&parent, x);
             let mut lct = super::Lct::with_parents(&vals, &parent);
             for _ in 0..40 {
                 let x = (next(&mut s) % n as u64) as u32;
@@ -814,15 +818,7 @@ mod tests {
                     parent[order[k] as usize] = order[(next(&mut s) % k as u64) as usize];
                 }
             }
-            let ancestors = |mut x: u32| {
-                let mut chain = vec![x];
-                while parent[x as usize] != NONE {
-                    x = parent[x as usize];
-                    chain.push(x);
-                }
-                chain.reverse();
-                chain
-            };
+            let ancestors = |x: u32| root_path(&parent, x);
             let mut lct = super::PlainLct::with_parents(&parent);
             for _ in 0..60 {
                 let x = (next(&mut s) % n as u64) as u32;
