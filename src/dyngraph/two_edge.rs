@@ -656,13 +656,18 @@ mod tests {
 
     impl Oracle {
         fn reach(&self, a: u32, skip: usize) -> Vec<bool> {
+            self.reach_by(a, |i| i != skip)
+        }
+
+        /// The nodes reached from `a` over the live edges whose ids `keep` accepts.
+        fn reach_by(&self, a: u32, keep: impl Fn(usize) -> bool) -> Vec<bool> {
             let mut seen = vec![false; self.n];
             seen[a as usize] = true;
             let mut stack = vec![a];
             while let Some(x) = stack.pop() {
                 for (i, e) in self.edges.iter().enumerate() {
                     let Some([p, q]) = *e else { continue };
-                    if i == skip {
+                    if !keep(i) {
                         continue;
                     }
                     for (s, t) in [(p, q), (q, p)] {
@@ -698,13 +703,46 @@ mod tests {
         }
     }
 
+    /// What deleting tree edge `e` must do, read off the oracle and the forest the
+    /// structure reports (`tree`): the non-tree edges crossing the cut, and the vertices
+    /// the two interleaved searches visit before the smaller side runs out (`2|A|` if
+    /// `a`'s side `A` is not larger, else `2|B| + 1`: they alternate, `a`'s first).
+    fn cut_model(o: &Oracle, tree: &[bool], e: u32) -> (Vec<u32>, u64) {
+        let Some([a, b]) = o.edges[e as usize] else {
+            unreachable!("a live edge")
+        };
+        let forest = |i: usize| i != e as usize && tree[i];
+        let side_a = o.reach_by(a, forest);
+        let side_b = o.reach_by(b, forest);
+        let crossing = (0..o.edges.len())
+            .filter(|&f| f != e as usize && !tree[f])
+            .filter(|&f| {
+                o.edges[f].is_some_and(|[p, q]| {
+                    side_a[p as usize] && side_b[q as usize]
+                        || side_b[p as usize] && side_a[q as usize]
+                })
+            })
+            .map(|f| f as u32)
+            .collect();
+        let size = |side: &[bool]| side.iter().filter(|&&x| x).count() as u64;
+        let (na, nb) = (size(&side_a), size(&side_b));
+        let scanned = if na <= nb { 2 * na } else { 2 * nb + 1 };
+        (crossing, scanned)
+    }
+
     /// Random insert/delete sequences on small multigraphs (parallel edges, loops): after
-    /// every operation, every pair's answers agree with the oracle and `check` passes.
+    /// every operation, every pair's answers agree with the oracle and `check` passes;
+    /// the accessors agree with the oracle's edge list; the tree edges are a spanning
+    /// forest that changes only as stated (a new edge between two trees joins it, a
+    /// deleted tree edge leaves it, with one of the edges crossing its cut as replacement
+    /// if any); the counters are exact.
     /// Returns the number of (operation, pair) disagreements, stopping at the first
     /// operation with one (0 for the real structure).
     fn run(seed: u64, rounds: usize, skip_recover: bool) -> usize {
         let mut rng = Rng::new(seed);
         let mut swaps = 0;
+        // The broken variant is held to the answers and `check` only.
+        let strict = !skip_recover;
         for round in 0..rounds {
             let n = 2 + rng.index(7);
             let mut t = TwoEdge::new(n);
@@ -715,8 +753,10 @@ mod tests {
             };
             let mut live: Vec<u32> = Vec::new();
             let mut next_id = 0u32;
+            let mut expected = super::TwoEdgeCounters::default();
             for op in 0..40 {
                 let insert = live.is_empty() || rng.index(100) < 55;
+                let tree_before: Vec<bool> = (0..next_id).map(|e| t.is_tree_edge(e)).collect();
                 if insert {
                     // Reuse a dead id now and then (stable ids are reused by Frink).
                     let e = match (0..next_id).find(|&e| o.edges[e as usize].is_none()) {
@@ -734,13 +774,70 @@ mod tests {
                     } else {
                         rng.index(n) as u32
                     };
+                    let joins = a != b && !o.reach(a, usize::MAX)[b as usize];
                     t.insert(e, a, b);
                     o.edges[e as usize] = Some([a, b]);
                     live.push(e);
+                    expected.inserts += 1;
+                    if strict {
+                        assert_eq!(t.is_tree_edge(e), joins, "round {round} op {op}: {e}");
+                        for f in (0..next_id).filter(|&f| f != e) {
+                            assert_eq!(t.is_tree_edge(f), tree_before[f as usize], "{f}");
+                        }
+                    }
                 } else {
                     let e = live.swap_remove(rng.index(live.len()));
+                    let was_tree = t.is_tree_edge(e);
+                    let (crossing, scanned) = cut_model(&o, &tree_before, e);
                     t.delete(e);
                     o.edges[e as usize] = None;
+                    expected.deletes += 1;
+                    expected.cuts += u64::from(was_tree);
+                    let mut tree_now: Vec<bool> = (0..next_id).map(|f| t.is_tree_edge(f)).collect();
+                    assert!(!tree_now[e as usize], "round {round} op {op}: {e} deleted");
+                    if strict && was_tree && !crossing.is_empty() {
+                        expected.swaps += 1;
+                        expected.scanned += scanned;
+                        expected.recovered += crossing.len() as u64 - 1;
+                        // Exactly one crossing edge joins the forest.
+                        let joined: Vec<&u32> =
+                            crossing.iter().filter(|&&f| tree_now[f as usize]).collect();
+                        assert_eq!(joined.len(), 1, "round {round} op {op}: swap {joined:?}");
+                        tree_now[*joined[0] as usize] = false;
+                    }
+                    let mut unchanged = tree_before;
+                    unchanged[e as usize] = false;
+                    if strict {
+                        assert_eq!(tree_now, unchanged, "round {round} op {op}: forest");
+                    }
+                }
+                assert_eq!(
+                    (
+                        t.counters().inserts,
+                        t.counters().deletes,
+                        t.counters().cuts
+                    ),
+                    (expected.inserts, expected.deletes, expected.cuts)
+                );
+                if strict {
+                    assert_eq!(t.counters(), expected, "round {round} op {op}");
+                }
+                assert_eq!((t.node_count(), t.edge_count()), (n, live.len()));
+                for e in 0..next_id + 2 {
+                    let ends = o.edges.get(e as usize).copied().flatten();
+                    assert_eq!(t.ends(e), ends, "round {round} op {op}: edge {e}");
+                    assert_eq!(t.contains(e), ends.is_some(), "edge {e}");
+                }
+                let components = (0..n as u32)
+                    .filter(|&x| o.reach(x, usize::MAX).iter().position(|&r| r) == Some(x as usize))
+                    .count();
+                let forest = (0..next_id).filter(|&f| t.is_tree_edge(f)).count();
+                if strict {
+                    assert_eq!(
+                        forest,
+                        n - components,
+                        "round {round} op {op}: spanning forest"
+                    );
                 }
                 let rel = o.relations();
                 let mut wrong = 0;
@@ -780,6 +877,28 @@ mod tests {
             caught += usize::from(run(100 + seed, 200, true) > 0);
         }
         assert!(caught >= 18, "caught {caught} of 20");
+    }
+
+    /// `bytes` counts 21 bytes per edge-id slot, 24 bytes per incidence list plus 4 per
+    /// slot of its capacity, and per node two link–cut nodes and a 4-byte mark.
+    #[test]
+    fn bytes_count_id_slots_incidence_capacity_and_nodes() {
+        let node = 2 * super::NODE_BYTES + 4;
+        let mut t = TwoEdge::new(5);
+        assert_eq!(t.bytes(), 5 * (24 + node));
+        // Loops take an id slot and no incidence.
+        t.insert(9, 3, 3);
+        assert_eq!(t.bytes(), 10 * 21 + 5 * (24 + node));
+        for (e, [a, b]) in [[0, 1], [1, 2], [2, 0], [0, 1], [4, 0]]
+            .into_iter()
+            .enumerate()
+        {
+            t.insert(e as u32, a, b);
+        }
+        let capacity: Vec<usize> = t.adj.iter().map(Vec::capacity).collect();
+        assert!(capacity[0] >= 4 && capacity[3] == 0, "{capacity:?}");
+        let slots: usize = capacity.iter().sum();
+        assert_eq!(t.bytes(), 10 * 21 + 5 * (24 + node) + 4 * slots);
     }
 
     /// `check` fails on a corrupted cover count, and on a tree edge whose cover count is
