@@ -32,10 +32,22 @@ pub(crate) const UNKNOWN_LEN_RESERVE: u64 = 1 << 16;
 /// decompression bomb made of one endless line is refused in bounded memory.
 pub const MAX_LINE: usize = 64 << 20;
 
+/// The error kind for an error met while reading through a gzip decoder: `Decompress`
+/// for what the decoder reports about the data (corrupt, or cut short), `Io` for the
+/// underlying stream's own failures, which the decoder passes on unchanged.
+pub(crate) fn gzip_error(e: std::io::Error) -> K {
+    use std::io::ErrorKind as E;
+    match e.kind() {
+        E::InvalidInput | E::InvalidData | E::UnexpectedEof => K::Decompress(e.to_string()),
+        _ => K::Io(e),
+    }
+}
+
 /// A byte stream read through one reusable buffer; see the module docs.
 pub(crate) struct Input<'r> {
     reader: Box<dyn Read + 'r>,
-    /// Whether `reader` decompresses gzip (its errors are then `Decompress`).
+    /// Whether `reader` decompresses gzip (its errors are then classified by
+    /// [`gzip_error`]).
     gzip: bool,
     /// `buf[pos..]` is read but not consumed.
     buf: Vec<u8>,
@@ -156,11 +168,7 @@ impl<'r> Input<'r> {
             .take(CHUNK as u64)
             .read_to_end(&mut self.buf)
             .map_err(|e| {
-                let kind = if gzip {
-                    K::Decompress(e.to_string())
-                } else {
-                    K::Io(e)
-                };
+                let kind = if gzip { gzip_error(e) } else { K::Io(e) };
                 ReadError::new(kind, Location::ByteOffset(offset))
             })?;
         if self.buf.len() == before {

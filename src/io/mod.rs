@@ -252,7 +252,7 @@ impl<'a> Source<'a> {
             &mut std::io::sink(),
         )
         .map(Some)
-        .map_err(|e| ReadError::new(ReadErrorKind::Decompress(e.to_string()), Location::Unknown))
+        .map_err(|e| ReadError::new(input::gzip_error(e), Location::Unknown))
     }
 }
 

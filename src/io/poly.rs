@@ -519,8 +519,6 @@ impl From<TriMesh> for PolyMesh {
 mod tests {
     use super::*;
 
-    /// Faces read back as given, whether every face is a triangle (no face ends kept)
-    /// or polygons come first, after triangles, or between them.
     /// Skipped statements are counted per keyword, eight keywords at most in order of
     /// first appearance (with the line of the first), the rest added up together.
     #[test]
@@ -558,6 +556,8 @@ mod tests {
         assert_eq!(skipped.total(), 13);
     }
 
+    /// Faces read back as given, whether every face is a triangle (no face ends kept)
+    /// or polygons come first, after triangles, or between them.
     #[test]
     fn faces_read_back_as_given_with_or_without_polygons() {
         let tri = |k: u32| vec![k, k + 1, k + 2];
@@ -603,12 +603,19 @@ mod tests {
                 for f in &want {
                     m.push_face(f, Location::Unknown).expect("a triangle");
                 }
-                let exact = m.corners.capacity() == 3 * faces as usize && faces > 0;
+                // The readers' reservation holds every face they announce.
+                assert!(m.corners.capacity() >= 3 * reserve, "{reserve} reserved");
+                let capacity = m.corners.capacity();
+                let exact = capacity == 3 * faces as usize && faces > 0;
                 let before = m.corners.as_ptr() as usize;
                 let t = m.into_tri_mesh().expect("triangles only");
                 assert_eq!(t.faces, want, "{faces} faces, {reserve} reserved");
                 if exact {
                     assert_eq!(t.faces.as_ptr() as usize, before, "an exact list is reused");
+                }
+                // A capacity of whole faces is kept as it is, not shrunk.
+                if capacity % 3 == 0 {
+                    assert_eq!(t.faces.capacity(), capacity / 3, "{faces}, {reserve}");
                 }
             }
         }
@@ -665,6 +672,82 @@ mod tests {
             }
         ));
         assert!(PolyMesh::from_faces(3, None, [vec![0, 1]]).is_err());
+    }
+
+    /// A quad alone is cut along its strictly shorter diagonal (0–2 on a tie), on random
+    /// quads in space against the squared lengths summed here coordinate by coordinate.
+    #[test]
+    fn a_lone_quad_is_cut_along_its_shorter_diagonal_in_space() {
+        let mut rng = crate::rng::Rng::new(7);
+        let mut coordinate = || rng.index(9) as f64 - 4.0;
+        let (mut along_13, mut ties) = (0, 0);
+        for _ in 0..2000 {
+            let p: Vec<[f64; 3]> = (0..4)
+                .map(|_| [coordinate(), coordinate(), coordinate()])
+                .collect();
+            let length2 = |i: usize, j: usize| -> f64 {
+                (0..3)
+                    .map(|c| (p[i][c] - p[j][c]) * (p[i][c] - p[j][c]))
+                    .sum()
+            };
+            let want = if length2(1, 3) < length2(0, 2) {
+                along_13 += 1;
+                vec![[1, 2, 3], [1, 3, 0]]
+            } else {
+                ties += usize::from(length2(1, 3) == length2(0, 2));
+                vec![[0, 1, 2], [0, 2, 3]]
+            };
+            let quad = PolyMesh::from_faces(4, Some(p.clone()), [vec![0, 1, 2, 3]]).unwrap();
+            assert_eq!(quad.triangulated().mesh.faces, want, "{p:?}");
+        }
+        assert!(
+            along_13 > 500 && ties > 10,
+            "{along_13} cut 1-3, {ties} ties"
+        );
+    }
+
+    /// The diagonals a fan cuts count as existing edges for the polygons after it: a
+    /// pentagon's, then a hexagon's, push later quads to their other diagonal.
+    #[test]
+    fn diagonals_of_fanned_polygons_steer_later_cuts() {
+        // No positions, so every quad prefers its diagonal from corner 0.
+        let m = PolyMesh::from_faces(
+            12,
+            None,
+            [
+                vec![0, 1, 2, 3, 4],
+                vec![0, 7, 2, 8],
+                vec![0, 9, 3, 10],
+                vec![5, 6, 11, 1, 4, 9],
+                vec![5, 2, 1, 10],
+            ],
+        )
+        .unwrap();
+        let t = m.triangulated();
+        assert_eq!(
+            t.mesh.faces,
+            vec![
+                // The pentagon fans from 0: diagonals 0-2 and 0-3.
+                [0, 1, 2],
+                [0, 2, 3],
+                [0, 3, 4],
+                // 0-2 is the pentagon's diagonal: 7-8 instead.
+                [7, 2, 8],
+                [7, 8, 0],
+                // 0-3 likewise: 9-10.
+                [9, 3, 10],
+                [9, 10, 0],
+                // The hexagon fans from 5: 5-11, 5-1, 5-4, all new.
+                [5, 6, 11],
+                [5, 11, 1],
+                [5, 1, 4],
+                [5, 4, 9],
+                // 5-1 is the hexagon's diagonal: 2-10 instead.
+                [2, 1, 10],
+                [2, 10, 5],
+            ]
+        );
+        assert_eq!(t.polygons, 5);
     }
 
     #[test]

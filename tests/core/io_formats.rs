@@ -1300,6 +1300,151 @@ fn unknown_format_and_bad_gzip() {
     );
 }
 
+/// `bytes` gzip-compressed.
+fn gzip(bytes: &[u8]) -> Vec<u8> {
+    use std::io::Write;
+    let mut enc = flate2::write::GzEncoder::new(Vec::new(), flate2::Compression::fast());
+    enc.write_all(bytes).unwrap();
+    enc.finish().unwrap()
+}
+
+/// A reader that is interrupted before every read it serves, serves one byte at a time,
+/// and fails with `fail` once `fail_at` bytes are out.
+struct Stutter<'a> {
+    bytes: &'a [u8],
+    interrupted: bool,
+    fail_at: usize,
+    fail: std::io::ErrorKind,
+}
+
+impl std::io::Read for Stutter<'_> {
+    fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+        if !buf.is_empty() {
+            self.interrupted = !self.interrupted;
+            if self.interrupted {
+                return Err(std::io::ErrorKind::Interrupted.into());
+            }
+        }
+        if self.fail_at == 0 {
+            return Err(self.fail.into());
+        }
+        let n = buf.len().min(self.bytes.len()).min(1);
+        buf[..n].copy_from_slice(&self.bytes[..n]);
+        self.bytes = &self.bytes[n..];
+        self.fail_at -= n;
+        Ok(n)
+    }
+}
+
+/// A stream is read through interruptions and one-byte reads, gzip or not, and any other
+/// error of the stream is reported as an `Io` error, whether it comes before, inside or
+/// after the two bytes that tell gzip apart.
+#[test]
+fn streams_retry_interrupted_reads_and_report_other_errors() {
+    let off = to_bytes(&octahedron(), Format::Off, false);
+    let want = contractible::io::decode(&off, None).unwrap();
+    for bytes in [off.clone(), gzip(&off)] {
+        let stutter = |fail_at| Stutter {
+            bytes: &bytes,
+            interrupted: false,
+            fail_at,
+            fail: std::io::ErrorKind::Other,
+        };
+        let got = contractible::io::decode_reader(stutter(usize::MAX), None).unwrap();
+        assert_eq!((got.format, &got.mesh), (Format::Off, &want.mesh));
+        for fail_at in [0, 1, 2, 40] {
+            let e = contractible::io::decode_reader(stutter(fail_at), None).unwrap_err();
+            assert!(matches!(e.kind, K::Io(_)), "failing at {fail_at}: {e}");
+        }
+    }
+}
+
+/// A binary STL whose header starts with `solid` is told from ASCII STL by its length,
+/// also when gzip hides the length (measured by a first pass over the content), from
+/// memory and from a file.
+#[test]
+fn gzip_binary_stl_with_a_solid_header_is_read_by_its_length() {
+    let mut stl = to_bytes(&contractible::gen::octahedron(), Format::Stl, true);
+    let header = b"solid octahedron, binary all the same";
+    stl[..80].fill(b' ');
+    stl[..header.len()].copy_from_slice(header);
+    let plain = contractible::io::decode(&stl, None).unwrap();
+    assert_eq!((plain.format, plain.mesh.face_count()), (Format::Stl, 8));
+    let gz = gzip(&stl);
+    let packed = contractible::io::decode(&gz, None).unwrap();
+    assert_eq!((packed.format, &packed.mesh), (Format::Stl, &plain.mesh));
+    let path = tmp("solid_header.stl.gz");
+    std::fs::write(&path, &gz).unwrap();
+    let from_file = contractible::io::read_poly_mesh(&path, None).unwrap();
+    assert_eq!(
+        (from_file.format, &from_file.mesh),
+        (Format::Stl, &plain.mesh)
+    );
+}
+
+/// A UTF-8 byte order mark is skipped before text formats, declared or sniffed, and
+/// kept in a binary STL header, where it is just a header byte.
+#[test]
+fn a_byte_order_mark_is_skipped_before_text_and_kept_in_binary_stl() {
+    const BOM: &[u8] = b"\xEF\xBB\xBF";
+    let m = contractible::gen::octahedron();
+    for format in [Format::Off, Format::Obj, Format::Ply] {
+        let text = [BOM, &to_bytes(&m, format, false)].concat();
+        for declared in [None, Some(format)] {
+            let d = contractible::io::decode(&text, declared).unwrap();
+            assert_eq!((d.format, d.mesh.face_count()), (format, 8), "{format}");
+        }
+    }
+    let mut stl = to_bytes(&m, Format::Stl, true);
+    stl[..3].copy_from_slice(BOM);
+    let want = read_tri_mesh_bytes(&to_bytes(&m, Format::Stl, true), None).unwrap();
+    for declared in [None, Some(Format::Stl)] {
+        let got = read_tri_mesh_bytes(&stl, declared).unwrap();
+        assert_eq!(got, want, "{declared:?}");
+    }
+}
+
+/// `read_poly_mesh_observed` reports the file bytes read so far, growing, ending at the
+/// file's length (the compressed length for gzip).
+#[test]
+fn observed_reading_reports_the_file_bytes_read() {
+    let off = to_bytes(&octahedron(), Format::Off, false);
+    for (name, bytes) in [
+        ("observed.off", off.clone()),
+        ("observed.off.gz", gzip(&off)),
+    ] {
+        let path = tmp(name);
+        std::fs::write(&path, &bytes).unwrap();
+        let mut seen = Vec::new();
+        let d =
+            contractible::io::read_poly_mesh_observed(&path, None, &mut |n| seen.push(n)).unwrap();
+        assert_eq!(d.mesh.face_count(), 8);
+        assert!(seen.windows(2).all(|w| w[0] <= w[1]), "{name}: {seen:?}");
+        assert_eq!(seen.last(), Some(&(bytes.len() as u64)), "{name}");
+    }
+}
+
+/// Formats display as their usual upper-case names.
+#[test]
+fn formats_display_their_names() {
+    let names = [Format::Off, Format::Obj, Format::Ply, Format::Stl].map(|f| f.to_string());
+    assert_eq!(names, ["OFF", "OBJ", "PLY", "STL"]);
+}
+
+/// A write goes through a temporary file in the output's own directory, named after it.
+#[test]
+fn temporary_files_sit_beside_the_output() {
+    let pid = std::process::id();
+    assert_eq!(
+        contractible::io::temp_path(Path::new("out/sub/mesh.off.gz")),
+        Path::new(&format!("out/sub/.contractible-{pid}-mesh.off.gz"))
+    );
+    assert_eq!(
+        contractible::io::temp_path(Path::new("mesh.ply")),
+        Path::new(&format!(".contractible-{pid}-mesh.ply"))
+    );
+}
+
 // ---------------------------------------------------------------- no panics
 
 /// Every prefix and many single-byte corruptions of valid files in each format, with and
