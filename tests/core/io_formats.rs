@@ -1445,6 +1445,47 @@ fn temporary_files_sit_beside_the_output() {
     );
 }
 
+/// An I/O failure keeps the operating system's error as its source; a data error has none.
+#[test]
+fn io_errors_keep_their_cause() {
+    use std::error::Error;
+    let e = read_tri_mesh(&tmp("no_such_file.off")).unwrap_err();
+    let cause = e.source().expect("the I/O error");
+    let io = cause
+        .downcast_ref::<std::io::Error>()
+        .expect("an io::Error");
+    assert_eq!(io.kind(), std::io::ErrorKind::NotFound);
+    let e = read_tri_mesh_bytes(b"OFF\n3 1 0\n0 0 0\n", None).unwrap_err();
+    assert!(e.source().is_none(), "{e}");
+}
+
+/// A file with no statements, or only comments, is an empty mesh in every text format
+/// that allows one.
+#[test]
+fn an_empty_obj_is_an_empty_mesh() {
+    for text in [&b""[..], b"# nothing here\n", b"\n\n  \n"] {
+        let m = read_tri_mesh_bytes(text, Some(Format::Obj)).unwrap();
+        assert_eq!((m.vertex_count, m.faces.len()), (0, 0));
+    }
+}
+
+/// The surface lists the repository carries read with the published counts: 21
+/// irreducible triangulations of the torus (Lavrenchenko) and 2 of the projective plane
+/// (Barnette); a missing list is an I/O error naming its path.
+#[test]
+fn published_surface_lists_read_with_their_counts() {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data/irreducible");
+    for (file, count) in [("torus.txt", 21), ("projective-plane.txt", 2)] {
+        let list = contractible::io::list::read_surface_list(&dir.join(file)).unwrap();
+        assert_eq!(list.len(), count, "{file}");
+        assert!(list.iter().all(|s| !s.faces.is_empty()), "{file}");
+    }
+    let missing = dir.join("no-such-list.txt");
+    let e = contractible::io::list::read_surface_list(&missing).unwrap_err();
+    assert!(matches!(e.kind, K::Io(_)), "{e}");
+    assert_eq!(e.path.as_deref(), Some(missing.as_path()));
+}
+
 // ---------------------------------------------------------------- no panics
 
 /// Every prefix and many single-byte corruptions of valid files in each format, with and
