@@ -1359,6 +1359,50 @@ fn streams_retry_interrupted_reads_and_report_other_errors() {
     }
 }
 
+/// OFF faces of more than three corners are read as the polygons they are; fewer than
+/// three is an error at the face's line.
+#[test]
+fn off_polygons_read_as_polygons() {
+    let off = b"OFF\n5 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 2 0\n4 0 1 2 3\n5 0 1 2 3 4\n";
+    let d = contractible::io::decode(off, None).unwrap();
+    assert_eq!(d.mesh.face(0), [0, 1, 2, 3]);
+    assert_eq!(d.mesh.face(1), [0, 1, 2, 3, 4]);
+    let e =
+        contractible::io::decode(b"OFF\n3 1 0\n0 0 0\n1 0 0\n1 1 0\n2 0 1\n", None).unwrap_err();
+    assert!(
+        matches!(
+            e.kind,
+            K::NonTriangleFace {
+                face: 0,
+                corners: 2
+            }
+        ),
+        "{e}"
+    );
+    assert_eq!(e.location, Location::Line(6));
+}
+
+/// Sniffing a stream reads no further than its first data line needs: a data error near
+/// the start is reported as such even when the stream would fail a megabyte later.
+#[test]
+fn sniffing_reads_no_further_than_the_first_data_line() {
+    let mut bytes = b"OFF\n4 4 0\n0 0 0\n1 0 x\n".to_vec();
+    while bytes.len() < 2 << 20 {
+        bytes.extend_from_slice(b"# padding after the error\n");
+    }
+    for declared in [None, Some(Format::Off)] {
+        let stream = Stutter {
+            bytes: &bytes,
+            interrupted: true,
+            fail_at: 1 << 20,
+            fail: std::io::ErrorKind::Other,
+        };
+        let e = contractible::io::decode_reader(stream, declared).unwrap_err();
+        assert!(matches!(e.kind, K::BadNumber { .. }), "{declared:?}: {e}");
+        assert_eq!(e.location, Location::Line(4));
+    }
+}
+
 /// A binary STL whose header starts with `solid` is told from ASCII STL by its length,
 /// also when gzip hides the length (measured by a first pass over the content), from
 /// memory and from a file.
