@@ -352,11 +352,9 @@ impl TwoEdge {
         }
         self.lct.cut(a, k);
         self.lct.cut(k, b);
-        // Back to cover count 0 for its next use (no cover is left on it now).
-        let left = self.lct.isolated_value(k);
-        if left != 0 {
-            self.lct.path_add(k, k, -left);
-        }
+        // Its cover count is back to 0 for its next use: every edge covering it crossed
+        // the cut and was uncovered above (`check` verifies that unused nodes hold 0).
+        debug_assert_eq!(self.lct.isolated_value(k), 0, "cover left on tree edge {e}");
         self.free.push(k);
         self.lnode[i] = NONE;
         if let Some(&r) = crossing.first() {
