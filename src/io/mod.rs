@@ -239,6 +239,15 @@ impl<'a> Source<'a> {
         }
     }
 
+    /// The length of the bytes as stored (compressed if gzip); `None` for a reader.
+    fn packed_len(&self) -> Result<Option<u64>, ReadError> {
+        Ok(match self {
+            Source::Bytes(b) => Some(b.len() as u64),
+            Source::File { path, .. } => Some(std::fs::metadata(path).map_err(io_error)?.len()),
+            Source::Reader(_) => None,
+        })
+    }
+
     /// The decompressed length of gzip content, by a pass that decompresses it without
     /// keeping it (`None` for a reader, which cannot be read twice).
     fn gunzipped_len(&self) -> Result<Option<u64>, ReadError> {
@@ -280,7 +289,7 @@ fn read_source(mut source: Source<'_>, pick: Pick, named_gz: bool) -> Result<Dec
         Pick::Sniff(declared) => declared,
         Pick::Given(format) => Some(format),
     };
-    let rereadable = !matches!(source, Source::Reader(_));
+    let packed = source.packed_len()?;
     let mut input = source.open()?;
     if named_gz && !input.is_gzip() {
         return Err(not_gzip());
@@ -290,12 +299,21 @@ fn read_source(mut source: Source<'_>, pick: Pick, named_gz: bool) -> Result<Dec
         Pick::Given(_) => Ok(None),
     };
     let mut sniffed = sniff(&mut input)?;
-    // The STL decisions compare the length with the binary triangle count. Compressed
-    // content has no length until it is decompressed: when the decision may need it, a
-    // first pass measures it (a reader read once goes without, see the `stl` module).
-    let stl_possible = matches!(sniffed, None | Some(Format::Stl))
-        && matches!(declared.or(sniffed), None | Some(Format::Stl));
-    if input.is_gzip() && stl_possible && rereadable {
+    // The binary STL rule compares the length with the triangle count, and decides
+    // before any other format (the header of a binary STL may read like one). Compressed
+    // content has no length until it is decompressed: when the rule may need it, a first
+    // pass measures it (a reader read once goes without, see the `stl` module).
+    let stl_allowed = match pick {
+        Pick::Sniff(_) => true,
+        Pick::Given(format) => format == Format::Stl,
+    };
+    let measure = match packed {
+        Some(packed) if input.is_gzip() && stl_allowed => {
+            stl::binary_size_possible(stl::probe(&mut input)?, packed)
+        }
+        _ => false,
+    };
+    if measure {
         drop(input);
         let len = source.gunzipped_len()?;
         input = source.open()?;
@@ -639,7 +657,9 @@ mod tests {
             (b"OFF\n4 4 0\n", Format::Off),
             (b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", Format::Obj),
         ];
-        let pads = (4085..=4100).chain([20_000, 70_000]);
+        // The look grows fourfold: a comment of megabytes takes a few looks, not a
+        // million.
+        let pads = (4085..=4100).chain([20_000, 70_000, 3 << 20]);
         for pad in pads {
             for (body, format) in bodies {
                 let mut bytes = vec![b'#'];

@@ -21,7 +21,10 @@
 //! whitespace) and its first 512 bytes are text (no control bytes, which the binary
 //! count and coordinates nearly always contain); otherwise as binary, whose checks then
 //! say what is wrong. Gzip content from memory or a file is measured by a first
-//! decompression pass when this rule needs its length; a gzip stream read once
+//! decompression pass when this rule may need its length: when the binary size its count
+//! asks for is within what its compressed size can inflate to (deflate expands at most
+//! 1,032-fold; the count of a text file's bytes 80..84 asks for gigabytes, so text meshes
+//! of a few megabytes compressed are read once); a gzip stream read once
 //! ([`super::decode_reader`]) has no length, and a `solid` start followed by text is then
 //! ASCII (a binary file would differ only with a count of at least 538,976,288 triangles
 //! whose bytes are all text, at exactly the matching size).
@@ -180,6 +183,26 @@ fn binary_size_matches(head: &[u8], len: Option<u64>) -> bool {
         (Some(&[a, b, c, d]), Some(len)) => {
             let n = u64::from(u32::from_le_bytes([a, b, c, d]));
             len - PAYLOAD_START as u64 == n * TRIANGLE_BYTES as u64
+        }
+        _ => false,
+    }
+}
+
+/// The most a deflate stream expands: a 258-byte match coded in two bits gives 1,032
+/// bytes out per byte in, and gzip's header and trailer only lower the ratio (each member
+/// of a multi-member file is bounded alike).
+const MAX_INFLATE_RATIO: u64 = 1032;
+
+/// Whether gzip content of `packed` compressed bytes, starting with `head` (its first
+/// bytes, decompressed), may be a binary STL whose length matches its count: the binary
+/// size the count at bytes 80..84 asks for is within what `packed` bytes can inflate to.
+/// False says for certain that the length cannot decide, so it need not be measured.
+pub(crate) fn binary_size_possible(head: &[u8], packed: u64) -> bool {
+    match head.get(80..PAYLOAD_START) {
+        Some(&[a, b, c, d]) => {
+            let n = u64::from(u32::from_le_bytes([a, b, c, d]));
+            PAYLOAD_START as u64 + n * TRIANGLE_BYTES as u64
+                <= packed.saturating_mul(MAX_INFLATE_RATIO)
         }
         _ => false,
     }

@@ -1403,27 +1403,34 @@ fn sniffing_reads_no_further_than_the_first_data_line() {
     }
 }
 
-/// A binary STL whose header starts with `solid` is told from ASCII STL by its length,
-/// also when gzip hides the length (measured by a first pass over the content), from
-/// memory and from a file.
+/// A binary STL whose header starts with `solid`, or like another format (`OFF`, `ply`),
+/// is told by its length, also when gzip hides the length (measured by a first pass over
+/// the content), from memory and from a file.
 #[test]
-fn gzip_binary_stl_with_a_solid_header_is_read_by_its_length() {
-    let mut stl = to_bytes(&contractible::gen::octahedron(), Format::Stl, true);
-    let header = b"solid octahedron, binary all the same";
-    stl[..80].fill(b' ');
-    stl[..header.len()].copy_from_slice(header);
-    let plain = contractible::io::decode(&stl, None).unwrap();
-    assert_eq!((plain.format, plain.mesh.face_count()), (Format::Stl, 8));
-    let gz = gzip(&stl);
-    let packed = contractible::io::decode(&gz, None).unwrap();
-    assert_eq!((packed.format, &packed.mesh), (Format::Stl, &plain.mesh));
-    let path = tmp("solid_header.stl.gz");
-    std::fs::write(&path, &gz).unwrap();
-    let from_file = contractible::io::read_poly_mesh(&path, None).unwrap();
-    assert_eq!(
-        (from_file.format, &from_file.mesh),
-        (Format::Stl, &plain.mesh)
-    );
+fn gzip_binary_stl_with_a_misleading_header_is_read_by_its_length() {
+    let octahedron = contractible::gen::octahedron();
+    let headers: [&[u8]; 3] = [
+        b"solid octahedron, binary all the same",
+        b"OFF\n6 8 0\n",
+        b"ply\nformat ascii 1.0\n",
+    ];
+    for (i, header) in headers.into_iter().enumerate() {
+        let mut stl = to_bytes(&octahedron, Format::Stl, true);
+        stl[..80].fill(b' ');
+        stl[..header.len()].copy_from_slice(header);
+        let plain = contractible::io::decode(&stl, None).unwrap();
+        assert_eq!((plain.format, plain.mesh.face_count()), (Format::Stl, 8));
+        let gz = gzip(&stl);
+        let packed = contractible::io::decode(&gz, None).unwrap();
+        assert_eq!((packed.format, &packed.mesh), (Format::Stl, &plain.mesh));
+        let path = tmp(&format!("misleading_header_{i}.stl.gz"));
+        std::fs::write(&path, &gz).unwrap();
+        let from_file = contractible::io::read_poly_mesh(&path, None).unwrap();
+        assert_eq!(
+            (from_file.format, &from_file.mesh),
+            (Format::Stl, &plain.mesh)
+        );
+    }
 }
 
 /// A UTF-8 byte order mark is skipped before text formats, declared or sniffed, and
