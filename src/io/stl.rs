@@ -742,6 +742,33 @@ mod tests {
         }
     }
 
+    /// The first pass over gzip content is needed exactly when the count's binary size
+    /// is within 1,032 times the compressed size: at the bound and not one byte beyond.
+    #[test]
+    fn gzip_length_is_measured_only_when_the_count_could_match() {
+        let head = |count: [u8; 4]| {
+            let mut h = vec![b' '; 80];
+            h.extend_from_slice(&count);
+            h
+        };
+        // Eight triangles: 484 bytes, within any compressed size but none.
+        let eight = head(8u32.to_le_bytes());
+        assert!(binary_size_possible(&eight, 1));
+        assert!(!binary_size_possible(&eight, 0));
+        assert!(!binary_size_possible(&eight[..83], 1000));
+        // Text in bytes 80..84 asks for gigabytes.
+        let text = head(*b"0 0 ");
+        let size = 84 + 50 * u64::from(u32::from_le_bytes(*b"0 0 "));
+        let packed = size.div_ceil(1032);
+        assert!(binary_size_possible(&text, packed));
+        assert!(!binary_size_possible(&text, packed - 1));
+        assert!(!binary_size_possible(&text, 10 << 20));
+        // 246 triangles: 12,384 bytes, exactly 12 times 1,032.
+        let exact = head(246u32.to_le_bytes());
+        assert!(binary_size_possible(&exact, 12));
+        assert!(!binary_size_possible(&exact, 11));
+    }
+
     #[test]
     fn binary_with_solid_header_is_welded() {
         let m = parse_stl(&binary(&TETRA, 4)).unwrap();
