@@ -928,6 +928,37 @@ mod tests {
         assert!(t.connected(0, 3) && !t.two_edge_connected(0, 3));
     }
 
+    /// `check` fails on a malformed edge record: an absent edge that keeps its link-cut
+    /// node or one incidence position, a loop with an incidence position, a tree edge
+    /// whose link-cut node is cut from one of its ends.
+    #[test]
+    fn check_catches_malformed_edge_records() {
+        let mut t = TwoEdge::new(4);
+        for (e, [a, b]) in [[0, 1], [1, 2], [2, 2], [2, 3]].into_iter().enumerate() {
+            t.insert(e as u32, a, b);
+        }
+        t.insert(4, 0, 3);
+        t.delete(4);
+        assert_eq!(t.check(), Ok(()));
+        let expect = |bad: &mut TwoEdge, what: &str| {
+            let m = bad.check().expect_err(what);
+            assert!(m.contains(what), "{m}");
+        };
+        let mut bad = t.clone();
+        bad.lnode[4] = 6;
+        expect(&mut bad, "still listed");
+        let mut bad = t.clone();
+        bad.pos[4][1] = 0;
+        expect(&mut bad, "still listed");
+        let mut bad = t.clone();
+        bad.pos[2][0] = 0;
+        expect(&mut bad, "malformed");
+        let mut bad = t.clone();
+        let k = bad.lnode[3];
+        bad.lct.cut(k, 3);
+        expect(&mut bad, "tree edge 3 not linked");
+    }
+
     /// `check` fails when two forest trees, or an unused tree-edge node and a forest
     /// tree, are joined in the link–cut tree, whichever trees they are (not only
     /// consecutive ones).

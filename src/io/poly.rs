@@ -750,6 +750,19 @@ mod tests {
         assert_eq!(t.polygons, 5);
     }
 
+    /// Without positions, welding changes nothing but checks the corners: `None` as soon
+    /// as one is not below the vertex count.
+    #[test]
+    fn welding_without_positions_checks_the_corners() {
+        let m = PolyMesh::from_faces(4, None, [vec![0, 1, 2, 3]]).unwrap();
+        assert_eq!(m.welded_within(0.0), Some((m.clone(), 0)));
+        for corner in [4, 5] {
+            let mut bad = m.clone();
+            bad.corners[3] = corner;
+            assert_eq!(bad.welded_within(0.0), None, "corner {corner}");
+        }
+    }
+
     #[test]
     fn triangle_meshes_convert_both_ways() {
         let t = TriMesh::combinatorial(4, vec![[0, 1, 2], [0, 2, 3]]);

@@ -1475,6 +1475,21 @@ fn observed_reading_reports_the_file_bytes_read() {
     }
 }
 
+/// The OBJ statements the reader skipped are reported with the mesh it read.
+#[test]
+fn skipped_obj_statements_come_with_the_mesh() {
+    let obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\ncurv 0 1 1 2\nf 1 2 3\nl 1 2\nl 2 3\n";
+    let d = contractible::io::decode(obj, None).unwrap();
+    let skipped = d.mesh.skipped_statements();
+    assert_eq!(skipped.total(), 3);
+    let kinds: Vec<(&str, usize, usize)> = skipped
+        .kinds
+        .iter()
+        .map(|(k, n, line)| (k.as_str(), *n, *line))
+        .collect();
+    assert_eq!(kinds, [("curv", 1, 4), ("l", 2, 6)]);
+}
+
 /// Formats display as their usual upper-case names.
 #[test]
 fn formats_display_their_names() {
