@@ -25,6 +25,20 @@ use super::poly::PolyMesh;
 use super::text::{parse_f64, parse_i64, Tokens};
 use crate::mesh::Mesh;
 
+/// The error for one more vertex at `line` when `count` are read already, if it would
+/// pass the `u32` index limit: `CountTooLarge` with the count it would make.
+fn vertex_past_limit(count: usize, line: usize) -> Option<ReadError> {
+    (count >= u32::MAX as usize).then(|| {
+        ReadError::at_line(
+            K::CountTooLarge {
+                what: "vertices",
+                declared: count as u64 + 1,
+            },
+            line,
+        )
+    })
+}
+
 /// Parses OBJ into a polygon mesh; see the module docs for the accepted subset.
 pub(crate) fn parse_obj(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
     let mut positions: Vec<[f64; 3]> = Vec::new();
@@ -48,14 +62,8 @@ pub(crate) fn parse_obj(input: &mut Input<'_>) -> Result<PolyMesh, ReadError> {
                         .ok_or_else(|| ReadError::at_line(K::MissingValue { expected: name }, n))?;
                     *c = parse_f64(tok).ok_or_else(|| bad_number(tok, n))?;
                 }
-                if positions.len() >= u32::MAX as usize {
-                    return Err(ReadError::at_line(
-                        K::CountTooLarge {
-                            what: "vertices",
-                            declared: positions.len() as u64 + 1,
-                        },
-                        n,
-                    ));
+                if let Some(e) = vertex_past_limit(positions.len(), n) {
+                    return Err(e);
                 }
                 positions.push(p);
             }
@@ -177,4 +185,23 @@ pub(crate) fn write_obj<const N: usize>(w: &mut impl Write, mesh: &Mesh<N>) -> s
         writeln!(w)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Vertex `2^32` (one past the last `u32` index) is refused, with its number; the one
+    /// before it is not (a file that large cannot be built in a test, so the check is
+    /// tested alone).
+    #[test]
+    fn the_vertex_past_the_index_limit_is_refused_with_its_number() {
+        assert!(vertex_past_limit(u32::MAX as usize - 1, 7).is_none());
+        let e = vertex_past_limit(u32::MAX as usize, 7).expect("past the limit");
+        assert!(
+            matches!(e.kind, K::CountTooLarge { what: "vertices", declared } if declared == 1 << 32),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::Line(7));
+    }
 }
