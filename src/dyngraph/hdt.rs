@@ -1155,6 +1155,47 @@ mod tests {
         assert!(max_level >= 3, "levels barely used: {max_level}");
     }
 
+    /// The vertex bound is the largest `n` whose Euler-tour nodes, fewer than
+    /// `3n(⌊log₂ n⌋ + 1)`, stay below `NIL`: 3 · 55,063,683 · 26 = 4,294,967,274 fits
+    /// below 2³² − 1, one vertex more (4,294,967,352) does not.
+    #[test]
+    fn the_vertex_bound_keeps_node_ids_below_nil() {
+        let n = Hdt::max_vertices();
+        assert_eq!(n, 55_063_683);
+        let nodes = |n: u64| 3 * n * (u64::from(n.ilog2()) + 1);
+        assert!(nodes(n as u64) < u64::from(NIL));
+        assert!(nodes(n as u64 + 1) >= u64::from(NIL));
+        assert!(n <= MAX_TREE);
+    }
+
+    /// In release builds an insertion that breaks a precondition (a live id, a loop, an
+    /// end out of range, an id too large) is ignored: no change, no edge (debug builds
+    /// fail an assertion instead).
+    #[cfg(not(debug_assertions))]
+    #[test]
+    fn release_builds_ignore_insertions_that_break_a_precondition() {
+        let mut h = Hdt::new(4);
+        let mut changes = Vec::new();
+        h.insert(0, 0, 1, &mut changes);
+        assert_eq!(changes.len(), 1);
+        for (e, a, b) in [
+            (0, 2, 3),
+            (1, 2, 2),
+            (2, 1, 4),
+            (3, 4, 1),
+            (MAX_EDGE_ID, 2, 3),
+        ] {
+            h.insert(e, a, b, &mut changes);
+            assert_eq!(changes.len(), 1, "{e} = {a}{b} ignored");
+            assert_eq!(h.check(), Ok(()), "{e} = {a}{b}");
+        }
+        assert!(h.connected(0, 1) && !h.connected(2, 3) && !h.connected(1, 2));
+        assert!(h.is_tree_edge(0) && !(1..4).any(|e| h.is_tree_edge(e)));
+        // The ignored ids are free: they can be inserted properly afterwards.
+        h.insert(1, 1, 2, &mut changes);
+        assert!(h.connected(0, 2) && h.is_tree_edge(1));
+    }
+
     #[test]
     fn check_detects_a_broken_level() {
         let mut hdt = Hdt::new(8);
