@@ -1194,6 +1194,44 @@ mod tests {
         // The ignored ids are free: they can be inserted properly afterwards.
         h.insert(1, 1, 2, &mut changes);
         assert!(h.connected(0, 2) && h.is_tree_edge(1));
+        // A vertex out of range is connected to itself only.
+        assert!(!h.connected(4, 0) && !h.connected(0, 4) && !h.connected(4, 5));
+        assert!(h.connected(4, 4));
+    }
+
+    /// `load` into a structure that already has edges is one-by-one insertion too, and
+    /// `searches` counts the deletions of tree edges.
+    #[test]
+    fn load_after_insertions_and_the_search_count() {
+        let mut g = Gen(5);
+        for round in 0..20 {
+            let n = 8 + g.below(20);
+            let edges: Vec<[u32; 3]> = (0..2 * n as u32)
+                .map(|e| {
+                    let a = g.below(n) as u32;
+                    let b = (a + 1 + g.below(n - 1) as u32) % n as u32;
+                    [e, a, b]
+                })
+                .collect();
+            let split = 1 + g.below(edges.len() - 1);
+            let (mut one, mut two) = (Hdt::new(n), Hdt::new(n));
+            let (mut log1, mut log2) = (Vec::new(), Vec::new());
+            for &[e, a, b] in &edges {
+                one.insert(e, a, b, &mut log1);
+            }
+            for &[e, a, b] in &edges[..split] {
+                two.insert(e, a, b, &mut log2);
+            }
+            two.load(&edges[split..], &mut log2);
+            assert_eq!(log1, log2, "round {round}");
+            two.check().unwrap_or_else(|m| panic!("round {round}: {m}"));
+            let mut tree_deletions = 0;
+            for &[e, ..] in &edges {
+                tree_deletions += u64::from(two.is_tree_edge(e));
+                two.delete(e, &mut log2);
+            }
+            assert_eq!(two.stats().searches, tree_deletions, "round {round}");
+        }
     }
 
     #[test]
