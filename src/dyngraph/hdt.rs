@@ -1168,6 +1168,41 @@ mod tests {
         assert!(n <= MAX_TREE);
     }
 
+    /// The edge-id bound is exact: half-edge `2e + 1` of the largest admissible id stays
+    /// below `NIL`, and of the bound itself would reach it.
+    #[test]
+    fn the_edge_id_bound_keeps_half_edges_below_nil() {
+        let half = |e: u32| 2 * u64::from(e) + 1;
+        assert!(half(MAX_EDGE_ID - 1) < u64::from(NIL));
+        assert!(half(MAX_EDGE_ID) >= u64::from(NIL));
+    }
+
+    /// `bytes` counts the pool's nodes, 25 bytes per edge id slot (ends, state, links),
+    /// and the trim scratch buffer's capacity; reserved capacity of the edge arrays is
+    /// not counted.
+    #[test]
+    fn bytes_count_nodes_id_slots_and_the_scratch_buffer() {
+        let mut h = Hdt::new(6);
+        let mut changes = Vec::new();
+        assert_eq!(h.pool.len(), 6);
+        assert_eq!(h.bytes(), h.pool.bytes());
+        let node = h.pool.bytes() / 6;
+        assert!(node >= 16);
+        // A tree edge of id 9: ten id slots and one arc pair.
+        h.insert(9, 0, 1, &mut changes);
+        assert_eq!(h.pool.len(), 8);
+        assert_eq!(h.bytes(), 8 * node + 10 * 25);
+        h.insert(3, 1, 2, &mut changes);
+        h.insert(4, 2, 0, &mut changes);
+        assert_eq!(h.bytes(), h.pool.len() * node + 10 * 25);
+        // Deleting a tree edge trims both ends through the scratch buffer.
+        h.delete(9, &mut changes);
+        let scratch = h.chain.capacity();
+        assert!(scratch >= 2);
+        assert_eq!(h.bytes(), h.pool.len() * node + 10 * 25 + 4 * scratch);
+        assert_eq!(h.check(), Ok(()));
+    }
+
     /// In release builds an insertion that breaks a precondition (a live id, a loop, an
     /// end out of range, an id too large) is ignored: no change, no edge (debug builds
     /// fail an assertion instead).

@@ -343,6 +343,30 @@ mod tests {
         }
     }
 
+    /// A reader that returns its scripted results one per call (an empty chunk is the end
+    /// of one `fill`'s read), then fails: a read the code should not make shows as an
+    /// error.
+    struct Script(std::collections::VecDeque<&'static [u8]>);
+
+    impl Read for Script {
+        fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+            let Some(chunk) = self.0.pop_front() else {
+                return Err(std::io::Error::other("read past the script"));
+            };
+            assert!(chunk.len() <= out.len());
+            out[..chunk.len()].copy_from_slice(chunk);
+            Ok(chunk.len())
+        }
+    }
+
+    fn scripted(chunks: &[&'static [u8]]) -> Input<'static> {
+        Input::new(
+            Box::new(Script(chunks.iter().copied().collect())),
+            false,
+            None,
+        )
+    }
+
     fn lines_of(input: &mut Input<'_>) -> Vec<(usize, Vec<u8>)> {
         let mut out = Vec::new();
         while let Some((n, l)) = input.next_line().unwrap() {
@@ -451,5 +475,110 @@ mod tests {
         assert_eq!(seen, &bytes[..250]);
         assert_eq!(input.drain().unwrap(), 6);
         assert!(input.at_end().unwrap());
+    }
+
+    #[test]
+    fn reservations_are_bounded_by_the_rest_of_a_known_input_or_a_fixed_count() {
+        let text = [b'x'; 107];
+        let mut input = Input::from_slice(&text);
+        assert_eq!(
+            (input.known_len(), input.remaining()),
+            (Some(107), Some(107))
+        );
+        // One byte more than the rest: a last record may lack its terminator.
+        assert_eq!(input.reserve_for(1000, 12), 9);
+        assert_eq!(input.reserve_for(5, 12), 5);
+        assert_eq!(input.reserve_for(1000, 0), 108);
+        assert_eq!(input.peek(10).unwrap().len(), 10);
+        input.consume(10);
+        assert_eq!(input.remaining(), Some(97));
+        assert_eq!(input.reserve_for(1000, 12), 8);
+        input.set_known_len(Some(50));
+        assert_eq!((input.known_len(), input.remaining()), (Some(50), Some(40)));
+        input.set_known_len(Some(4));
+        assert_eq!(input.remaining(), Some(0));
+        input.set_known_len(None);
+        assert_eq!(input.remaining(), None);
+        assert_eq!(input.reserve_for(u64::MAX, 12), 1 << 16);
+        assert_eq!(input.reserve_for(70_000, 0), 1 << 16);
+        assert_eq!(input.reserve_for(3, 12), 3);
+    }
+
+    #[test]
+    fn reads_happen_only_when_the_buffer_lacks_what_is_asked() {
+        // `at_end` with unconsumed bytes, and `peek` / `fill_at_least` of exactly what is
+        // buffered, do not read; an error of the stream is located at its byte offset.
+        let mut input = scripted(&[b"abc", b""]);
+        assert_eq!(input.peek(2).unwrap(), b"ab");
+        assert_eq!(input.peek(3).unwrap(), b"abc");
+        assert!(!input.at_end().unwrap());
+        assert!(!input.at_end().unwrap());
+        assert_eq!(input.fill_at_least(3).unwrap(), b"abc");
+        input.consume(1);
+        let e = input.peek(5).unwrap_err();
+        assert!(matches!(e.kind, K::Io(_)), "{e}");
+        assert_eq!(e.location, Location::ByteOffset(3));
+
+        let mut input = scripted(&[b"abc", b"", b"def", b""]);
+        assert_eq!(input.fill_at_least(2).unwrap(), b"abc");
+        input.consume(2);
+        assert_eq!(input.peek(2).unwrap(), b"cd");
+        assert_eq!(input.offset(), 2);
+        input.consume(2);
+        assert_eq!(input.fill_at_least(2).unwrap(), b"ef");
+        assert!(input.peek(3).is_err());
+    }
+
+    #[test]
+    fn the_buffer_holds_the_current_line_and_one_chunk_and_grows_by_half() {
+        // Short lines: consumed bytes are dropped at every read.
+        let text: Vec<u8> = b"123456789\n".repeat(CHUNK * 8 / 10 + 3);
+        let mut input = Input::from_slice(&text);
+        let mut count = 0;
+        while let Some((n, line)) = input.next_line().unwrap() {
+            assert_eq!(line, b"123456789");
+            count = n;
+            assert!(input.buf.len() <= CHUNK + 10, "{}", input.buf.len());
+            assert!(input.buf.capacity() < 2 * CHUNK);
+        }
+        assert_eq!(count, CHUNK * 8 / 10 + 3);
+
+        // One long line read a chunk at a time: when less than a chunk is free, room for
+        // a chunk or half the buffer more, whichever is larger.
+        let long = vec![b'x'; 20 * CHUNK];
+        let mut input = Input::from_slice(&long);
+        let mut model = 0usize;
+        for k in 1..=20 {
+            let len = (k - 1) * CHUNK;
+            if model - len < CHUNK {
+                model = len + CHUNK.max(len / 2);
+            }
+            assert_eq!(input.fill_at_least(len + 1).unwrap().len(), k * CHUNK);
+            assert_eq!(input.buf.capacity(), model, "read {k}");
+        }
+        assert!(model < 20 * CHUNK * 3 / 2);
+    }
+
+    #[test]
+    fn a_line_of_the_limit_is_read_and_one_byte_longer_is_refused() {
+        let mut text = vec![b'x'; MAX_LINE];
+        text.extend(b"\nshort\n");
+        let mut input = Input::from_slice(&text);
+        assert_eq!(
+            input.next_line().unwrap().map(|(n, l)| (n, l.len())),
+            Some((1, MAX_LINE))
+        );
+        assert_eq!(input.next_line().unwrap(), Some((2, &b"short"[..])));
+        assert_eq!(input.next_line().unwrap(), None);
+
+        // The terminator arrives in the read that crosses the limit: refused after it.
+        let mut text = b"ok\n".to_vec();
+        text.extend(std::iter::repeat_n(b'x', MAX_LINE + 1));
+        text.extend(b"\n");
+        let mut input = Input::from_slice(&text);
+        assert_eq!(input.next_line().unwrap(), Some((1, &b"ok"[..])));
+        let e = input.next_line().unwrap_err();
+        assert!(matches!(e.kind, K::LineTooLong { limit: MAX_LINE }), "{e}");
+        assert_eq!(e.location, Location::Line(2));
     }
 }
