@@ -15,6 +15,7 @@
 //! finite) and optional element `face` with a list property `vertex_indices` or
 //! `vertex_index` of integer type. Every other element and property is parsed and skipped.
 
+use std::collections::HashSet;
 use std::io::Write;
 
 use super::error::{token_string, Location, ReadError, ReadErrorKind as K};
@@ -137,6 +138,10 @@ fn parse_header(input: &mut Input<'_>) -> Result<Header, ReadError> {
     let mut encoding = None;
     let mut elements: Vec<Element> = Vec::new();
     let mut items = 0usize;
+    // Names seen, to refuse repeats in time linear in the header (a scan of the earlier
+    // names would cost `MAX_HEADER_ITEMS`² / 2 comparisons, seconds, on a hostile header).
+    let mut element_names: HashSet<String> = HashSet::new();
+    let mut property_names: HashSet<String> = HashSet::new();
     loop {
         let last = input.line();
         let Some((n, line)) = input.next_line()? else {
@@ -192,9 +197,10 @@ fn parse_header(input: &mut Input<'_>) -> Result<Header, ReadError> {
                     )
                 })?;
                 let name = String::from_utf8_lossy(name).into_owned();
-                if elements.iter().any(|e| e.name == name) {
+                if !element_names.insert(name.clone()) {
                     return Err(bad_header(format!("element `{name}` declared twice"), n));
                 }
+                property_names.clear();
                 let kind = match name.as_str() {
                     "vertex" => ElementKind::Vertex,
                     "face" => ElementKind::Face,
@@ -236,7 +242,7 @@ fn parse_header(input: &mut Input<'_>) -> Result<Header, ReadError> {
                     _ => return Err(bad_header("expected `property <type> <name>`", n)),
                 };
                 let name = String::from_utf8_lossy(name).into_owned();
-                if elem.properties.iter().any(|p| p.name == name) {
+                if !property_names.insert(name.clone()) {
                     return Err(bad_header(
                         format!("property `{name}` declared twice in `{}`", elem.name),
                         n,
@@ -1116,5 +1122,319 @@ mod tests {
             assert_eq!(fast, slow, "seed {seed}");
         }
         assert!(long >= 8, "{long} files of more than three buffers");
+    }
+
+    /// A header of `MAX_HEADER_ITEMS - 4 + extra` items beyond the vertex element's four:
+    /// thousands of properties in one element, then elements of one property each.
+    fn header_of(extra: usize) -> Vec<u8> {
+        let mut h = String::from(
+            "ply\nformat binary_little_endian 1.0\nelement vertex 0\n\
+             property float x\nproperty float y\nproperty float z\n",
+        );
+        let props = 30_000;
+        for i in 0..props {
+            h += &format!("property uchar q{i}\n");
+        }
+        let mut left = MAX_HEADER_ITEMS - 4 - props + extra;
+        let mut i = 0;
+        while left > 0 {
+            h += &format!("element e{i} 0\n");
+            left -= 1;
+            if left > 0 {
+                h += "property uchar p\n";
+                left -= 1;
+            }
+            i += 1;
+        }
+        h += "end_header\n";
+        h.into_bytes()
+    }
+
+    /// Exactly `MAX_HEADER_ITEMS` elements and properties are read (in time linear in
+    /// the header: repeated names are found in sets), one more is refused at its line.
+    #[test]
+    fn a_header_of_the_item_limit_is_read_and_one_more_item_is_refused() {
+        let mesh = read(&header_of(0), true).unwrap();
+        assert_eq!((mesh.vertex_count, mesh.face_count()), (0, 0));
+        let e = parse_ply(&mut Input::from_slice(&header_of(1))).unwrap_err();
+        assert!(matches!(e.kind, K::BadHeader(_)), "{e}");
+        assert_eq!(e.location, Location::Line(MAX_HEADER_ITEMS + 3));
+    }
+
+    fn header_error(file: &[u8]) -> ReadError {
+        match parse_header(&mut Input::from_slice(file)) {
+            Ok(_) => panic!("header accepted"),
+            Err(e) => e,
+        }
+    }
+
+    /// The magic line, integer corner lists and the `u32` vertex count are checked in
+    /// the header, located at their lines.
+    #[test]
+    fn header_checks_are_located_at_their_lines() {
+        let e = header_error(b"plx\nformat ascii 1.0\nend_header\n");
+        assert!(
+            matches!(e.kind, K::BadHeader(ref m) if m.contains("magic")),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::Line(1));
+
+        let e = header_error(
+            b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+              property float z\nelement face 1\nproperty list uchar float vertex_indices\n\
+              end_header\n",
+        );
+        assert!(
+            matches!(e.kind, K::BadHeader(ref m) if m.contains("list of integers")),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::Line(8));
+
+        let head = |count: u64| {
+            format!(
+                "ply\nformat binary_little_endian 1.0\nelement vertex {count}\n\
+                 property float x\nproperty float y\nproperty float z\nend_header\n"
+            )
+            .into_bytes()
+        };
+        let most = u64::from(u32::MAX);
+        let header = parse_header(&mut Input::from_slice(&head(most))).unwrap();
+        assert_eq!(header.elements[0].count, most);
+        let e = header_error(&head(most + 1));
+        assert!(
+            matches!(e.kind, K::CountTooLarge { what: "vertices", declared } if declared == most + 1),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::Line(3));
+    }
+
+    fn prop(ty: PropType, role: Role) -> Property {
+        Property {
+            name: String::new(),
+            ty,
+            role,
+        }
+    }
+
+    /// The smallest record of each property, which bounds what a count can reserve: a
+    /// token and a separator in ASCII (a face's corner list `3 a b c`), the type's size
+    /// in binary (a corner list with three items).
+    #[test]
+    fn min_bytes_is_the_smallest_encoding_of_each_property() {
+        use PlyEncoding::{Ascii, BinaryBigEndian as Be, BinaryLittleEndian as Le};
+        let list = |count, item| PropType::List { count, item };
+        let cases = [
+            (
+                Ascii,
+                prop(PropType::Scalar(Scalar::F64), Role::Coord(0)),
+                2,
+            ),
+            (Ascii, prop(list(Scalar::U8, Scalar::I32), Role::Corners), 8),
+            (Ascii, prop(list(Scalar::U8, Scalar::I32), Role::Ignore), 2),
+            (Le, prop(PropType::Scalar(Scalar::F64), Role::Coord(1)), 8),
+            (Be, prop(PropType::Scalar(Scalar::I16), Role::Ignore), 2),
+            (Le, prop(list(Scalar::U8, Scalar::I32), Role::Corners), 13),
+            (Be, prop(list(Scalar::U16, Scalar::U8), Role::Corners), 5),
+            (Le, prop(list(Scalar::I32, Scalar::F32), Role::Ignore), 4),
+        ];
+        for (encoding, p, want) in cases {
+            assert_eq!(min_bytes(encoding, &p), want, "{encoding:?} {p:?}");
+        }
+        // The ASCII face record `3 0 1 2` and its terminator: exactly the bound.
+        assert_eq!(b"3 0 1 2\n".len(), 8);
+    }
+
+    fn element(kind: ElementKind, properties: Vec<Property>) -> Element {
+        Element {
+            name: String::new(),
+            count: 1,
+            kind,
+            properties,
+            line: 1,
+        }
+    }
+
+    /// Fixed binary layouts: coordinates and corners at their offsets, records that
+    /// nothing reads skipped by length; none for ASCII, other lists, missing
+    /// coordinates or empty records.
+    #[test]
+    fn fixed_layouts_are_found_for_binary_records_of_one_shape() {
+        use PlyEncoding::{Ascii, BinaryLittleEndian as Le};
+        let s = |t| PropType::Scalar(t);
+        let vertex = || {
+            element(
+                ElementKind::Vertex,
+                vec![
+                    prop(s(Scalar::U8), Role::Ignore),
+                    prop(s(Scalar::F32), Role::Coord(0)),
+                    prop(s(Scalar::F64), Role::Coord(2)),
+                    prop(s(Scalar::I16), Role::Coord(1)),
+                ],
+            )
+        };
+        let want = Layout::Vertex {
+            len: 15,
+            coords: [(1, Scalar::F32), (13, Scalar::I16), (5, Scalar::F64)],
+        };
+        assert_eq!(Layout::of(Le, &vertex()), Some(want));
+        assert_eq!(want.len(), 15);
+        assert_eq!(Layout::of(Ascii, &vertex()), None);
+        let mut partial = vertex();
+        partial.properties.pop();
+        assert_eq!(Layout::of(Le, &partial), None);
+
+        let face = element(
+            ElementKind::Face,
+            vec![
+                prop(s(Scalar::I32), Role::Ignore),
+                prop(
+                    PropType::List {
+                        count: Scalar::U16,
+                        item: Scalar::U32,
+                    },
+                    Role::Corners,
+                ),
+                prop(s(Scalar::U8), Role::Ignore),
+            ],
+        );
+        let want = Layout::Face {
+            len: 4 + 2 + 12 + 1,
+            count_at: 4,
+            count: Scalar::U16,
+            items_at: 6,
+            item: Scalar::U32,
+        };
+        assert_eq!(Layout::of(Le, &face), Some(want));
+        assert_eq!(want.len(), 19);
+
+        let other = element(ElementKind::Other, vec![prop(s(Scalar::F64), Role::Ignore)]);
+        assert_eq!(Layout::of(Le, &other), Some(Layout::Skip { len: 8 }));
+        assert_eq!(Layout::Skip { len: 8 }.len(), 8);
+        assert_eq!(Layout::of(Le, &element(ElementKind::Other, vec![])), None);
+        let listed = element(
+            ElementKind::Other,
+            vec![prop(
+                PropType::List {
+                    count: Scalar::U8,
+                    item: Scalar::U8,
+                },
+                Role::Ignore,
+            )],
+        );
+        assert_eq!(Layout::of(Le, &listed), None);
+        assert_eq!(Layout::of(Le, &element(ElementKind::Face, vec![])), None);
+    }
+
+    /// The batch decoder decodes whole records of its layout from the buffer, up to the
+    /// number asked, and stops before a record it must leave to the value-by-value path
+    /// (a non-finite coordinate, a face that is not a triangle or names a vertex out of
+    /// range) or one that is incomplete.
+    #[test]
+    fn batches_decode_whole_records_and_stop_before_any_other() {
+        let mut body = Vec::new();
+        for v in [
+            [1.0f32, 2.0, 3.0],
+            [4.0, 5.0, 6.0],
+            [7.0, 8.0, 9.0],
+            [f32::NAN, 0.0, 0.0],
+        ] {
+            for x in v {
+                body.extend_from_slice(&x.to_le_bytes());
+            }
+        }
+        let layout = Layout::Vertex {
+            len: 12,
+            coords: [(0, Scalar::F32), (4, Scalar::F32), (8, Scalar::F32)],
+        };
+        let mut input = Input::from_slice(&body);
+        let mut src = Binary {
+            input: &mut input,
+            last: 0,
+            big_endian: false,
+        };
+        let (mut positions, mut mesh) = (Vec::new(), PolyMesh::new(3, None, false, false));
+        assert_eq!(
+            src.batch(&layout, 2, 3, &mut positions, &mut mesh).unwrap(),
+            2
+        );
+        assert_eq!(positions, [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]);
+        assert_eq!(
+            src.batch(&layout, 5, 3, &mut positions, &mut mesh).unwrap(),
+            1
+        );
+        assert_eq!(
+            src.batch(&layout, 5, 3, &mut positions, &mut mesh).unwrap(),
+            0
+        );
+        assert_eq!(input.offset(), 36);
+
+        let mut body = Vec::new();
+        for (k, f) in [
+            (3u8, [0u32, 1, 2]),
+            (3, [2, 1, 0]),
+            (3, [0, 1, 3]),
+            (4, [0, 1, 2]),
+        ] {
+            body.push(k);
+            for c in f {
+                body.extend_from_slice(&c.to_be_bytes());
+            }
+        }
+        body.extend_from_slice(&[3, 0, 0]);
+        let layout = Layout::Face {
+            len: 13,
+            count_at: 0,
+            count: Scalar::U8,
+            items_at: 1,
+            item: Scalar::U32,
+        };
+        for (max, want) in [(1, 1), (9, 2)] {
+            let mut input = Input::from_slice(&body);
+            let mut src = Binary {
+                input: &mut input,
+                last: 0,
+                big_endian: true,
+            };
+            let mut mesh = PolyMesh::new(3, None, false, false);
+            let n = src
+                .batch(&layout, max, 3, &mut Vec::new(), &mut mesh)
+                .unwrap();
+            assert_eq!(n, want);
+            let faces: Vec<&[u32]> = mesh.faces().collect();
+            assert_eq!(faces, [&[0, 1, 2][..], &[2, 1, 0]][..want as usize]);
+            assert_eq!(input.offset(), 13 * want);
+        }
+        // Out of range with 3 vertices, in range with 4: then the quad stops the batch.
+        let mut input = Input::from_slice(&body);
+        let mut src = Binary {
+            input: &mut input,
+            last: 0,
+            big_endian: true,
+        };
+        let mut mesh = PolyMesh::new(4, None, false, false);
+        assert_eq!(
+            src.batch(&layout, 9, 4, &mut Vec::new(), &mut mesh)
+                .unwrap(),
+            3
+        );
+
+        let body = [0u8; 45];
+        let mut input = Input::from_slice(&body);
+        let mut src = Binary {
+            input: &mut input,
+            last: 0,
+            big_endian: false,
+        };
+        let skip = Layout::Skip { len: 8 };
+        let mut mesh = PolyMesh::new(0, None, false, false);
+        assert_eq!(
+            src.batch(&skip, 3, 0, &mut Vec::new(), &mut mesh).unwrap(),
+            3
+        );
+        assert_eq!(
+            src.batch(&skip, 9, 0, &mut Vec::new(), &mut mesh).unwrap(),
+            2
+        );
+        assert_eq!(input.offset(), 40);
     }
 }
