@@ -1363,6 +1363,9 @@ mod tests {
             hdt.sample = sample;
             let mut log = Vec::new();
             let mut live = Vec::new();
+            // Levels only rise, one per promotion: the promotions are the levels of the
+            // live edges plus those the deleted edges had.
+            let (mut gone, mut highest) = (0u64, 0u32);
             for step in 0..3000u32 {
                 if live.len() < 60 && g.below(3) != 0 {
                     let a = g.below(50) as u32;
@@ -1371,8 +1374,14 @@ mod tests {
                     live.push(step);
                 } else if !live.is_empty() {
                     let e = live.swap_remove(g.below(live.len()));
+                    gone += u64::from(hdt.level(e));
                     hdt.delete(e, &mut log);
                 }
+                let levels = live.iter().map(|&e| hdt.level(e));
+                highest = highest.max(levels.clone().max().unwrap_or(0));
+                let st = hdt.stats();
+                assert_eq!(st.promotions, gone + levels.map(u64::from).sum::<u64>());
+                assert_eq!(st.max_level, highest);
                 if queries {
                     for _ in 0..5 {
                         hdt.connected(q.below(50) as u32, q.below(50) as u32);
