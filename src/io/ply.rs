@@ -1437,4 +1437,91 @@ mod tests {
         );
         assert_eq!(input.offset(), 40);
     }
+
+    /// A file whose counts the payload can hold gets exactly that room: the positions
+    /// and faces are reserved once, not grown by doubling.
+    #[test]
+    fn counts_the_payload_can_hold_are_reserved_exactly() {
+        let n = 1000;
+        for enc in ["ascii", "binary_little_endian"] {
+            let mut file = format!(
+                "ply\nformat {enc} 1.0\nelement vertex {n}\nproperty float x\n\
+                 property float y\nproperty float z\nelement face {}\n\
+                 property list uchar int vertex_indices\nend_header\n",
+                n - 2
+            )
+            .into_bytes();
+            for i in 0..n {
+                let v = [i as f32, (i * i) as f32, 1.0];
+                if enc == "ascii" {
+                    file.extend(format!("{} {} {}\n", v[0], v[1], v[2]).bytes());
+                } else {
+                    v.iter().for_each(|x| file.extend(x.to_le_bytes()));
+                }
+            }
+            for i in 0..n - 2 {
+                let f = [i as i32, i as i32 + 1, i as i32 + 2];
+                if enc == "ascii" {
+                    file.extend(format!("3 {} {} {}\n", f[0], f[1], f[2]).bytes());
+                } else {
+                    file.push(3);
+                    f.iter().for_each(|c| file.extend(c.to_le_bytes()));
+                }
+            }
+            let mesh = read(&file, true).unwrap();
+            let positions = mesh.positions.as_ref().unwrap();
+            assert_eq!((positions.len(), positions.capacity()), (n, n), "{enc}");
+            assert_eq!(mesh.face_count(), n - 2);
+        }
+    }
+
+    /// Bytes after a binary payload: whitespace is allowed, anything else is refused
+    /// at its own offset.
+    #[test]
+    fn trailing_bytes_are_located_past_the_whitespace() {
+        let head = "ply\nformat binary_big_endian 1.0\nelement vertex 1\nproperty float x\n\
+                    property float y\nproperty float z\nend_header\n";
+        let mut file = head.as_bytes().to_vec();
+        file.extend([0u8; 12]);
+        assert!(read(&file, true).is_ok());
+        file.extend(b" \n\t x");
+        let e = parse_ply(&mut Input::from_slice(&file)).unwrap_err();
+        assert!(matches!(e.kind, K::TrailingData { .. }), "{e}");
+        assert_eq!(
+            e.location,
+            Location::ByteOffset((head.len() + 12 + 4) as u64)
+        );
+    }
+
+    /// ASCII integers are checked against their declared type's range, both ends
+    /// included.
+    #[test]
+    fn ascii_integers_are_checked_against_their_types_range() {
+        let ranges: [(&str, i64, i64); 6] = [
+            ("char", -128, 127),
+            ("uchar", 0, 255),
+            ("short", -32768, 32767),
+            ("ushort", 0, 65535),
+            ("int", -(1 << 31), (1 << 31) - 1),
+            ("uint", 0, (1 << 32) - 1),
+        ];
+        for (ty, lo, hi) in ranges {
+            let file = |v: i64| {
+                format!(
+                    "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n\
+                     property {ty} w\nproperty float y\nproperty float z\nend_header\n\
+                     0 {v} 0 0\n"
+                )
+                .into_bytes()
+            };
+            for v in [lo, hi] {
+                assert!(read(&file(v), true).is_ok(), "{ty} {v}");
+            }
+            for v in [lo - 1, hi + 1] {
+                let e = parse_ply(&mut Input::from_slice(&file(v))).unwrap_err();
+                assert!(matches!(e.kind, K::BadNumber { .. }), "{ty} {v}: {e}");
+                assert_eq!(e.location, Location::Line(9));
+            }
+        }
+    }
 }
