@@ -1524,4 +1524,42 @@ mod tests {
             }
         }
     }
+
+    /// An ASCII payload that ends before its first value is truncated at the line after
+    /// the header; a negative list count is a bad number at its own line, binary or not.
+    #[test]
+    fn empty_payloads_and_negative_list_counts_are_located() {
+        let head = |enc: &str| {
+            format!(
+                "ply\nformat {enc} 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+                 property float z\nelement face 1\nproperty list char int vertex_indices\n\
+                 end_header\n"
+            )
+            .into_bytes()
+        };
+        let e = parse_ply(&mut Input::from_slice(&head("ascii"))).unwrap_err();
+        assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
+        assert_eq!(e.location, Location::Line(10));
+
+        let mut file = head("ascii");
+        file.extend(b"0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n");
+        let e = parse_ply(&mut Input::from_slice(&file)).unwrap_err();
+        assert!(
+            matches!(e.kind, K::BadNumber { ref token } if token == "-1"),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::Line(13));
+
+        let mut file = head("binary_little_endian");
+        let payload = file.len();
+        file.extend([0u8; 36]);
+        file.push(0xFF);
+        file.extend([0u8; 12]);
+        let e = parse_ply(&mut Input::from_slice(&file)).unwrap_err();
+        assert!(
+            matches!(e.kind, K::BadNumber { ref token } if token == "-1"),
+            "{e}"
+        );
+        assert_eq!(e.location, Location::ByteOffset(payload as u64 + 36));
+    }
 }
