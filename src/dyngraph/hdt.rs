@@ -1352,6 +1352,63 @@ mod tests {
         }
     }
 
+    /// The sample examines at most its limit of non-tree half-edges and says how many
+    /// it examined: all of them when the tree has fewer.
+    #[test]
+    fn samples_stop_at_their_limit_and_count_what_they_examined() {
+        // K6: 5 tree edges and 10 non-tree edges (20 half-edges), all inside the tree.
+        let mut h = Hdt::new(6);
+        let mut changes = Vec::new();
+        let mut e = 0;
+        for a in 0..6 {
+            for b in a + 1..6 {
+                h.insert(e, a, b, &mut changes);
+                e += 1;
+            }
+        }
+        for back in [false, true] {
+            assert_eq!(h.sample_from(0, 0, back, 5), (None, 5));
+            assert_eq!(h.sample_from(3, 0, back, 100), (None, 20));
+        }
+        assert_eq!(h.check(), Ok(()));
+    }
+
+    /// Memory follows the levels in use: once a vertex has no edge left, or none above
+    /// level 0, its upper vertex nodes are freed, so after deleting every edge no vertex
+    /// has a node above level 0.
+    #[test]
+    fn deleting_every_edge_frees_every_upper_level() {
+        let mut g = Gen(11);
+        let n = 40;
+        let mut h = Hdt::new(n);
+        h.sample = 0;
+        let mut changes = Vec::new();
+        let mut live = Vec::new();
+        for e in 0..160u32 {
+            let a = g.below(n) as u32;
+            let b = (a + 1 + g.below(n - 1) as u32) % n as u32;
+            h.insert(e, a, b, &mut changes);
+            live.push(e);
+        }
+        let mut rounds = 0;
+        while !live.is_empty() {
+            // Deleting and reinserting raises levels before the final deletions.
+            let e = live.swap_remove(g.below(live.len()));
+            let [a, b] = h.ends[e as usize];
+            h.delete(e, &mut changes);
+            rounds += 1;
+            if rounds < 300 {
+                h.insert(e, a, b, &mut changes);
+                live.push(e);
+            }
+        }
+        assert!(h.stats().max_level >= 2, "{:?}", h.stats());
+        for x in 0..n as u32 {
+            assert_eq!(h.pool.a(x), NIL, "vertex {x} keeps an upper node");
+        }
+        assert_eq!(h.check(), Ok(()));
+    }
+
     #[test]
     fn same_operations_same_changes() {
         // `queries`: connectivity queries between the updates, which reshape the splay
