@@ -909,4 +909,82 @@ mod tests {
         assert!(!sniff(b"solidity 1 2 3"));
         assert!(sniff(b"solid x\nendsolid x\n"));
     }
+
+    /// A closed genus-0 mesh of `F` faces has `F/2 + 2` vertices: the welder's room for
+    /// them, one to spare, is never outgrown.
+    #[test]
+    fn the_welder_holds_a_closed_meshs_vertices_without_growing() {
+        // An octahedron and a subdivided one: 8 and 32 faces, 6 and 18 vertices.
+        let octa = |r: f64| {
+            let v = [
+                [r, 0.0, 0.0],
+                [-r, 0.0, 0.0],
+                [0.0, r, 0.0],
+                [0.0, -r, 0.0],
+                [0.0, 0.0, r],
+                [0.0, 0.0, -r],
+            ];
+            let mut tris = Vec::new();
+            for &x in &[0usize, 1] {
+                for &y in &[2usize, 3] {
+                    for &z in &[4usize, 5] {
+                        tris.push([v[x], v[y], v[z]]);
+                    }
+                }
+            }
+            tris
+        };
+        let mid = |a: [f64; 3], b: [f64; 3]| {
+            [
+                (a[0] + b[0]) / 2.0,
+                (a[1] + b[1]) / 2.0,
+                (a[2] + b[2]) / 2.0,
+            ]
+        };
+        let split: Vec<[[f64; 3]; 3]> = octa(1.0)
+            .into_iter()
+            .flat_map(|[a, b, c]| {
+                let (ab, bc, ca) = (mid(a, b), mid(b, c), mid(c, a));
+                [[a, ab, ca], [ab, b, bc], [ca, bc, c], [ab, bc, ca]]
+            })
+            .collect();
+        for (tris, vertices) in [(octa(1.0), 6), (split, 18)] {
+            let mut w = Welder::with_capacity(tris.len());
+            let room = w.positions.capacity();
+            assert_eq!(room, vertices + 1);
+            for t in &tris {
+                let f = t.map(|p| w.vertex(p).unwrap());
+                w.faces.push(f);
+            }
+            assert_eq!(w.positions.len(), vertices);
+            assert_eq!(w.positions.capacity(), room);
+            assert_eq!(w.faces.capacity(), tris.len());
+        }
+    }
+
+    /// The count past the `u32` vertex limit is the one the file needs: every vertex
+    /// welded so far and the one that does not fit.
+    #[test]
+    fn the_vertex_count_past_the_limit_includes_the_one_that_does_not_fit() {
+        let limit = u32::MAX as usize + 1;
+        assert!(matches!(
+            too_many_vertices(limit),
+            K::CountTooLarge { what: "distinct STL vertices", declared } if declared == limit as u64 + 1
+        ));
+    }
+
+    /// `solid` after a byte order mark and blank lines is ASCII STL, also when the blank
+    /// lines run past the first look at the input.
+    #[test]
+    fn solid_after_blank_lines_is_ascii_stl() {
+        let text = ascii(&TETRA);
+        let want = parse_stl(text.as_bytes()).unwrap();
+        for blank in [1, 40, 3000, 200_000] {
+            let mut file = UTF8_BOM.to_vec();
+            file.extend(" \t\r\n".repeat(blank).bytes());
+            file.extend(text.bytes());
+            assert!(sniff(&file), "{blank}");
+            assert_eq!(parse_stl(&file).unwrap(), want, "{blank}");
+        }
+    }
 }
