@@ -1409,6 +1409,68 @@ mod tests {
         assert_eq!(h.check(), Ok(()));
     }
 
+    /// `check` finds a non-tree half-edge with a wrong predecessor and an arc node
+    /// labelled with another edge.
+    #[test]
+    fn check_catches_a_wrong_list_link_and_a_mislabelled_arc() {
+        let mut h = Hdt::new(4);
+        let mut changes = Vec::new();
+        for (e, a, b) in [
+            (0, 0, 1),
+            (1, 1, 2),
+            (2, 2, 3),
+            (3, 0, 2),
+            (4, 1, 3),
+            (5, 0, 3),
+        ] {
+            h.insert(e, a, b, &mut changes);
+        }
+        assert_eq!(h.check(), Ok(()));
+        assert!(!h.is_tree_edge(5));
+        let mut bad = h.clone();
+        let s = usize::from(bad.ends[5][1] == 0);
+        bad.links[5][2 + s] = 2 * 5 + s as u32;
+        assert!(bad.check().unwrap_err().contains("wrong links"));
+        let mut bad = h.clone();
+        let p = bad.links[0][0];
+        bad.pool.set_b(p, 1);
+        assert!(bad.check().unwrap_err().contains("mislabelled"));
+    }
+
+    /// `check` finds a level-1 tree of more than `n / 2` vertices (built by promoting a
+    /// whole level-0 tree, which only a release build lets through).
+    #[cfg(not(debug_assertions))]
+    #[test]
+    fn check_catches_a_level_tree_above_its_size_bound() {
+        let mut h = Hdt::new(4);
+        let mut changes = Vec::new();
+        for (e, a, b) in [(0, 0, 1), (1, 1, 2), (2, 2, 3)] {
+            h.insert(e, a, b, &mut changes);
+        }
+        assert_eq!(h.check(), Ok(()));
+        h.promote_tree_edges(0, 4, 0);
+        assert!(h
+            .check()
+            .unwrap_err()
+            .contains("level-1 tree of 4 vertices"));
+    }
+
+    /// `check` finds a node in a tree of another level: a vertex whose chain no longer
+    /// reaches its level-1 node, which stays in the level-1 tree.
+    #[test]
+    fn check_catches_a_node_in_a_tree_of_another_level() {
+        let mut h = Hdt::new(8);
+        let mut changes = Vec::new();
+        for (e, a, b) in [(0, 0, 1), (1, 1, 2), (2, 2, 3)] {
+            h.insert(e, a, b, &mut changes);
+        }
+        h.promote_tree_edges(0, 4, 0);
+        assert_eq!(h.check(), Ok(()));
+        assert_ne!(h.pool.a(3), NIL);
+        h.pool.set_a(3, NIL);
+        assert!(h.check().unwrap_err().contains("wrong level"));
+    }
+
     #[test]
     fn same_operations_same_changes() {
         // `queries`: connectivity queries between the updates, which reshape the splay

@@ -987,4 +987,35 @@ mod tests {
             assert_eq!(parse_stl(&file).unwrap(), want, "{blank}");
         }
     }
+
+    /// From a stream of unknown length, a binary STL whose data runs out early is
+    /// reported as from memory: by its length (the stream is read to its end), not by
+    /// where the reading stopped.
+    #[test]
+    fn streams_report_a_short_binary_by_its_length() {
+        let stream = |bytes: &[u8]| {
+            let owned = bytes.to_vec();
+            let mut input = Input::new(Box::new(std::io::Cursor::new(owned)), false, None);
+            super::parse_stl(&mut input).unwrap_err()
+        };
+        let good = binary(&TETRA, 4);
+        // A non-finite coordinate in a file of the wrong length: the length comes first.
+        let mut nan = TETRA;
+        nan[1][2][0] = f32::NAN;
+        let nan = binary(&nan, 5);
+        for cut in [&binary(&TETRA, 5)[..], &good[..84 + 2 * 50 + 7], &nan[..]] {
+            let (from_memory, from_stream) = (err(cut), stream(cut));
+            assert_eq!(from_stream.location, from_memory.location);
+            assert_eq!(
+                std::mem::discriminant(&from_stream.kind),
+                std::mem::discriminant(&from_memory.kind),
+                "{from_stream} / {from_memory}"
+            );
+        }
+        assert!(matches!(
+            stream(&binary(&TETRA, 5)).kind,
+            K::CountMismatch { .. }
+        ));
+        assert!(matches!(stream(&nan).kind, K::CountMismatch { .. }));
+    }
 }
