@@ -1018,4 +1018,29 @@ mod tests {
         ));
         assert!(matches!(stream(&nan).kind, K::CountMismatch { .. }));
     }
+
+    /// A single triangle, and a file read in several buffers whose last batch holds one
+    /// triangle more than declared: the count decides where reading stops.
+    #[test]
+    fn the_declared_count_bounds_every_batch() {
+        let one = parse_stl(&binary(&TETRA[..1], 1)).unwrap();
+        assert_eq!((one.vertex_count, one.faces.len()), (3, 1));
+        let n = 6000;
+        let tris: Vec<[[f32; 3]; 3]> = (0..=n)
+            .map(|i| {
+                let x = i as f32;
+                [[x, 0.0, 0.0], [x, 1.0, 0.0], [x, 0.0, 1.0]]
+            })
+            .collect();
+        let file = binary(&tris, n as u32);
+        assert!(file.len() > super::super::input::CHUNK);
+        // From memory the length decides before reading; from a stream, the batches.
+        let mut stream = Input::new(Box::new(std::io::Cursor::new(file.clone())), false, None);
+        for e in [err(&file), super::parse_stl(&mut stream).unwrap_err()] {
+            assert!(matches!(e.kind, K::TrailingData { .. }), "{e}");
+            assert_eq!(e.location, Location::ByteOffset(84 + 50 * n as u64));
+        }
+        let whole = parse_stl(&file[..file.len() - 50]).unwrap();
+        assert_eq!(whole.faces.len(), n);
+    }
 }
