@@ -1471,6 +1471,26 @@ mod tests {
         assert!(h.check().unwrap_err().contains("wrong level"));
     }
 
+    /// `check` finds a non-tree edge whose ends are in different trees of its level:
+    /// a tree edge cut as `delete` cuts it, without the replacement search that would
+    /// make the parallel non-tree edge a tree edge.
+    #[test]
+    fn check_catches_a_non_tree_edge_across_trees() {
+        let mut h = Hdt::new(4);
+        let mut changes = Vec::new();
+        h.insert(0, 0, 1, &mut changes);
+        h.insert(1, 0, 1, &mut changes);
+        h.insert(2, 2, 3, &mut changes);
+        assert!(!h.is_tree_edge(1));
+        assert_eq!(h.check(), Ok(()));
+        let p = h.links[0][0];
+        h.pool.cut(p);
+        h.pool.free_pair(p);
+        h.state[0] = DEAD;
+        h.links[0] = [NIL; 4];
+        assert!(h.check().unwrap_err().contains("ends not connected"));
+    }
+
     #[test]
     fn same_operations_same_changes() {
         // `queries`: connectivity queries between the updates, which reshape the splay
