@@ -1043,4 +1043,68 @@ mod tests {
         let whole = parse_stl(&file[..file.len() - 50]).unwrap();
         assert_eq!(whole.faces.len(), n);
     }
+
+    /// Written facet normals are the unit normals by the right-hand rule, computed here
+    /// from the other corner, and zero for triangles without area or whose normal does
+    /// not fit a double.
+    #[test]
+    fn written_normals_are_unit_right_handed_or_zero() {
+        let mut rng = crate::rng::Rng::new(5);
+        let mut coord = || (rng.index(2001) as f64 - 1000.0) / 64.0;
+        let mut tris: Vec<[[f64; 3]; 3]> = (0..200)
+            .map(|_| {
+                [
+                    [coord(), coord(), coord()],
+                    [coord(), coord(), coord()],
+                    [coord(), coord(), coord()],
+                ]
+            })
+            .collect();
+        tris.push([[0.0, 0.0, 0.0], [1.0, 1.0, 1.0], [2.0, 2.0, 2.0]]);
+        let positions: Vec<[f64; 3]> = tris.iter().flatten().copied().collect();
+        let faces: Vec<[u32; 3]> = (0..tris.len() as u32)
+            .map(|i| [3 * i, 3 * i + 1, 3 * i + 2])
+            .collect();
+        let mut out = Vec::new();
+        write_stl(&mut out, &Mesh::with_positions(positions, faces)).unwrap();
+        for (i, [a, b, c]) in tris.iter().enumerate() {
+            let at = 84 + 50 * i;
+            let n: Vec<f64> = (0..3)
+                .map(|k| {
+                    let o = at + 4 * k;
+                    f64::from(f32::from_le_bytes([
+                        out[o],
+                        out[o + 1],
+                        out[o + 2],
+                        out[o + 3],
+                    ]))
+                })
+                .collect();
+            // (c - b) × (a - b) is the same normal from corner b.
+            let (u, v) = (
+                [c[0] - b[0], c[1] - b[1], c[2] - b[2]],
+                [a[0] - b[0], a[1] - b[1], a[2] - b[2]],
+            );
+            let m = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            let len = m.iter().map(|x| x * x).sum::<f64>().sqrt();
+            if i + 1 == tris.len() {
+                assert_eq!(n, [0.0; 3], "triangle {i}");
+            } else {
+                assert!(len > 0.0);
+                for k in 0..3 {
+                    assert!(
+                        (n[k] - m[k] / len).abs() < 1e-6,
+                        "triangle {i}: {n:?} {m:?}"
+                    );
+                }
+            }
+        }
+        // Beyond what `write_stl` accepts (f32 coordinates): a normal too long for a double.
+        let huge = [[0.0, 0.0, 0.0], [1e300, 0.0, 0.0], [0.0, 1e300, 0.0]];
+        assert_eq!(unit_normal(&huge), [0.0; 3]);
+    }
 }
