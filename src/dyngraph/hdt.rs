@@ -945,6 +945,16 @@ mod tests {
         }
     }
 
+    /// `n` vertices and `edges` (`(id, a, b)`) inserted in order.
+    fn with_edges(n: usize, edges: &[(u32, u32, u32)]) -> Hdt {
+        let mut h = Hdt::new(n);
+        let mut changes = Vec::new();
+        for &(e, a, b) in edges {
+            h.insert(e, a, b, &mut changes);
+        }
+        h
+    }
+
     /// Component labels of the naive graph by BFS.
     fn components(n: usize, edges: &BTreeMap<u32, (u32, u32)>) -> (Vec<u32>, usize) {
         let mut adj = vec![Vec::new(); n];
@@ -1413,18 +1423,17 @@ mod tests {
     /// labelled with another edge.
     #[test]
     fn check_catches_a_wrong_list_link_and_a_mislabelled_arc() {
-        let mut h = Hdt::new(4);
-        let mut changes = Vec::new();
-        for (e, a, b) in [
-            (0, 0, 1),
-            (1, 1, 2),
-            (2, 2, 3),
-            (3, 0, 2),
-            (4, 1, 3),
-            (5, 0, 3),
-        ] {
-            h.insert(e, a, b, &mut changes);
-        }
+        let h = with_edges(
+            4,
+            &[
+                (0, 0, 1),
+                (1, 1, 2),
+                (2, 2, 3),
+                (3, 0, 2),
+                (4, 1, 3),
+                (5, 0, 3),
+            ],
+        );
         assert_eq!(h.check(), Ok(()));
         assert!(!h.is_tree_edge(5));
         let mut bad = h.clone();
@@ -1442,11 +1451,7 @@ mod tests {
     #[cfg(not(debug_assertions))]
     #[test]
     fn check_catches_a_level_tree_above_its_size_bound() {
-        let mut h = Hdt::new(4);
-        let mut changes = Vec::new();
-        for (e, a, b) in [(0, 0, 1), (1, 1, 2), (2, 2, 3)] {
-            h.insert(e, a, b, &mut changes);
-        }
+        let mut h = with_edges(4, &[(0, 0, 1), (1, 1, 2), (2, 2, 3)]);
         assert_eq!(h.check(), Ok(()));
         h.promote_tree_edges(0, 4, 0);
         assert!(h
@@ -1459,11 +1464,7 @@ mod tests {
     /// reaches its level-1 node, which stays in the level-1 tree.
     #[test]
     fn check_catches_a_node_in_a_tree_of_another_level() {
-        let mut h = Hdt::new(8);
-        let mut changes = Vec::new();
-        for (e, a, b) in [(0, 0, 1), (1, 1, 2), (2, 2, 3)] {
-            h.insert(e, a, b, &mut changes);
-        }
+        let mut h = with_edges(8, &[(0, 0, 1), (1, 1, 2), (2, 2, 3)]);
         h.promote_tree_edges(0, 4, 0);
         assert_eq!(h.check(), Ok(()));
         assert_ne!(h.pool.a(3), NIL);

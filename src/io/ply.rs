@@ -1325,6 +1325,14 @@ mod tests {
         assert_eq!(Layout::of(Le, &element(ElementKind::Face, vec![])), None);
     }
 
+    fn binary_payload<'i, 'r>(input: &'i mut Input<'r>, big_endian: bool) -> Binary<'i, 'r> {
+        Binary {
+            input,
+            last: 0,
+            big_endian,
+        }
+    }
+
     /// The batch decoder decodes whole records of its layout from the buffer, up to the
     /// number asked, and stops before a record it must leave to the value-by-value path
     /// (a non-finite coordinate, a face that is not a triangle or names a vertex out of
@@ -1347,11 +1355,7 @@ mod tests {
             coords: [(0, Scalar::F32), (4, Scalar::F32), (8, Scalar::F32)],
         };
         let mut input = Input::from_slice(&body);
-        let mut src = Binary {
-            input: &mut input,
-            last: 0,
-            big_endian: false,
-        };
+        let mut src = binary_payload(&mut input, false);
         let (mut positions, mut mesh) = (Vec::new(), PolyMesh::new(3, None, false, false));
         assert_eq!(
             src.batch(&layout, 2, 3, &mut positions, &mut mesh).unwrap(),
@@ -1390,11 +1394,7 @@ mod tests {
         };
         for (max, want) in [(1, 1), (9, 2)] {
             let mut input = Input::from_slice(&body);
-            let mut src = Binary {
-                input: &mut input,
-                last: 0,
-                big_endian: true,
-            };
+            let mut src = binary_payload(&mut input, true);
             let mut mesh = PolyMesh::new(3, None, false, false);
             let n = src
                 .batch(&layout, max, 3, &mut Vec::new(), &mut mesh)
@@ -1406,11 +1406,7 @@ mod tests {
         }
         // Out of range with 3 vertices, in range with 4: then the quad stops the batch.
         let mut input = Input::from_slice(&body);
-        let mut src = Binary {
-            input: &mut input,
-            last: 0,
-            big_endian: true,
-        };
+        let mut src = binary_payload(&mut input, true);
         let mut mesh = PolyMesh::new(4, None, false, false);
         assert_eq!(
             src.batch(&layout, 9, 4, &mut Vec::new(), &mut mesh)
@@ -1420,11 +1416,7 @@ mod tests {
 
         let body = [0u8; 45];
         let mut input = Input::from_slice(&body);
-        let mut src = Binary {
-            input: &mut input,
-            last: 0,
-            big_endian: false,
-        };
+        let mut src = binary_payload(&mut input, false);
         let skip = Layout::Skip { len: 8 };
         let mut mesh = PolyMesh::new(0, None, false, false);
         assert_eq!(
