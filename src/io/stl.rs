@@ -70,8 +70,6 @@
 use std::hash::BuildHasher;
 use std::io::Write;
 
-use hashbrown::{DefaultHashBuilder, HashTable};
-
 use super::error::{token_string, ReadError, ReadErrorKind as K, WriteError};
 use super::input::Input;
 use super::text::{is_space, parse_f64};
@@ -90,28 +88,52 @@ const WRITE_HEADER: &[u8] = b"binary STL written by contractible";
 /// Welds triangle corners by bitwise-equal position while the triangles are read.
 ///
 /// Vertex ids are given in order of first appearance, so the output does not depend on
-/// the hash. Why not a `HashMap<[u64; 3], u32>`: on B0 (12.6 M corners, 2.1 M vertices)
-/// its 32-byte entries make a table of about 100 MB, and almost every lookup missed the
-/// caches (the whole binary read ran at 206 MB/s, slower than `stl_io`). Here the table
-/// holds only the 4-byte ids (keys are compared against `positions`), and a small
-/// direct-mapped cache of recent lookups answers most corners: in a mesh's own triangle
-/// order a vertex's triangles are near each other in the file (`docs/benchmarks.md`,
-/// readers).
+/// the hash (whose seed is random, so that a file cannot be made to collide). Two
+/// levels:
+/// - a direct-mapped cache of recent lookups, which answers most corners: in a mesh's own
+///   triangle order a vertex's triangles are near each other in the file (on B0, 10.2 M
+///   of 12.6 M corners);
+/// - an open-addressing table (linear probing) of the ids, each beside the high half of
+///   its position's hash, so that a probe reads positions only on a likely match.
+///
+/// Why not `hashbrown` (which this reader used, with the same cache in front): a new
+/// vertex has to be looked up before it is known to be new, and on a large mesh each
+/// such lookup is a cache miss that the processor waits for (three quarters of the
+/// welding time on B0). The table here can be warmed: [`Welder::prepare`] computes the
+/// hashes of a run of triangles and loads the table slots of the corners the cache will
+/// not answer, all independent loads that the processor overlaps, before
+/// [`Welder::vertex_hashed`] welds them in order (`docs/benchmarks.md`, readers).
 struct Welder {
-    /// Vertex ids, hashed by their position's bits.
-    index: HashTable<u32>,
-    hasher: DefaultHashBuilder,
+    /// `(hash >> 32) << 32 | id` per slot, or [`EMPTY`]; a power-of-two length, at
+    /// most half full.
+    slots: Vec<u64>,
+    hasher: foldhash::fast::RandomState,
     /// `recent[h >> RECENT_SHIFT]` = (hash, id) of the last vertex looked up whose hash
     /// `h` maps there: a hint, confirmed by comparing positions (so the initial zeros
     /// need no sentinel).
     recent: Vec<(u64, u32)>,
     positions: Vec<[f64; 3]>,
     faces: Vec<[u32; 3]>,
+    /// The hashes [`Welder::prepare`] computed, one per corner, in file order.
+    hashes: Vec<u64>,
 }
+
+/// A free slot of [`Welder::slots`]: id `u32::MAX`, which no vertex has (ids stop one
+/// below it).
+const EMPTY: u64 = u64::MAX;
 
 /// log2 of the number of recent-lookup slots: 2^14 × 16 bytes stay in a core's L2 cache.
 const RECENT_BITS: u32 = 14;
 const RECENT_SHIFT: u32 = 64 - RECENT_BITS;
+
+/// Triangles [`Welder::prepare`] warms at once: their table slots (about one corner in
+/// five misses the cache) stay in the L1 and L2 caches until they are welded.
+const PREPARE_TRIANGLES: usize = 256;
+
+/// The bits of a position the welder compares.
+fn bits(p: &[f64; 3]) -> [u64; 3] {
+    p.map(f64::to_bits)
+}
 
 impl Welder {
     /// Room for `triangles` faces (a count already checked against the input's size).
@@ -119,54 +141,120 @@ impl Welder {
         // A closed triangle mesh has about half as many vertices as faces.
         let vertices = triangles / 2 + 3;
         Welder {
-            index: HashTable::with_capacity(vertices),
-            hasher: DefaultHashBuilder::default(),
+            slots: vec![EMPTY; Self::slots_for(vertices)],
+            hasher: foldhash::fast::RandomState::default(),
             recent: vec![(0, 0); 1 << RECENT_BITS],
             positions: Vec::with_capacity(vertices),
             faces: Vec::with_capacity(triangles),
+            hashes: Vec::new(),
         }
+    }
+
+    /// The table length for `vertices` ids: a power of two at least twice as large.
+    fn slots_for(vertices: usize) -> usize {
+        vertices.saturating_mul(2).max(16).next_power_of_two()
+    }
+
+    fn hash(&self, key: [u64; 3]) -> u64 {
+        self.hasher.hash_one((key[0], key[1], key[2]))
     }
 
     /// The vertex at position `p` (a new one at its first appearance); `None` when a new
     /// vertex would not be addressable by a `u32`.
     fn vertex(&mut self, p: [f64; 3]) -> Option<u32> {
-        let key = p.map(f64::to_bits);
-        let h = self.hasher.hash_one(key);
+        let h = self.hash(bits(&p));
+        self.vertex_hashed(p, h)
+    }
+
+    /// [`Welder::vertex`] with the hash of `p` already computed.
+    fn vertex_hashed(&mut self, p: [f64; 3], h: u64) -> Option<u32> {
+        let key = bits(&p);
         let slot = (h >> RECENT_SHIFT) as usize;
-        let Welder {
-            index,
-            hasher,
-            recent,
-            positions,
-            ..
-        } = self;
-        let same = |v: u32| positions.get(v as usize).map(|q| q.map(f64::to_bits)) == Some(key);
-        let (seen, v) = recent[slot];
-        if seen == h && same(v) {
+        let same =
+            |positions: &[[f64; 3]], v: u32| positions.get(v as usize).map(bits) == Some(key);
+        let (seen, v) = self.recent[slot];
+        if seen == h && same(&self.positions, v) {
             return Some(v);
         }
-        let v = match index.find(h, |&v| same(v)) {
-            Some(&v) => v,
-            None => {
-                let v = u32::try_from(positions.len()).ok()?;
-                // Rehashing reads the key back from the positions (every stored id
-                // indexes one).
-                index.insert_unique(h, v, |&u| {
-                    positions
-                        .get(u as usize)
-                        .map_or(0, |q| hasher.hash_one(q.map(f64::to_bits)))
-                });
-                positions.push(p);
-                v
+        let mask = self.slots.len() - 1;
+        let tag = h >> 32;
+        let mut i = h as usize & mask;
+        let v = loop {
+            let s = self.slots[i];
+            if s == EMPTY {
+                let v = u32::try_from(self.positions.len())
+                    .ok()
+                    .filter(|&v| v != u32::MAX)?;
+                self.positions.push(p);
+                if 2 * self.positions.len() > self.slots.len() {
+                    self.grow();
+                } else {
+                    self.slots[i] = tag << 32 | u64::from(v);
+                }
+                break v;
             }
+            if s >> 32 == tag && same(&self.positions, s as u32) {
+                break s as u32;
+            }
+            i = (i + 1) & mask;
         };
-        recent[slot] = (h, v);
+        self.recent[slot] = (h, v);
         Some(v)
+    }
+
+    /// Doubles the table and places every vertex again (the new one included).
+    fn grow(&mut self) {
+        let len = Self::slots_for(self.positions.len());
+        let mut slots = vec![EMPTY; len];
+        for (v, p) in self.positions.iter().enumerate() {
+            let h = self.hash(bits(p));
+            let mut i = h as usize & (len - 1);
+            while slots[i] != EMPTY {
+                i = (i + 1) & (len - 1);
+            }
+            slots[i] = (h >> 32) << 32 | v as u64;
+        }
+        self.slots = slots;
+    }
+
+    /// Computes the hashes of the corners of `triangles` (binary STL records) into
+    /// [`Welder::hashes`] and loads the table slot of each corner the recent-lookup
+    /// cache does not hold, so that welding them next finds those slots in cache. Reads
+    /// every corner's bits as they are (a non-finite one is reported by the caller when
+    /// it welds it).
+    fn prepare(&mut self, triangles: &[u8]) {
+        self.hashes.clear();
+        for t in triangles.chunks_exact(TRIANGLE_BYTES) {
+            for k in 0..3 {
+                let h = self.hash(bits(&binary_corner(t, k)));
+                self.hashes.push(h);
+            }
+        }
+        let mask = self.slots.len() - 1;
+        let mut touched = 0u64;
+        for &h in &self.hashes {
+            if self.recent[(h >> RECENT_SHIFT) as usize].0 != h {
+                touched ^= self.slots[h as usize & mask];
+            }
+        }
+        // The loads are the point: keep them.
+        std::hint::black_box(touched);
     }
 
     fn finish(self) -> TriMesh {
         Mesh::with_positions(self.positions, self.faces)
     }
+}
+
+/// Corner `k` of a binary STL triangle record `t` (50 bytes: the normal, then the
+/// corners), as `f64` (exact: every `f32` is an `f64`).
+fn binary_corner(t: &[u8], k: usize) -> [f64; 3] {
+    let mut p = [0.0f64; 3];
+    for (j, c) in p.iter_mut().enumerate() {
+        let o = 12 + 12 * k + 4 * j;
+        *c = f64::from(f32::from_le_bytes([t[o], t[o + 1], t[o + 2], t[o + 3]]));
+    }
+    p
 }
 
 fn too_many_vertices(count: usize) -> K {
@@ -400,36 +488,36 @@ fn read_triangles(input: &mut Input<'_>, declared: u64) -> Result<TriMesh, ReadE
         }
         let take = (batch.len() / TRIANGLE_BYTES)
             .min(usize::try_from(declared - done).unwrap_or(usize::MAX));
-        for (i, t) in batch[..take * TRIANGLE_BYTES]
-            .chunks_exact(TRIANGLE_BYTES)
+        for (r, run) in batch[..take * TRIANGLE_BYTES]
+            .chunks(PREPARE_TRIANGLES * TRIANGLE_BYTES)
             .enumerate()
         {
-            let at = base + (i * TRIANGLE_BYTES) as u64;
-            let mut face = [0u32; 3];
-            for (k, slot) in face.iter_mut().enumerate() {
-                let mut p = [0.0f64; 3];
-                for (j, c) in p.iter_mut().enumerate() {
-                    // Corners start after the 12-byte normal; `o + 3 < 48 <= t.len()`.
-                    let o = 12 + 12 * k + 4 * j;
-                    let x = f32::from_le_bytes([t[o], t[o + 1], t[o + 2], t[o + 3]]);
-                    if !x.is_finite() {
+            welder.prepare(run);
+            for (i, t) in run.chunks_exact(TRIANGLE_BYTES).enumerate() {
+                let at = base + ((r * PREPARE_TRIANGLES + i) * TRIANGLE_BYTES) as u64;
+                let mut face = [0u32; 3];
+                for (k, slot) in face.iter_mut().enumerate() {
+                    let p = binary_corner(t, k);
+                    if let Some(j) = p.iter().position(|x| !x.is_finite()) {
+                        // Corners start after the 12-byte normal.
+                        let o = 12 + 12 * k + 4 * j;
                         return Err(ReadError::new(
                             K::BadNumber {
-                                token: x.to_string(),
+                                token: (p[j] as f32).to_string(),
                             },
                             super::Location::ByteOffset(at + o as u64),
                         ));
                     }
-                    *c = f64::from(x);
+                    let h = welder.hashes[3 * i + k];
+                    *slot = welder.vertex_hashed(p, h).ok_or_else(|| {
+                        ReadError::new(
+                            too_many_vertices(welder.positions.len()),
+                            super::Location::ByteOffset(at),
+                        )
+                    })?;
                 }
-                *slot = welder.vertex(p).ok_or_else(|| {
-                    ReadError::new(
-                        too_many_vertices(welder.positions.len()),
-                        super::Location::ByteOffset(at),
-                    )
-                })?;
+                welder.faces.push(face);
             }
-            welder.faces.push(face);
         }
         input.consume(take * TRIANGLE_BYTES);
         done += take as u64;
@@ -951,6 +1039,7 @@ mod tests {
         for (tris, vertices) in [(octa(1.0), 6), (split, 18)] {
             let mut w = Welder::with_capacity(tris.len());
             let room = w.positions.capacity();
+            let slots = w.slots.len();
             assert_eq!(room, vertices + 1);
             for t in &tris {
                 let f = t.map(|p| w.vertex(p).unwrap());
@@ -958,7 +1047,60 @@ mod tests {
             }
             assert_eq!(w.positions.len(), vertices);
             assert_eq!(w.positions.capacity(), room);
+            assert_eq!(w.slots.len(), slots, "the table did not grow");
+            assert!(2 * vertices <= slots);
             assert_eq!(w.faces.capacity(), tris.len());
+        }
+    }
+
+    /// Welding is by exact bits with ids in order of first appearance: against a naive
+    /// map on random triangle soups whose corners are drawn from pools small and large (so
+    /// that positions repeat near and far, the recent-lookup cache misses, and the table
+    /// grows past its estimate of half as many vertices as triangles), with `0.0` and
+    /// `-0.0` apart; read from memory and streamed (batches and prepared runs cut
+    /// anywhere).
+    #[test]
+    fn welding_matches_a_naive_map() {
+        let mut rng = crate::rng::Rng::new(7);
+        for (triangles, pool) in [(1, 3), (40, 5), (700, 60), (3000, 9000), (3000, 400)] {
+            let points: Vec<[f32; 3]> = (0..pool)
+                .map(|i| match i {
+                    0 => [0.0, 0.0, 0.0],
+                    1 => [-0.0, 0.0, 0.0],
+                    _ => [(); 3].map(|_| rng.below(40) as f32 * 0.375 - 7.0),
+                })
+                .collect();
+            let tris: Vec<[[f32; 3]; 3]> = (0..triangles)
+                .map(|_| [(); 3].map(|_| points[rng.index(pool)]))
+                .collect();
+            let mut ids = std::collections::HashMap::new();
+            let mut positions = Vec::new();
+            let faces: Vec<[u32; 3]> = tris
+                .iter()
+                .map(|t| {
+                    t.map(|p| {
+                        *ids.entry(p.map(f32::to_bits)).or_insert_with(|| {
+                            positions.push(p.map(f64::from));
+                            positions.len() as u32 - 1
+                        })
+                    })
+                })
+                .collect();
+            let bytes = binary(&tris, triangles as u32);
+            let streamed = super::parse_stl(&mut Input::new(
+                Box::new(std::io::Cursor::new(bytes.clone())),
+                false,
+                None,
+            ));
+            for mesh in [parse_stl(&bytes).unwrap(), streamed.unwrap()] {
+                assert_eq!(
+                    mesh.faces, faces,
+                    "{triangles} triangles from {pool} points"
+                );
+                let got = mesh.positions.unwrap();
+                assert_eq!(got.len(), positions.len());
+                assert!(got.iter().zip(&positions).all(|(a, b)| bits(a) == bits(b)));
+            }
         }
     }
 
