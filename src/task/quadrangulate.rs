@@ -1,7 +1,7 @@
 //! [`quadrangulate`]: a quad mesh on the same vertices, by a perfect pairing of the
 //! triangles of every component.
 
-use crate::core::Triangulation;
+use crate::core::{FaceId, Triangulation, VertexId};
 use crate::mesh::{QuadMesh, TriMesh};
 use crate::quad::{self, Algorithm, Quadrangulation, DS_NAIVE_MAX_FACES};
 use crate::topology::SurfaceType;
@@ -171,12 +171,35 @@ pub struct QuadResult {
 pub fn verify_quadrangulation(input: &Triangulation, q: &Quadrangulation) -> bool {
     let k = &q.tri;
     let same_surface = *k == *input
-        || (k.validate().is_ok()
-            && k.vertex_count() == input.vertex_count()
-            && k.face_count() == input.face_count()
-            && k.vertices().eq(input.vertices())
-            && SurfaceType::of(k) == SurfaceType::of(input));
-    if !same_surface || 2 * q.pairing.len() != k.face_count() {
+        || (k.vertex_count() == input.vertex_count()
+            && same_surface_from_scratch(
+                k,
+                input.vertices(),
+                input.face_count(),
+                SurfaceType::of(input),
+            ));
+    same_surface && pairs_share_edges(q)
+}
+
+/// `k` validates from scratch and has the vertices `vertices`, `faces` faces and the
+/// surface type `surface`.
+fn same_surface_from_scratch(
+    k: &Triangulation,
+    vertices: impl Iterator<Item = VertexId>,
+    faces: usize,
+    surface: SurfaceType,
+) -> bool {
+    k.validate().is_ok()
+        && k.face_count() == faces
+        && k.vertices().eq(vertices)
+        && SurfaceType::of(k) == surface
+}
+
+/// `q`'s pairing is perfect on its triangulation `K` and the two faces of every pair
+/// share two vertices in `K`'s face lists (so, in a valid triangulation, an edge).
+fn pairs_share_edges(q: &Quadrangulation) -> bool {
+    let k = &q.tri;
+    if 2 * q.pairing.len() != k.face_count() {
         return false;
     }
     let mut seen = vec![false; k.face_capacity()];
@@ -192,6 +215,53 @@ pub fn verify_quadrangulation(input: &Triangulation, q: &Quadrangulation) -> boo
         }
     }
     true
+}
+
+/// What the task keeps of a component while its triangulation is converted (the
+/// triangulation itself is handed to the algorithm, not copied): where its vertices and
+/// faces come from in the mesh, and its surface type.
+struct Origin {
+    vertex_origin: Vec<u32>,
+    face_origin: Vec<u32>,
+    surface: SurfaceType,
+}
+
+/// [`verify_quadrangulation`] for a component of `mesh` converted without a copy of its
+/// triangulation: `K`'s faces are the mesh's faces of the component (through the
+/// origins; the mesh was validated when the component was built from it), or `K`
+/// validates from scratch and has the component's vertices, face count and surface type;
+/// and the pairing is perfect with every pair sharing an edge of `K`. The task's output
+/// (quads, triangles, pairs) is read from `K`'s face lists and the pairing alone, which
+/// is what this checks.
+fn verify_component(mesh: &TriMesh, origin: &Origin, q: &Quadrangulation) -> bool {
+    let k = &q.tri;
+    let (n, m) = (origin.vertex_origin.len(), origin.face_origin.len());
+    let faces_unchanged = k.face_capacity() == m
+        && k.face_count() == m
+        && origin.face_origin.iter().enumerate().all(|(f, &g)| {
+            let got = k
+                .face_vertices(FaceId(f as u32))
+                .map(|v| origin.vertex_origin.get(v.index()).copied());
+            mesh.faces.get(g as usize).map(|w| w.map(Some)) == Some(got)
+        });
+    let same_surface = faces_unchanged
+        || same_surface_from_scratch(k, (0..n as u32).map(VertexId), m, origin.surface);
+    same_surface && pairs_share_edges(q)
+}
+
+/// The quad of two triangles `f` and `g` sharing an edge, from their vertex lists:
+/// `[c, a, d, b]` where `f = (c, a, b)` in slot order from `c`, its vertex not in `g`,
+/// and `d` is `g`'s vertex not in `f` ([`quad::quad_of`]'s quad, without the
+/// triangulation's adjacency). `None` if they share no two vertices.
+fn quad_of_faces(f: [u32; 3], g: [u32; 3]) -> Option<[u32; 4]> {
+    let k = (0..3).find(|&i| !g.contains(&f[i]))?;
+    let d = *g.iter().find(|v| !f.contains(v))?;
+    (f.iter().filter(|v| g.contains(v)).count() == 2).then_some([
+        f[k],
+        f[(k + 1) % 3],
+        d,
+        f[(k + 2) % 3],
+    ])
 }
 
 /// A quad mesh on the vertices of `mesh`, a union of closed surfaces (orientable or
@@ -244,39 +314,45 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
     let qopts = quad::Options { seed: options.seed };
     let items = surfaces
         .components
-        .iter()
+        .into_iter()
         .map(|c| (c.tri.face_count(), c))
         .collect();
+    // Each component's triangulation is moved into its algorithm: the check reads the
+    // input's faces from the mesh instead of from a copy (28 bytes a triangle).
     let done = monitor.each_component(Step::Run, options.parallel, items, |i, c, observer| {
-        quad::convert_observed(c.tri.clone(), algorithm, &qopts, observer).map_err(|source| {
-            match source {
-                quad::ConvertError::TooLarge { faces, limit, .. } => Error::TooLarge {
-                    algorithm,
-                    component: i,
-                    faces,
-                    limit,
-                },
-                source => Error::Convert {
-                    component: i,
-                    source,
-                },
-            }
-        })
+        let origin = Origin {
+            surface: SurfaceType::of(&c.tri),
+            vertex_origin: c.vertex_origin,
+            face_origin: c.face_origin,
+        };
+        match quad::convert_observed(c.tri, algorithm, &qopts, observer) {
+            Ok(q) => Ok((origin, q)),
+            Err(quad::ConvertError::TooLarge { faces, limit, .. }) => Err(Error::TooLarge {
+                algorithm,
+                component: i,
+                faces,
+                limit,
+            }),
+            Err(source) => Err(Error::Convert {
+                component: i,
+                source,
+            }),
+        }
     })?;
     let mut verdicts = vec![true; n];
     let mut seconds_verify = None;
     if options.verify {
         let started = std::time::Instant::now();
-        let items = surfaces
-            .components
+        let items = done
             .iter()
-            .zip(&done)
-            .map(|(c, q)| (q.tri.face_count(), (c, q)))
+            .map(|(origin, q)| (q.tri.face_count(), (origin, q)))
             .collect();
-        verdicts =
-            monitor.each_component(Step::Verify, options.parallel, items, |_, (c, q), _| {
-                Ok(verify_quadrangulation(&c.tri, q))
-            })?;
+        verdicts = monitor.each_component(
+            Step::Verify,
+            options.parallel,
+            items,
+            |_, (origin, q), _| Ok(verify_component(mesh, origin, q)),
+        )?;
         seconds_verify = Some(started.elapsed().as_secs_f64());
         let bad: Vec<usize> = (0..n).filter(|&i| !verdicts[i]).collect();
         if !bad.is_empty() {
@@ -293,24 +369,28 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
     let mut pairs: Vec<[u32; 2]> = Vec::with_capacity(mesh.faces.len() / 2);
     let mut triangles = mesh.faces.clone();
     let mut components = Vec::with_capacity(n);
-    for ((c, q), ok) in surfaces.components.iter().zip(&done).zip(verdicts) {
+    for ((origin, q), ok) in done.iter().zip(verdicts) {
+        let in_mesh = |f: FaceId| {
+            q.tri
+                .face_vertices(f)
+                .map(|v| origin.vertex_origin[v.index()])
+        };
         for (f, g) in q.pairing.pairs() {
-            let Some(quad) = quad::quad_of(&q.tri, f, g) else {
+            let Some(quad) = quad_of_faces(in_mesh(f), in_mesh(g)) else {
                 return Err(Error::Unverified {
                     task: "quad",
                     components: vec![components.len()],
                     detail: format!("pair {f}, {g} shares no edge"),
                 });
             };
-            quads.push(quad.map(|v| c.vertex_origin[v as usize]));
-            pairs.push([c.face_origin[f.index()], c.face_origin[g.index()]]);
+            quads.push(quad);
+            pairs.push([origin.face_origin[f.index()], origin.face_origin[g.index()]]);
         }
         for f in q.tri.faces() {
-            let vs = q.tri.face_vertices(f).map(|v| c.vertex_origin[v.index()]);
-            triangles[c.face_origin[f.index()] as usize] = vs;
+            triangles[origin.face_origin[f.index()] as usize] = in_mesh(f);
         }
         components.push(QuadComponent {
-            stats: QuadStats::of(q, SurfaceType::of(&c.tri), ok),
+            stats: QuadStats::of(q, origin.surface, ok),
         });
     }
     let stats: Vec<QuadStats> = components.iter().map(|c| c.stats.clone()).collect();
@@ -440,6 +520,110 @@ mod tests {
                 "faces sharing no edge"
             );
         }
+    }
+
+    /// The task's own check, which keeps no copy of the input triangulation, accepts
+    /// every algorithm's conversion of a mesh component (LRS's by the from-scratch path)
+    /// and refuses a conversion of another surface with the same counts, a triangulation
+    /// whose faces were corrupted, and pairings that are not perfect or pair faces
+    /// sharing no edge. A corrupted adjacency array under unchanged faces is accepted:
+    /// the output is read from the face lists and the pairing alone.
+    #[test]
+    fn the_component_check_accepts_conversions_and_refuses_wrong_ones() {
+        use crate::gen::random::{random, RandomParams, SurfaceKind};
+        use crate::quad::{convert, fixtures::face_not_adjacent_to, Options};
+        let surface = |surface| {
+            random(&RandomParams {
+                surface,
+                min_faces: 200,
+                flip_percent: 50,
+                seed: 5,
+            })
+            .expect("a random surface")
+        };
+        let (torus, klein) = (
+            surface(SurfaceKind::Orientable(1)),
+            surface(SurfaceKind::NonOrientable(2)),
+        );
+        // The torus as the second component of a mesh, so that the origins are not
+        // the identity.
+        let mut faces = gen::octahedron().faces;
+        faces.extend(torus.to_mesh().faces.iter().map(|f| f.map(|v| v + 6)));
+        let mesh = TriMesh::combinatorial(6 + torus.vertex_count(), faces);
+        let c = crate::core::Surfaces::from_mesh(&mesh)
+            .expect("closed surfaces")
+            .components
+            .remove(1);
+        let origin = Origin {
+            surface: SurfaceType::of(&c.tri),
+            vertex_origin: c.vertex_origin,
+            face_origin: c.face_origin,
+        };
+        assert_eq!(origin.face_origin[0], 8);
+        let opts = Options { seed: 1 };
+        for algorithm in Algorithm::ALL {
+            let q = convert(c.tri.clone(), algorithm, &opts).expect("converted");
+            assert!(verify_component(&mesh, &origin, &q), "{algorithm}");
+        }
+        let lrs = convert(c.tri.clone(), Algorithm::Lrs, &opts).expect("converted");
+        assert!(lrs.tri != c.tri, "LRS flipped no edge on this input");
+        let ps = convert(c.tri.clone(), Algorithm::PulliSegal, &opts).expect("converted");
+
+        let other = convert(klein, Algorithm::PulliSegal, &opts).expect("converted");
+        assert!(!verify_component(&mesh, &origin, &other), "another surface");
+
+        let mut broken = ps.clone();
+        broken.tri.corner_vertex[0] = broken.tri.corner_vertex[1];
+        assert!(
+            !verify_component(&mesh, &origin, &broken),
+            "a corrupted face"
+        );
+        let mut adjacency = ps.clone();
+        adjacency.tri.degree[0] += 1;
+        assert!(verify_component(&mesh, &origin, &adjacency));
+
+        for q in [&lrs, &ps] {
+            let f = q.tri.faces().next().expect("a face");
+            let mut short = q.clone();
+            short.pairing.unpair(f);
+            assert!(!verify_component(&mesh, &origin, &short), "a pair missing");
+            let mut far = q.clone();
+            let g = face_not_adjacent_to(&q.tri, f);
+            let (f2, g2) = (
+                far.pairing.unpair(f).expect("paired"),
+                far.pairing.unpair(g).expect("paired"),
+            );
+            far.pairing.pair(f, g);
+            far.pairing.pair(f2, g2);
+            assert!(
+                !verify_component(&mesh, &origin, &far),
+                "faces sharing no edge"
+            );
+        }
+    }
+
+    /// The quad read from two face lists is `quad::quad_of`'s, read from the
+    /// triangulation's adjacency, on every pair of every algorithm's conversion (LRS's
+    /// flipped faces included); faces sharing fewer than two vertices have none.
+    #[test]
+    fn quads_from_face_lists_are_the_adjacency_quads() {
+        let torus = gen::torus7();
+        let tri = Triangulation::from_faces(torus.vertex_count, &torus.faces).expect("a torus");
+        let opts = quad::Options { seed: 2 };
+        for algorithm in Algorithm::ALL {
+            let q = quad::convert(tri.clone(), algorithm, &opts).expect("converted");
+            let faces = |f: FaceId| q.tri.face_vertices(f).map(|v| v.0);
+            for (f, g) in q.pairing.pairs() {
+                assert_eq!(
+                    quad_of_faces(faces(f), faces(g)),
+                    quad::quad_of(&q.tri, f, g),
+                    "{algorithm}"
+                );
+            }
+        }
+        assert_eq!(quad_of_faces([0, 1, 2], [2, 3, 4]), None);
+        assert_eq!(quad_of_faces([0, 1, 2], [3, 4, 5]), None);
+        assert_eq!(quad_of_faces([0, 1, 2], [2, 1, 3]), Some([0, 1, 3, 2]));
     }
 
     /// A component above ds-naive's limit is refused, located, before any work.
