@@ -1,7 +1,9 @@
 """contractible: topology-preserving edge contraction on triangulated surfaces.
 
-NumPy in, NumPy out. ``V`` is a float64 array of shape (n, 3) (optional where the
-algorithm is combinatorial), ``F`` an integer array of shape (m, 3). Any object with
+NumPy in, NumPy out. ``V`` is a real array of shape (n, 3) (optional where the
+algorithm is combinatorial), ``F`` an integer array of shape (m, 3). C-contiguous
+float64 or float32 ``V`` and int64, int32 or uint32 ``F`` are read where they are, with
+no converted copy; other dtypes and layouts are converted first. Any object with
 ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``, say) is accepted in place of
 ``(V, F)``.
 
@@ -47,8 +49,14 @@ __all__ = [
 __version__ = _native.__version__
 
 
+# Index and coordinate dtypes the native functions read as they are (native byte order).
+_INDEX_DTYPES = (np.dtype(np.int64), np.dtype(np.int32), np.dtype(np.uint32))
+_REAL_DTYPES = (np.dtype(np.float64), np.dtype(np.float32))
+
+
 def _faces(F: Any, corners: Tuple[int, ...] = (3,)) -> np.ndarray:
-    """F as a C-contiguous int64 (m, k) array; ValueError for anything else."""
+    """F as a C-contiguous (m, k) array of int64, int32 or uint32 (the caller's array
+    itself when it is one already, else an int64 copy); ValueError for anything else."""
     a = np.asarray(F)
     if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
         raise ValueError(f"faces must be an integer array, got dtype {a.dtype}")
@@ -59,11 +67,14 @@ def _faces(F: Any, corners: Tuple[int, ...] = (3,)) -> np.ndarray:
         bad = int(np.argmax(a.max(axis=1) > np.iinfo(np.int64).max))
         raise MeshError(f"face {bad}: vertex index out of range", "vertex_out_of_range",
                         {"face": bad})
+    if a.dtype in _INDEX_DTYPES:
+        return np.ascontiguousarray(a)
     return np.ascontiguousarray(a, dtype=np.int64)
 
 
 def _vertices(V: Any) -> Optional[np.ndarray]:
-    """V as a C-contiguous float64 (n, 3) array, or None; ValueError for anything else."""
+    """V as a C-contiguous (n, 3) array of float64 or float32 (the caller's array itself
+    when it is one already, else a float64 copy), or None; ValueError for anything else."""
     if V is None:
         return None
     a = np.asarray(V)
@@ -71,6 +82,8 @@ def _vertices(V: Any) -> Optional[np.ndarray]:
         raise ValueError(f"vertices must be a real array, got dtype {a.dtype}")
     if a.ndim != 2 or a.shape[1] != 3:
         raise ValueError(f"vertices must have shape (n, 3), got {a.shape}")
+    if a.dtype in _REAL_DTYPES:
+        return np.ascontiguousarray(a)
     return np.ascontiguousarray(a, dtype=np.float64)
 
 

@@ -9,6 +9,9 @@ __version__: str
 
 _F64 = npt.NDArray[np.float64]
 _I64 = npt.NDArray[np.int64]
+# What the functions read in place (C-contiguous); the wrapper converts anything else.
+_Coords = Union[npt.NDArray[np.float64], npt.NDArray[np.float32]]
+_Indices = Union[npt.NDArray[np.int64], npt.NDArray[np.int32], npt.NDArray[np.uint32]]
 _Path = Union[str, PathLike[str]]
 
 class History:
@@ -17,15 +20,15 @@ class History:
     def expand(self, steps: Optional[int] = None) -> _I64: ...
 
 def read(path: _Path) -> Tuple[Optional[_F64], _I64, int]: ...
-def write(path: _Path, vertices: Optional[_F64], faces: _I64,
+def write(path: _Path, vertices: Optional[_Coords], faces: _Indices,
           vertex_count: Optional[int] = None) -> None: ...
-def info(vertices: Optional[_F64], faces: _I64,
+def info(vertices: Optional[_Coords], faces: _Indices,
          vertex_count: Optional[int] = None) -> Dict[str, Any]: ...
-def reduce(vertices: Optional[_F64], faces: _I64, algo: str = "rs", seed: int = 0,
+def reduce(vertices: Optional[_Coords], faces: _Indices, algo: str = "rs", seed: int = 0,
            vertex_count: Optional[int] = None,
            count_retests: bool = False, parallel: bool = False) -> Dict[str, Any]: ...
-def quad(vertices: Optional[_F64], faces: _I64, algo: str = "lrs", seed: int = 0,
+def quad(vertices: Optional[_Coords], faces: _Indices, algo: str = "lrs", seed: int = 0,
          vertex_count: Optional[int] = None, parallel: bool = False) -> Dict[str, Any]: ...
-def simplify(vertices: Optional[_F64], faces: _I64, eps: float, relative: bool = False,
+def simplify(vertices: Optional[_Coords], faces: _Indices, eps: float, relative: bool = False,
              mode: str = "nested", side: str = "count", position: str = "midpoint",
              guard: bool = True, parallel: bool = False) -> Dict[str, Any]: ...

@@ -26,7 +26,9 @@
 //!   the keys of its `--json` output, timings of reading and writing files aside).
 //!
 //! The public Python API (`python/contractible/__init__.py`) wraps these functions: it
-//! converts dtypes, accepts trimesh-like objects and builds the result objects.
+//! passes int64, int32 and uint32 faces and float64 and float32 vertices as they are
+//! (C-contiguous), converts other dtypes, accepts trimesh-like objects and builds the
+//! result objects.
 
 use std::path::{Path, PathBuf};
 
@@ -156,14 +158,51 @@ fn raise(py: Python<'_>, e: &Error, file: Option<&Path>) -> PyErr {
     mesh_error(py, e.kind(), message, &location)
 }
 
-/// The caller's `(n, 3)` positions, checked finite, copied out.
+/// Face indices as the caller's array holds them (int64, int32 or uint32, C-contiguous
+/// or not), read where they are: no converted copy is made before they are narrowed to
+/// the library's `u32`.
+#[derive(FromPyObject)]
+enum Indices<'py> {
+    I64(PyReadonlyArray2<'py, i64>),
+    I32(PyReadonlyArray2<'py, i32>),
+    U32(PyReadonlyArray2<'py, u32>),
+}
+
+impl Indices<'_> {
+    fn shape(&self) -> [usize; 2] {
+        let s = match self {
+            Indices::I64(a) => a.shape(),
+            Indices::I32(a) => a.shape(),
+            Indices::U32(a) => a.shape(),
+        };
+        [s[0], s[1]]
+    }
+}
+
+/// Vertex positions as the caller's array holds them (float64 or float32), read where
+/// they are into the library's `f64` positions.
+#[derive(FromPyObject)]
+enum Coordinates<'py> {
+    F64(PyReadonlyArray2<'py, f64>),
+    F32(PyReadonlyArray2<'py, f32>),
+}
+
+/// The caller's `(n, 3)` positions, checked finite, copied out as `f64`.
 fn positions(
     py: Python<'_>,
-    vertices: Option<&PyReadonlyArray2<'_, f64>>,
+    vertices: Option<&Coordinates<'_>>,
 ) -> PyResult<Option<Vec<[f64; 3]>>> {
-    let Some(v) = vertices else {
-        return Ok(None);
-    };
+    match vertices {
+        None => Ok(None),
+        Some(Coordinates::F64(v)) => positions_of(py, v).map(Some),
+        Some(Coordinates::F32(v)) => positions_of(py, v).map(Some),
+    }
+}
+
+fn positions_of<T: numpy::Element + Copy + Into<f64>>(
+    py: Python<'_>,
+    v: &PyReadonlyArray2<'_, T>,
+) -> PyResult<Vec<[f64; 3]>> {
     let s = v.shape();
     if s[1] != 3 {
         return Err(PyValueError::new_err(format!(
@@ -173,7 +212,7 @@ fn positions(
     }
     let mut out = Vec::with_capacity(s[0]);
     for (vertex, row) in v.as_array().outer_iter().enumerate() {
-        let p = [row[0], row[1], row[2]];
+        let p: [f64; 3] = [row[0].into(), row[1].into(), row[2].into()];
         if let Some(k) = (0..3).find(|&k| !p[k].is_finite()) {
             let e = Error::NonFiniteCoordinate {
                 vertex,
@@ -184,57 +223,39 @@ fn positions(
         }
         out.push(p);
     }
-    Ok(Some(out))
+    Ok(out)
 }
 
-/// A mesh of `N`-corner faces copied out of the caller's arrays, checked: `faces` is
-/// `(m, N)`, `vertices` (when given) `(n, 3)` and finite, every index in `0..n`. Without
-/// vertices, `n` is `vertex_count` or one more than the largest index.
-fn mesh<const N: usize>(
+/// The caller's indices as one flat slice when C-contiguous (the wrapper passes them so),
+/// else copied row by row, given to `f`.
+fn with_values<T: numpy::Element + Copy, R>(
+    a: &PyReadonlyArray2<'_, T>,
+    f: impl FnOnce(&[T]) -> R,
+) -> R {
+    let view = a.as_array();
+    match view.as_slice() {
+        Some(s) => f(s),
+        None => f(&view.iter().copied().collect::<Vec<T>>()),
+    }
+}
+
+/// One more than the largest index (0 for none; negative indices count as none).
+fn implied_vertex_count<T: Copy + Into<i64>>(values: &[T]) -> usize {
+    let max = values.iter().map(|&x| x.into()).max().unwrap_or(-1);
+    usize::try_from(max.saturating_add(1)).unwrap_or(0)
+}
+
+/// The faces of `values` (rows of `N` indices), every index checked in `0..n`.
+fn face_list<const N: usize, T: Copy + Into<i64>>(
     py: Python<'_>,
-    vertices: Option<&PyReadonlyArray2<'_, f64>>,
-    faces: &PyReadonlyArray2<'_, i64>,
-    vertex_count: Option<usize>,
-) -> PyResult<Mesh<N>> {
-    let shape = faces.shape();
-    if shape[1] != N {
-        return Err(PyValueError::new_err(format!(
-            "faces must have shape (m, {N}), got ({}, {})",
-            shape[0], shape[1]
-        )));
-    }
-    let positions = positions(py, vertices)?;
-    let n = match (&positions, vertex_count) {
-        (Some(p), _) => p.len(),
-        (None, Some(n)) => n,
-        (None, None) => {
-            let max = faces.as_array().iter().copied().max().unwrap_or(-1);
-            usize::try_from(max.saturating_add(1)).unwrap_or(0)
-        }
-    };
-    if n > MAX_VERTICES {
-        let e = BuildError::TooLarge {
-            what: "vertices",
-            count: n,
-            max: MAX_VERTICES,
-        };
-        return Err(raise(py, &Error::Mesh(e), None));
-    }
-    let view = faces.as_array();
-    // The wrapper passes C-contiguous arrays: read them as one flat slice (fast); any
-    // other layout row by row.
-    let flat: Vec<i64>;
-    let values: &[i64] = match view.as_slice() {
-        Some(s) => s,
-        None => {
-            flat = view.iter().copied().collect();
-            &flat
-        }
-    };
-    let mut list = Vec::with_capacity(shape[0]);
+    values: &[T],
+    n: usize,
+) -> PyResult<Vec<[u32; N]>> {
+    let mut list = Vec::with_capacity(values.len() / N);
     for (i, row) in values.chunks_exact(N).enumerate() {
         let mut f = [0u32; N];
         for (slot, &x) in f.iter_mut().zip(row) {
+            let x: i64 = x.into();
             *slot = match u32::try_from(x) {
                 Ok(x) if (x as usize) < n => x,
                 // The index may not fit the library's type: located here.
@@ -250,6 +271,48 @@ fn mesh<const N: usize>(
         }
         list.push(f);
     }
+    Ok(list)
+}
+
+/// A mesh of `N`-corner faces copied out of the caller's arrays, checked: `faces` is
+/// `(m, N)`, `vertices` (when given) `(n, 3)` and finite, every index in `0..n`. Without
+/// vertices, `n` is `vertex_count` or one more than the largest index.
+fn mesh<const N: usize>(
+    py: Python<'_>,
+    vertices: Option<&Coordinates<'_>>,
+    faces: &Indices<'_>,
+    vertex_count: Option<usize>,
+) -> PyResult<Mesh<N>> {
+    let shape = faces.shape();
+    if shape[1] != N {
+        return Err(PyValueError::new_err(format!(
+            "faces must have shape (m, {N}), got ({}, {})",
+            shape[0], shape[1]
+        )));
+    }
+    let positions = positions(py, vertices)?;
+    let n = match (&positions, vertex_count) {
+        (Some(p), _) => p.len(),
+        (None, Some(n)) => n,
+        (None, None) => match faces {
+            Indices::I64(a) => with_values(a, implied_vertex_count),
+            Indices::I32(a) => with_values(a, implied_vertex_count),
+            Indices::U32(a) => with_values(a, implied_vertex_count),
+        },
+    };
+    if n > MAX_VERTICES {
+        let e = BuildError::TooLarge {
+            what: "vertices",
+            count: n,
+            max: MAX_VERTICES,
+        };
+        return Err(raise(py, &Error::Mesh(e), None));
+    }
+    let list = match faces {
+        Indices::I64(a) => with_values(a, |v| face_list::<N, i64>(py, v, n)),
+        Indices::I32(a) => with_values(a, |v| face_list::<N, i32>(py, v, n)),
+        Indices::U32(a) => with_values(a, |v| face_list::<N, u32>(py, v, n)),
+    }?;
     Ok(Mesh {
         vertex_count: n,
         positions,
@@ -317,8 +380,8 @@ fn read(py: Python<'_>, path: PathBuf) -> PyResult<ReadResult<'_>> {
 fn write(
     py: Python<'_>,
     path: PathBuf,
-    vertices: Option<PyReadonlyArray2<'_, f64>>,
-    faces: PyReadonlyArray2<'_, i64>,
+    vertices: Option<Coordinates<'_>>,
+    faces: Indices<'_>,
     vertex_count: Option<usize>,
 ) -> PyResult<()> {
     let r = match faces.shape()[1] {
@@ -345,8 +408,8 @@ fn write(
 #[pyo3(signature = (vertices, faces, vertex_count=None))]
 fn info<'py>(
     py: Python<'py>,
-    vertices: Option<PyReadonlyArray2<'py, f64>>,
-    faces: PyReadonlyArray2<'py, i64>,
+    vertices: Option<Coordinates<'py>>,
+    faces: Indices<'py>,
     vertex_count: Option<usize>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let mesh = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
@@ -481,8 +544,8 @@ fn task_stats<'py, 'a, T: serde::Serialize + 'a>(
 #[allow(clippy::too_many_arguments)]
 fn reduce<'py>(
     py: Python<'py>,
-    vertices: Option<PyReadonlyArray2<'py, f64>>,
-    faces: PyReadonlyArray2<'py, i64>,
+    vertices: Option<Coordinates<'py>>,
+    faces: Indices<'py>,
     algo: &str,
     seed: u64,
     vertex_count: Option<usize>,
@@ -535,8 +598,8 @@ fn reduce<'py>(
 #[pyo3(signature = (vertices, faces, algo="lrs", seed=0, vertex_count=None, parallel=false))]
 fn quad_py<'py>(
     py: Python<'py>,
-    vertices: Option<PyReadonlyArray2<'py, f64>>,
-    faces: PyReadonlyArray2<'py, i64>,
+    vertices: Option<Coordinates<'py>>,
+    faces: Indices<'py>,
     algo: &str,
     seed: u64,
     vertex_count: Option<usize>,
@@ -579,8 +642,8 @@ fn quad_py<'py>(
 #[allow(clippy::too_many_arguments)]
 fn simplify_py<'py>(
     py: Python<'py>,
-    vertices: Option<PyReadonlyArray2<'py, f64>>,
-    faces: PyReadonlyArray2<'py, i64>,
+    vertices: Option<Coordinates<'py>>,
+    faces: Indices<'py>,
     eps: f64,
     relative: bool,
     mode: &str,

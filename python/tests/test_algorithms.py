@@ -343,6 +343,43 @@ def test_results_are_deterministic(mesh_file):
         assert np.array_equal(f(), f())
 
 
+def test_index_and_coordinate_dtypes_give_the_same_results(mesh_file):
+    """int64, int32 and uint32 faces and float64 and float32 vertices are read as they
+    are (the wrapper passes the caller's C-contiguous array itself, no converted copy);
+    other dtypes, byte orders and layouts are converted. Every combination gives the
+    results of float64/int64 arrays holding the same values."""
+    V, F = c.read(mesh_file("plate_holes_stl"))
+    V32 = V.astype(np.float32)
+    reference = {}
+    for name, Vr in [("float64", V32.astype(np.float64)), ("float32", V32)]:
+        reduced = c.reduce(Vr, F, algo="brute", seed=3)
+        quad = c.quad(Vr, F, algo="ps", seed=3)
+        simple = c.simplify(Vr, F, eps_rel=0.02)
+        got = (reduced.faces, reduced.vertices.astype(np.float64), quad.quads, quad.pairs,
+               simple.faces, simple.vertices)
+        reference.setdefault("all", got)
+        for a, b in zip(reference["all"], got):
+            assert np.array_equal(a, b), name
+    for dtype in [np.int32, np.uint32, np.int64]:
+        Fd = F.astype(dtype)
+        assert c._faces(Fd) is Fd
+    for dtype in [np.float32, np.float64]:
+        Vd = V.astype(dtype)
+        assert c._vertices(Vd) is Vd
+    variants = [F.astype(np.int32), F.astype(np.uint32), F.astype(np.int16),
+                F.astype(">i4"), np.asfortranarray(F.astype(np.int32)), F.astype(np.uint64)]
+    for Fd in variants:
+        assert np.array_equal(c.reduce(V, Fd, algo="brute", seed=3).faces,
+                              c.reduce(V, F, algo="brute", seed=3).faces), Fd.dtype
+        assert np.array_equal(c.quad(None, Fd, algo="ps", seed=3).pairs,
+                              c.quad(None, F, algo="ps", seed=3).pairs), Fd.dtype
+    for Vd in [V.astype(">f8"), np.asfortranarray(V), V.astype(np.float16)]:
+        expected = c.simplify(Vd.astype(np.float64), F, eps_rel=0.02)
+        got = c.simplify(Vd, F, eps_rel=0.02)
+        assert np.array_equal(got.faces, expected.faces), Vd.dtype
+        assert np.array_equal(got.vertices, expected.vertices), Vd.dtype
+
+
 # ------------------------------------------------------------------------ corpus
 
 @pytest.mark.corpus

@@ -49,9 +49,12 @@ def test_bad_vertex_arrays_raise_value_error(f, V):
 
 
 @pytest.mark.parametrize("f", EVERY, ids=NAMES)
-@pytest.mark.parametrize("bad", [-1, 6, 2**40, -2**63])
-def test_out_of_range_index_names_the_face(f, bad):
-    F = OCT_F.copy()
+@pytest.mark.parametrize("bad,dtype", [(-1, np.int64), (6, np.int64), (2**40, np.int64),
+                                       (-2**63, np.int64), (-1, np.int32),
+                                       (2**31 - 1, np.int32), (6, np.uint32),
+                                       (2**32 - 1, np.uint32)])
+def test_out_of_range_index_names_the_face(f, bad, dtype):
+    F = OCT_F.astype(dtype)
     F[5, 1] = bad
     with pytest.raises(c.MeshError) as e:
         f(OCT_V, F)
