@@ -1104,6 +1104,38 @@ mod tests {
         }
     }
 
+    /// The table grows exactly when it would be more than half full, and keeps every
+    /// vertex; positions whose hashes collide entirely (the same hash given for each, as
+    /// the table's tag and the recent-lookup cache both see it) stay apart, and are found
+    /// again.
+    #[test]
+    fn the_table_grows_past_half_full_and_tells_colliding_positions_apart() {
+        let mut w = Welder::with_capacity(10);
+        assert_eq!(w.slots.len(), 16);
+        let point = |i: usize| [i as f64, 0.5, -0.0];
+        for i in 0..8 {
+            assert_eq!(w.vertex(point(i)), Some(i as u32));
+        }
+        assert_eq!(w.slots.len(), 16, "half full: not grown");
+        assert_eq!(w.vertex(point(8)), Some(8));
+        assert_eq!(w.slots.len(), 32, "more than half full: grown");
+        for i in 0..9 {
+            assert_eq!(w.vertex(point(i)), Some(i as u32), "kept across the growth");
+        }
+        let mut w = Welder::with_capacity(2);
+        let h = 0x1234_5678_9abc_def0;
+        for round in 0..2 {
+            for i in 0..5 {
+                assert_eq!(
+                    w.vertex_hashed(point(i), h),
+                    Some(i as u32),
+                    "round {round}"
+                );
+            }
+        }
+        assert_eq!(w.positions.len(), 5);
+    }
+
     /// The count past the `u32` vertex limit is the one the file needs: every vertex
     /// welded so far and the one that does not fit.
     #[test]
