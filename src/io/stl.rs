@@ -917,6 +917,20 @@ mod tests {
         assert!(matches!(e.kind, K::BadNumber { .. }), "{e}");
         // solid, facet, outer loop, vertex 0 0 0, vertex 0 1 0, then this one.
         assert_eq!(e.location, Location::Line(6));
+        // Past the first runs the welder prepares at once, from memory and streamed.
+        let mut many: Vec<[[f32; 3]; 3]> = TETRA.iter().copied().cycle().take(700).collect();
+        many[555][1][2] = f32::INFINITY;
+        let bytes = binary(&many, 700);
+        let streamed = super::parse_stl(&mut Input::new(
+            Box::new(std::io::Cursor::new(bytes.clone())),
+            false,
+            None,
+        ));
+        for e in [err(&bytes), streamed.unwrap_err()] {
+            assert!(matches!(e.kind, K::BadNumber { .. }), "{e}");
+            // Triangle 555, corner 1, z: 84 + 555 · 50 + 12 + 12 + 8.
+            assert_eq!(e.location, Location::ByteOffset(84 + 555 * 50 + 32));
+        }
     }
 
     #[test]
