@@ -17,8 +17,9 @@ pub struct QuadOptions {
     /// Seed of the documented random stream ([`crate::rng`]) for the randomised orders
     /// of SG and PS.
     pub seed: u64,
-    /// Check every pairing independently ([`verify_quadrangulation`]) and fail with
-    /// [`Error::Unverified`] if one is wrong.
+    /// Check every pairing independently (the checks of [`verify_quadrangulation`], with
+    /// the input's faces read from the mesh) and fail with [`Error::Unverified`] if one
+    /// is wrong.
     pub verify: bool,
     /// Run the components on rayon's current thread pool (the crate's `parallel`
     /// feature; ignored without it). The result is the sequential run's, errors
