@@ -603,6 +603,59 @@ mod tests {
         }
     }
 
+    /// A pairing whose pair count is right but that names a face twice (in two pairs of
+    /// adjacent faces), or a face the triangulation does not have, is refused (not
+    /// indexed out of range). Release builds only: `Pairing::pair` debug-asserts that its
+    /// faces are unpaired and distinct.
+    #[cfg(not(debug_assertions))]
+    #[test]
+    fn pairings_naming_a_face_twice_or_a_missing_face_are_refused() {
+        let torus = gen::torus7();
+        let tri = Triangulation::from_faces(torus.vertex_count, &torus.faces).expect("a torus");
+        let q = quad::convert(
+            tri.clone(),
+            Algorithm::PulliSegal,
+            &quad::Options { seed: 1 },
+        )
+        .expect("converted");
+        assert!(verify_quadrangulation(&tri, &q));
+        // A pair (a, b) and a neighbour c < b of b other than a: c's pair is replaced by
+        // (c, b), so that `pairs` lists b twice, each time beside a face sharing an edge.
+        let (a, b, c) = q
+            .pairing
+            .pairs()
+            .find_map(|(a, b)| {
+                let c = tri
+                    .face_neighbours(b)
+                    .into_iter()
+                    .find(|&c| c != a && c < b)?;
+                Some((a, b, c))
+            })
+            .expect("a pair with such a neighbour");
+        let mut twice = q.clone();
+        twice.pairing.unpair(c);
+        twice.pairing.pair(c, b);
+        assert_eq!(twice.pairing.len(), q.pairing.len());
+        let listed = twice
+            .pairing
+            .pairs()
+            .filter(|&(f, g)| g == b && (f == a || f == c));
+        assert_eq!(listed.count(), 2);
+        assert!(!verify_quadrangulation(&tri, &twice), "a face paired twice");
+        // One face of a pair beyond the triangulation's faces.
+        let mut missing = q.clone();
+        missing.pairing = quad::Pairing::new(tri.face_capacity() + 1);
+        for (f, g) in q.pairing.pairs().filter(|&(f, _)| f != a) {
+            missing.pairing.pair(f, g);
+        }
+        missing.pairing.pair(a, FaceId(tri.face_capacity() as u32));
+        assert_eq!(missing.pairing.len(), q.pairing.len());
+        assert!(
+            !verify_quadrangulation(&tri, &missing),
+            "a face it does not have"
+        );
+    }
+
     /// The quad read from two face lists is `quad::quad_of`'s, read from the
     /// triangulation's adjacency, on every pair of every algorithm's conversion (LRS's
     /// flipped faces included); faces sharing fewer than two vertices have none.
