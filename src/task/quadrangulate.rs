@@ -457,14 +457,9 @@ mod tests {
         }
     }
 
-    /// The independent check accepts every algorithm's conversion, by its from-scratch
-    /// path too (LRS flips edges, so its triangulation is not the input's), and refuses
-    /// a conversion of another surface with the same counts, a corrupted triangulation,
-    /// and pairings that are not perfect or pair faces sharing no edge.
-    #[test]
-    fn the_quad_check_accepts_conversions_and_refuses_wrong_ones() {
+    /// A torus and a Klein bottle with the same numbers of vertices and faces.
+    fn torus_and_klein() -> (Triangulation, Triangulation) {
         use crate::gen::random::{random, RandomParams, SurfaceKind};
-        use crate::quad::{convert, fixtures::face_not_adjacent_to, Options};
         let surface = |surface| {
             random(&RandomParams {
                 surface,
@@ -474,14 +469,42 @@ mod tests {
             })
             .expect("a random surface")
         };
-        let (torus, klein) = (
+        let pair = (
             surface(SurfaceKind::Orientable(1)),
             surface(SurfaceKind::NonOrientable(2)),
         );
         assert_eq!(
-            (torus.vertex_count(), torus.face_count()),
-            (klein.vertex_count(), klein.face_count())
+            (pair.0.vertex_count(), pair.0.face_count()),
+            (pair.1.vertex_count(), pair.1.face_count())
         );
+        pair
+    }
+
+    /// Two wrong pairings made from `q`'s, each with what is wrong: a pair missing, and
+    /// two faces sharing no edge paired (their mates paired with each other).
+    fn wrong_pairings(q: &Quadrangulation) -> [(Quadrangulation, &'static str); 2] {
+        let f = q.tri.faces().next().expect("a face");
+        let mut short = q.clone();
+        short.pairing.unpair(f);
+        let mut far = q.clone();
+        let g = crate::quad::fixtures::face_not_adjacent_to(&q.tri, f);
+        let (f2, g2) = (
+            far.pairing.unpair(f).expect("paired"),
+            far.pairing.unpair(g).expect("paired"),
+        );
+        far.pairing.pair(f, g);
+        far.pairing.pair(f2, g2);
+        [(short, "a pair missing"), (far, "faces sharing no edge")]
+    }
+
+    /// The independent check accepts every algorithm's conversion, by its from-scratch
+    /// path too (LRS flips edges, so its triangulation is not the input's), and refuses
+    /// a conversion of another surface with the same counts, a corrupted triangulation,
+    /// and pairings that are not perfect or pair faces sharing no edge.
+    #[test]
+    fn the_quad_check_accepts_conversions_and_refuses_wrong_ones() {
+        use crate::quad::{convert, Options};
+        let (torus, klein) = torus_and_klein();
         let opts = Options { seed: 1 };
         for algorithm in Algorithm::ALL {
             let q = convert(torus.clone(), algorithm, &opts).expect("converted");
@@ -504,22 +527,9 @@ mod tests {
             &lrs,
             &convert(torus.clone(), Algorithm::PulliSegal, &opts).expect(""),
         ] {
-            let f = q.tri.faces().next().expect("a face");
-            let mut short = q.clone();
-            short.pairing.unpair(f);
-            assert!(!verify_quadrangulation(&torus, &short), "a pair missing");
-            let mut far = q.clone();
-            let g = face_not_adjacent_to(&q.tri, f);
-            let (f2, g2) = (
-                far.pairing.unpair(f).expect("paired"),
-                far.pairing.unpair(g).expect("paired"),
-            );
-            far.pairing.pair(f, g);
-            far.pairing.pair(f2, g2);
-            assert!(
-                !verify_quadrangulation(&torus, &far),
-                "faces sharing no edge"
-            );
+            for (wrong, what) in wrong_pairings(q) {
+                assert!(!verify_quadrangulation(&torus, &wrong), "{what}");
+            }
         }
     }
 
@@ -531,21 +541,8 @@ mod tests {
     /// the output is read from the face lists and the pairing alone.
     #[test]
     fn the_component_check_accepts_conversions_and_refuses_wrong_ones() {
-        use crate::gen::random::{random, RandomParams, SurfaceKind};
-        use crate::quad::{convert, fixtures::face_not_adjacent_to, Options};
-        let surface = |surface| {
-            random(&RandomParams {
-                surface,
-                min_faces: 200,
-                flip_percent: 50,
-                seed: 5,
-            })
-            .expect("a random surface")
-        };
-        let (torus, klein) = (
-            surface(SurfaceKind::Orientable(1)),
-            surface(SurfaceKind::NonOrientable(2)),
-        );
+        use crate::quad::{convert, Options};
+        let (torus, klein) = torus_and_klein();
         // The torus as the second component of a mesh, so that the origins are not
         // the identity.
         let mut faces = gen::octahedron().faces;
@@ -584,22 +581,9 @@ mod tests {
         assert!(verify_component(&mesh, &origin, &adjacency));
 
         for q in [&lrs, &ps] {
-            let f = q.tri.faces().next().expect("a face");
-            let mut short = q.clone();
-            short.pairing.unpair(f);
-            assert!(!verify_component(&mesh, &origin, &short), "a pair missing");
-            let mut far = q.clone();
-            let g = face_not_adjacent_to(&q.tri, f);
-            let (f2, g2) = (
-                far.pairing.unpair(f).expect("paired"),
-                far.pairing.unpair(g).expect("paired"),
-            );
-            far.pairing.pair(f, g);
-            far.pairing.pair(f2, g2);
-            assert!(
-                !verify_component(&mesh, &origin, &far),
-                "faces sharing no edge"
-            );
+            for (wrong, what) in wrong_pairings(q) {
+                assert!(!verify_component(&mesh, &origin, &wrong), "{what}");
+            }
         }
     }
 
