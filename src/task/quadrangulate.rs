@@ -371,13 +371,18 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
     let mut triangles = mesh.faces.clone();
     let mut components = Vec::with_capacity(n);
     for ((origin, q), ok) in done.iter().zip(verdicts) {
-        let in_mesh = |f: FaceId| {
-            q.tri
+        // The rows of `K` first, in mesh ids; each quad is then read from its pair's rows.
+        for f in q.tri.faces() {
+            triangles[origin.face_origin[f.index()] as usize] = q
+                .tri
                 .face_vertices(f)
-                .map(|v| origin.vertex_origin[v.index()])
-        };
+                .map(|v| origin.vertex_origin[v.index()]);
+        }
         for (f, g) in q.pairing.pairs() {
-            let Some(quad) = quad_of_faces(in_mesh(f), in_mesh(g)) else {
+            let pair = [origin.face_origin[f.index()], origin.face_origin[g.index()]];
+            let Some(quad) =
+                quad_of_faces(triangles[pair[0] as usize], triangles[pair[1] as usize])
+            else {
                 return Err(Error::Unverified {
                     task: "quad",
                     components: vec![components.len()],
@@ -385,10 +390,7 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
                 });
             };
             quads.push(quad);
-            pairs.push([origin.face_origin[f.index()], origin.face_origin[g.index()]]);
-        }
-        for f in q.tri.faces() {
-            triangles[origin.face_origin[f.index()] as usize] = in_mesh(f);
+            pairs.push(pair);
         }
         components.push(QuadComponent {
             stats: QuadStats::of(q, origin.surface, ok),
