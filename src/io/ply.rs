@@ -1156,9 +1156,14 @@ mod tests {
     fn a_header_of_the_item_limit_is_read_and_one_more_item_is_refused() {
         let mesh = read(&header_of(0), true).unwrap();
         assert_eq!((mesh.vertex_count, mesh.face_count()), (0, 0));
-        let e = parse_ply(&mut Input::from_slice(&header_of(1))).unwrap_err();
+        let e = parse_err(&header_of(1));
         assert!(matches!(e.kind, K::BadHeader(_)), "{e}");
         assert_eq!(e.location, Location::Line(MAX_HEADER_ITEMS + 3));
+    }
+
+    /// The error `parse_ply` gives on `file` (from memory).
+    fn parse_err(file: &[u8]) -> ReadError {
+        parse_ply(&mut Input::from_slice(file)).unwrap_err()
     }
 
     fn header_error(file: &[u8]) -> ReadError {
@@ -1477,7 +1482,7 @@ mod tests {
         file.extend([0u8; 12]);
         assert!(read(&file, true).is_ok());
         file.extend(b" \n\t x");
-        let e = parse_ply(&mut Input::from_slice(&file)).unwrap_err();
+        let e = parse_err(&file);
         assert!(matches!(e.kind, K::TrailingData { .. }), "{e}");
         assert_eq!(
             e.location,
@@ -1510,7 +1515,7 @@ mod tests {
                 assert!(read(&file(v), true).is_ok(), "{ty} {v}");
             }
             for v in [lo - 1, hi + 1] {
-                let e = parse_ply(&mut Input::from_slice(&file(v))).unwrap_err();
+                let e = parse_err(&file(v));
                 assert!(matches!(e.kind, K::BadNumber { .. }), "{ty} {v}: {e}");
                 assert_eq!(e.location, Location::Line(9));
             }
@@ -1529,13 +1534,13 @@ mod tests {
             )
             .into_bytes()
         };
-        let e = parse_ply(&mut Input::from_slice(&head("ascii"))).unwrap_err();
+        let e = parse_err(&head("ascii"));
         assert!(matches!(e.kind, K::Truncated { .. }), "{e}");
         assert_eq!(e.location, Location::Line(10));
 
         let mut file = head("ascii");
         file.extend(b"0 0 0\n1 0 0\n0 1 0\n-1 0 1 2\n");
-        let e = parse_ply(&mut Input::from_slice(&file)).unwrap_err();
+        let e = parse_err(&file);
         assert!(
             matches!(e.kind, K::BadNumber { ref token } if token == "-1"),
             "{e}"
@@ -1547,7 +1552,7 @@ mod tests {
         file.extend([0u8; 36]);
         file.push(0xFF);
         file.extend([0u8; 12]);
-        let e = parse_ply(&mut Input::from_slice(&file)).unwrap_err();
+        let e = parse_err(&file);
         assert!(
             matches!(e.kind, K::BadNumber { ref token } if token == "-1"),
             "{e}"
