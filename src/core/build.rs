@@ -4,6 +4,9 @@ use super::ids::{Corner, FaceId, VertexId, MAX_FACES, MAX_VERTICES, NONE};
 use super::tri::{StateStamp, Triangulation};
 use crate::mesh::TriMesh;
 
+#[cfg(feature = "parallel")]
+mod parallel;
+
 /// Why a face list is not a closed surface triangulation. Every variant says where:
 /// face indices are positions in the input face list, vertex ids are input vertex ids.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
@@ -231,6 +234,7 @@ fn face_problem(vertex_count: usize, face: usize, vertices: [u32; 3]) -> BuildEr
 
 /// Phase 1 output: the corner-to-vertex array (the faces, flattened) and the number of
 /// corners at each vertex.
+#[cfg_attr(test, derive(Clone))]
 struct Scanned {
     corner_vertex: Vec<u32>,
     degree: Vec<u32>,
@@ -284,6 +288,15 @@ fn vertex_corners(corner_vertex: &[u32], degree: &[u32]) -> VertexCorners {
         *slot += 1;
     }
     VertexCorners { end, corners }
+}
+
+impl VertexCorners {
+    /// The corners at `v`, increasing.
+    fn corners_of(&self, v: u32) -> &[u32] {
+        let v = v as usize;
+        let begin = if v == 0 { 0 } else { self.end[v - 1] as usize };
+        &self.corners[begin..self.end[v] as usize]
+    }
 }
 
 /// What is wrong with one pair of endpoints held by other than two faces, as phase 3
@@ -433,6 +446,21 @@ fn classify_edges(scanned: &Scanned, by_vertex: &VertexCorners, faces: &[[u32; 3
     out
 }
 
+/// Phase 3 on rayon's pool where the `parallel` feature is on and the pool and the
+/// surface are large enough ([`parallel::classify_edges`]), else (or where it leaves the
+/// surface's problem to this pass) [`classify_edges`]: the same result either way.
+fn classify_edges_on_pool(
+    scanned: &Scanned,
+    by_vertex: &VertexCorners,
+    faces: &[[u32; 3]],
+) -> Classified {
+    #[cfg(feature = "parallel")]
+    if let Some(classified) = parallel::classify_edges(scanned, by_vertex, faces) {
+        return classified;
+    }
+    classify_edges(scanned, by_vertex, faces)
+}
+
 /// Joins the sets of `x` and `y` (Rem's union-find with splicing: a parent is never
 /// larger than its child, so one increasing pass afterwards flattens every path).
 fn union(parent: &mut [u32], mut x: u32, mut y: u32) {
@@ -477,7 +505,10 @@ const SMALL_LINK: usize = 32;
 
 /// The number of cycles formed by the link edges `ends` (one per face at a vertex),
 /// when each link vertex lies on exactly two of them (every edge at the vertex is in two
-/// faces): the number of fans of faces around the vertex. O(len²).
+/// faces): the number of fans of faces around the vertex. Otherwise (a link vertex on
+/// three or more of them) it still returns, with a count that means nothing: only the
+/// parallel classification calls it there, and discards it (the edge in three or more
+/// faces fails that pass). O(len²).
 fn link_cycles(ends: &[(u32, u32)]) -> usize {
     debug_assert!(ends.len() <= SMALL_LINK);
     let mut visited = 0u64;
@@ -489,12 +520,20 @@ fn link_cycles(ends: &[(u32, u32)]) -> usize {
         cycles += 1;
         visited |= 1 << s;
         let (mut at, mut through) = (s, ends[s].1);
-        // The other link edge with the link vertex `through`, until back at `s`.
+        // The other link edge with the link vertex `through`, until back at `s`. A
+        // cycle has at most `len` edges; the bound stops the walk where a link vertex
+        // lies on three or more link edges, which the parallel classification may meet
+        // (an edge in three faces glued by another range): the count is then not 1.
+        let mut steps = 0;
         while let Some(next) =
             (0..ends.len()).find(|&j| j != at && (ends[j].0 == through || ends[j].1 == through))
         {
             if next == s {
                 break;
+            }
+            steps += 1;
+            if steps > ends.len() {
+                return usize::MAX;
             }
             visited |= 1 << next;
             through = if ends[next].0 == through {
@@ -697,7 +736,7 @@ fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Scanned, Classif
 /// Phases 2-3 in vertex id order, the order that defines which problem is reported.
 fn classify_in_id_order(faces: &[[u32; 3]], scanned: &Scanned) -> Result<Classified, BuildError> {
     let by_vertex = vertex_corners(&scanned.corner_vertex, &scanned.degree);
-    let mut classified = classify_edges(scanned, &by_vertex, faces);
+    let mut classified = classify_edges_on_pool(scanned, &by_vertex, faces);
     if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {
         return Err(e);
     }
@@ -762,7 +801,7 @@ fn classify_renumbered(scanned: &mut Scanned, faces: &[[u32; 3]]) -> Option<Clas
         degree: old_id.iter().map(|&v| scanned.degree[v as usize]).collect(),
     };
     let by_vertex = vertex_corners(&renumbered.corner_vertex, &renumbered.degree);
-    let mut classified = classify_edges(&renumbered, &by_vertex, faces);
+    let mut classified = classify_edges_on_pool(&renumbered, &by_vertex, faces);
     drop(by_vertex);
     let mut corner_vertex = renumbered.corner_vertex;
     for v in corner_vertex.iter_mut() {
@@ -1182,6 +1221,55 @@ mod tests {
         Ok(outcome(scanned, c))
     }
 
+    /// Round `round` of the build tests' surfaces: random closed surfaces of 20-80
+    /// faces (spheres, orientable and non-orientable of genus up to 3), with by round
+    /// modulo 6: a disjoint second copy and an unused vertex between (1), a hole or two
+    /// (2), a repeated face (3), two vertices identified (4, a pinched vertex or a
+    /// non-manifold edge). Returns the vertex count and the faces.
+    fn test_surface(round: u64, rng: &mut Rng) -> (usize, Vec<[u32; 3]>) {
+        let surface = match round % 3 {
+            0 => SurfaceKind::Orientable(0),
+            1 => SurfaceKind::Orientable(1 + (round % 2) as u32),
+            _ => SurfaceKind::NonOrientable(1 + (round % 3) as u32),
+        };
+        let tri = random(&RandomParams {
+            surface,
+            min_faces: 20 + rng.index(60),
+            flip_percent: 30,
+            seed: round,
+        })
+        .expect("random surface");
+        let mut faces = tri.face_list();
+        let mut n = tri.vertex_capacity();
+        match round % 6 {
+            1 => {
+                let shift = n as u32 + 1;
+                let copy: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| v + shift)).collect();
+                faces.extend(copy);
+                n = 2 * n + 1;
+            }
+            2 => {
+                for _ in 0..1 + rng.index(2) {
+                    faces.swap_remove(rng.index(faces.len()));
+                }
+            }
+            3 => faces.push(faces[rng.index(faces.len())]),
+            4 => {
+                let (a, b) = (rng.index(n) as u32, rng.index(n) as u32);
+                for f in faces.iter_mut() {
+                    for v in f.iter_mut() {
+                        if *v == b {
+                            *v = a;
+                        }
+                    }
+                }
+                faces.retain(|f| f[0] != f[1] && f[1] != f[2] && f[0] != f[2]);
+            }
+            _ => {}
+        }
+        (n, faces)
+    }
+
     /// Numbering the vertices in order of first appearance changes only the order in
     /// which they are visited: on closed surfaces, bounded ones, several components with
     /// unused vertices, and faulty ones (duplicate faces, non-manifold edges, pinched
@@ -1192,50 +1280,7 @@ mod tests {
         let mut rng = Rng::new(11);
         let mut taken = [0usize; 2];
         for round in 0..300u64 {
-            let surface = match round % 3 {
-                0 => SurfaceKind::Orientable(0),
-                1 => SurfaceKind::Orientable(1 + (round % 2) as u32),
-                _ => SurfaceKind::NonOrientable(1 + (round % 3) as u32),
-            };
-            let tri = random(&RandomParams {
-                surface,
-                min_faces: 20 + rng.index(60),
-                flip_percent: 30,
-                seed: round,
-            })
-            .expect("random surface");
-            let mut faces = tri.face_list();
-            let mut n = tri.vertex_capacity();
-            match round % 6 {
-                // A second copy, disjoint, and an unused vertex between them.
-                1 => {
-                    let shift = n as u32 + 1;
-                    let copy: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| v + shift)).collect();
-                    faces.extend(copy);
-                    n = 2 * n + 1;
-                }
-                // A hole or two: a bounded surface.
-                2 => {
-                    for _ in 0..1 + rng.index(2) {
-                        faces.swap_remove(rng.index(faces.len()));
-                    }
-                }
-                // A repeated face (duplicate, and its edges in four faces).
-                3 => faces.push(faces[rng.index(faces.len())]),
-                // Two vertices identified: a pinched vertex or a non-manifold edge.
-                4 => {
-                    let (a, b) = (rng.index(n) as u32, rng.index(n) as u32);
-                    for f in faces.iter_mut() {
-                        for v in f.iter_mut() {
-                            if *v == b {
-                                *v = a;
-                            }
-                        }
-                    }
-                    faces.retain(|f| f[0] != f[1] && f[1] != f[2] && f[0] != f[2]);
-                }
-                _ => {}
-            }
+            let (n, faces) = test_surface(round, &mut rng);
             let mut id: Vec<u32> = (0..n as u32).collect();
             rng.shuffle(&mut id);
             let shuffled: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| id[v as usize])).collect();
@@ -1254,6 +1299,153 @@ mod tests {
         // The renumbered phases answered for the sound inputs and handed the faulty
         // ones (and those with unused vertices in id order) over.
         assert!(taken[0] >= 50 && taken[1] >= 100, "{taken:?}");
+    }
+
+    /// Two cones over an `m`-gon glued along it (a sphere whose two apexes have `m`
+    /// faces each); with `pinched`, a second such sphere sharing the first's north apex
+    /// (a vertex whose link is two cycles of `m` faces).
+    fn double_cones(m: u32, pinched: bool) -> (usize, Vec<[u32; 3]>) {
+        let mut faces = Vec::new();
+        let mut sphere = |ring: u32, north: u32, south: u32| {
+            for i in 0..m {
+                let (a, b) = (ring + i, ring + (i + 1) % m);
+                faces.push([north, a, b]);
+                faces.push([south, b, a]);
+            }
+        };
+        sphere(0, m, m + 1);
+        if pinched {
+            sphere(m + 2, m, 2 * m + 2);
+        }
+        let n = if pinched { 2 * m + 3 } else { m + 2 };
+        (n as usize, faces)
+    }
+
+    /// The classification on the pool answers exactly as the sequential pass wherever it
+    /// answers, and answers for every sound surface, closed or bounded: the build tests'
+    /// surfaces (each also with shuffled ids) and double cones with apexes of 20 and 40
+    /// faces (links checked in the range, and walked after the join), pinched or not,
+    /// split into 1 to 9 ranges on pools of 2 and 3 threads.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn the_classification_on_the_pool_is_the_sequential_one() {
+        let pools: Vec<rayon::ThreadPool> = [2, 3]
+            .iter()
+            .map(|&t| {
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(t)
+                    .build()
+                    .expect("a thread pool")
+            })
+            .collect();
+        let mut rng = Rng::new(5);
+        let mut inputs = Vec::new();
+        for round in 0..300u64 {
+            let (n, faces) = test_surface(round, &mut rng);
+            let mut id: Vec<u32> = (0..n as u32).collect();
+            rng.shuffle(&mut id);
+            let shuffled = faces.iter().map(|f| f.map(|v| id[v as usize])).collect();
+            inputs.push((n, faces));
+            inputs.push((n, shuffled));
+        }
+        for m in [20, 40] {
+            inputs.push(double_cones(m, false));
+            inputs.push(double_cones(m, true));
+        }
+        let mut answered = [0usize; 2];
+        for (i, (n, faces)) in inputs.iter().enumerate() {
+            let Ok(scanned) = scan_faces(*n, faces) else {
+                continue;
+            };
+            let by_vertex = vertex_corners(&scanned.corner_vertex, &scanned.degree);
+            let sequential = classify_edges(&scanned, &by_vertex, faces);
+            let sound = sequential.duplicate.is_none()
+                && sequential.bad_edge.is_none()
+                && (!sequential.boundary.is_empty() || sequential.first_link.is_none());
+            let expected = outcome(scanned.clone(), sequential);
+            let ranges = 1 + i % 9;
+            let pool = &pools[i % 2];
+            match pool.install(|| parallel::classify_edges_in(&scanned, &by_vertex, ranges)) {
+                Some(c) => {
+                    assert!(sound, "input {i}: answered for a faulty surface");
+                    assert_eq!(
+                        outcome(scanned.clone(), c),
+                        expected,
+                        "input {i}: {faces:?}"
+                    );
+                    answered[1] += 1;
+                }
+                None => {
+                    assert!(!sound, "input {i}: no answer for a sound surface");
+                    answered[0] += 1;
+                }
+            }
+        }
+        // Both kinds were met in numbers.
+        assert!(answered[0] >= 100 && answered[1] >= 300, "{answered:?}");
+    }
+
+    /// Past [`parallel::MIN_FACES`] the build on a pool of two threads is the build on
+    /// one: the corner table, the components and each error, on a torus of about 40k
+    /// faces, two copies of it, and the torus with a repeated face, a hole, and a
+    /// pinched vertex.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn a_large_build_on_two_threads_is_the_build_on_one() {
+        let pool = |t: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(t)
+                .build()
+                .expect("a thread pool")
+        };
+        let (one, two) = (pool(1), pool(2));
+        let tri = random(&RandomParams {
+            surface: SurfaceKind::Orientable(1),
+            min_faces: 2 * parallel::MIN_FACES + 7_000,
+            flip_percent: 30,
+            seed: 3,
+        })
+        .expect("random surface");
+        let n = tri.vertex_capacity();
+        let faces = tri.face_list();
+        let twice: Vec<[u32; 3]> = faces
+            .iter()
+            .copied()
+            .chain(faces.iter().map(|f| f.map(|v| v + n as u32)))
+            .collect();
+        let mut repeated = faces.clone();
+        repeated.push(faces[faces.len() / 2]);
+        let mut holed = faces.clone();
+        holed.swap_remove(faces.len() / 3);
+        let pinched: Vec<[u32; 3]> = faces
+            .iter()
+            .map(|f| f.map(|v| if v == n as u32 - 1 { 0 } else { v }))
+            .filter(|f| f[0] != f[1] && f[1] != f[2] && f[0] != f[2])
+            .collect();
+        let summary = |n: usize, faces: &[[u32; 3]]| {
+            check(n, faces).map(|c| {
+                let (label, count) = c.face_components();
+                (
+                    c.tri.corner_vertex,
+                    c.tri.opposite,
+                    c.tri.vertex_corner,
+                    c.tri.degree,
+                    label,
+                    count,
+                )
+            })
+        };
+        for (what, n, faces) in [
+            ("torus", n, &faces),
+            ("two tori", 2 * n, &twice),
+            ("repeated face", n, &repeated),
+            ("hole", n, &holed),
+            ("pinched", n, &pinched),
+        ] {
+            let expected = one.install(|| summary(n, faces));
+            assert_eq!(two.install(|| summary(n, faces)), expected, "{what}");
+            assert_eq!(expected.is_ok(), what.contains("tor"), "{what}");
+        }
     }
 
     /// Ids far apart at consecutive faces' slots make a face list scattered when they

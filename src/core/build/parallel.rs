@@ -1,0 +1,287 @@
+//! Phase 3 of the build (edge classification, gluing, links, components) on rayon's
+//! thread pool: the vertices split into ranges of about equal corner counts, one task
+//! per range.
+//!
+//! **Guarantee.** When it answers, the answer is [`super::classify_edges`]'s, array for
+//! array (the union-find flattened: both make the smallest vertex of each set its root).
+//! It answers for every surface without a duplicate face or an edge in three or more
+//! faces, except closed ones with a vertex-link problem; for those it returns `None`
+//! and the caller runs the sequential pass, which finds the problem that pass's
+//! precedence reports. O(F + V) work, as the sequential pass, over the pool.
+//!
+//! **Why it is sound to split by vertex.** Every edge is glued, classified and joined
+//! by its smaller endpoint, so each corner's `opposite` entry is written by exactly one
+//! range and no entry twice; the entries are scattered, hence atomics (relaxed stores:
+//! the join at the end orders them before any read). Each vertex's link check reads only
+//! its own faces when it has at most [`SMALL_LINK`] of them; larger stars are walked
+//! after the join, when every edge is glued. The union-find links roots by compare and
+//! swap, larger root under smaller, so the root of each set is its smallest vertex, as
+//! in the sequential [`super::union`].
+
+use super::{
+    fans, link_cycles, link_problem, sort_bucket, BuildError, Classified, Corner, Scanned,
+    VertexCorners, NONE, SMALL_LINK,
+};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
+
+/// Below this many faces the build stays sequential: the pool's start-up is then a
+/// sizeable part of the pass.
+pub(super) const MIN_FACES: usize = 1 << 14;
+
+/// Ranges per thread of the pool: more than one, so that a range of dense vertices
+/// does not leave the other threads idle at the end.
+const RANGES_PER_THREAD: usize = 4;
+
+/// Phase 3 on the current rayon pool, when it has more than one thread and the
+/// surface has at least [`MIN_FACES`] faces; `None` otherwise, or when the surface has
+/// a problem (see the module's guarantee).
+pub(super) fn classify_edges(
+    scanned: &Scanned,
+    by_vertex: &VertexCorners,
+    faces: &[[u32; 3]],
+) -> Option<Classified> {
+    let threads = rayon::current_num_threads();
+    if threads < 2 || faces.len() < MIN_FACES {
+        return None;
+    }
+    classify_edges_in(scanned, by_vertex, threads * RANGES_PER_THREAD)
+}
+
+/// What one range of vertices found, when it found no problem that stops the pass.
+struct RangeOut {
+    /// Corners opposite boundary edges, in edge order.
+    boundary: Vec<u32>,
+    /// The first boundary edge of the range.
+    first_boundary: Option<BuildError>,
+    /// A vertex whose link (of at most [`SMALL_LINK`] faces) is not one cycle of at
+    /// least three faces; meaningless where there is a boundary edge.
+    link_problem: bool,
+    /// Vertices with more than [`SMALL_LINK`] faces, whose links are checked after the
+    /// join.
+    large: Vec<u32>,
+}
+
+/// Phase 3 with the vertices split into about `ranges` ranges of about equal corner
+/// counts (any number ≥ 1; the tests force small surfaces into many).
+pub(super) fn classify_edges_in(
+    scanned: &Scanned,
+    by_vertex: &VertexCorners,
+    ranges: usize,
+) -> Option<Classified> {
+    let vertex_count = scanned.degree.len();
+    let corner_count = scanned.corner_vertex.len();
+    // Zeroed and converted in place (no pass over the memory): every entry is written.
+    let opposite: Vec<AtomicU32> = vec![0u32; corner_count]
+        .into_iter()
+        .map(AtomicU32::new)
+        .collect();
+    let parent: Vec<AtomicU32> = (0..vertex_count as u32).map(AtomicU32::new).collect();
+    let mut vertex_corner = vec![NONE; vertex_count];
+    let failed = AtomicBool::new(false);
+
+    // Range k is the vertices `starts[k]..starts[k + 1]`, cut where the corner count
+    // passes each multiple of `corner_count / ranges`.
+    let ranges = ranges.max(1);
+    let mut starts = vec![0usize];
+    for k in 1..ranges {
+        let target = (corner_count * k / ranges) as u32;
+        let v = by_vertex.end.partition_point(|&e| e <= target);
+        if v > *starts.last().unwrap_or(&0) && v < vertex_count {
+            starts.push(v);
+        }
+    }
+    starts.push(vertex_count);
+    let mut tasks = Vec::with_capacity(starts.len() - 1);
+    let mut rest = &mut vertex_corner[..];
+    for w in starts.windows(2) {
+        let (mine, tail) = rest.split_at_mut(w[1] - w[0]);
+        tasks.push((w[0], mine));
+        rest = tail;
+    }
+    let shared = Shared {
+        corner_vertex: &scanned.corner_vertex,
+        by_vertex,
+        opposite: &opposite,
+        parent: &parent,
+        failed: &failed,
+    };
+    let outs: Vec<Option<RangeOut>> = tasks
+        .into_par_iter()
+        .map(|(first, vertex_corner)| shared.classify_range(first, vertex_corner))
+        .collect();
+    let outs: Vec<RangeOut> = outs.into_iter().collect::<Option<_>>()?;
+
+    let opposite: Vec<u32> = opposite.into_iter().map(AtomicU32::into_inner).collect();
+    let parent: Vec<u32> = parent.into_iter().map(AtomicU32::into_inner).collect();
+    let first_boundary = outs.iter().find_map(|o| o.first_boundary.clone());
+    let boundary: Vec<u32> = outs
+        .iter()
+        .flat_map(|o| o.boundary.iter().copied())
+        .collect();
+    if boundary.is_empty() {
+        if outs.iter().any(|o| o.link_problem) {
+            return None;
+        }
+        // Every edge is glued now: the large stars can be walked.
+        for &v in outs.iter().flat_map(|o| &o.large) {
+            let corners = by_vertex.corners_of(v);
+            let cycles = fans(&scanned.corner_vertex, &opposite, v, corners);
+            if link_problem(v, cycles, corners.len()).is_some() {
+                return None;
+            }
+        }
+    }
+    Some(Classified {
+        opposite,
+        clean: boundary.is_empty(),
+        boundary,
+        duplicate: None,
+        bad_edge: None,
+        first_boundary,
+        first_link: None,
+        parent,
+        vertex_corner,
+    })
+}
+
+/// What every range reads or writes.
+struct Shared<'a> {
+    corner_vertex: &'a [u32],
+    by_vertex: &'a VertexCorners,
+    /// Written at the corners of the edges whose smaller endpoint is in the range.
+    opposite: &'a [AtomicU32],
+    parent: &'a [AtomicU32],
+    /// Set by the range that meets a problem, so that the others stop early.
+    failed: &'a AtomicBool,
+}
+
+impl Shared<'_> {
+    /// The vertices `first..first + vertex_corner.len()`: the sequential pass's loop,
+    /// `None` at the first duplicate face or edge in three or more faces (or when
+    /// another range met one).
+    fn classify_range(&self, first: usize, vertex_corner: &mut [u32]) -> Option<RangeOut> {
+        let corner_vertex = self.corner_vertex;
+        let mut out = RangeOut {
+            boundary: Vec::new(),
+            first_boundary: None,
+            link_problem: false,
+            large: Vec::new(),
+        };
+        let mut bucket: Vec<u64> = Vec::new();
+        let mut ends: Vec<(u32, u32)> = Vec::new();
+        for (k, slot) in vertex_corner.iter_mut().enumerate() {
+            let lo = (first + k) as u32;
+            let corners = self.by_vertex.corners_of(lo);
+            if corners.is_empty() {
+                continue;
+            }
+            if self.failed.load(Relaxed) {
+                return None;
+            }
+            *slot = corners[0];
+            bucket.clear();
+            ends.clear();
+            for &c in corners {
+                let (next, prev) = (Corner(c).next().0, Corner(c).prev().0);
+                let (a, b) = (corner_vertex[next as usize], corner_vertex[prev as usize]);
+                ends.push((a, b));
+                if a > lo {
+                    bucket.push(((a as u64) << 32) | prev as u64);
+                }
+                if b > lo {
+                    bucket.push(((b as u64) << 32) | next as u64);
+                }
+            }
+            sort_bucket(&mut bucket);
+            let b = &bucket[..];
+            let mut i = 0;
+            while i < b.len() {
+                let hi = b[i] >> 32;
+                let mut j = i + 1;
+                while j < b.len() && b[j] >> 32 == hi {
+                    j += 1;
+                }
+                union(self.parent, lo, hi as u32);
+                let p = (b[i] & 0xffff_ffff) as usize;
+                match j - i {
+                    2 => {
+                        let q = (b[i + 1] & 0xffff_ffff) as usize;
+                        if corner_vertex[p] == corner_vertex[q] {
+                            self.failed.store(true, Relaxed);
+                            return None;
+                        }
+                        self.opposite[p].store(q as u32, Relaxed);
+                        self.opposite[q].store(p as u32, Relaxed);
+                    }
+                    1 => {
+                        self.opposite[p].store(NONE, Relaxed);
+                        out.boundary.push(p as u32);
+                        if out.first_boundary.is_none() {
+                            out.first_boundary = Some(BuildError::BoundaryEdge {
+                                a: lo,
+                                b: hi as u32,
+                                face: p / 3,
+                            });
+                        }
+                    }
+                    _ => {
+                        self.failed.store(true, Relaxed);
+                        return None;
+                    }
+                }
+                i = j;
+            }
+            // With a boundary edge in the range, the links are not read (nor in the
+            // sequential pass, which stops checking them at the first).
+            if out.first_boundary.is_none() && !out.link_problem {
+                if ends.len() <= SMALL_LINK {
+                    let cycles = link_cycles(&ends);
+                    out.link_problem = link_problem(lo, cycles, ends.len()).is_some();
+                } else {
+                    out.large.push(lo);
+                }
+            }
+        }
+        Some(out)
+    }
+}
+
+/// The root of `x`'s set, halving the path on the way: each step points a vertex at its
+/// grandparent, by compare and swap, so a pointer only ever moves to an ancestor (a
+/// smaller vertex of the same set).
+fn find(parent: &[AtomicU32], mut x: u32) -> u32 {
+    loop {
+        let p = parent[x as usize].load(Relaxed);
+        if p == x {
+            return x;
+        }
+        let g = parent[p as usize].load(Relaxed);
+        if g != p {
+            let _ = parent[x as usize].compare_exchange_weak(p, g, Relaxed, Relaxed);
+        }
+        x = g;
+    }
+}
+
+/// Joins the sets of `x` and `y`: the larger root is linked under the smaller by
+/// compare and swap, which fails (and the union retries) if another range linked that
+/// root meanwhile. Parents are smaller than their children, so each set's root is its
+/// smallest vertex and one increasing pass flattens the forest.
+fn union(parent: &[AtomicU32], x: u32, y: u32) {
+    let (mut x, mut y) = (x, y);
+    loop {
+        let (rx, ry) = (find(parent, x), find(parent, y));
+        if rx == ry {
+            return;
+        }
+        let (big, small) = (rx.max(ry), rx.min(ry));
+        if parent[big as usize]
+            .compare_exchange(big, small, Relaxed, Relaxed)
+            .is_ok()
+        {
+            return;
+        }
+        (x, y) = (big, small);
+    }
+}
