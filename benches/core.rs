@@ -1,5 +1,5 @@
 //! Core benchmarks: building a `Triangulation` from a face list (vertex ids in the
-//! generator's order, and shuffled), validating it from scratch, checking a tri-quad
+//! generator's order, and shuffled; on pools of 1 and 2 threads), validating it from scratch, checking a tri-quad
 //! conversion, and the `info` invariants, on the ~4.2M-triangle genus-0 paper brick B0.
 //! Run: `cargo bench --bench core`. Divan reports medians.
 
@@ -78,6 +78,22 @@ fn build_b0_first_appearance_ids(b: divan::Bencher) {
         b0_renamed(&id)
     });
     bench_build(b, m);
+}
+
+/// `Triangulation::from_faces` on B0 on a rayon pool of 1 and of 2 threads: with the
+/// `parallel` feature (on in the benchmarks) the edge classification runs on the pool's
+/// threads above a size B0 passes, the rest of the build on the calling one.
+#[divan::bench(args = [1, 2], sample_count = 10)]
+fn build_b0_threads(b: divan::Bencher, threads: usize) {
+    let m = b0();
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool");
+    b.counter(divan::counter::ItemsCount::new(m.faces.len()))
+        .bench(|| {
+            pool.install(|| Triangulation::from_faces(m.vertex_count, &m.faces).expect("surface"))
+        });
 }
 
 /// The floor under `build_b0` that fresh memory sets: allocating and writing once as

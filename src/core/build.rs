@@ -1386,9 +1386,9 @@ mod tests {
     }
 
     /// Past [`parallel::MIN_FACES`] the build on a pool of two threads is the build on
-    /// one: the corner table, the components and each error, on a torus of about 40k
-    /// faces, two copies of it, and the torus with a repeated face, a hole, and a
-    /// pinched vertex.
+    /// one: the corner table, the components and each error, on a subdivided torus of
+    /// about 290k faces, two copies of it, and the torus with a repeated face, a hole,
+    /// and a pinched vertex.
     #[cfg(feature = "parallel")]
     #[test]
     fn a_large_build_on_two_threads_is_the_build_on_one() {
@@ -1401,13 +1401,15 @@ mod tests {
         let (one, two) = (pool(1), pool(2));
         let tri = random(&RandomParams {
             surface: SurfaceKind::Orientable(1),
-            min_faces: 2 * parallel::MIN_FACES + 7_000,
+            min_faces: parallel::MIN_FACES / 256 + 100,
             flip_percent: 30,
             seed: 3,
         })
         .expect("random surface");
-        let n = tri.vertex_capacity();
-        let faces = tri.face_list();
+        let coarse = TriMesh::combinatorial(tri.vertex_capacity(), tri.face_list());
+        let fine = crate::gen::subdivide(&coarse, 4).expect("a subdivided torus");
+        let (n, faces) = (fine.vertex_count, fine.faces);
+        assert!(faces.len() > parallel::MIN_FACES);
         let twice: Vec<[u32; 3]> = faces
             .iter()
             .copied()

@@ -25,9 +25,12 @@ use super::{
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
 
-/// Below this many faces the build stays sequential: the pool's start-up is then a
-/// sizeable part of the pass.
-pub(super) const MIN_FACES: usize = 1 << 14;
+/// Below this many faces the classification stays sequential. Measured on 2 cores
+/// (docs/benchmarks.md): from about 330k faces up the pool's build is 1.2-1.3× faster;
+/// on the shared meshes of 80k-200k faces the gain was within the noise or a loss (up
+/// to 1.2× slower), as waking the pool's threads and their cache misses on each other's
+/// entries cost what the second core saves.
+pub(super) const MIN_FACES: usize = 1 << 18;
 
 /// Ranges per thread of the pool: more than one, so that a range of dense vertices
 /// does not leave the other threads idle at the end.
