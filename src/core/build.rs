@@ -446,6 +446,28 @@ fn classify_edges(scanned: &Scanned, by_vertex: &VertexCorners, faces: &[[u32; 3
     out
 }
 
+/// Phase 1 on rayon's pool where the `parallel` feature is on and the pool and the
+/// surface are large enough ([`parallel::scan_faces`]), else [`scan_faces`]: the same
+/// result either way.
+fn scan_faces_on_pool(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Scanned, BuildError> {
+    #[cfg(feature = "parallel")]
+    if let Some(scanned) = parallel::scan_faces(vertex_count, faces) {
+        return scanned;
+    }
+    scan_faces(vertex_count, faces)
+}
+
+/// Phase 2 on rayon's pool where the `parallel` feature is on and the pool and the
+/// surface are large enough ([`parallel::vertex_corners`]), else [`vertex_corners`]:
+/// the same result either way.
+fn vertex_corners_on_pool(corner_vertex: &[u32], degree: &[u32]) -> VertexCorners {
+    #[cfg(feature = "parallel")]
+    if let Some(by_vertex) = parallel::vertex_corners(corner_vertex, degree) {
+        return by_vertex;
+    }
+    vertex_corners(corner_vertex, degree)
+}
+
 /// Phase 3 on rayon's pool where the `parallel` feature is on and the pool and the
 /// surface are large enough ([`parallel::classify_edges`]), else (or where it leaves the
 /// surface's problem to this pass) [`classify_edges`]: the same result either way.
@@ -723,7 +745,7 @@ fn check_vertex_links(tri: &Triangulation, used: &[bool]) -> Result<(), BuildErr
 /// face or non-manifold / multiple edge is an error here (in that precedence); boundary
 /// edges and vertex links are left to the caller.
 fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Scanned, Classified), BuildError> {
-    let mut scanned = scan_faces(vertex_count, faces)?;
+    let mut scanned = scan_faces_on_pool(vertex_count, faces)?;
     if scattered(faces) {
         if let Some(classified) = classify_renumbered(&mut scanned, faces) {
             return Ok((scanned, classified));
@@ -735,7 +757,7 @@ fn classify(vertex_count: usize, faces: &[[u32; 3]]) -> Result<(Scanned, Classif
 
 /// Phases 2-3 in vertex id order, the order that defines which problem is reported.
 fn classify_in_id_order(faces: &[[u32; 3]], scanned: &Scanned) -> Result<Classified, BuildError> {
-    let by_vertex = vertex_corners(&scanned.corner_vertex, &scanned.degree);
+    let by_vertex = vertex_corners_on_pool(&scanned.corner_vertex, &scanned.degree);
     let mut classified = classify_edges_on_pool(scanned, &by_vertex, faces);
     if let Some(e) = classified.duplicate.take().or(classified.bad_edge.take()) {
         return Err(e);
@@ -800,7 +822,7 @@ fn classify_renumbered(scanned: &mut Scanned, faces: &[[u32; 3]]) -> Option<Clas
         corner_vertex: std::mem::take(&mut scanned.corner_vertex),
         degree: old_id.iter().map(|&v| scanned.degree[v as usize]).collect(),
     };
-    let by_vertex = vertex_corners(&renumbered.corner_vertex, &renumbered.degree);
+    let by_vertex = vertex_corners_on_pool(&renumbered.corner_vertex, &renumbered.degree);
     let mut classified = classify_edges_on_pool(&renumbered, &by_vertex, faces);
     drop(by_vertex);
     let mut corner_vertex = renumbered.corner_vertex;
@@ -1385,10 +1407,76 @@ mod tests {
         assert!(answered[0] >= 100 && answered[1] >= 300, "{answered:?}");
     }
 
+    /// The face scan and the grouping by vertex on the pool give the sequential phases'
+    /// results: the corner array, the degrees, each vertex's corners, and the first bad
+    /// face (out of range or degenerate, one or two of them anywhere in the list), in 1
+    /// to 7 runs with vertex ranges of 1 to 5 vertices and of all of them, on pools of 2
+    /// and 3 threads.
+    #[cfg(feature = "parallel")]
+    #[test]
+    fn the_scan_and_grouping_on_the_pool_are_the_sequential_ones() {
+        let pools: Vec<rayon::ThreadPool> = [2, 3]
+            .iter()
+            .map(|&t| {
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(t)
+                    .build()
+                    .expect("a thread pool")
+            })
+            .collect();
+        let mut rng = Rng::new(9);
+        let mut errors = 0;
+        for round in 0..300u64 {
+            let (n, mut faces) = test_surface(round, &mut rng);
+            if round % 4 == 1 {
+                for _ in 0..1 + rng.index(2) {
+                    let (f, k) = (rng.index(faces.len()), rng.index(3));
+                    if rng.index(2) == 0 {
+                        faces[f][k] = (n + rng.index(3)) as u32;
+                    } else {
+                        faces[f][k] = faces[f][(k + 1) % 3];
+                    }
+                }
+            }
+            let runs = 1 + round as usize % 7;
+            let range = if round % 6 == 5 {
+                n.max(1)
+            } else {
+                1 + round as usize % 5
+            };
+            let pool = &pools[round as usize % 2];
+            let sequential = scan_faces(n, &faces);
+            let on_pool = pool.install(|| parallel::scan_faces_in(n, &faces, runs, range));
+            match (sequential, on_pool) {
+                (Ok(s), Ok(p)) => {
+                    assert_eq!(
+                        (&s.corner_vertex, &s.degree),
+                        (&p.corner_vertex, &p.degree),
+                        "round {round}"
+                    );
+                    let by_vertex = vertex_corners(&s.corner_vertex, &s.degree);
+                    let grouped = pool.install(|| {
+                        parallel::vertex_corners_in(&s.corner_vertex, &s.degree, runs, range)
+                    });
+                    assert_eq!(
+                        (&by_vertex.end, &by_vertex.corners),
+                        (&grouped.end, &grouped.corners),
+                        "round {round}"
+                    );
+                }
+                (s, p) => {
+                    assert_eq!(s.err(), p.err(), "round {round}");
+                    errors += 1;
+                }
+            }
+        }
+        assert!(errors >= 60, "{errors} faulty face lists");
+    }
+
     /// Past [`parallel::MIN_FACES`] the build on a pool of two threads is the build on
     /// one: the corner table, the components and each error, on a subdivided torus of
-    /// about 290k faces, two copies of it, and the torus with a repeated face, a hole,
-    /// and a pinched vertex.
+    /// about 290k faces, two copies of it, and the torus with a repeated face, a hole, a
+    /// pinched vertex, and a degenerate face before a face out of range.
     #[cfg(feature = "parallel")]
     #[test]
     fn a_large_build_on_two_threads_is_the_build_on_one() {
@@ -1419,6 +1507,10 @@ mod tests {
         repeated.push(faces[faces.len() / 2]);
         let mut holed = faces.clone();
         holed.swap_remove(faces.len() / 3);
+        // A degenerate face before a face out of range, in different runs.
+        let mut bad = faces.clone();
+        bad[faces.len() * 3 / 4][1] = n as u32;
+        bad[faces.len() / 3][2] = bad[faces.len() / 3][0];
         let pinched: Vec<[u32; 3]> = faces
             .iter()
             .map(|f| f.map(|v| if v == n as u32 - 1 { 0 } else { v }))
@@ -1443,6 +1535,7 @@ mod tests {
             ("repeated face", n, &repeated),
             ("hole", n, &holed),
             ("pinched", n, &pinched),
+            ("bad faces", n, &bad),
         ] {
             let expected = one.install(|| summary(n, faces));
             assert_eq!(two.install(|| summary(n, faces)), expected, "{what}");

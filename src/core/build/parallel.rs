@@ -19,8 +19,8 @@
 //! in the sequential [`super::union`].
 
 use super::{
-    fans, link_cycles, link_problem, sort_bucket, BuildError, Classified, Corner, Scanned,
-    VertexCorners, NONE, SMALL_LINK,
+    check_sizes, face_problem, fans, link_cycles, link_problem, sort_bucket, BuildError,
+    Classified, Corner, Scanned, VertexCorners, NONE, SMALL_LINK,
 };
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
@@ -44,11 +44,172 @@ pub(super) fn classify_edges(
     by_vertex: &VertexCorners,
     faces: &[[u32; 3]],
 ) -> Option<Classified> {
-    let threads = rayon::current_num_threads();
-    if threads < 2 || faces.len() < MIN_FACES {
-        return None;
-    }
+    let threads = pool_threads(faces.len())?;
     classify_edges_in(scanned, by_vertex, threads * RANGES_PER_THREAD)
+}
+
+/// Whether the build runs its phases on the pool: more than one thread, and at least
+/// [`MIN_FACES`] faces. The number of threads if so.
+fn pool_threads(faces: usize) -> Option<usize> {
+    let threads = rayon::current_num_threads();
+    (threads >= 2 && faces >= MIN_FACES).then_some(threads)
+}
+
+/// Vertices per task when a pass over the vertices is split.
+const VERTEX_RANGE: usize = 1 << 16;
+
+/// Phase 1 on the pool (see [`pool_threads`]): [`super::scan_faces`]'s result, the same
+/// first bad face included. One task per thread on a run of faces: each checks its
+/// faces, copies them into the corner array and counts its corners at each vertex in
+/// its own array; the counts are then summed by vertex ranges.
+pub(super) fn scan_faces(
+    vertex_count: usize,
+    faces: &[[u32; 3]],
+) -> Option<Result<Scanned, BuildError>> {
+    let threads = pool_threads(faces.len())?;
+    Some(scan_faces_in(vertex_count, faces, threads, VERTEX_RANGE))
+}
+
+/// [`scan_faces`] in `runs` runs of faces (at least 1), summing the counts in ranges of
+/// `vertex_range` vertices (at least 1).
+pub(super) fn scan_faces_in(
+    vertex_count: usize,
+    faces: &[[u32; 3]],
+    runs: usize,
+    vertex_range: usize,
+) -> Result<Scanned, BuildError> {
+    check_sizes(vertex_count, faces)?;
+    let n = vertex_count;
+    let run = faces.len().div_ceil(runs).max(1);
+    let mut corner_vertex = vec![0u32; 3 * faces.len()];
+    let counts: Vec<Result<Vec<u32>, usize>> = faces
+        .par_chunks(run)
+        .zip(corner_vertex.par_chunks_mut(3 * run))
+        .enumerate()
+        .map(|(k, (faces, out))| {
+            let mut count = vec![0u32; n];
+            for (i, (&f, out)) in faces.iter().zip(out.chunks_exact_mut(3)).enumerate() {
+                let [a, b, c] = f.map(|v| v as usize);
+                if (a >= n) | (b >= n) | (c >= n) | (a == b) | (b == c) | (a == c) {
+                    return Err(k * run + i);
+                }
+                count[a] += 1;
+                count[b] += 1;
+                count[c] += 1;
+                out.copy_from_slice(&f);
+            }
+            Ok(count)
+        })
+        .collect();
+    let counts: Vec<Vec<u32>> = match counts.into_iter().collect() {
+        Ok(counts) => counts,
+        // The runs are in face order: the first run with a bad face has the first.
+        Err(i) => return Err(face_problem(vertex_count, i, faces[i])),
+    };
+    let mut counts = counts.into_iter();
+    let mut degree = counts.next().unwrap_or_else(|| vec![0; n]);
+    let rest: Vec<Vec<u32>> = counts.collect();
+    degree
+        .par_chunks_mut(vertex_range)
+        .enumerate()
+        .for_each(|(k, d)| {
+            for count in &rest {
+                for (d, &c) in d.iter_mut().zip(&count[k * vertex_range..]) {
+                    *d += c;
+                }
+            }
+        });
+    Ok(Scanned {
+        corner_vertex,
+        degree,
+    })
+}
+
+/// Phase 2 on the pool (see [`pool_threads`]): [`super::vertex_corners`]'s result, the
+/// corners of each vertex increasing. A counting sort in parallel: each thread counts
+/// the corners of its run at each vertex, each run's corners of vertex `v` start where
+/// the earlier runs' end, and each thread writes its run's corners there (scattered
+/// entries, no entry written twice: relaxed atomic stores).
+pub(super) fn vertex_corners(corner_vertex: &[u32], degree: &[u32]) -> Option<VertexCorners> {
+    let threads = pool_threads(corner_vertex.len() / 3)?;
+    Some(vertex_corners_in(
+        corner_vertex,
+        degree,
+        threads,
+        VERTEX_RANGE,
+    ))
+}
+
+/// [`vertex_corners`] in `runs` runs of corners (at least 1), the slots computed in
+/// ranges of `vertex_range` vertices (at least 1).
+pub(super) fn vertex_corners_in(
+    corner_vertex: &[u32],
+    degree: &[u32],
+    runs: usize,
+    vertex_range: usize,
+) -> VertexCorners {
+    let n = degree.len();
+    let run = corner_vertex.len().div_ceil(runs).max(1);
+    let mut counts: Vec<Vec<u32>> = corner_vertex
+        .par_chunks(run)
+        .map(|corners| {
+            let mut count = vec![0u32; n];
+            for &v in corners {
+                count[v as usize] += 1;
+            }
+            count
+        })
+        .collect();
+    let mut end = Vec::with_capacity(n);
+    let mut sum = 0u32;
+    for &d in degree {
+        end.push(sum);
+        sum += d;
+    }
+    // Each run's first slot at each vertex, in place of its count.
+    let mut ranges: Vec<Vec<&mut [u32]>> =
+        (0..n.div_ceil(vertex_range)).map(|_| Vec::new()).collect();
+    for count in counts.iter_mut() {
+        for (k, part) in count.chunks_mut(vertex_range).enumerate() {
+            ranges[k].push(part);
+        }
+    }
+    ranges
+        .into_par_iter()
+        .enumerate()
+        .for_each(|(k, mut parts)| {
+            let begin = &end[k * vertex_range..];
+            for (i, &b) in begin.iter().take(vertex_range).enumerate() {
+                let mut slot = b;
+                for part in parts.iter_mut() {
+                    let c = part[i];
+                    part[i] = slot;
+                    slot += c;
+                }
+            }
+        });
+    let corners: Vec<AtomicU32> = vec![0u32; corner_vertex.len()]
+        .into_iter()
+        .map(AtomicU32::new)
+        .collect();
+    corner_vertex
+        .par_chunks(run)
+        .zip(counts.par_iter_mut())
+        .enumerate()
+        .for_each(|(k, (run_vertices, slot))| {
+            for (i, &v) in run_vertices.iter().enumerate() {
+                let s = &mut slot[v as usize];
+                corners[*s as usize].store((k * run + i) as u32, Relaxed);
+                *s += 1;
+            }
+        });
+    for (e, &d) in end.iter_mut().zip(degree) {
+        *e += d;
+    }
+    VertexCorners {
+        end,
+        corners: corners.into_iter().map(AtomicU32::into_inner).collect(),
+    }
 }
 
 /// What one range of vertices found, when it found no problem that stops the pass.
