@@ -1,22 +1,27 @@
-//! Phase 3 of the build (edge classification, gluing, links, components) on rayon's
-//! thread pool: the vertices split into ranges of about equal corner counts, one task
-//! per range.
+//! Phases 1-3 of the build on rayon's thread pool: the face scan and the grouping of
+//! corners by vertex in runs of faces (one per thread), the edge classification (gluing,
+//! links, components) in ranges of vertices of about equal corner counts.
 //!
-//! **Guarantee.** When it answers, the answer is [`super::classify_edges`]'s, array for
-//! array (the union-find flattened: both make the smallest vertex of each set its root).
-//! It answers for every surface without a duplicate face or an edge in three or more
-//! faces, except closed ones with a vertex-link problem; for those it returns `None`
-//! and the caller runs the sequential pass, which finds the problem that pass's
-//! precedence reports. O(F + V) work, as the sequential pass, over the pool.
+//! **Guarantee.** [`scan_faces`] and [`vertex_corners`] give the sequential phases'
+//! results, the first bad face included. When [`classify_edges`] answers, the answer is
+//! [`super::classify_edges`]'s, array for array (the union-find flattened: both make
+//! the smallest vertex of each set its root). It answers for every surface without a
+//! duplicate face or an edge in three or more faces, except closed ones with a
+//! vertex-link problem; for those it returns `None` and the caller runs the sequential
+//! pass, which finds the problem that pass's precedence reports. O(F + V) work, as the
+//! sequential phases, over the pool, plus one `u32` per vertex and thread for the
+//! counts of the runs.
 //!
-//! **Why it is sound to split by vertex.** Every edge is glued, classified and joined
-//! by its smaller endpoint, so each corner's `opposite` entry is written by exactly one
-//! range and no entry twice; the entries are scattered, hence atomics (relaxed stores:
-//! the join at the end orders them before any read). Each vertex's link check reads only
-//! its own faces when it has at most [`SMALL_LINK`] of them; larger stars are walked
-//! after the join, when every edge is glued. The union-find links roots by compare and
-//! swap, larger root under smaller, so the root of each set is its smallest vertex, as
-//! in the sequential [`super::union`].
+//! **Why it is sound to split.** A run's corners are counted, copied and placed by its
+//! own thread; each run's corners of a vertex go after the earlier runs' (their counts
+//! say where), so each vertex's corners stay increasing. Every edge is glued, classified
+//! and joined by its smaller endpoint, so each corner's `opposite` entry is written by
+//! exactly one range and no entry twice; the entries are scattered, hence atomics
+//! (relaxed stores: the join at the end orders them before any read). Each vertex's link
+//! check reads only its own faces when it has at most [`SMALL_LINK`] of them; larger
+//! stars are walked after the join, when every edge is glued. The union-find links roots
+//! by compare and swap, larger root under smaller, so the root of each set is its
+//! smallest vertex, as in the sequential [`super::union`].
 
 use super::{
     check_sizes, face_problem, fans, link_cycles, link_problem, sort_bucket, BuildError,
@@ -25,11 +30,11 @@ use super::{
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
 
-/// Below this many faces the classification stays sequential. Measured on 2 cores
-/// (docs/benchmarks.md): from about 330k faces up the pool's build is 1.2-1.3× faster;
-/// on the shared meshes of 80k-200k faces the gain was within the noise or a loss (up
-/// to 1.2× slower), as waking the pool's threads and their cache misses on each other's
-/// entries cost what the second core saves.
+/// Below this many faces the build stays sequential. Measured on 2 cores
+/// (docs/benchmarks.md): from about 330k faces up the classification on the pool was
+/// 1.2-1.3× faster; on the shared meshes of 80k-200k faces the gain was within the
+/// noise or a loss (up to 1.2× slower), as waking the pool's threads and their cache
+/// misses on each other's entries cost what the second core saves.
 pub(super) const MIN_FACES: usize = 1 << 18;
 
 /// Ranges per thread of the pool: more than one, so that a range of dense vertices
