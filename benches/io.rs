@@ -93,6 +93,20 @@ fn stl_binary(b: divan::Bencher) {
     ours(b, &files().stl, Format::Stl);
 }
 
+/// A file of four triangles (the tetrahedron as binary STL, 284 bytes): the cost of a
+/// reader's set-up, which small files and fuzzing pay on every call.
+#[divan::bench(sample_count = 100)]
+fn stl_binary_tetrahedron(b: divan::Bencher) {
+    static T: OnceLock<Vec<u8>> = OnceLock::new();
+    let bytes = T.get_or_init(|| {
+        let mut out = Vec::new();
+        let m = contractible::gen::tetrahedron();
+        io::write_mesh_to(&mut out, &m, Format::Stl, true).expect("writable");
+        out
+    });
+    ours(b, bytes, Format::Stl);
+}
+
 /// `tobj::load_obj_buf` with the options that keep the file's faces (triangles, one
 /// index per corner).
 #[divan::bench(sample_count = 5)]

@@ -1323,6 +1323,16 @@ mod tests {
         assert!(taken[0] >= 50 && taken[1] >= 100, "{taken:?}");
     }
 
+    /// Where a link vertex lies on three link edges (an edge in three faces, which the
+    /// parallel classification may meet in another range), the walk from an edge off the
+    /// triangle of the other three would circle that triangle for ever; it stops, with a
+    /// count other than 1. A cycle is counted as one.
+    #[test]
+    fn link_cycles_stops_where_a_link_vertex_has_three_edges() {
+        assert_eq!(link_cycles(&[(1, 2), (2, 3), (3, 1)]), 1);
+        assert_ne!(link_cycles(&[(1, 2), (2, 3), (3, 1), (9, 1)]), 1);
+    }
+
     /// Two cones over an `m`-gon glued along it (a sphere whose two apexes have `m`
     /// faces each); with `pinched`, a second such sphere sharing the first's north apex
     /// (a vertex whose link is two cycles of `m` faces).

@@ -108,10 +108,13 @@ struct Welder {
     /// most half full.
     slots: Vec<u64>,
     hasher: foldhash::fast::RandomState,
-    /// `recent[h >> RECENT_SHIFT]` = (hash, id) of the last vertex looked up whose hash
+    /// `recent[h >> recent_shift]` = (hash, id) of the last vertex looked up whose hash
     /// `h` maps there: a hint, confirmed by comparing positions (so the initial zeros
-    /// need no sentinel).
+    /// need no sentinel). As long as the table, up to 2^[`RECENT_BITS`] slots, so that
+    /// a small file does not allocate and clear 256 KiB.
     recent: Vec<(u64, u32)>,
+    /// 64 less log2 of `recent`'s length.
+    recent_shift: u32,
     positions: Vec<[f64; 3]>,
     faces: Vec<[u32; 3]>,
     /// The hashes [`Welder::prepare`] computed, one per corner, in file order.
@@ -122,9 +125,9 @@ struct Welder {
 /// below it).
 const EMPTY: u64 = u64::MAX;
 
-/// log2 of the number of recent-lookup slots: 2^14 × 16 bytes stay in a core's L2 cache.
+/// log2 of the largest number of recent-lookup slots: 2^14 × 16 bytes stay in a core's
+/// L2 cache.
 const RECENT_BITS: u32 = 14;
-const RECENT_SHIFT: u32 = 64 - RECENT_BITS;
 
 /// Triangles [`Welder::prepare`] warms at once: their table slots (about one corner in
 /// five misses the cache) stay in the L1 and L2 caches until they are welded.
@@ -140,10 +143,13 @@ impl Welder {
     fn with_capacity(triangles: usize) -> Self {
         // A closed triangle mesh has about half as many vertices as faces.
         let vertices = triangles / 2 + 3;
+        let slots = Self::slots_for(vertices);
+        let recent_bits = Self::recent_bits(slots);
         Welder {
-            slots: vec![EMPTY; Self::slots_for(vertices)],
+            slots: vec![EMPTY; slots],
             hasher: foldhash::fast::RandomState::default(),
-            recent: vec![(0, 0); 1 << RECENT_BITS],
+            recent: vec![(0, 0); 1 << recent_bits],
+            recent_shift: 64 - recent_bits,
             positions: Vec::with_capacity(vertices),
             faces: Vec::with_capacity(triangles),
             hashes: Vec::new(),
@@ -153,6 +159,12 @@ impl Welder {
     /// The table length for `vertices` ids: a power of two at least twice as large.
     fn slots_for(vertices: usize) -> usize {
         vertices.saturating_mul(2).max(16).next_power_of_two()
+    }
+
+    /// log2 of the recent-lookup cache's length beside a table of `slots` slots (a power
+    /// of two): as many, up to 2^[`RECENT_BITS`].
+    fn recent_bits(slots: usize) -> u32 {
+        slots.trailing_zeros().min(RECENT_BITS)
     }
 
     fn hash(&self, key: [u64; 3]) -> u64 {
@@ -169,7 +181,7 @@ impl Welder {
     /// [`Welder::vertex`] with the hash of `p` already computed.
     fn vertex_hashed(&mut self, p: [f64; 3], h: u64) -> Option<u32> {
         let key = bits(&p);
-        let slot = (h >> RECENT_SHIFT) as usize;
+        let slot = (h >> self.recent_shift) as usize;
         let same =
             |positions: &[[f64; 3]], v: u32| positions.get(v as usize).map(bits) == Some(key);
         let (seen, v) = self.recent[slot];
@@ -198,7 +210,8 @@ impl Welder {
             }
             i = (i + 1) & mask;
         };
-        self.recent[slot] = (h, v);
+        // The cache may have grown with the table since `slot` was computed.
+        self.recent[(h >> self.recent_shift) as usize] = (h, v);
         Some(v)
     }
 
@@ -215,6 +228,12 @@ impl Welder {
             slots[i] = (h >> 32) << 32 | v as u64;
         }
         self.slots = slots;
+        let recent_bits = Self::recent_bits(len);
+        if recent_bits != 64 - self.recent_shift {
+            // Hints only: a fresh cache forgets nothing that matters.
+            self.recent = vec![(0, 0); 1 << recent_bits];
+            self.recent_shift = 64 - recent_bits;
+        }
     }
 
     /// Computes the hashes of the corners of `triangles` (binary STL records) into
@@ -233,7 +252,7 @@ impl Welder {
         let mask = self.slots.len() - 1;
         let mut touched = 0u64;
         for &h in &self.hashes {
-            if self.recent[(h >> RECENT_SHIFT) as usize].0 != h {
+            if self.recent[(h >> self.recent_shift) as usize].0 != h {
                 touched ^= self.slots[h as usize & mask];
             }
         }
@@ -1151,6 +1170,28 @@ mod tests {
             }
         }
         assert_eq!(w.positions.len(), 5);
+    }
+
+    /// The recent-lookup cache is as long as the table up to 2^14 slots: 16 for a small
+    /// file, growing with the table to 2^14 and no further, and 2^14 from the start for
+    /// a large declared count; every vertex is found again after each growth.
+    #[test]
+    fn the_recent_lookup_cache_grows_with_the_table_up_to_its_bound() {
+        let mut w = Welder::with_capacity(2);
+        assert_eq!((w.recent.len(), w.recent_shift), (16, 60));
+        let point = |i: usize| [i as f64, -1.5, 2.0];
+        for i in 0..20_000 {
+            assert_eq!(w.vertex(point(i)), Some(i as u32));
+            let expected = w.slots.len().min(1 << RECENT_BITS);
+            assert_eq!(w.recent.len(), expected, "after vertex {i}");
+            assert_eq!(1 << (64 - w.recent_shift), expected);
+        }
+        assert_eq!(w.recent.len(), 1 << RECENT_BITS);
+        for i in (0..20_000).rev() {
+            assert_eq!(w.vertex(point(i)), Some(i as u32));
+        }
+        let w = Welder::with_capacity(1_000_000);
+        assert_eq!(w.recent.len(), 1 << RECENT_BITS);
     }
 
     /// The count past the `u32` vertex limit is the one the file needs: every vertex
