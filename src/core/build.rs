@@ -1419,9 +1419,9 @@ mod tests {
 
     /// The face scan and the grouping by vertex on the pool give the sequential phases'
     /// results: the corner array, the degrees, each vertex's corners, and the first bad
-    /// face (out of range or degenerate, one or two of them anywhere in the list), in 1
-    /// to 7 runs with vertex ranges of 1 to 5 vertices and of all of them, on pools of 2
-    /// and 3 threads.
+    /// face (out of range or degenerate, or both, or two ids out of range; one or two bad
+    /// faces anywhere in the list), in 1 to 7 runs with vertex ranges of 1 to 5 vertices
+    /// and of all of them, on pools of 2 and 3 threads.
     #[cfg(feature = "parallel")]
     #[test]
     fn the_scan_and_grouping_on_the_pool_are_the_sequential_ones() {
@@ -1441,10 +1441,14 @@ mod tests {
             if round % 4 == 1 {
                 for _ in 0..1 + rng.index(2) {
                     let (f, k) = (rng.index(faces.len()), rng.index(3));
-                    if rng.index(2) == 0 {
-                        faces[f][k] = (n + rng.index(3)) as u32;
-                    } else {
-                        faces[f][k] = faces[f][(k + 1) % 3];
+                    let (next, last) = ((k + 1) % 3, (k + 2) % 3);
+                    match rng.index(4) {
+                        0 => faces[f][k] = (n + rng.index(3)) as u32,
+                        1 => faces[f][k] = faces[f][next],
+                        // Two problems in one face: two ids out of range, or a
+                        // repeated id and one out of range.
+                        2 => [faces[f][k], faces[f][next]] = [n as u32, n as u32 + 1],
+                        _ => [faces[f][k], faces[f][last]] = [faces[f][next], n as u32],
                     }
                 }
             }
