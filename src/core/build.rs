@@ -1487,8 +1487,9 @@ mod tests {
         assert!(errors >= 60, "{errors} faulty face lists");
     }
 
-    /// Past [`parallel::MIN_FACES`] the build on a pool of two threads is the build on
-    /// one: the corner table, the components and each error, on a subdivided torus of
+    /// From [`parallel::MIN_FACES`] faces on a pool of two threads the build's phases run
+    /// on the pool (not on one thread, nor below), and the build is the build on one:
+    /// the corner table, the components and each error, on a subdivided torus of
     /// about 290k faces, two copies of it, and the torus with a repeated face, a hole, a
     /// pinched vertex, and a degenerate face before a face out of range.
     #[cfg(feature = "parallel")]
@@ -1512,6 +1513,26 @@ mod tests {
         let fine = crate::gen::subdivide(&coarse, 4).expect("a subdivided torus");
         let (n, faces) = (fine.vertex_count, fine.faces);
         assert!(faces.len() > parallel::MIN_FACES);
+        // The pool's phases answer on two threads from `MIN_FACES` faces, not on one
+        // thread nor below (where the sequential phases run).
+        let on = |pool: &rayon::ThreadPool, faces: &[[u32; 3]]| {
+            pool.install(|| {
+                let scanned = parallel::scan_faces(n, faces).map(|s| s.expect("in range"));
+                let corners = faces.as_flattened();
+                let degree = scan_faces(n, faces).expect("in range").degree;
+                let grouped = parallel::vertex_corners(corners, &degree);
+                let classified = scanned
+                    .as_ref()
+                    .zip(grouped.as_ref())
+                    .and_then(|(s, g)| parallel::classify_edges(s, g, faces));
+                [scanned.is_some(), grouped.is_some(), classified.is_some()]
+            })
+        };
+        assert_eq!(on(&two, &faces), [true; 3]);
+        assert_eq!(on(&one, &faces), [false; 3]);
+        let short = &faces[..parallel::MIN_FACES - 1];
+        assert_eq!(on(&two, short), [false; 3]);
+        assert_eq!(on(&two, &faces[..parallel::MIN_FACES])[..2], [true; 2]);
         let twice: Vec<[u32; 3]> = faces
             .iter()
             .copied()
