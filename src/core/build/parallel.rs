@@ -249,18 +249,7 @@ pub(super) fn classify_edges_in(
     let mut vertex_corner = vec![NONE; vertex_count];
     let failed = AtomicBool::new(false);
 
-    // Range k is the vertices `starts[k]..starts[k + 1]`, cut where the corner count
-    // passes each multiple of `corner_count / ranges`.
-    let ranges = ranges.max(1);
-    let mut starts = vec![0usize];
-    for k in 1..ranges {
-        let target = (corner_count * k / ranges) as u32;
-        let v = by_vertex.end.partition_point(|&e| e <= target);
-        if v > *starts.last().unwrap_or(&0) && v < vertex_count {
-            starts.push(v);
-        }
-    }
-    starts.push(vertex_count);
+    let starts = range_starts(&by_vertex.end, ranges);
     let mut tasks = Vec::with_capacity(starts.len() - 1);
     let mut rest = &mut vertex_corner[..];
     for w in starts.windows(2) {
@@ -312,6 +301,27 @@ pub(super) fn classify_edges_in(
         parent,
         vertex_corner,
     })
+}
+
+/// Where the vertex ranges start, then the vertex count: range `k` is the vertices
+/// `starts[k]..starts[k + 1]`, cut after the vertex where the corner count passes each
+/// multiple of `corner_count / ranges`. Non-empty ranges in increasing order, at most
+/// `max(ranges, 1)` of them (fewer where one vertex holds more than a range's share, or
+/// there are fewer vertices), each holding at most a range's share of the corners plus
+/// one vertex's. `end[v]` is the end of vertex `v`'s corners ([`VertexCorners::end`]).
+fn range_starts(end: &[u32], ranges: usize) -> Vec<usize> {
+    let (vertex_count, corner_count) = (end.len(), end.last().map_or(0, |&e| e as usize));
+    let ranges = ranges.max(1);
+    let mut starts = vec![0usize];
+    for k in 1..ranges {
+        let target = (corner_count * k / ranges) as u32;
+        let v = end.partition_point(|&e| e <= target);
+        if v > *starts.last().unwrap_or(&0) && v < vertex_count {
+            starts.push(v);
+        }
+    }
+    starts.push(vertex_count);
+    starts
 }
 
 /// What every range reads or writes.
@@ -452,5 +462,66 @@ fn union(parent: &[AtomicU32], x: u32, y: u32) {
             return;
         }
         (x, y) = (big, small);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::rng::Rng;
+
+    /// The ranges are non-empty, in order, cover every vertex, number at most the ranges
+    /// asked for (exactly that many when the corners are spread evenly enough), and each
+    /// holds at most a range's share of the corners plus one vertex's: on random degree
+    /// sequences (unused vertices and one heavy vertex included) cut into 1 to 12 ranges.
+    #[test]
+    fn ranges_are_ordered_cover_the_vertices_and_share_the_corners() {
+        let mut rng = Rng::new(4);
+        for round in 0..400 {
+            let n = 1 + rng.index(60);
+            let mut degree: Vec<u32> = (0..n).map(|_| rng.index(8) as u32).collect();
+            if round % 5 == 0 {
+                degree[rng.index(n)] = 100;
+            }
+            let end: Vec<u32> = degree
+                .iter()
+                .scan(0, |sum, &d| {
+                    *sum += d;
+                    Some(*sum)
+                })
+                .collect();
+            let total = *end.last().unwrap_or(&0) as usize;
+            let heaviest = *degree.iter().max().unwrap_or(&0) as usize;
+            let ranges = 1 + rng.index(12);
+            let starts = range_starts(&end, ranges);
+            assert_eq!(
+                (starts[0], starts[starts.len() - 1]),
+                (0, n),
+                "round {round}"
+            );
+            assert!(
+                starts.windows(2).all(|w| w[0] < w[1]),
+                "round {round}: {starts:?}"
+            );
+            assert!(starts.len() - 1 <= ranges, "round {round}: {starts:?}");
+            let corners = |w: &[usize]| {
+                let before = if w[0] == 0 { 0 } else { end[w[0] - 1] };
+                (end[w[1] - 1] - before) as usize
+            };
+            for w in starts.windows(2) {
+                assert!(
+                    corners(w) <= total / ranges + heaviest + 1,
+                    "round {round}: {starts:?} over {degree:?}"
+                );
+            }
+            if degree.iter().all(|&d| d == 1) && ranges <= n {
+                assert_eq!(starts.len() - 1, ranges, "round {round}");
+            }
+        }
+        // Even degrees: exactly the ranges asked for, of equal size.
+        let end: Vec<u32> = (1..=12).map(|v| 3 * v).collect();
+        assert_eq!(range_starts(&end, 4), vec![0, 3, 6, 9, 12]);
+        assert_eq!(range_starts(&end, 1), vec![0, 12]);
+        assert_eq!(range_starts(&end, 0), vec![0, 12]);
     }
 }
