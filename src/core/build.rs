@@ -1442,14 +1442,17 @@ mod tests {
             if round % 4 == 1 {
                 for _ in 0..1 + rng.index(2) {
                     let (f, k) = (rng.index(faces.len()), rng.index(3));
-                    let (next, last) = ((k + 1) % 3, (k + 2) % 3);
-                    match rng.index(4) {
+                    let [x, y, _] = faces[f];
+                    let out = n as u32;
+                    match rng.index(3) {
                         0 => faces[f][k] = (n + rng.index(3)) as u32,
-                        1 => faces[f][k] = faces[f][next],
-                        // Two problems in one face: two ids out of range, or a
-                        // repeated id and one out of range.
-                        2 => [faces[f][k], faces[f][next]] = [n as u32, n as u32 + 1],
-                        _ => [faces[f][k], faces[f][last]] = [faces[f][next], n as u32],
+                        1 => faces[f][k] = faces[f][(k + 1) % 3],
+                        // Two problems in one face, each pairing of the checks in turn:
+                        // two ids out of range, or a repeated id and one out of range.
+                        _ => {
+                            faces[f] = [[out, out + 1, x], [x, out, x], [out, y, y], [x, x, out]]
+                                [(round as usize / 4) % 4]
+                        }
                     }
                 }
             }
