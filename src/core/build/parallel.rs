@@ -24,8 +24,8 @@
 //! smallest vertex, as in the sequential [`super::union`].
 
 use super::{
-    check_sizes, face_problem, fans, link_cycles, link_problem, sort_bucket, BuildError,
-    Classified, Corner, Scanned, VertexCorners, NONE, SMALL_LINK,
+    check_sizes, edge_runs, face_problem, fans, gather_edges, link_cycles, link_problem,
+    BuildError, Classified, Scanned, VertexCorners, NONE, SMALL_LINK,
 };
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
@@ -359,33 +359,14 @@ impl Shared<'_> {
                 return None;
             }
             *slot = corners[0];
-            bucket.clear();
-            ends.clear();
-            for &c in corners {
-                let (next, prev) = (Corner(c).next().0, Corner(c).prev().0);
-                let (a, b) = (corner_vertex[next as usize], corner_vertex[prev as usize]);
-                ends.push((a, b));
-                if a > lo {
-                    bucket.push(((a as u64) << 32) | prev as u64);
-                }
-                if b > lo {
-                    bucket.push(((b as u64) << 32) | next as u64);
-                }
-            }
-            sort_bucket(&mut bucket);
-            let b = &bucket[..];
-            let mut i = 0;
-            while i < b.len() {
-                let hi = b[i] >> 32;
-                let mut j = i + 1;
-                while j < b.len() && b[j] >> 32 == hi {
-                    j += 1;
-                }
-                union(self.parent, lo, hi as u32);
-                let p = (b[i] & 0xffff_ffff) as usize;
-                match j - i {
-                    2 => {
-                        let q = (b[i + 1] & 0xffff_ffff) as usize;
+            gather_edges(corner_vertex, lo, corners, &mut bucket, &mut ends);
+            for run in edge_runs(&bucket) {
+                let hi = (run[0] >> 32) as u32;
+                union(self.parent, lo, hi);
+                let p = (run[0] & 0xffff_ffff) as usize;
+                match *run {
+                    [_, q] => {
+                        let q = (q & 0xffff_ffff) as usize;
                         if corner_vertex[p] == corner_vertex[q] {
                             self.failed.store(true, Relaxed);
                             return None;
@@ -393,13 +374,13 @@ impl Shared<'_> {
                         self.opposite[p].store(q as u32, Relaxed);
                         self.opposite[q].store(p as u32, Relaxed);
                     }
-                    1 => {
+                    [_] => {
                         self.opposite[p].store(NONE, Relaxed);
                         out.boundary.push(p as u32);
                         if out.first_boundary.is_none() {
                             out.first_boundary = Some(BuildError::BoundaryEdge {
                                 a: lo,
-                                b: hi as u32,
+                                b: hi,
                                 face: p / 3,
                             });
                         }
@@ -409,7 +390,6 @@ impl Shared<'_> {
                         return None;
                     }
                 }
-                i = j;
             }
             // With a boundary edge in the range, the links are not read (nor in the
             // sequential pass, which stops checking them at the first).
