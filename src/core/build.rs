@@ -232,6 +232,27 @@ fn face_problem(vertex_count: usize, face: usize, vertices: [u32; 3]) -> BuildEr
     }
 }
 
+/// Whether face `f` has an index out of `0..n` or a repeated vertex ([`face_problem`]
+/// says which). One test for both problems: valid faces (nearly all) take a single
+/// branch.
+#[inline]
+fn face_is_bad(f: [u32; 3], n: usize) -> bool {
+    let [a, b, c] = f.map(|v| v as usize);
+    (a >= n) | (b >= n) | (c >= n) | (a == b) | (b == c) | (a == c)
+}
+
+/// Where each vertex's corners start in the corners grouped by vertex: the running sum
+/// of the degrees before it.
+fn run_starts(degree: &[u32]) -> Vec<u32> {
+    let mut start = Vec::with_capacity(degree.len());
+    let mut sum = 0u32;
+    for &d in degree {
+        start.push(sum);
+        sum += d;
+    }
+    start
+}
+
 /// Phase 1 output: the corner-to-vertex array (the faces, flattened) and the number of
 /// corners at each vertex.
 #[cfg_attr(test, derive(Clone))]
@@ -247,11 +268,10 @@ fn scan_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Scanned, BuildE
     let mut degree = vec![0u32; vertex_count];
     let n = degree.len();
     for (i, &f) in faces.iter().enumerate() {
-        let [a, b, c] = f.map(|v| v as usize);
-        // One test for both problems: valid faces (nearly all) take a single branch.
-        if (a >= n) | (b >= n) | (c >= n) | (a == b) | (b == c) | (a == c) {
+        if face_is_bad(f, n) {
             return Err(face_problem(vertex_count, i, f));
         }
+        let [a, b, c] = f.map(|v| v as usize);
         degree[a] += 1;
         degree[b] += 1;
         degree[c] += 1;
@@ -273,12 +293,7 @@ struct VertexCorners {
 /// Phase 2: the corners grouped by vertex, by a counting sort on the vertex (the
 /// degrees are the counts). O(F + V).
 fn vertex_corners(corner_vertex: &[u32], degree: &[u32]) -> VertexCorners {
-    let mut end = Vec::with_capacity(degree.len());
-    let mut sum = 0u32;
-    for &d in degree {
-        end.push(sum);
-        sum += d;
-    }
+    let mut end = run_starts(degree);
     // `end[v]` starts as the beginning of `v`'s run and, after each corner of `v` is
     // placed, is its end.
     let mut corners = vec![0u32; corner_vertex.len()];

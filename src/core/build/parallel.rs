@@ -24,8 +24,8 @@
 //! smallest vertex, as in the sequential [`super::union`].
 
 use super::{
-    check_sizes, edge_runs, face_problem, fans, gather_edges, link_cycles, link_problem,
-    BuildError, Classified, Scanned, VertexCorners, NONE, SMALL_LINK,
+    check_sizes, edge_runs, face_is_bad, face_problem, fans, gather_edges, link_cycles,
+    link_problem, run_starts, BuildError, Classified, Scanned, VertexCorners, NONE, SMALL_LINK,
 };
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
@@ -94,10 +94,10 @@ pub(super) fn scan_faces_in(
         .map(|(k, (faces, out))| {
             let mut count = vec![0u32; n];
             for (i, (&f, out)) in faces.iter().zip(out.chunks_exact_mut(3)).enumerate() {
-                let [a, b, c] = f.map(|v| v as usize);
-                if (a >= n) | (b >= n) | (c >= n) | (a == b) | (b == c) | (a == c) {
+                if face_is_bad(f, n) {
                     return Err(k * run + i);
                 }
+                let [a, b, c] = f.map(|v| v as usize);
                 count[a] += 1;
                 count[b] += 1;
                 count[c] += 1;
@@ -165,12 +165,7 @@ pub(super) fn vertex_corners_in(
             count
         })
         .collect();
-    let mut end = Vec::with_capacity(n);
-    let mut sum = 0u32;
-    for &d in degree {
-        end.push(sum);
-        sum += d;
-    }
+    let mut end = run_starts(degree);
     // Each run's first slot at each vertex, in place of its count.
     let mut ranges: Vec<Vec<&mut [u32]>> =
         (0..n.div_ceil(vertex_range)).map(|_| Vec::new()).collect();
