@@ -67,6 +67,7 @@
 #![warn(missing_docs)]
 
 pub mod core;
+pub mod decimate;
 pub mod diagnose;
 pub mod dyngraph;
 pub mod gen;
@@ -90,7 +91,8 @@ pub use crate::core::{
 pub use mesh::{Mesh, QuadMesh, TriMesh};
 pub use names::UnknownName;
 pub use task::{
-    describe, quadrangulate, reduce, simplify, Description, Eps, Error, Monitor, QuadOptions,
-    QuadResult, ReduceOptions, ReduceResult, SimplifyOptions, SimplifyResult,
+    decimate, describe, quadrangulate, reduce, simplify, verify_decimation, DecimateOptions,
+    DecimateResult, Description, Eps, Error, MaxError, Monitor, QuadOptions, QuadResult,
+    ReduceOptions, ReduceResult, SimplifyOptions, SimplifyResult,
 };
 pub use topology::SurfaceType;

@@ -254,29 +254,7 @@ impl ConedSurfaces {
 
     /// [`Self::from_mesh`] on a bare face list.
     pub fn from_faces(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Self, BuildError> {
-        let checked = match check_open(vertex_count, faces)? {
-            OpenCheck::Closed(checked) => checked,
-            OpenCheck::Open {
-                corner_vertex,
-                opposite,
-                boundary,
-            } => {
-                let cones = cone_loops(vertex_count, &corner_vertex, &boundary)?;
-                glue_cones(vertex_count, faces.len(), corner_vertex, opposite, &cones).map_err(
-                    |e| match e {
-                        // Report the faces of the mesh around the vertex, not the cone's.
-                        BuildError::VertexLinkNotCycle { vertex, cycles, .. } => {
-                            BuildError::VertexLinkNotCycle {
-                                vertex,
-                                cycles,
-                                faces: faces.iter().filter(|f| f.contains(&vertex)).count(),
-                            }
-                        }
-                        e => e,
-                    },
-                )?
-            }
-        };
+        let checked = checked_coned(vertex_count, faces)?;
         // Cone apexes come after the mesh's vertices and are always used.
         let dropped_vertices = unused_vertices(&checked.used[..vertex_count]);
         let (label, count) = checked.face_components();
@@ -304,6 +282,65 @@ impl ConedSurfaces {
         })
     }
 
+    /// The whole mesh closed by coning as one triangulation, not split: vertex ids are
+    /// the mesh's (an unused one is not a live vertex) followed by one virtual vertex per
+    /// boundary loop, face ids the mesh's followed by the cone faces; `face_label[f]`
+    /// numbers the components as [`Self::from_faces`] orders them. For the decimator,
+    /// whose queue runs over every component at once and whose provenance is in mesh
+    /// ids. The same validation and errors as [`Self::from_faces`]. O(F).
+    pub(crate) fn whole(vertex_count: usize, faces: &[[u32; 3]]) -> Result<ConedWhole, BuildError> {
+        let checked = checked_coned(vertex_count, faces)?;
+        let dropped_vertices = unused_vertices(&checked.used[..vertex_count]);
+        let (face_label, components) = checked.face_components();
+        Ok(ConedWhole {
+            tri: checked.tri,
+            face_label,
+            components,
+            dropped_vertices,
+        })
+    }
+}
+
+/// The unsplit coned triangulation of a mesh (see [`ConedSurfaces::whole`]).
+#[derive(Clone, Debug)]
+pub(crate) struct ConedWhole {
+    pub(crate) tri: Triangulation,
+    pub(crate) face_label: Vec<u32>,
+    pub(crate) components: usize,
+    pub(crate) dropped_vertices: Vec<u32>,
+}
+
+/// The coned surface's corner table of `faces`, validated (closed: no cone).
+fn checked_coned(vertex_count: usize, faces: &[[u32; 3]]) -> Result<Checked, BuildError> {
+    {
+        let checked: Checked = match check_open(vertex_count, faces)? {
+            OpenCheck::Closed(checked) => checked,
+            OpenCheck::Open {
+                corner_vertex,
+                opposite,
+                boundary,
+            } => {
+                let cones = cone_loops(vertex_count, &corner_vertex, &boundary)?;
+                glue_cones(vertex_count, faces.len(), corner_vertex, opposite, &cones).map_err(
+                    |e| match e {
+                        // Report the faces of the mesh around the vertex, not the cone's.
+                        BuildError::VertexLinkNotCycle { vertex, cycles, .. } => {
+                            BuildError::VertexLinkNotCycle {
+                                vertex,
+                                cycles,
+                                faces: faces.iter().filter(|f| f.contains(&vertex)).count(),
+                            }
+                        }
+                        e => e,
+                    },
+                )?
+            }
+        };
+        Ok(checked)
+    }
+}
+
+impl ConedSurfaces {
     /// Total number of boundary loops over all components.
     pub fn loop_count(&self) -> usize {
         self.components

@@ -30,6 +30,7 @@ pub mod topology;
 mod tri;
 mod validate;
 
+pub(crate) use boundary::ConedWhole;
 pub use boundary::{ConedComponent, ConedSurfaces};
 pub use build::{BuildError, Component, Surfaces};
 pub use contract::{ContractError, ContractionRecord, History, UndoError};

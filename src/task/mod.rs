@@ -19,6 +19,7 @@
 //! deterministic for a given input and options (timings aside), and identical to the
 //! command line's and the Python package's, which are thin layers over these calls.
 
+mod decimate;
 mod describe;
 mod error;
 mod monitor;
@@ -26,6 +27,7 @@ mod quadrangulate;
 mod reduce;
 mod simplify;
 
+pub use decimate::{decimate, verify_decimation, DecimateOptions, DecimateResult, MaxError};
 pub use describe::{describe, ComponentDescription, Description};
 pub use error::Error;
 pub use monitor::{Event, Monitor, Step};

@@ -164,11 +164,14 @@ fn check_eps(option: &'static str, v: f64, what: &str) -> Result<(), Error> {
 
 /// The positions of `mesh` and the vertices its faces use, checked: present, one per
 /// vertex, finite, and not all at one point.
-fn checked_positions(mesh: &TriMesh) -> Result<(&[[f64; 3]], Vec<usize>), Error> {
+pub(super) fn checked_positions<'m>(
+    mesh: &'m TriMesh,
+    task: &'static str,
+) -> Result<(&'m [[f64; 3]], Vec<usize>), Error> {
     let positions = mesh
         .positions
         .as_deref()
-        .ok_or(Error::MissingPositions { task: "simplify" })?;
+        .ok_or(Error::MissingPositions { task })?;
     if positions.len() != mesh.vertex_count {
         return Err(Error::PositionCount {
             vertices: mesh.vertex_count,
@@ -246,7 +249,7 @@ pub fn simplify(mesh: &TriMesh, options: &SimplifyOptions) -> Result<SimplifyRes
         check_eps("eps", r, "the fraction of the bounding-box diagonal")?;
     }
     let started = std::time::Instant::now();
-    let (positions, used) = checked_positions(mesh)?;
+    let (positions, used) = checked_positions(mesh, "simplify")?;
     monitor.step(Step::Build, 0, 0, mesh.faces.len())?;
     let surfaces = ConedSurfaces::from_mesh(mesh)?;
     let dropped_vertices = surfaces.dropped_vertices.len();
