@@ -14,6 +14,7 @@ Functions:
     reduce(V, F, algo="rs", seed=0)         irreducible triangulation  -> Reduced
     quad(V, F, algo="lrs", seed=0)          perfect triangle pairing   -> Quadrangulated
     simplify(V, F, eps, mode="nested")      short-edge simplification  -> Simplified
+    decimate(V, F, faces=, keep=, max_error=)  quadric decimation      -> Decimated
 
 Every problem of a mesh raises :class:`MeshError` (a ``ValueError``) with ``kind`` and
 ``location``; a wrong array shape or dtype, an unknown algorithm name or a bad ``eps``
@@ -21,9 +22,10 @@ raises ``ValueError``; a file that cannot be opened or written raises ``OSError`
 functions are a thin layer over the library's task calls and release the GIL while
 they work. Results are checked independently before they are returned, deterministic
 for a given input and seed, and equal to the command line's
-(``contractible reduce|quad|simplify``) for the same mesh, statistics included.
+(``contractible reduce|quad|simplify|decimate``) for the same mesh, statistics included.
 """
 
+import operator
 from dataclasses import dataclass, field
 from os import PathLike
 from typing import Any, Dict, Optional, Tuple, Union
@@ -38,12 +40,14 @@ __all__ = [
     "Reduced",
     "Quadrangulated",
     "Simplified",
+    "Decimated",
     "read",
     "write",
     "info",
     "reduce",
     "quad",
     "simplify",
+    "decimate",
 ]
 
 __version__ = _native.__version__
@@ -160,6 +164,39 @@ class Simplified:
     stats: Dict[str, Any]
 
 
+@dataclass
+class Decimated:
+    """The mesh after quadric-error edge collapses, each passing the link condition: every
+    component has the input's topology (``decimate``).
+
+    Attributes:
+        vertices: (k, 3) float64 positions of the surviving vertices, in input order.
+        faces: (f, 3) int64 faces over them: the surviving input faces in input order,
+            each with its input corner order (so its orientation).
+        vertex_map: (k,) int64, per output vertex the input vertex that survives as it
+            (increasing).
+        collapse_map: (n,) int64, per input vertex the output vertex it went into; -1
+            for an input vertex no face uses. ``faces == collapse_map[F[face_origin]]``.
+        face_origin: (f,) int64, per output face the input face it descends from
+            (increasing).
+        stats: the command line's ``decimate --json`` statistics: ``faces_in``,
+            ``faces_out``, ``vertices_in``, ``vertices_out``, ``components``,
+            ``boundary_loops``, ``target_faces``, ``max_error_cap``, ``stopped``
+            (``"target"``, ``"error"`` or ``"blocked"``), ``collapses``, ``max_error``,
+            ``refused`` and ``remaining`` (dicts of counts by guard: ``lock``,
+            ``boundary``, ``error``, ``link_condition``, ``foldover``),
+            ``per_component``, ``seconds``; and the options ``placement``, ``guard``,
+            ``lock_boundary``, with ``bbox_diagonal`` and ``dropped_vertices``.
+    """
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    vertex_map: np.ndarray
+    collapse_map: np.ndarray
+    face_origin: np.ndarray
+    stats: Dict[str, Any]
+
+
 def read(path: Union[str, "PathLike[str]"]) -> Tuple[Optional[np.ndarray], np.ndarray]:
     """Reads a triangle mesh (OFF, OBJ, PLY, STL; ``.gz`` allowed).
 
@@ -242,3 +279,88 @@ def simplify(V: Any, F: Any = None, eps: Optional[float] = None, *, eps_rel: Opt
     d = _native.simplify(_vertices(V), _faces(F), float(value), eps_rel is not None,
                          mode, side, position, bool(guard), bool(parallel))
     return Simplified(d["vertices"], d["faces"], d["stats"])
+
+
+def _locked(locked: Any, vertex_count: Optional[int]) -> Optional[np.ndarray]:
+    """The locked vertex ids as a C-contiguous uint32 array, or None; ValueError for an
+    array that is not a 1-D list of integers, :class:`MeshError` (kind
+    ``vertex_out_of_range``, located by ``locked`` index and ``vertex``) for an id that
+    is negative or, given ``vertex_count``, not below it."""
+    if locked is None:
+        return None
+    a = np.asarray(locked)
+    if a.size == 0:
+        return np.zeros(0, dtype=np.uint32)
+    if a.dtype == np.bool_ or not np.issubdtype(a.dtype, np.integer):
+        raise ValueError(f"locked must be integer vertex indices, got dtype {a.dtype}")
+    if a.ndim > 1:
+        raise ValueError(f"locked must be a 1-D list of vertex indices, got shape {a.shape}")
+    a = a.reshape(-1)
+    bad = a < 0
+    limit = vertex_count if vertex_count is not None else 2**32
+    bad |= a >= limit
+    if bad.any():
+        i = int(np.argmax(bad))
+        v = int(a[i])
+        count = f" (vertex count {vertex_count})" if vertex_count is not None else ""
+        raise MeshError(f"locked[{i}]: vertex index {v} out of range{count}",
+                        "vertex_out_of_range", {"locked": i, "vertex": v})
+    return np.ascontiguousarray(a, dtype=np.uint32)
+
+
+def decimate(V: Any, F: Any = None, *, faces: Optional[int] = None,
+             keep: Optional[float] = None, max_error: Optional[float] = None,
+             max_error_rel: Optional[float] = None, placement: str = "optimal",
+             guard: bool = True, lock_boundary: bool = False,
+             locked: Any = None) -> Decimated:
+    """Collapses edges, cheapest quadric error first, without changing the topology:
+    every component of the output has the input's Euler characteristic, orientability
+    and boundary loops, since every collapse passes the link condition (closed surfaces
+    and surfaces with boundary, orientable or not, several components at once). Every
+    output vertex is an input vertex that survived, every output face an input face
+    with its corners renamed; the maps say which (see :class:`Decimated`).
+
+    Targets combine; the run stops at the first reached, or when no edge can go:
+    ``faces``, at most this many faces; ``keep``, at most ``ceil(keep × len(F))`` faces
+    (a fraction in [0, 1]; with both, the larger count is the target); ``max_error``
+    (absolute) or ``max_error_rel`` (a fraction of the bounding-box diagonal), no
+    collapse whose error (the root mean square distance of the merged vertex from the
+    planes of the input faces merged into it) exceeds the cap. With none, it goes as
+    far as the guards allow. ``stats["stopped"]`` says why it stopped (``"target"``,
+    ``"error"``, ``"blocked"``) and ``stats["remaining"]`` what refuses the edges left.
+
+    ``placement``: ``optimal`` (the quadric's minimiser, default), ``midpoint``, or
+    ``endpoint`` (every output position is an input position). ``guard=False`` allows
+    collapses that turn a face by 90° or more or leave it without area.
+    ``lock_boundary=True`` keeps every boundary vertex where it is; ``locked`` (input
+    vertex ids, any integer array-like) survive at their input positions.
+
+    Deterministic, and the same as ``contractible decimate`` for the same mesh and
+    options. A negative or out-of-range ``locked`` id raises :class:`MeshError` (kind
+    ``vertex_out_of_range``, ``location`` ``{"locked": i, "vertex": v}``); both
+    ``max_error`` and ``max_error_rel``, a negative ``faces``, ``keep`` outside [0, 1]
+    or a cap that is negative or not finite raise ``ValueError``.
+    """
+    V, F = _vf(V, F)
+    if max_error is not None and max_error_rel is not None:
+        raise ValueError("give at most one of max_error and max_error_rel")
+    target = None
+    if faces is not None:
+        try:
+            if isinstance(faces, (bool, np.bool_)):
+                raise TypeError
+            target = operator.index(faces)
+        except TypeError:
+            raise ValueError(f"faces must be an integer face count, got {faces!r}") from None
+        if target < 0:
+            raise ValueError(f"faces = {target}: the face target must be >= 0")
+        # A target above any face count keeps every face; the native call takes a usize.
+        target = min(target, 2**63 - 1)
+    cap = max_error if max_error is not None else max_error_rel
+    Va, Fa = _vertices(V), _faces(F)
+    d = _native.decimate(Va, Fa, target, None if keep is None else float(keep),
+                         None if cap is None else float(cap), max_error_rel is not None,
+                         placement, bool(guard), bool(lock_boundary),
+                         _locked(locked, None if Va is None else len(Va)))
+    return Decimated(d["vertices"], d["faces"], d["vertex_map"], d["collapse_map"],
+                     d["face_origin"], d["stats"])

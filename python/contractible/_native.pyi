@@ -32,3 +32,8 @@ def quad(vertices: Optional[_Coords], faces: _Indices, algo: str = "lrs", seed: 
 def simplify(vertices: Optional[_Coords], faces: _Indices, eps: float, relative: bool = False,
              mode: str = "nested", side: str = "count", position: str = "midpoint",
              guard: bool = True, parallel: bool = False) -> Dict[str, Any]: ...
+def decimate(vertices: Optional[_Coords], faces: _Indices, target_faces: Optional[int] = None,
+             keep: Optional[float] = None, max_error: Optional[float] = None,
+             relative: bool = False, placement: str = "optimal", guard: bool = True,
+             lock_boundary: bool = False,
+             locked: Optional[npt.NDArray[np.uint32]] = None) -> Dict[str, Any]: ...

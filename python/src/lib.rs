@@ -1,7 +1,7 @@
 //! The native half of the `contractible` Python package: NumPy arrays in, NumPy arrays
 //! and plain dicts out, over the library's task calls ([`contractible::describe`],
 //! [`contractible::reduce`], [`contractible::quadrangulate`],
-//! [`contractible::simplify`]) and its file I/O. The validation, the per-component work,
+//! [`contractible::simplify`], [`contractible::decimate`]) and its file I/O. The validation, the per-component work,
 //! the independent check of every output, the reassembly and the statistics are the
 //! library's; this layer copies arrays in and out and maps errors to exceptions.
 //!
@@ -12,9 +12,10 @@
 //!   (non-manifold edge, boundary where a closed surface is required, a component too
 //!   large for the algorithm, a file's bad line...) raise `contractible.MeshError` with
 //!   `kind` (the library's `Error::kind`) and `location` (face, vertex, edge, component,
-//!   line). A wrong option (unknown algorithm name, ε not > 0, no positions for
-//!   `simplify`) raises `ValueError`; a file that cannot be opened or written raises
-//!   `OSError` (with its errno: `FileNotFoundError`...). An output that fails the
+//!   line). A wrong option (unknown algorithm name, ε not > 0, a fraction kept outside
+//!   `[0, 1]`, no positions for `simplify` or `decimate`) raises `ValueError`; a file
+//!   that cannot be opened or written raises `OSError` (with its errno:
+//!   `FileNotFoundError`...). An output that fails the
 //!   library's independent check raises `RuntimeError` (a defect of the library; it is
 //!   never returned). Nothing input-derived can panic or crash the interpreter.
 //! - The GIL is released while the library works (validation, the algorithm, the
@@ -36,11 +37,13 @@ use contractible::core::MAX_VERTICES;
 use contractible::io::{self, Location, ReadErrorKind, WriteError};
 use contractible::task::{ComponentDescription, ReducedComponent};
 use contractible::{
-    irreducible, quad, simplify, BuildError, Description, Eps, Error, Mesh, QuadOptions,
-    ReduceOptions, SimplifyOptions, Triangulation,
+    decimate, irreducible, quad, simplify, BuildError, DecimateOptions, Description, Eps, Error,
+    MaxError, Mesh, QuadOptions, ReduceOptions, SimplifyOptions, Triangulation,
 };
 use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{
+    IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods,
+};
 use pyo3::exceptions::{PyOSError, PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
@@ -689,6 +692,77 @@ fn simplify_py<'py>(
     Ok(d)
 }
 
+/// Collapses edges, cheapest quadric error first, to a face target (`target_faces`, or
+/// `keep` a fraction of the faces kept) or an error cap (`max_error`, absolute, or with
+/// `relative=True` a fraction of the bounding-box diagonal), every collapse passing the
+/// link condition, so that every component keeps its topology. `locked` (uint32 input
+/// vertex ids) survive at their input positions. Returns a dict: `vertices`, `faces`,
+/// `vertex_map` (per output vertex, the input vertex surviving as it), `collapse_map`
+/// (per input vertex, the output vertex it went into; -1 for a vertex no face uses),
+/// `face_origin` (per output face, the input face it descends from), `stats`.
+#[pyfunction(name = "decimate")]
+#[pyo3(signature = (vertices, faces, target_faces=None, keep=None, max_error=None, relative=false, placement="optimal", guard=true, lock_boundary=false, locked=None))]
+#[allow(clippy::too_many_arguments)]
+fn decimate_py<'py>(
+    py: Python<'py>,
+    vertices: Option<Coordinates<'py>>,
+    faces: Indices<'py>,
+    target_faces: Option<usize>,
+    keep: Option<f64>,
+    max_error: Option<f64>,
+    relative: bool,
+    placement: &str,
+    guard: bool,
+    lock_boundary: bool,
+    locked: Option<PyReadonlyArray1<'py, u32>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let options = DecimateOptions {
+        faces: target_faces,
+        keep,
+        max_error: max_error.map(|e| {
+            if relative {
+                MaxError::Relative(e)
+            } else {
+                MaxError::Absolute(e)
+            }
+        }),
+        placement: choice::<decimate::Placement>(py, placement)?,
+        allow_foldover: !guard,
+        lock_boundary,
+        locked: locked.map(|l| l.as_array().to_vec()).unwrap_or_default(),
+        ..DecimateOptions::default()
+    };
+    let mesh = mesh::<3>(py, vertices.as_ref(), &faces, None)?;
+    let r = py
+        .detach(|| contractible::decimate(&mesh, &options))
+        .map_err(|e| raise(py, &e, None))?;
+    let stats = PyDict::new(py);
+    stats.set_item("placement", options.placement.name())?;
+    stats.set_item("guard", guard)?;
+    stats.set_item("lock_boundary", lock_boundary)?;
+    stats.set_item("bbox_diagonal", r.bbox_diagonal)?;
+    stats.update(dict(py, &r.stats)?.as_mapping())?;
+    stats.set_item("dropped_vertices", r.dropped_vertices)?;
+    let collapse_map = Array1::from_iter(r.collapse_map.iter().map(|&o| {
+        if o == decimate::NO_VERTEX {
+            -1
+        } else {
+            i64::from(o)
+        }
+    }));
+    let d = PyDict::new(py);
+    d.set_item(
+        "vertices",
+        r.mesh.positions.as_deref().map(|p| vertices_array(py, p)),
+    )?;
+    d.set_item("faces", index_array(py, &r.mesh.faces))?;
+    d.set_item("vertex_map", vector(py, &r.vertex_map))?;
+    d.set_item("collapse_map", collapse_map.into_pyarray(py))?;
+    d.set_item("face_origin", vector(py, &r.face_origin))?;
+    d.set_item("stats", stats)?;
+    Ok(d)
+}
+
 /// The native module; `contractible/__init__.py` is the public face.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -698,6 +772,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(reduce, m)?)?;
     m.add_function(wrap_pyfunction!(quad_py, m)?)?;
     m.add_function(wrap_pyfunction!(simplify_py, m)?)?;
+    m.add_function(wrap_pyfunction!(decimate_py, m)?)?;
     m.add_class::<History>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -22,8 +22,9 @@ EVERY = [
     lambda V, F: c.reduce(V, F),
     lambda V, F: c.quad(V, F),
     lambda V, F: c.simplify(V, F, eps=0.1),
+    lambda V, F: c.decimate(V, F, keep=0.5),
 ]
-NAMES = ["info", "reduce", "quad", "simplify"]
+NAMES = ["info", "reduce", "quad", "simplify", "decimate"]
 
 
 @pytest.mark.parametrize("f", EVERY, ids=NAMES)
@@ -83,7 +84,8 @@ def test_non_finite_coordinates_name_the_vertex(f, value):
 
 
 def test_mesh_problems_are_located():
-    # A boundary: reduce and quad need closed surfaces; info and simplify accept it.
+    # A boundary: reduce and quad need closed surfaces; info, simplify and decimate
+    # accept it.
     open_f = OCT_F[1:]
     for f in [c.reduce, c.quad]:
         with pytest.raises(c.MeshError) as e:
@@ -93,6 +95,7 @@ def test_mesh_problems_are_located():
         assert {"face", "a", "b"} <= set(e.value.location)
     assert c.info(OCT_V, open_f)["boundary_loops"] == 1
     c.simplify(OCT_V, open_f, eps=0.1)
+    c.decimate(OCT_V, open_f, keep=0.5)
     # A degenerate face, a duplicate face, a non-manifold edge.
     cases = [
         (np.vstack([OCT_F, [[0, 0, 1]]]), "degenerate_face", {"face": 8}),
@@ -137,6 +140,7 @@ def test_mesh_objects_are_accepted():
     assert c.reduce(mesh).faces.shape == (4, 3)  # the tetrahedron
     assert c.quad(mesh).quads.shape == (4, 4)
     assert c.simplify(mesh, eps=0.1).faces.shape == (8, 3)
+    assert c.decimate(mesh).faces.shape == (4, 3)  # the tetrahedron
 
 
 def test_trimesh_objects_are_accepted():
@@ -166,6 +170,14 @@ def test_bad_files(tmp_path):
     with pytest.raises(OSError):
         c.write(tmp_path / "missing_dir" / "x.off", OCT_V, OCT_F)
     assert not list((tmp_path).glob(".contractible-*"))
+
+
+def test_decimated_write(tmp_path):
+    d = c.decimate(OCT_V, OCT_F)
+    p = tmp_path / "d.off"
+    c.write(p, d)  # the result is a (vertices, faces) mesh
+    V, F = c.read(p)
+    assert np.array_equal(V, d.vertices) and np.array_equal(F, d.faces)
 
 
 def test_quads_write(tmp_path):
@@ -226,6 +238,7 @@ def test_gil_is_released(cli, tmp_path):
         c.reduce(V, F)
         c.quad(V, F)
         c.simplify(V, F, eps_rel=0.01)
+        c.decimate(V, F, keep=0.1)
 
     during_calls, elapsed = _ticks_while(calls)
 
