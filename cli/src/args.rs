@@ -7,6 +7,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::choice;
 // The choices are the library's own enums (one list of names, parsed and printed by
 // them, adapted to clap by `choice`); under these names for the arguments below.
+use contractible::decimate::Placement;
 use contractible::irreducible::Algorithm as Algo;
 use contractible::quad::Algorithm as QuadAlgo;
 use contractible::simplify::{
@@ -65,12 +66,18 @@ contracted is replaced by one vertex (--position). It is unrelated to the ε col
 `reduce`."
     )]
     Simplify(SimplifyArgs),
+    /// Collapse edges, cheapest quadric error first (Garland–Heckbert), down to a face
+    /// budget or an error cap, every collapse passing the link condition: every
+    /// component keeps its topology (χ, orientability, boundary loops), checked before
+    /// writing. Needs vertex positions; accepts surfaces with boundary.
+    #[command(after_help = DECIMATE_AFTER_HELP)]
+    Decimate(DecimateArgs),
     /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
     /// and the brute force, pair into quads, simplify marching-tetrahedra isosurfaces
     /// (naive and nested, ε = 1 % of the bounding-box diagonal), verify.
     #[command(after_help = REDUCE_AFTER_HELP)]
     Demo(DemoArgs),
-    /// Run one task (info, reduce, quad or simplify) over many files in parallel: one
+    /// Run one task (info, reduce, quad, simplify or decimate) over many files in parallel: one
     /// JSON line per file, in input order; a failing file never stops the batch.
     #[command(after_help = BATCH_AFTER_HELP)]
     Batch(BatchArgs),
@@ -89,6 +96,17 @@ parser), quietly, one file per thread. Each line is {\"file\", \"task\", \"ok\",
 \"result\": the task's --json report, \"error\": {\"kind\", \"exit_code\", \
 \"message\"}}; `info` on a broken mesh gives both (the problems and the error). Exit \
 code 0 when every file succeeded, 1 when any failed.";
+
+/// The targets, the error and the stop rule of `decimate`.
+const DECIMATE_AFTER_HELP: &str = "Targets: the run stops at the first one reached \
+(--faces and --keep: the larger face count; --max-error: no collapse whose error exceeds \
+the cap). With no target at all it collapses as far as the guards allow: until every edge \
+left fails the link condition or is refused by the fold-over guard or a lock. The report \
+says why it stopped (target, error cap, blocked) and, short of the target, how many edges \
+each guard refuses. The error of a vertex is the root mean square distance of its \
+position from the planes of the input faces merged into it, in the mesh's units. Vertex \
+ids (--lock, the --maps file) count from 0 in every format, OBJ included (the OBJ vertex \
+`1` is id 0), as the vertices' order in the file.";
 
 /// What the columns of `reduce` and `demo` mean.
 const REDUCE_AFTER_HELP: &str = "Columns (the RS paper's counters): ℓ is the number of \
@@ -443,6 +461,72 @@ pub struct SimplifyArgs {
 }
 
 #[derive(Args, Debug)]
+pub struct DecimateArgs {
+    /// Input mesh with vertex positions (closed surfaces or surfaces with boundary, any
+    /// number of components).
+    pub input: PathBuf,
+    /// Output mesh (.off/.obj/.ply/.stl, optionally .gz); written only after the result has
+    /// passed its independent check; `-` writes to stdout (with --output-format).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Format of the output: required with `-o -` (stdout); with a file name it must
+    /// agree with the extension.
+    #[arg(long, value_enum, value_name = "FORMAT")]
+    pub output_format: Option<FormatArg>,
+    /// Stop at this many faces or fewer.
+    #[arg(long, value_name = "N")]
+    pub faces: Option<usize>,
+    /// Stop at this fraction of the input's faces kept or fewer (in [0, 1]; 0.1 keeps
+    /// a tenth, ceil(F × 0.1) faces). With --faces too, the larger face count wins.
+    #[arg(long, value_name = "F", allow_negative_numbers = true)]
+    pub keep: Option<f64>,
+    /// Make no collapse whose error exceeds this distance (finite, >= 0).
+    #[arg(long, value_name = "E", allow_negative_numbers = true)]
+    pub max_error: Option<f64>,
+    /// The error cap as a fraction of the diagonal of the bounding box of the vertices
+    /// the faces use (finite, >= 0; 0.001 is 0.1 %).
+    #[arg(
+        long,
+        value_name = "R",
+        allow_negative_numbers = true,
+        conflicts_with = "max_error"
+    )]
+    pub max_error_rel: Option<f64>,
+    /// Where the vertex that replaces a collapsed edge goes (a locked endpoint
+    /// overrides it: the edge collapses onto that endpoint).
+    #[arg(long, value_parser = choice::parser::<Placement>(), default_value_t = Placement::Optimal)]
+    pub placement: Placement,
+    /// Turn off the geometry guard (which refuses a collapse that would turn a face by
+    /// 90° or more or leave it with zero area). The topology is kept either way.
+    #[arg(long)]
+    pub allow_foldover: bool,
+    /// Keep every boundary vertex where it is: a boundary edge never collapses, an
+    /// interior edge at the boundary only onto its boundary end.
+    #[arg(long)]
+    pub lock_boundary: bool,
+    /// Input vertices that must survive at their input positions: ids counted from 0
+    /// in every format (the OBJ vertex `1` is id 0), comma-separated or repeated.
+    #[arg(long, value_name = "V", value_delimiter = ',')]
+    pub lock: Vec<u32>,
+    /// Skip the independent check of the output (topology per component, the maps,
+    /// the locks).
+    #[arg(long)]
+    pub no_verify: bool,
+    /// Write where every output vertex and face comes from as JSON (vertex_map,
+    /// collapse_map, face_origin; ids of the input file counted from 0), to carry
+    /// attributes over; `-` writes it to stdout.
+    #[arg(long, value_name = "FILE")]
+    pub maps: Option<PathBuf>,
+    /// Threads for checking the input and the output (their surfaces are built on the
+    /// pool from 262,144 faces; default: one per CPU). The decimation itself is
+    /// sequential; the output is the same for every value.
+    #[arg(long, short = 'j')]
+    pub jobs: Option<usize>,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
+}
+
+#[derive(Args, Debug)]
 pub struct DemoArgs {
     /// Seed for the random surface and the brute force.
     #[arg(long, default_value_t = 0)]
@@ -463,6 +547,8 @@ pub enum BatchTask {
     Quad,
     /// `contractible simplify` (give --eps or --eps-rel after `--`).
     Simplify,
+    /// `contractible decimate` (targets such as --faces or --keep after `--`).
+    Decimate,
 }
 
 #[derive(Args, Debug)]
@@ -476,7 +562,7 @@ pub struct BatchArgs {
     pub task: BatchTask,
     /// Write each output mesh under this directory (the input's path relative to the
     /// inputs' common directory, the task before the extension: `x.reduce.off.gz`).
-    /// Without it, no mesh is written (`simplify` needs it).
+    /// Without it, no mesh is written (`simplify` and `decimate` need it).
     #[arg(short, long, value_name = "OUTDIR")]
     pub output: Option<PathBuf>,
     /// Files processed at once (default: the number of CPUs).
@@ -489,7 +575,7 @@ pub struct BatchArgs {
     #[arg(long)]
     pub resume: bool,
     /// Options of the task, after `--` (e.g. `-- --algo brute --seed 3`,
-    /// `-- --eps-rel 0.01`).
+    /// `-- --eps-rel 0.01`, `-- --keep 0.1`).
     #[arg(last = true, allow_hyphen_values = true)]
     pub options: Vec<String>,
 }

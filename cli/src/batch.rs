@@ -34,7 +34,7 @@ use serde_json::{json, Value};
 
 use super::args::{BatchArgs, BatchTask, Cli, Command};
 use super::progress::bar;
-use super::{info, quad, reduce, simplify, CliError, Ui};
+use super::{decimate, info, quad, reduce, simplify, CliError, Ui};
 
 /// Extensions of the files a directory contributes (after an optional `.gz`).
 const MESH_EXTENSIONS: [&str; 4] = ["off", "obj", "ply", "stl"];
@@ -45,6 +45,7 @@ fn task_name(t: BatchTask) -> &'static str {
         BatchTask::Reduce => "reduce",
         BatchTask::Quad => "quad",
         BatchTask::Simplify => "simplify",
+        BatchTask::Decimate => "decimate",
     }
 }
 
@@ -207,6 +208,9 @@ fn run_task(cmd: &Command) -> (Option<Value>, Option<CliError>) {
         Command::Simplify(a) => {
             simplify::compute(a, ui).and_then(|report| Ok((value(&report)?, None)))
         }
+        Command::Decimate(a) => {
+            decimate::compute(a, ui).and_then(|report| Ok((value(&report)?, None)))
+        }
         _ => Err(CliError::Failure("not a batch task".into())),
     };
     match r {
@@ -287,7 +291,17 @@ pub fn run(a: &BatchArgs, ui: Ui) -> Result<(), CliError> {
     }
     // Bad task options fail here, before any work.
     let probe_out = a.output.as_ref().map(|o| o.join("probe.off"));
-    task_command(a.task, &files[0], probe_out.as_deref(), &a.options)?;
+    if let Command::Decimate(d) = task_command(a.task, &files[0], probe_out.as_deref(), &a.options)?
+    {
+        // Every file would write the one file named.
+        if d.maps.is_some() {
+            return Err(CliError::Input(
+                "task options: --maps names one file, and batch runs many: run `decimate \
+                 --maps` per file"
+                    .into(),
+            ));
+        }
+    }
     if let Some(o) = &a.output {
         std::fs::create_dir_all(o).map_err(|e| {
             CliError::Input(format!(

@@ -39,6 +39,7 @@ choice!(contractible::quad::Algorithm);
 choice!(contractible::simplify::Mode);
 choice!(contractible::simplify::Side);
 choice!(contractible::simplify::Position);
+choice!(contractible::decimate::Placement);
 
 /// The clap value parser of a [`Choice`] (`#[arg(value_parser = parser::<T>())]`).
 #[derive(Clone)]

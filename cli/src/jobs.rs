@@ -1,4 +1,5 @@
-//! `--jobs`: how many components of one mesh `reduce` and `quad` process at once.
+//! `--jobs`: how many components of one mesh `reduce`, `quad` and `simplify` process at
+//! once, and how many threads `decimate` builds its surfaces on.
 
 use super::CliError;
 
@@ -22,6 +23,26 @@ pub fn with_jobs<R: Send>(
                 .build()
                 .map_err(|e| CliError::Failure(format!("cannot start {k} worker threads: {e}")))?;
             Ok(pool.install(|| f(true)))
+        }
+    }
+}
+
+/// Runs `f` on a pool of `jobs` threads (`None`: rayon's current pool, one thread per
+/// CPU or the pool of `batch`), for tasks that are sequential but whose surface builds
+/// use the pool on large meshes: `Some(1)` really is one thread. The library's output
+/// is the same in every case.
+pub fn in_pool<R: Send>(jobs: Option<usize>, f: impl FnOnce() -> R + Send) -> Result<R, CliError> {
+    match jobs {
+        None => Ok(f()),
+        Some(0) => Err(CliError::Input(
+            "--jobs must be at least 1 (1 checks the input and the output on one thread)".into(),
+        )),
+        Some(k) => {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(k)
+                .build()
+                .map_err(|e| CliError::Failure(format!("cannot start {k} worker threads: {e}")))?;
+            Ok(pool.install(f))
         }
     }
 }

@@ -4,10 +4,10 @@
 //! uses only the public API of the `contractible` library.
 //!
 //! Exit codes: 0 success; 2 invalid input (unreadable or malformed file, mesh that is not
-//! a disjoint union of closed surfaces — for `info` and `simplify`, of surfaces possibly
-//! with boundary — a mesh without usable positions for `simplify`, bad arguments, an
-//! output that cannot be written: checked before any work); 1 any other failure. A
-//! closed stdout (`| head`) ends the process as SIGPIPE does by default (status 141 in a
+//! a disjoint union of closed surfaces — for `info`, `convert`, `simplify` and
+//! `decimate`, of surfaces possibly with boundary — a mesh without usable positions for
+//! `simplify` and `decimate`, bad arguments, an output that cannot be written: checked
+//! before any work); 1 any other failure. A closed stdout (`| head`) ends the process as SIGPIPE does by default (status 141 in a
 //! shell, no message, like `yes | head`); SIGINT and SIGTERM remove the output being
 //! written and end it by the signal (130, 143).
 
@@ -28,6 +28,7 @@ mod args;
 mod batch;
 mod choice;
 mod convert;
+mod decimate;
 mod demo;
 mod docs;
 mod gen;
@@ -176,6 +177,7 @@ pub fn main() -> ExitCode {
         args::Command::Reduce(a) => reduce::run(&a, ui),
         args::Command::Quad(a) => quad::run(&a, ui),
         args::Command::Simplify(a) => simplify::run(&a, ui),
+        args::Command::Decimate(a) => decimate::run(&a, ui),
         args::Command::Demo(a) => demo::run(&a, ui),
         args::Command::Batch(a) => batch::run(&a, ui),
         args::Command::Completions(a) => docs::completions(&a),

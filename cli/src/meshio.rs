@@ -25,6 +25,8 @@ pub struct Names {
     lines: Option<Vec<u32>>,
     face_origin: Option<Vec<u32>>,
     vertex_origin: Option<Vec<u32>>,
+    /// With `--weld`: per vertex of the file, the mesh vertex it was merged into.
+    vertex_new_id: Option<Vec<u32>>,
 }
 
 impl Names {
@@ -80,6 +82,36 @@ impl Names {
     /// Whether vertices and faces are counted from 1 (OBJ).
     pub fn one_based(&self) -> bool {
         self.one_based
+    }
+
+    /// The number of vertices in the file (before `--weld`), for a mesh of
+    /// `mesh_vertices` read from it.
+    pub fn file_vertex_count(&self, mesh_vertices: usize) -> usize {
+        self.vertex_new_id.as_ref().map_or(mesh_vertices, Vec::len)
+    }
+
+    /// The mesh vertex that the file's vertex `v` (0-based, in every format) became
+    /// (with `--weld`, its group's vertex); `None` when the file has no such vertex.
+    pub fn mesh_vertex(&self, v: u32, mesh_vertices: usize) -> Option<u32> {
+        match &self.vertex_new_id {
+            Some(new_id) => new_id.get(v as usize).copied(),
+            None => ((v as usize) < mesh_vertices).then_some(v),
+        }
+    }
+
+    /// The file's vertex (0-based, in every format) that mesh vertex `v` is (with
+    /// `--weld`, its group's lowest-numbered vertex).
+    pub fn file_vertex(&self, v: u32) -> u32 {
+        match &self.vertex_origin {
+            Some(o) => o.get(v as usize).copied().unwrap_or(v),
+            None => v,
+        }
+    }
+
+    /// The file's face (0-based, in every format) that mesh face `f` comes from (with
+    /// `--triangulate`, the polygon it was cut from).
+    pub fn file_face_index(&self, f: usize) -> usize {
+        self.file_face(f)
     }
 }
 
@@ -376,6 +408,7 @@ pub fn load(path: &Path, opts: &InputOpts, ui: Ui) -> Result<Loaded, CliError> {
         );
     }
     names.vertex_origin = Some(map.kept);
+    names.vertex_new_id = Some(map.new_id);
     Ok(Loaded {
         poly: welded,
         names,
