@@ -185,8 +185,10 @@ class Decimated:
             (``"target"``, ``"error"`` or ``"blocked"``), ``collapses``, ``max_error``,
             ``refused`` and ``remaining`` (dicts of counts by guard: ``lock``,
             ``boundary``, ``error``, ``link_condition``, ``foldover``),
-            ``per_component``, ``seconds``; and the options ``placement``, ``guard``,
-            ``lock_boundary``, with ``bbox_diagonal`` and ``dropped_vertices``.
+            ``per_component``, ``seconds``; the options: ``targets`` (``faces``,
+            ``keep``, ``max_error``, ``max_error_rel`` as given, None when not),
+            ``placement``, ``guard``, ``lock_boundary``, ``locked`` (sorted, without
+            repeats); and ``bbox_diagonal``, ``verified``, ``dropped_vertices``.
     """
 
     vertices: np.ndarray

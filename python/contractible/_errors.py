@@ -20,7 +20,8 @@ class MeshError(ValueError):
         location: where, as a dict of 0-based indices: ``face``, ``vertex``, ``a`` and
             ``b`` (an edge's ends), ``first`` (the face a duplicate repeats),
             ``component`` (in the order of the smallest face index), ``count`` (a count
-            too large), or for files ``line`` (1-based, as editors count) or
+            too large), ``locked`` (the position of a bad id in ``decimate``'s
+            ``locked``), or for files ``line`` (1-based, as editors count) or
             ``byte_offset``.
     """
 

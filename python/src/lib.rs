@@ -736,12 +736,24 @@ fn decimate_py<'py>(
     let r = py
         .detach(|| contractible::decimate(&mesh, &options))
         .map_err(|e| raise(py, &e, None))?;
+    // The keys of the command line's `decimate --json`, but for its files and timings.
+    let targets = PyDict::new(py);
+    targets.set_item("faces", target_faces)?;
+    targets.set_item("keep", keep)?;
+    targets.set_item("max_error", if relative { None } else { max_error })?;
+    targets.set_item("max_error_rel", if relative { max_error } else { None })?;
+    let mut locked = options.locked.clone();
+    locked.sort_unstable();
+    locked.dedup();
     let stats = PyDict::new(py);
+    stats.set_item("targets", targets)?;
+    stats.set_item("bbox_diagonal", r.bbox_diagonal)?;
     stats.set_item("placement", options.placement.name())?;
     stats.set_item("guard", guard)?;
     stats.set_item("lock_boundary", lock_boundary)?;
-    stats.set_item("bbox_diagonal", r.bbox_diagonal)?;
+    stats.set_item("locked", locked)?;
     stats.update(dict(py, &r.stats)?.as_mapping())?;
+    stats.set_item("verified", r.verified)?;
     stats.set_item("dropped_vertices", r.dropped_vertices)?;
     let collapse_map = Array1::from_iter(r.collapse_map.iter().map(|&o| {
         if o == decimate::NO_VERTEX {
