@@ -14,7 +14,7 @@ Functions:
     reduce(V, F, algo="rs", seed=0)         irreducible triangulation  -> Reduced
     quad(V, F, algo="lrs", seed=0)          perfect triangle pairing   -> Quadrangulated
     simplify(V, F, eps, mode="nested")      short-edge simplification  -> Simplified
-    decimate(V, F, faces=, keep=, max_error=)  quadric decimation      -> Decimated
+    decimate(V, F, faces=n | keep=f)        quadric-error decimation   -> Decimated
 
 Every problem of a mesh raises :class:`MeshError` (a ``ValueError``) with ``kind`` and
 ``location``; a wrong array shape or dtype, an unknown algorithm name or a bad ``eps``
