@@ -19,11 +19,11 @@ use contractible::TriMesh;
 use serde_json::Value;
 
 /// (χ, orientable, boundary loops) of one component.
-type Topo = (i64, bool, usize);
+pub(crate) type Topo = (i64, bool, usize);
 
 /// The sorted per-component topology of a face list. Panics unless every edge lies in
 /// one or two faces and every boundary vertex on exactly two boundary edges.
-fn topology(faces: &[[u32; 3]]) -> Vec<Topo> {
+pub(crate) fn topology(faces: &[[u32; 3]]) -> Vec<Topo> {
     // Edge -> the faces using it, with the direction each traverses it.
     let mut edges: BTreeMap<(u32, u32), Vec<(usize, bool)>> = BTreeMap::new();
     for (fi, f) in faces.iter().enumerate() {
