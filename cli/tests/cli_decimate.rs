@@ -73,18 +73,19 @@ fn face_components(faces: &[[u32; 3]]) -> (Vec<usize>, Vec<Vec<usize>>) {
             }
         }
     }
-    let mut label = vec![usize::MAX; faces.len()];
     let mut parts: Vec<Vec<usize>> = Vec::new();
     let mut index: BTreeMap<usize, usize> = BTreeMap::new();
-    for i in 0..faces.len() {
-        let r = find(&mut parent, i);
-        let k = *index.entry(r).or_insert_with(|| {
-            parts.push(Vec::new());
-            parts.len() - 1
-        });
-        label[i] = k;
-        parts[k].push(i);
-    }
+    let label = (0..faces.len())
+        .map(|i| {
+            let r = find(&mut parent, i);
+            let k = *index.entry(r).or_insert_with(|| {
+                parts.push(Vec::new());
+                parts.len() - 1
+            });
+            parts[k].push(i);
+            k
+        })
+        .collect();
     (label, parts)
 }
 
