@@ -15,6 +15,7 @@ mod cpu;
 mod harness;
 
 mod closed_inputs;
+mod decimate;
 mod irreducible_algorithms;
 mod irreducible_meshes;
 mod iso_vectors;
