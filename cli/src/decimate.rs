@@ -482,13 +482,11 @@ fn print_human(r: &DecimateReport) {
             }
         }
     }
+    // The refusals on the way (`refused`) stay in the JSON: they count the queue's
+    // re-checks, which say more about the method than about the result.
     outln!(
-        "  collapses {}; refusals on the way (an edge may count more than once): {}",
+        "  collapses {}; largest error {}; {:.4} s",
         s.collapses,
-        by_guard(&s.refused)
-    );
-    outln!(
-        "  largest error {}; {:.4} s",
         fmt_len(s.max_error),
         s.seconds
     );
