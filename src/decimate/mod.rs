@@ -43,6 +43,7 @@
 //! queue entries of the merged vertex's neighbourhood (d its degree); memory about 120
 //! bytes per triangle (corner table, positions, quadrics, queue).
 
+mod queue;
 mod run;
 mod spec;
 
@@ -275,3 +276,6 @@ pub(crate) struct Output {
 
 /// The entry of [`Output::collapse_map`] for an input vertex no face uses.
 pub const NO_VERTEX: u32 = NONE;
+
+#[cfg(test)]
+mod tests;

@@ -1,9 +1,9 @@
 //! The decimator's state and main loop (see the module documentation of
 //! [`crate::decimate`] for the guarantee and the method).
 
-use std::cmp::Ordering;
-use std::collections::BinaryHeap;
+use std::collections::HashSet;
 
+use super::queue::{key, unpack, Queue};
 use super::{spec, ComponentStats, Options, Output, Placement, Refusal, Refusals, Stats, Stopped};
 use crate::core::ids::NONE;
 use crate::core::{ConedWhole, Corner, Triangulation, VertexId};
@@ -22,48 +22,6 @@ const BOUNDARY_WEIGHT: f64 = 10.0;
 const FREE: u8 = 0;
 const LOCKED: u8 = 1;
 const BOUNDARY: u8 = 2;
-
-/// A queue entry: the edge `[p, q]` (`p < q`) with its cost when both endpoints had
-/// the versions recorded; stale once either changed.
-#[derive(Copy, Clone, Debug)]
-pub(super) struct Entry {
-    pub(super) cost: f64,
-    pub(super) p: u32,
-    pub(super) q: u32,
-    vp: u32,
-    vq: u32,
-}
-
-impl Entry {
-    /// The queue's order: cheapest first, then the smaller endpoints.
-    fn key(&self) -> (f64, u32, u32) {
-        (self.cost, self.p, self.q)
-    }
-}
-
-impl PartialEq for Entry {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Entry {}
-impl PartialOrd for Entry {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Entry {
-    /// Reversed, so that `BinaryHeap` (a max-heap) pops the cheapest.
-    fn cmp(&self, other: &Self) -> Ordering {
-        other
-            .cost
-            .total_cmp(&self.cost)
-            .then(other.p.cmp(&self.p))
-            .then(other.q.cmp(&self.q))
-            .then(other.vp.cmp(&self.vp))
-            .then(other.vq.cmp(&self.vq))
-    }
-}
 
 /// What collapsing an edge would do, decided from the endpoints alone.
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -84,12 +42,17 @@ pub(crate) struct Decimator<'o> {
     pub(super) pos: Vec<Point>,
     pub(super) quadric: Vec<Quadric>,
     pub(super) weight: Vec<f64>,
-    pub(super) version: Vec<u32>,
-    /// Per vertex: edges at it refused (link condition or fold-over) since its edges
-    /// last entered the queue.
+    /// Per vertex: the key of its cheapest edge that its endpoints allow and no guard
+    /// has refused since (`NO_KEY` if none). The queue holds an entry for every such
+    /// key; other entries are stale.
+    best: Vec<u128>,
+    /// The edges a guard refused (link condition or fold-over), until a collapse next to
+    /// them, the only thing that can change their verdict.
+    refused_edges: HashSet<(u32, u32)>,
+    /// Per vertex: an upper bound on the refused edges at it (0: none).
     refused_at: Vec<u32>,
     pub(super) lock: Vec<u8>,
-    heap: BinaryHeap<Entry>,
+    heap: Queue,
     pub(super) opts: &'o Options,
     /// The power of two the positions are multiplied by (as the simplifier's `scale`:
     /// exact, and keeps squares of extreme coordinates finite).
@@ -110,7 +73,12 @@ pub(crate) struct Decimator<'o> {
     nbr_p: Vec<VertexId>,
     nbr_q: Vec<VertexId>,
     scratch: Vec<Corner>,
-    around: Vec<VertexId>,
+    /// Star steps (corner, exit neighbour), scratch.
+    steps: Vec<(Corner, VertexId)>,
+    ring: Vec<(Corner, VertexId)>,
+    /// Per corner: the cost of the edge opposite it (NaN: its endpoints refuse it), for
+    /// real edges.
+    edge_cost: Vec<f64>,
     pub(super) collapses: usize,
     pub(super) max_error2: f64,
     pub(super) refused: Refusals,
@@ -168,10 +136,11 @@ impl<'o> Decimator<'o> {
             pos,
             quadric: vec![Quadric::default(); nv],
             weight: vec![0.0; nv],
-            version: vec![0; nv],
+            best: vec![NO_KEY; nv],
+            refused_edges: HashSet::new(),
             refused_at: vec![0; nv],
             lock,
-            heap: BinaryHeap::new(),
+            heap: Queue::default(),
             opts,
             scale,
             max_coordinate: f64::MAX * scale,
@@ -188,7 +157,9 @@ impl<'o> Decimator<'o> {
             nbr_p: Vec::new(),
             nbr_q: Vec::new(),
             scratch: Vec::new(),
-            around: Vec::new(),
+            steps: Vec::new(),
+            ring: Vec::new(),
+            edge_cost: Vec::new(),
             collapses: 0,
             max_error2: 0.0,
             refused: Refusals::default(),
@@ -204,16 +175,21 @@ impl<'o> Decimator<'o> {
                 .zip(d.weight.iter().copied())
                 .collect();
         }
-        let mut entries = Vec::with_capacity(3 * d.real_faces / 2 + 16);
-        for (p, q, _) in d.tri.edges() {
+        d.edge_cost = vec![f64::NAN; d.tri.corner_vertex.len()];
+        let edges: Vec<(VertexId, VertexId, Corner)> = d.tri.edges().collect();
+        for (p, q, c) in edges {
             if d.is_virtual(q) {
                 continue;
             }
-            if let Ok(c) = d.candidate(p, q) {
-                entries.push(d.entry(p, q, c.cost));
+            d.cache_cost(p, q, c);
+            if let Some(k) = d.cached_key(p, q, c) {
+                for v in [p, q] {
+                    d.best[v.index()] = d.best[v.index()].min(k);
+                }
             }
         }
-        d.heap = BinaryHeap::from(entries);
+        let entries: Vec<u128> = d.best.iter().copied().filter(|&k| k != NO_KEY).collect();
+        d.heap = Queue::from_vec(entries);
         d
     }
 
@@ -265,17 +241,6 @@ impl<'o> Decimator<'o> {
         }
     }
 
-    fn entry(&self, p: VertexId, q: VertexId, cost: f64) -> Entry {
-        let (p, q) = if p < q { (p, q) } else { (q, p) };
-        Entry {
-            cost,
-            p: p.0,
-            q: q.0,
-            vp: self.version[p.index()],
-            vq: self.version[q.index()],
-        }
-    }
-
     /// The collapse of the real edge `[p, q]` as its endpoints decide it: locks, the
     /// position, the cost and the error cap. O(1).
     pub(super) fn candidate(&self, p: VertexId, q: VertexId) -> Result<Candidate, Refusal> {
@@ -313,7 +278,9 @@ impl<'o> Decimator<'o> {
                 }
             }
         };
-        let cost = quadric.error(position).max(0.0);
+        // NaN and −0 become +0: the queue orders costs by their bits.
+        let error = quadric.error(position);
+        let cost = if error > 0.0 { error } else { 0.0 };
         let error2 = if weight > 0.0 { cost / weight } else { 0.0 };
         if self.cap2.is_some_and(|cap| error2 > cap) {
             return Err(Refusal::Error);
@@ -431,50 +398,148 @@ impl<'o> Decimator<'o> {
         let g = self.quadric[gone.index()];
         self.quadric[keep.index()].add(&g);
         self.weight[keep.index()] += self.weight[gone.index()];
-        self.version[keep.index()] = self.version[keep.index()].wrapping_add(1);
-        self.version[gone.index()] = self.version[gone.index()].wrapping_add(1);
         self.merged_into[gone.index()] = keep.0;
-        self.refused_at[keep.index()] = 0;
         self.real_faces -= removed_faces;
         self.collapses += 1;
         self.max_error2 = self.max_error2.max(c.error2);
-        // The merged vertex's edges with their new costs; then again every refused
-        // edge of a neighbour (only a collapse next to an edge changes its verdict).
-        self.push_edges_of(keep, None);
-        self.nbr_p.clear();
-        self.nbr_p.extend(self.tri.link(keep));
-        for i in 0..self.nbr_p.len() {
-            let n = self.nbr_p[i];
-            if self.is_virtual(n) || self.refused_at[n.index()] == 0 {
-                continue;
-            }
-            self.refused_at[n.index()] = 0;
-            self.push_edges_of(n, Some(keep));
+        self.update_around(keep, gone);
+    }
+
+    /// The corner opposite the edge `[v, n]` in the face of the star step `step` at `v`
+    /// whose exit neighbour is `n`: the face's third corner.
+    #[inline]
+    fn third(&self, step: Corner, n: VertexId) -> Corner {
+        if self.tri.vertex(step.next()) == n {
+            step.prev()
+        } else {
+            step.next()
         }
     }
 
-    /// Queues every real edge at `v` (but the one to `skip`) that its endpoints allow.
-    fn push_edges_of(&mut self, v: VertexId, skip: Option<VertexId>) {
-        let mut around = std::mem::take(&mut self.around);
-        around.clear();
-        around.extend(self.tri.link(v));
-        for &n in &around {
-            if self.is_virtual(n) || Some(n) == skip {
-                continue;
-            }
-            if let Ok(c) = self.candidate(v, n) {
-                let e = self.entry(v, n, c.cost);
-                self.heap.push(e);
-            }
+    /// The key of the edge opposite corner `t` (from `v` to `n`) if its endpoints allow
+    /// it (its cached cost is a number) and no guard refused it.
+    #[inline]
+    fn cached_key(&self, v: VertexId, n: VertexId, t: Corner) -> Option<u128> {
+        let cost = self.edge_cost[t.index()];
+        if cost.is_nan() || self.is_virtual(n) {
+            return None;
         }
-        self.around = around;
+        if self.refused_at[v.index()] > 0
+            && self.refused_at[n.index()] > 0
+            && self.refused_edges.contains(&pair(v, n))
+        {
+            return None;
+        }
+        Some(edge_key(v, n, cost))
     }
 
-    fn is_current(&self, e: &Entry) -> bool {
-        self.merged_into[e.p as usize] == NONE
-            && self.merged_into[e.q as usize] == NONE
-            && self.version[e.p as usize] == e.vp
-            && self.version[e.q as usize] == e.vq
+    /// Caches the cost of the real edge `[v, n]` opposite corner `t` at both its
+    /// opposite corners (NaN if its endpoints refuse it).
+    fn cache_cost(&mut self, v: VertexId, n: VertexId, t: Corner) {
+        let cost = self.candidate(v, n).map_or(f64::NAN, |c| c.cost);
+        self.edge_cost[t.index()] = cost;
+        let o = self.tri.opposite(t);
+        self.edge_cost[o.index()] = cost;
+    }
+
+    /// Sets `v`'s best key and queues it if it changed.
+    fn set_best(&mut self, v: VertexId, k: u128) {
+        if self.best[v.index()] != k {
+            self.best[v.index()] = k;
+            if k != NO_KEY {
+                self.heap.push(k);
+            }
+        }
+    }
+
+    /// Lowers `v`'s best key to `k` if `k` is smaller.
+    fn lower(&mut self, v: VertexId, k: u128) {
+        if k < self.best[v.index()] {
+            self.best[v.index()] = k;
+            self.heap.push(k);
+        }
+    }
+
+    /// Recomputes `v`'s best key over all its edges, from the cached costs. O(d_v).
+    fn recompute(&mut self, v: VertexId) {
+        let mut best = NO_KEY;
+        for st in self.tri.star(v) {
+            let t = self.third(st.corner, st.neighbour);
+            if let Some(k) = self.cached_key(v, st.neighbour, t) {
+                best = best.min(k);
+            }
+        }
+        self.set_best(v, best);
+    }
+
+    /// Forgets the refusals of every edge at `v` (a collapse changed its
+    /// neighbourhood; with `gone`, the vertex merged into `v`, those at it too) and lets
+    /// each such edge lower its other end's best key; `v`'s own best key is left to the
+    /// caller to recompute.
+    fn allow_again(&mut self, v: VertexId, gone: Option<VertexId>) {
+        if self.refused_at[v.index()] == 0 && gone.is_none_or(|g| self.refused_at[g.index()] == 0) {
+            return;
+        }
+        self.refused_at[v.index()] = 0;
+        let mut steps = std::mem::take(&mut self.steps);
+        steps.clear();
+        steps.extend(self.tri.star(v).map(|st| (st.corner, st.neighbour)));
+        for &(c, w) in &steps {
+            let mut was = self.refused_edges.remove(&pair(v, w));
+            if let Some(g) = gone {
+                was |= self.refused_edges.remove(&pair(g, w));
+            }
+            if was {
+                let t = self.third(c, w);
+                if let Some(k) = self.cached_key(v, w, t) {
+                    self.lower(w, k);
+                }
+            }
+        }
+        self.steps = steps;
+    }
+
+    /// After a collapse onto `keep`: the costs of its edges (the only ones that
+    /// changed), then the best keys of `keep` and of its neighbours (only edges next to
+    /// `keep` can have changed verdict). O(d_keep) candidates and O(Σ d_n) cached
+    /// reads over the neighbours.
+    fn update_around(&mut self, keep: VertexId, gone: VertexId) {
+        self.allow_again(keep, Some(gone));
+        let mut steps = std::mem::take(&mut self.ring);
+        steps.clear();
+        steps.extend(self.tri.star(keep).map(|st| (st.corner, st.neighbour)));
+        for &(c, n) in &steps {
+            if !self.is_virtual(n) {
+                let t = self.third(c, n);
+                self.cache_cost(keep, n, t);
+            }
+        }
+        self.recompute(keep);
+        for &(c, n) in &steps {
+            if self.is_virtual(n) {
+                continue;
+            }
+            if self.refused_at[n.index()] > 0 {
+                self.allow_again(n, None);
+                self.recompute(n);
+                continue;
+            }
+            // `n`'s other edges kept their costs: its best key stands unless it was an
+            // edge to `keep` or `gone` (then it is recomputed) or the new edge to `keep`
+            // is cheaper.
+            let b = self.best[n.index()];
+            let (_, x, y) = unpack(b);
+            let other = if x == n.0 { y } else { x };
+            if b != NO_KEY && (other == keep.0 || other == gone.0) {
+                self.recompute(n);
+            } else {
+                let t = self.third(c, n);
+                if let Some(k) = self.cached_key(n, keep, t) {
+                    self.lower(n, k);
+                }
+            }
+        }
+        self.ring = steps;
     }
 
     /// Runs the queue to the stop rule; `observer` hears the faces removed. Returns
@@ -503,29 +568,36 @@ impl<'o> Decimator<'o> {
                         total,
                     ));
                 }
-                if !self.is_current(&e) {
+                let (cost, p, q) = unpack(e);
+                // An entry is current while it is the best key of one of its ends (both
+                // then live): a vertex whose best key changes queues the new one, and
+                // the old entries are dropped here.
+                if self.merged_into[p as usize] != NONE
+                    || self.merged_into[q as usize] != NONE
+                    || (self.best[p as usize] != e && self.best[q as usize] != e)
+                {
                     continue;
                 }
-                let (p, q) = (VertexId(e.p), VertexId(e.q));
-                let c = match self.candidate(p, q) {
-                    Ok(c) => c,
-                    Err(r) => {
-                        // Entries are made only for allowed candidates, and the
-                        // endpoints are unchanged: unreachable, but counted.
-                        self.refused.count(r);
-                        continue;
-                    }
+                let (p, q) = (VertexId(p), VertexId(q));
+                let Ok(c) = self.candidate(p, q) else {
+                    debug_assert!(false, "a best key of a refused candidate");
+                    continue;
                 };
+                debug_assert_eq!(c.cost.to_bits(), cost.to_bits());
                 match self.check(&c) {
                     Ok(removed) => {
-                        spec::before_collapse(self, &e, &c);
-                        self.last = Some(e.key());
+                        spec::before_collapse(self, unpack(e), &c);
+                        self.last = Some(unpack(e));
                         self.collapse(&c, removed);
                     }
                     Err(r) => {
                         self.refused.count(r);
-                        self.refused_at[p.index()] += 1;
-                        self.refused_at[q.index()] += 1;
+                        if self.refused_edges.insert(pair(p, q)) {
+                            self.refused_at[p.index()] += 1;
+                            self.refused_at[q.index()] += 1;
+                        }
+                        self.recompute(p);
+                        self.recompute(q);
                     }
                 }
             }
@@ -540,7 +612,16 @@ impl<'o> Decimator<'o> {
             if missed.is_empty() {
                 break;
             }
-            self.heap.extend(missed);
+            for (p, q, k) in missed {
+                if self.refused_edges.remove(&pair(p, q)) {
+                    self.lower(p, k);
+                    self.lower(q, k);
+                } else {
+                    // Not refused and yet not queued: re-derive both ends.
+                    self.recompute(p);
+                    self.recompute(q);
+                }
+            }
         }
         observer(Progress::new(
             REMOVED,
@@ -550,8 +631,8 @@ impl<'o> Decimator<'o> {
         true
     }
 
-    /// Every real edge that passes every guard now, as queue entries.
-    fn sweep_allowed(&mut self) -> Vec<Entry> {
+    /// Every real edge that passes every guard now, with its key.
+    fn sweep_allowed(&mut self) -> Vec<(VertexId, VertexId, u128)> {
         let edges: Vec<(VertexId, VertexId)> = self
             .tri
             .edges()
@@ -562,7 +643,7 @@ impl<'o> Decimator<'o> {
         for (p, q) in edges {
             if let Ok(c) = self.candidate(p, q) {
                 if self.check(&c).is_ok() {
-                    out.push(self.entry(p, q, c.cost));
+                    out.push((p, q, edge_key(p, q, c.cost)));
                 }
             }
         }
@@ -723,4 +804,18 @@ pub(crate) fn input_stats(whole: &ConedWhole, vertex_count: usize) -> Stats {
         per_component: per,
         ..Stats::default()
     }
+}
+
+/// The queue key of the edge `[p, q]` at `cost`.
+fn edge_key(p: VertexId, q: VertexId, cost: f64) -> u128 {
+    let (p, q) = if p < q { (p, q) } else { (q, p) };
+    key(cost, p.0, q.0)
+}
+
+/// The best key of a vertex without an allowed edge.
+const NO_KEY: u128 = u128::MAX;
+
+/// An edge as an ordered pair of ids.
+fn pair(p: VertexId, q: VertexId) -> (u32, u32) {
+    (p.0.min(q.0), p.0.max(q.0))
 }

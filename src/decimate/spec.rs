@@ -14,7 +14,7 @@
 //! M1 and the blocked half of M3 examine every edge, so they run in full on meshes of at
 //! most [`FULL_CHECK_FACES`] live faces (the tests' sizes) and are skipped above.
 
-use super::run::{Candidate, Decimator, Entry};
+use super::run::{Candidate, Decimator};
 use super::Stopped;
 use crate::core::ids::NONE;
 use crate::core::VertexId;
@@ -84,25 +84,22 @@ fn real_edges(d: &Decimator<'_>) -> Vec<(VertexId, VertexId)> {
         .collect()
 }
 
-/// M1, before the collapse of `e` (candidate `c`): no allowed edge is cheaper.
-pub(super) fn before_collapse(d: &Decimator<'_>, e: &Entry, c: &Candidate) {
+/// M1, before the collapse of the edge `chosen` (its queue key: cost, endpoints;
+/// candidate `c`): it passes every guard and no allowed edge has a smaller key.
+pub(super) fn before_collapse(d: &Decimator<'_>, chosen: (f64, u32, u32), c: &Candidate) {
     if !ENABLED || d.tri.face_count() > FULL_CHECK_FACES {
         return;
     }
-    let chosen = (e.cost, e.p, e.q);
+    let (cost, p, q) = chosen;
     assert_eq!(
         c.cost.to_bits(),
-        e.cost.to_bits(),
-        "M1: [{}, {}]'s cost changed in the queue",
-        e.p,
-        e.q
+        cost.to_bits(),
+        "M1: [{p}, {q}]'s cost changed in the queue"
     );
     assert!(
-        allowed(d, VertexId(e.p), VertexId(e.q)).is_some(),
-        "M1: collapse {}: [{}, {}] does not pass every guard",
-        d.collapses,
-        e.p,
-        e.q
+        allowed(d, VertexId(p), VertexId(q)).is_some(),
+        "M1: collapse {}: [{p}, {q}] does not pass every guard",
+        d.collapses
     );
     for (p, q) in real_edges(d) {
         if let Some(key) = allowed(d, p, q) {

@@ -1,0 +1,114 @@
+//! Unit tests of the decimator on small generated surfaces. In test builds the
+//! specification checks (module `spec`: priority, quadric sums, stop rule) run on every
+//! collapse of these runs, so each run here is also a check of M1–M3.
+
+use super::{Placement, Stopped};
+use crate::gen::{self, Implicit, IsoParams, Tessellation};
+use crate::{decimate, DecimateOptions, MaxError, TriMesh};
+
+fn iso(shape: Implicit, n: u32) -> TriMesh {
+    gen::isosurface(&IsoParams::new(shape, Tessellation::SixTetrahedra, n)).expect("a surface")
+}
+
+fn shapes() -> Vec<(&'static str, TriMesh)> {
+    vec![
+        ("sphere", iso(Implicit::Sphere { radius: 1.0 }, 7)),
+        (
+            "torus",
+            iso(
+                Implicit::Torus {
+                    major: 1.0,
+                    minor: 0.45,
+                },
+                9,
+            ),
+        ),
+        ("genus 2", iso(Implicit::GenusG { g: 2 }, 9)),
+        (
+            "two discs",
+            iso(
+                Implicit::TwoSheetHyperboloid {
+                    c: 0.3,
+                    half_width: 1.0,
+                    half_height: 1.2,
+                },
+                8,
+            ),
+        ),
+    ]
+}
+
+#[test]
+fn every_option_keeps_the_checks_and_the_output_check() {
+    for (name, mesh) in shapes() {
+        let f = mesh.faces.len();
+        let targets = [
+            DecimateOptions::keep(0.3),
+            DecimateOptions::faces(f / 10),
+            DecimateOptions {
+                max_error: Some(MaxError::Relative(0.01)),
+                ..Default::default()
+            },
+            DecimateOptions::default(),
+        ];
+        let guards = [(true, false), (false, false), (true, true)];
+        // Every placement with every guard setting, the targets taken in turn (the
+        // checks examine every edge at every collapse: all 36 combinations per shape
+        // would take minutes in debug builds).
+        for (i, placement) in Placement::ALL.into_iter().enumerate() {
+            for (j, &(guard, lock_boundary)) in guards.iter().enumerate() {
+                let o = DecimateOptions {
+                    placement,
+                    allow_foldover: !guard,
+                    lock_boundary,
+                    locked: vec![0, 5],
+                    ..targets[(i + j) % targets.len()].clone()
+                };
+                let d = decimate(&mesh, &o).unwrap_or_else(|e| panic!("{name}: {e}"));
+                assert!(d.verified);
+                assert!(d.mesh.faces.len() <= f, "{name}");
+                if d.stats.stopped == Stopped::Target {
+                    let t = d.stats.target_faces.expect("a face target");
+                    assert!(d.mesh.faces.len() <= t && d.mesh.faces.len() + 2 > t);
+                }
+                if let Some(cap) = d.stats.max_error_cap {
+                    assert!(d.stats.max_error <= cap * (1.0 + 1e-12), "{name}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_same_input_gives_the_same_output() {
+    let mesh = iso(Implicit::GenusG { g: 2 }, 10);
+    let o = DecimateOptions::keep(0.2);
+    let a = decimate(&mesh, &o).expect("valid");
+    let b = decimate(&mesh, &o).expect("valid");
+    assert_eq!(a.mesh, b.mesh);
+    assert_eq!(a.vertex_map, b.vertex_map);
+    assert_eq!(a.collapse_map, b.collapse_map);
+    assert_eq!(a.face_origin, b.face_origin);
+}
+
+#[test]
+fn the_tetrahedron_is_irreducible_and_stays() {
+    let mut t = gen::tetrahedron();
+    t.positions = Some(vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+    ]);
+    let d = decimate(
+        &t,
+        &DecimateOptions {
+            allow_foldover: true,
+            ..DecimateOptions::faces(0)
+        },
+    )
+    .expect("valid");
+    assert_eq!(d.mesh.faces.len(), 4);
+    assert_eq!(d.stats.stopped, Stopped::Blocked);
+    assert_eq!(d.stats.remaining.link_condition, 6);
+}
