@@ -421,7 +421,7 @@ fn bbox_diagonal(points: &[[f64; 3]]) -> f64 {
 // ---- The independent check of one run.
 
 /// What the check found, for the tests that look further.
-struct Seen {
+pub(crate) struct Seen {
     /// Output edges that pass the link condition of the surface with boundary.
     passing: Vec<(u32, u32)>,
     /// Whether every output component is closed.
@@ -457,7 +457,7 @@ fn cap_of(o: &DecimateOptions, input: &TriMesh) -> Option<f64> {
 
 /// Checks the decimation `r` of `input` with options `o`, independently of the
 /// decimator (see the module documentation).
-fn check(input: &TriMesh, o: &DecimateOptions, r: &DecimateResult, label: &str) -> Seen {
+pub(crate) fn check(input: &TriMesh, o: &DecimateOptions, r: &DecimateResult, label: &str) -> Seen {
     let out = &r.mesh;
     let pin = input.positions.as_deref().expect("input positions");
     let pout = out.positions.as_deref().expect("output positions");

@@ -16,6 +16,7 @@ mod harness;
 
 mod closed_inputs;
 mod decimate;
+mod decimate_vectors;
 mod irreducible_algorithms;
 mod irreducible_meshes;
 mod iso_vectors;
