@@ -91,14 +91,14 @@ pub(super) fn before_collapse(d: &Decimator<'_>, chosen: (f64, u32, u32), c: &Ca
         return;
     }
     let (cost, p, q) = chosen;
-    assert_eq!(
-        c.cost.to_bits(),
-        cost.to_bits(),
-        "M1: [{p}, {q}]'s cost changed in the queue"
+    assert!(
+        c.cost.to_bits() == cost.to_bits(),
+        "specification violated: M1 (priority): [{p}, {q}] costs {} now, {cost} in the queue",
+        c.cost
     );
     assert!(
         allowed(d, VertexId(p), VertexId(q)).is_some(),
-        "M1: collapse {}: [{p}, {q}] does not pass every guard",
+        "specification violated: M1 (priority): collapse {}: [{p}, {q}] does not pass every guard",
         d.collapses
     );
     for (p, q) in real_edges(d) {
@@ -108,7 +108,7 @@ pub(super) fn before_collapse(d: &Decimator<'_>, chosen: (f64, u32, u32), c: &Ca
                     .total_cmp(&chosen.0)
                     .then((key.1, key.2).cmp(&(chosen.1, chosen.2)))
                     != std::cmp::Ordering::Less,
-                "M1: collapse {}: [{}, {}] (cost {}) is allowed and cheaper than the chosen \
+                "specification violated: M1 (priority): collapse {}: [{}, {}] (cost {}) is allowed and cheaper than the chosen \
                  [{}, {}] (cost {})",
                 d.collapses,
                 key.1,
@@ -128,9 +128,9 @@ pub(super) fn nothing_missed(d: &Decimator<'_>, missed: usize) {
     if !ENABLED {
         return;
     }
-    assert_eq!(
-        missed, 0,
-        "M3: the queue ran out with {missed} edges that pass every guard (collapse {})",
+    assert!(
+        missed == 0,
+        "specification violated: M3 (stop rule): the queue ran out with {missed} edges that pass every guard (collapse {})",
         d.collapses
     );
 }
@@ -147,30 +147,38 @@ pub(super) fn at_end(d: &Decimator<'_>, stopped: Stopped) {
         .faces()
         .filter(|&f| d.tri.face_vertices(f).iter().all(|&v| !d.is_virtual(v)))
         .count();
-    assert_eq!(
-        real, d.real_faces,
-        "M3: the face count kept is not the true one"
+    assert!(
+        real == d.real_faces,
+        "specification violated: M3 (stop rule): {} faces kept, {real} in the triangulation",
+        d.real_faces
     );
     match stopped {
         Stopped::Target => {
             assert!(
                 d.real_faces <= d.target,
-                "M3: stopped at the target above it"
+                "specification violated: M3 (stop rule): stopped at the target with {} faces, above the target {}",
+                d.real_faces,
+                d.target
             );
             assert!(
                 d.collapses == 0 || d.real_faces + 2 > d.target,
-                "M3: {} faces, the target {} was passed by more than one collapse",
+                "specification violated: M3 (stop rule): {} faces, the target {} was passed by more than one collapse",
                 d.real_faces,
                 d.target
             );
         }
         Stopped::Error | Stopped::Blocked => {
-            assert!(d.real_faces > d.target, "M3: blocked at the target");
+            assert!(
+                d.real_faces > d.target,
+                "specification violated: M3 (stop rule): {stopped} with {} faces, at the target {}",
+                d.real_faces,
+                d.target
+            );
             if d.tri.face_count() <= FULL_CHECK_FACES {
                 for (p, q) in real_edges(d) {
                     assert!(
                         allowed(d, p, q).is_none(),
-                        "M3: stopped ({stopped}) with [{p}, {q}] allowed"
+                        "specification violated: M3 (stop rule): stopped ({stopped}) with [{p}, {q}] allowed"
                     );
                 }
             }
@@ -200,7 +208,7 @@ pub(super) fn at_end(d: &Decimator<'_>, stopped: Stopped) {
         let tol = 1e-9 * w.abs().max(1e-300);
         assert!(
             (have_w - w).abs() <= tol,
-            "M2: vertex {v}'s weight {have_w} is not its class's sum {w}"
+            "specification violated: M2 (quadric sums): vertex {v}'s weight {have_w} is not its class's sum {w}"
         );
         // The quadrics compared at the vertex and at the corners of its class's box.
         let p = d.pos[v];
@@ -209,8 +217,110 @@ pub(super) fn at_end(d: &Decimator<'_>, stopped: Stopped) {
             let scale = a.abs().max(b.abs()).max(w);
             assert!(
                 (a - b).abs() <= 1e-8 * scale,
-                "M2: vertex {v}'s quadric gives {a} at {probe:?}, its class's sum {b}"
+                "specification violated: M2 (quadric sums): vertex {v}'s quadric gives {a} at {probe:?}, its class's sum {b}"
             );
         }
+    }
+}
+
+/// Corrupted-state tests of M1–M3, compiled only where the checks are (elsewhere every
+/// check returns at once and nothing would be tested).
+#[cfg(all(test, any(debug_assertions, feature = "invariants")))]
+mod tests {
+    use super::*;
+    use crate::core::ConedSurfaces;
+    use crate::decimate::{Options, Placement};
+    use crate::gen;
+    use crate::spec::testing::assert_fails;
+
+    fn options(target_faces: usize) -> Options {
+        Options {
+            target_faces,
+            max_error: None,
+            placement: Placement::Optimal,
+            guard: true,
+            lock_boundary: false,
+            locked: Vec::new(),
+        }
+    }
+
+    fn sphere() -> crate::TriMesh {
+        gen::isosurface(&gen::IsoParams::new(
+            gen::Implicit::Sphere { radius: 1.0 },
+            gen::Tessellation::SixTetrahedra,
+            6,
+        ))
+        .expect("a sphere")
+    }
+
+    fn decimator<'o>(mesh: &crate::TriMesh, opts: &'o Options) -> Decimator<'o> {
+        let whole = ConedSurfaces::whole(mesh.vertex_count, &mesh.faces).expect("a surface");
+        let positions = mesh.positions.as_deref().expect("positions");
+        Decimator::new(whole, positions, opts)
+    }
+
+    /// The cheapest and the dearest allowed edge with their candidates.
+    fn extremes(d: &Decimator<'_>) -> [((f64, u32, u32), Candidate); 2] {
+        let mut all: Vec<_> = real_edges(d)
+            .into_iter()
+            .filter_map(|(p, q)| Some((allowed(d, p, q)?, d.candidate(p, q).ok()?)))
+            .collect();
+        all.sort_by(|a, b| {
+            a.0 .0
+                .total_cmp(&b.0 .0)
+                .then((a.0 .1, a.0 .2).cmp(&(b.0 .1, b.0 .2)))
+        });
+        let last = all.len() - 1;
+        assert!(
+            all[0].0 .0 < all[last].0 .0,
+            "costs differ on a curved sphere"
+        );
+        [all[0], all[last]]
+    }
+
+    #[test]
+    fn m1_accepts_the_cheapest_edge_and_fails_on_a_dearer_one() {
+        let mesh = sphere();
+        let opts = options(0);
+        let d = decimator(&mesh, &opts);
+        let [(cheap, c), (dear, e)] = extremes(&d);
+        before_collapse(&d, cheap, &c);
+        assert_fails("M1", || before_collapse(&d, dear, &e));
+        // The right edge with a cost that is not its own.
+        let wrong = (cheap.0 + 1.0, cheap.1, cheap.2);
+        assert_fails("M1", || before_collapse(&d, wrong, &c));
+    }
+
+    #[test]
+    fn m2_fails_on_a_quadric_that_is_not_its_class_sum() {
+        let mesh = sphere();
+        let opts = options(mesh.faces.len() / 2);
+        let mut d = decimator(&mesh, &opts);
+        assert!(d.run(&mut crate::progress::ignore, &|| false));
+        at_end(&d, Stopped::Target);
+        let v = (0..d.first_virtual as usize)
+            .find(|&v| d.tri.is_vertex(VertexId(v as u32)))
+            .expect("a live vertex");
+        let extra = d.initial[v].0;
+        d.quadric[v].add(&extra);
+        assert_fails("M2", || at_end(&d, Stopped::Target));
+    }
+
+    #[test]
+    fn m3_fails_on_a_wrong_count_a_missed_target_and_an_allowed_edge_left() {
+        let mesh = sphere();
+        let opts = options(mesh.faces.len() / 2);
+        let mut d = decimator(&mesh, &opts);
+        assert!(d.run(&mut crate::progress::ignore, &|| false));
+        at_end(&d, Stopped::Target);
+        // Said to be blocked while at the target; said to be blocked with edges left.
+        assert_fails("M3", || at_end(&d, Stopped::Blocked));
+        d.target = 0;
+        assert_fails("M3", || at_end(&d, Stopped::Blocked));
+        assert_fails("M3", || at_end(&d, Stopped::Target));
+        d.target = opts.target_faces;
+        d.real_faces += 2;
+        assert_fails("M3", || at_end(&d, Stopped::Target));
+        assert_fails("M3", || nothing_missed(&d, 1));
     }
 }
