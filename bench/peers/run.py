@@ -613,6 +613,12 @@ def write_report(meta, data, out_md):
         simplify_section(data, w)
     w("Raw times and checks: [`peers/results.json`](peers/results.json).")
     w("")
+    # The decimation section is written by bench/peers/decimate.py: keep it.
+    old = out_md.read_text() if out_md.exists() else ""
+    begin, end = "<!-- decimation: begin", "<!-- decimation: end -->"
+    if begin in old and end in old:
+        w(old[old.index(begin):old.index(end) + len(end)])
+        w("")
     out_md.write_text("\n".join(L))
 
 
