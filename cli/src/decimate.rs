@@ -464,8 +464,8 @@ fn print_human(r: &DecimateReport) {
             s.remaining.total(),
             by_guard(&s.remaining)
         );
-        if s.per_component.len() > 1 {
-            for (k, c) in s.per_component.iter().enumerate().take(MAX_COMPONENT_ROWS) {
+        if s.component_list.len() > 1 {
+            for (k, c) in s.component_list.iter().enumerate().take(MAX_COMPONENT_ROWS) {
                 outln!(
                     "    component {k}: faces {} -> {}; edges left {}: {}",
                     c.faces_in,
@@ -474,10 +474,10 @@ fn print_human(r: &DecimateReport) {
                     by_guard(&c.remaining)
                 );
             }
-            if s.per_component.len() > MAX_COMPONENT_ROWS {
+            if s.component_list.len() > MAX_COMPONENT_ROWS {
                 outln!(
                     "    ({} more components)",
-                    s.per_component.len() - MAX_COMPONENT_ROWS
+                    s.component_list.len() - MAX_COMPONENT_ROWS
                 );
             }
         }

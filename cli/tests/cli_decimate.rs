@@ -293,7 +293,7 @@ fn decimate_checked(input: &Path, output: &Path, extra: &[&str]) -> Value {
         (nv_in - used.len()) as i64,
         "{what}"
     );
-    let per = j["per_component"].as_array().expect("per_component");
+    let per = j["component_list"].as_array().expect("component_list");
     assert_eq!(per.len(), parts_in.len(), "{what}");
     for (k, c) in per.iter().enumerate() {
         // Components in the order of their smallest input face, as the test numbers them.
@@ -476,7 +476,7 @@ fn surfaces_with_boundary_and_several_components() {
     let j = decimate_checked(&hyp, &d.path("hyp-out.off"), &["--keep", "0.3"]);
     assert_eq!(int(&j, "components"), 2);
     assert_eq!(int(&j, "boundary_loops"), 2);
-    assert_eq!(j["per_component"].as_array().unwrap().len(), 2);
+    assert_eq!(j["component_list"].as_array().unwrap().len(), 2);
     let j = decimate_checked(
         &hyp,
         &d.path("hyp-locked.obj"),
@@ -508,7 +508,7 @@ fn surfaces_with_boundary_and_several_components() {
         &["--faces", "4"],
     );
     assert_eq!(j["stopped"], "blocked");
-    let per = j["per_component"].as_array().unwrap();
+    let per = j["component_list"].as_array().unwrap();
     assert_eq!(int(&per[1], "faces_in"), 4);
     assert_eq!(int(&per[1], "faces_out"), 4);
     assert!(int(&per[1]["remaining"], "link_condition") > 0);

@@ -185,7 +185,7 @@ class Decimated:
             (``"target"``, ``"error"`` or ``"blocked"``), ``collapses``, ``max_error``,
             ``refused`` and ``remaining`` (dicts of counts by guard: ``lock``,
             ``boundary``, ``error``, ``link_condition``, ``foldover``),
-            ``per_component``, ``seconds``; the options: ``targets`` (``faces``,
+            ``component_list``, ``seconds``; the options: ``targets`` (``faces``,
             ``keep``, ``max_error``, ``max_error_rel`` as given, None when not),
             ``placement``, ``guard``, ``lock_boundary``, ``locked`` (sorted, without
             repeats); and ``bbox_diagonal``, ``verified``, ``dropped_vertices``.

@@ -165,8 +165,8 @@ def check(V, F, d, locked=(), lock_boundary=False, cap=None):
     assert s["components"] == len(parts_in)
     assert s["boundary_loops"] == boundary_loop_count(F)
     assert s["dropped_vertices"] == int((~used).sum())
-    assert len(s["per_component"]) == len(parts_in)
-    assert sum(p["faces_out"] for p in s["per_component"]) == f
+    assert len(s["component_list"]) == len(parts_in)
+    assert sum(p["faces_out"] for p in s["component_list"]) == f
     assert s["stopped"] in ("target", "error", "blocked")
     guards = {"lock", "boundary", "error", "link_condition", "foldover"}
     assert set(s["refused"]) == guards and set(s["remaining"]) == guards
@@ -527,7 +527,7 @@ def test_decimate_equals_the_cli(name, args, kwargs, cli, tmp_path, mesh_file):
     for k, v in d.stats.items():
         if k == "seconds":
             continue
-        if k == "per_component":
+        if k == "component_list":
             assert v == theirs[k]
         elif isinstance(v, float):
             assert v == pytest.approx(theirs[k], rel=1e-12, abs=1e-300), k

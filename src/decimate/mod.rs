@@ -21,12 +21,15 @@
 //! their shape. An edge's cost is the summed quadric of its endpoints at the position
 //! [`Placement`] chooses. One priority queue over every edge of every component gives the
 //! cheapest edge first (ties: the smaller endpoint ids); it is re-checked when it comes
-//! out (link condition, locks, fold-over guard), collapsed if it passes, dropped if not.
-//! After a collapse the merged vertex's edges enter the queue with their new costs, and
-//! so do again the edges of its neighbours that were refused earlier, since a collapse
-//! next to them is the only thing that can change their verdict. Hence (the
-//! specification checks it): **every collapse is of the cheapest edge that passes every
-//! guard at that moment**, and the run stops only when the queue holds no such edge.
+//! out (link condition, fold-over guard), collapsed if it passes, dropped if not. When
+//! the guard refuses the placement's position, the endpoints and the midpoint are tried,
+//! cheapest first, and the edge goes back into the queue at the cost of the first the
+//! guard accepts (never cheaper: the placement's cost is a lower bound). After a
+//! collapse the merged vertex's edges enter the queue with their new costs, and so do
+//! again the edges next to it that were refused or re-costed, since a collapse next to
+//! them is the only thing that can change their verdict. Hence (the specification checks
+//! it): **every collapse is of the cheapest edge that passes every guard at that
+//! moment**, and the run stops only when the queue holds no such edge.
 //!
 //! **The error.** The error of a vertex is `sqrt(Q(x) / W)`: the root mean square
 //! distance of its position from the planes its quadric sums (every input face merged
@@ -236,10 +239,10 @@ pub struct Stats {
     /// Refusals while the queue ran (an edge refused several times counts each time).
     pub refused: Refusals,
     /// The edges left at the end, by the guard that refuses them (all zero when the run
-    /// stopped at its target; the sum over [`Self::per_component`]).
+    /// stopped at its target; the sum over [`Self::component_list`]).
     pub remaining: Refusals,
     /// Per component.
-    pub per_component: Vec<ComponentStats>,
+    pub component_list: Vec<ComponentStats>,
     /// Wall-clock seconds of the decimation proper (quadrics, queue, collapses, output).
     pub seconds: f64,
 }

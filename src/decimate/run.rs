@@ -1,7 +1,7 @@
 //! The decimator's state and main loop (see the module documentation of
 //! [`crate::decimate`] for the guarantee and the method).
 
-use std::collections::HashSet;
+use std::collections::HashMap;
 
 use super::queue::{key, unpack, Queue};
 use super::{spec, ComponentStats, Options, Output, Placement, Refusal, Refusals, Stats, Stopped};
@@ -46,11 +46,14 @@ pub(crate) struct Decimator<'o> {
     /// has refused since (`NO_KEY` if none). The queue holds an entry for every such
     /// key; other entries are stale.
     best: Vec<u128>,
-    /// The edges a guard refused (link condition or fold-over), until a collapse next to
-    /// them, the only thing that can change their verdict.
-    refused_edges: HashSet<(u32, u32)>,
-    /// Per vertex: an upper bound on the refused edges at it (0: none).
-    refused_at: Vec<u32>,
+    /// The edges whose verdict the neighbourhood decided, until a collapse next to them
+    /// (the only thing that can change it): refused by a guard (`true`; the link
+    /// condition, or the fold-over guard at every position), or queued at a raised cost
+    /// because the guard refused the placement's position and took an alternative
+    /// (`false`; the raised cost is in `edge_cost`).
+    adjusted: HashMap<(u32, u32), bool>,
+    /// Per vertex: an upper bound on the adjusted edges at it (0: none).
+    adjusted_at: Vec<u32>,
     pub(super) lock: Vec<u8>,
     heap: Queue,
     pub(super) opts: &'o Options,
@@ -73,6 +76,8 @@ pub(crate) struct Decimator<'o> {
     nbr_p: Vec<VertexId>,
     nbr_q: Vec<VertexId>,
     scratch: Vec<Corner>,
+    /// The endpoints whose stars `star_p`/`nbr_p` and `star_q`/`nbr_q` hold.
+    walked: [VertexId; 2],
     /// Star steps (corner, exit neighbour), scratch.
     steps: Vec<(Corner, VertexId)>,
     ring: Vec<(Corner, VertexId)>,
@@ -82,8 +87,6 @@ pub(crate) struct Decimator<'o> {
     pub(super) collapses: usize,
     pub(super) max_error2: f64,
     pub(super) refused: Refusals,
-    /// The cost of the last collapse (for the specification's priority check).
-    pub(super) last: Option<(f64, u32, u32)>,
     /// The initial quadrics, kept only when the specification checks run.
     pub(super) initial: Vec<(Quadric, f64)>,
 }
@@ -137,8 +140,8 @@ impl<'o> Decimator<'o> {
             quadric: vec![Quadric::default(); nv],
             weight: vec![0.0; nv],
             best: vec![NO_KEY; nv],
-            refused_edges: HashSet::new(),
-            refused_at: vec![0; nv],
+            adjusted: HashMap::new(),
+            adjusted_at: vec![0; nv],
             lock,
             heap: Queue::default(),
             opts,
@@ -157,13 +160,13 @@ impl<'o> Decimator<'o> {
             nbr_p: Vec::new(),
             nbr_q: Vec::new(),
             scratch: Vec::new(),
+            walked: [VertexId(0); 2],
             steps: Vec::new(),
             ring: Vec::new(),
             edge_cost: Vec::new(),
             collapses: 0,
             max_error2: 0.0,
             refused: Refusals::default(),
-            last: None,
             initial: Vec::new(),
         };
         d.init_quadrics();
@@ -303,11 +306,13 @@ impl<'o> Decimator<'o> {
         self.stamp
     }
 
-    /// The topological and geometric checks of a candidate: the link condition of the
-    /// surface with boundary, then the fold-over guard. Leaves both stars walked in the
-    /// scratch lists; returns the number of real faces the collapse removes.
-    pub(super) fn check(&mut self, c: &Candidate) -> Result<usize, Refusal> {
-        let (p, q) = (c.keep, c.gone);
+    /// The link condition of the surface with boundary for the real edge `[p, q]`:
+    /// refuses a common neighbour other than the two opposite vertices, endpoints on two
+    /// different boundary loops, and an edge of a tetrahedron. Leaves the stars of `p`
+    /// and `q` walked in the scratch lists (`walked`); returns the number of real faces
+    /// the collapse removes. O(d_p + d_q).
+    fn link(&mut self, p: VertexId, q: VertexId) -> Result<usize, Refusal> {
+        self.walked = [p, q];
         let s = self.fresh_stamp();
         let mut loop_q = None;
         self.star_q.clear();
@@ -356,16 +361,86 @@ impl<'o> Decimator<'o> {
         if d == 3 && self.nbr_q.len() == 3 {
             return Err(Refusal::LinkCondition);
         }
-        if self.opts.guard && !self.guard(p, q, c.position) {
-            return Err(Refusal::Foldover);
-        }
         Ok(usize::from(!self.is_virtual(a)) + usize::from(!self.is_virtual(b)))
     }
 
-    /// The fold-over guard over both walked stars: every real face at `p` or `q` but the
-    /// two of `[p, q]` whose corner moves must keep a non-zero area and turn by less
-    /// than 90°.
-    fn guard(&self, p: VertexId, q: VertexId, to: Point) -> bool {
+    /// The other positions a collapse may take when the fold-over guard refuses its
+    /// placement's, cheapest first (ties in the order: the smaller endpoint, the larger,
+    /// the midpoint): both endpoints and the midpoint, but only the endpoints under
+    /// [`Placement::Endpoint`] (so that every position stays an input position), and
+    /// none when an endpoint is locked; never the placement's own position, nor one
+    /// over the error cap.
+    pub(super) fn alternatives(&self, primary: &Candidate) -> Vec<Candidate> {
+        let (p, q) = if primary.keep < primary.gone {
+            (primary.keep, primary.gone)
+        } else {
+            (primary.gone, primary.keep)
+        };
+        if self.lock[p.index()] != FREE || self.lock[q.index()] != FREE {
+            return Vec::new();
+        }
+        let mut quadric = self.quadric[p.index()];
+        quadric.add(&self.quadric[q.index()]);
+        let weight = self.weight[p.index()] + self.weight[q.index()];
+        let (pp, pq) = (self.pos[p.index()], self.pos[q.index()]);
+        let mut options = vec![(pp, p, q), (pq, q, p)];
+        if self.opts.placement != Placement::Endpoint {
+            options.push((midpoint(pp, pq), p, q));
+        }
+        let mut out: Vec<Candidate> = options
+            .into_iter()
+            .filter(|&(x, _, _)| x != primary.position)
+            .filter_map(|(position, keep, gone)| {
+                let error = quadric.error(position);
+                let cost = if error > 0.0 { error } else { 0.0 };
+                let error2 = if weight > 0.0 { cost / weight } else { 0.0 };
+                if self.cap2.is_some_and(|cap| error2 > cap) {
+                    return None;
+                }
+                Some(Candidate {
+                    cost,
+                    error2,
+                    position,
+                    keep,
+                    gone,
+                })
+            })
+            .collect();
+        // A stable sort: equal costs keep the order above.
+        out.sort_by(|a, b| a.cost.total_cmp(&b.cost));
+        out
+    }
+
+    /// Whether `[p, q]` may be collapsed now, and how: the link condition, then the
+    /// placement's position if the fold-over guard (when on) accepts it, else the first
+    /// of [`Self::alternatives`] it accepts. Returns the collapse, its queue cost (the
+    /// larger of the placement's cost and the chosen position's: never below the
+    /// endpoint-only cost the queue starts from) and the real faces it removes; the stars
+    /// of `p` and `q` are left walked.
+    pub(super) fn resolve(
+        &mut self,
+        p: VertexId,
+        q: VertexId,
+    ) -> Result<(Candidate, f64, usize), Refusal> {
+        let primary = self.candidate(p, q)?;
+        let removed = self.link(p, q)?;
+        if !self.opts.guard || self.guard(primary.position) {
+            return Ok((primary, primary.cost, removed));
+        }
+        for alt in self.alternatives(&primary) {
+            if self.guard(alt.position) {
+                let cost = alt.cost.max(primary.cost);
+                return Ok((alt, cost, removed));
+            }
+        }
+        Err(Refusal::Foldover)
+    }
+
+    /// The fold-over guard over both walked stars: every real face at either endpoint
+    /// but the two of the edge, whose corner moves, must keep a non-zero area and turn
+    /// by less than 90°.
+    fn guard(&self, to: Point) -> bool {
+        let [p, q] = self.walked;
         let pos = |v: VertexId| self.pos[v.index()];
         for (&c, other) in self
             .star_p
@@ -389,11 +464,16 @@ impl<'o> Decimator<'o> {
         true
     }
 
-    /// Collapses a candidate that passed [`Self::check`] (the stars are still walked).
+    /// Collapses a resolved candidate (the stars are still walked).
     fn collapse(&mut self, c: &Candidate, removed_faces: usize) {
         let (keep, gone) = (c.keep, c.gone);
+        let (star, link) = if gone == self.walked[1] {
+            (&self.star_q, &self.nbr_q)
+        } else {
+            (&self.star_p, &self.nbr_p)
+        };
         self.tri
-            .collapse_walked(keep, gone, &self.star_q, &self.nbr_q, &mut self.scratch);
+            .collapse_walked(keep, gone, star, link, &mut self.scratch);
         self.pos[keep.index()] = c.position;
         let g = self.quadric[gone.index()];
         self.quadric[keep.index()].add(&g);
@@ -424,9 +504,9 @@ impl<'o> Decimator<'o> {
         if cost.is_nan() || self.is_virtual(n) {
             return None;
         }
-        if self.refused_at[v.index()] > 0
-            && self.refused_at[n.index()] > 0
-            && self.refused_edges.contains(&pair(v, n))
+        if self.adjusted_at[v.index()] > 0
+            && self.adjusted_at[n.index()] > 0
+            && self.adjusted.get(&pair(v, n)) == Some(&true)
         {
             return None;
         }
@@ -472,31 +552,55 @@ impl<'o> Decimator<'o> {
         self.set_best(v, best);
     }
 
-    /// Forgets the refusals of every edge at `v` (a collapse changed its
-    /// neighbourhood; with `gone`, the vertex merged into `v`, those at it too) and lets
-    /// each such edge lower its other end's best key; `v`'s own best key is left to the
-    /// caller to recompute.
+    /// Forgets the adjusted verdicts of every edge at `v` (a collapse changed its
+    /// neighbourhood; with `gone`, the vertex merged into `v`, those at it too): raised
+    /// costs go back to the endpoints' cost, and each such edge may lower its other
+    /// end's best key; `v`'s own best key is left to the caller to recompute.
     fn allow_again(&mut self, v: VertexId, gone: Option<VertexId>) {
-        if self.refused_at[v.index()] == 0 && gone.is_none_or(|g| self.refused_at[g.index()] == 0) {
+        if self.adjusted_at[v.index()] == 0 && gone.is_none_or(|g| self.adjusted_at[g.index()] == 0)
+        {
             return;
         }
-        self.refused_at[v.index()] = 0;
+        self.adjusted_at[v.index()] = 0;
         let mut steps = std::mem::take(&mut self.steps);
         steps.clear();
         steps.extend(self.tri.star(v).map(|st| (st.corner, st.neighbour)));
         for &(c, w) in &steps {
-            let mut was = self.refused_edges.remove(&pair(v, w));
+            let mut was = self.adjusted.remove(&pair(v, w));
             if let Some(g) = gone {
-                was |= self.refused_edges.remove(&pair(g, w));
+                was = was.or(self.adjusted.remove(&pair(g, w)));
             }
-            if was {
+            if let Some(refused) = was {
                 let t = self.third(c, w);
+                if !refused && !self.is_virtual(w) {
+                    self.cache_cost(v, w, t);
+                }
                 if let Some(k) = self.cached_key(v, w, t) {
                     self.lower(w, k);
                 }
             }
         }
         self.steps = steps;
+    }
+
+    /// Records an adjusted verdict of the edge `[p, q]` (refused, or queued at the
+    /// raised cost `raised`) and recomputes both ends' best keys.
+    fn adjust(&mut self, p: VertexId, q: VertexId, raised: Option<f64>) {
+        if self.adjusted.insert(pair(p, q), raised.is_none()).is_none() {
+            self.adjusted_at[p.index()] += 1;
+            self.adjusted_at[q.index()] += 1;
+        }
+        if let Some(cost) = raised {
+            let step = self.tri.star(p).find(|st| st.neighbour == q);
+            if let Some(st) = step {
+                let t = self.third(st.corner, q);
+                self.edge_cost[t.index()] = cost;
+                let o = self.tri.opposite(t);
+                self.edge_cost[o.index()] = cost;
+            }
+        }
+        self.recompute(p);
+        self.recompute(q);
     }
 
     /// After a collapse onto `keep`: the costs of its edges (the only ones that
@@ -519,7 +623,7 @@ impl<'o> Decimator<'o> {
             if self.is_virtual(n) {
                 continue;
             }
-            if self.refused_at[n.index()] > 0 {
+            if self.adjusted_at[n.index()] > 0 {
                 self.allow_again(n, None);
                 self.recompute(n);
                 continue;
@@ -579,25 +683,20 @@ impl<'o> Decimator<'o> {
                     continue;
                 }
                 let (p, q) = (VertexId(p), VertexId(q));
-                let Ok(c) = self.candidate(p, q) else {
-                    debug_assert!(false, "a best key of a refused candidate");
-                    continue;
-                };
-                debug_assert_eq!(c.cost.to_bits(), cost.to_bits());
-                match self.check(&c) {
-                    Ok(removed) => {
-                        spec::before_collapse(self, unpack(e), &c);
-                        self.last = Some(unpack(e));
+                match self.resolve(p, q) {
+                    Ok((c, at, removed)) if at.to_bits() == cost.to_bits() => {
+                        spec::before_collapse(self, (cost, p.0, q.0), &c);
                         self.collapse(&c, removed);
+                    }
+                    // The guard took an alternative position: dearer than the key, so
+                    // the edge goes back with its true cost.
+                    Ok((_, at, _)) => {
+                        debug_assert!(at > cost);
+                        self.adjust(p, q, Some(at));
                     }
                     Err(r) => {
                         self.refused.count(r);
-                        if self.refused_edges.insert(pair(p, q)) {
-                            self.refused_at[p.index()] += 1;
-                            self.refused_at[q.index()] += 1;
-                        }
-                        self.recompute(p);
-                        self.recompute(q);
+                        self.adjust(p, q, None);
                     }
                 }
             }
@@ -612,15 +711,8 @@ impl<'o> Decimator<'o> {
             if missed.is_empty() {
                 break;
             }
-            for (p, q, k) in missed {
-                if self.refused_edges.remove(&pair(p, q)) {
-                    self.lower(p, k);
-                    self.lower(q, k);
-                } else {
-                    // Not refused and yet not queued: re-derive both ends.
-                    self.recompute(p);
-                    self.recompute(q);
-                }
+            for (p, q, at) in missed {
+                self.adjust(p, q, Some(at));
             }
         }
         observer(Progress::new(
@@ -631,8 +723,8 @@ impl<'o> Decimator<'o> {
         true
     }
 
-    /// Every real edge that passes every guard now, with its key.
-    fn sweep_allowed(&mut self) -> Vec<(VertexId, VertexId, u128)> {
+    /// Every real edge that passes every guard now, with its queue cost.
+    fn sweep_allowed(&mut self) -> Vec<(VertexId, VertexId, f64)> {
         let edges: Vec<(VertexId, VertexId)> = self
             .tri
             .edges()
@@ -641,10 +733,8 @@ impl<'o> Decimator<'o> {
             .collect();
         let mut out = Vec::new();
         for (p, q) in edges {
-            if let Ok(c) = self.candidate(p, q) {
-                if self.check(&c).is_ok() {
-                    out.push((p, q, edge_key(p, q, c.cost)));
-                }
+            if let Ok((_, at, _)) = self.resolve(p, q) {
+                out.push((p, q, at));
             }
         }
         out
@@ -663,7 +753,7 @@ impl<'o> Decimator<'o> {
             .filter(|&(p, q, _)| !self.is_virtual(p) && !self.is_virtual(q))
             .collect();
         for (p, q, c) in edges {
-            let verdict = self.candidate(p, q).and_then(|cand| self.check(&cand));
+            let verdict = self.resolve(p, q);
             let k = self.face_label[c.face().index()] as usize;
             match verdict {
                 Err(r) => per[k].count(r),
@@ -742,7 +832,7 @@ impl<'o> Decimator<'o> {
         stats.collapses = self.collapses;
         stats.max_error = self.max_error2.sqrt() / self.scale;
         stats.refused = self.refused;
-        for (s, input) in per.iter_mut().zip(&stats.per_component) {
+        for (s, input) in per.iter_mut().zip(&stats.component_list) {
             s.faces_in = input.faces_in;
             s.vertices_in = input.vertices_in;
             s.boundary_loops = input.boundary_loops;
@@ -757,7 +847,7 @@ impl<'o> Decimator<'o> {
             total.foldover += r.foldover;
         }
         stats.remaining = total;
-        stats.per_component = per;
+        stats.component_list = per;
         Output {
             faces,
             positions,
@@ -801,7 +891,7 @@ pub(crate) fn input_stats(whole: &ConedWhole, vertex_count: usize) -> Stats {
         vertices_in: per.iter().map(|c| c.vertices_in).sum(),
         components: whole.components,
         boundary_loops: per.iter().map(|c| c.boundary_loops).sum(),
-        per_component: per,
+        component_list: per,
         ..Stats::default()
     }
 }

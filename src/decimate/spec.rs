@@ -25,7 +25,9 @@ use crate::spec::ENABLED;
 pub(crate) const FULL_CHECK_FACES: usize = 1500;
 
 /// Whether `[p, q]` may be collapsed now, decided without the decimator's own walk: its
-/// key when it may.
+/// key when it may. The position is the placement's if the guard accepts it, else the
+/// first of the decimator's alternatives it accepts (their list is the definition; the
+/// guard's verdict on each is decided here), at the larger of the two costs.
 fn allowed(d: &Decimator<'_>, p: VertexId, q: VertexId) -> Option<(f64, u32, u32)> {
     let c = d.candidate(p, q).ok()?;
     if !d.tri.link_condition_naive(p, q) {
@@ -37,11 +39,14 @@ fn allowed(d: &Decimator<'_>, p: VertexId, q: VertexId) -> Option<(f64, u32, u32
             return None;
         }
     }
-    if d.opts.guard && !guard_ok(d, &c) {
-        return None;
-    }
+    let cost = if !d.opts.guard || guard_ok(d, &c) {
+        c.cost
+    } else {
+        let alt = d.alternatives(&c).into_iter().find(|a| guard_ok(d, a))?;
+        alt.cost.max(c.cost)
+    };
     let (a, b) = if p < q { (p, q) } else { (q, p) };
-    Some((c.cost, a.0, b.0))
+    Some((cost, a.0, b.0))
 }
 
 /// The fold-over guard by its definition: every real face with exactly one of the two
@@ -91,15 +96,13 @@ pub(super) fn before_collapse(d: &Decimator<'_>, chosen: (f64, u32, u32), c: &Ca
         return;
     }
     let (cost, p, q) = chosen;
+    let key = allowed(d, VertexId(p), VertexId(q));
     assert!(
-        c.cost.to_bits() == cost.to_bits(),
-        "specification violated: M1 (priority): [{p}, {q}] costs {} now, {cost} in the queue",
-        c.cost
-    );
-    assert!(
-        allowed(d, VertexId(p), VertexId(q)).is_some(),
-        "specification violated: M1 (priority): collapse {}: [{p}, {q}] does not pass every guard",
-        d.collapses
+        key.is_some_and(|k| k.0.to_bits() == cost.to_bits()),
+        "specification violated: M1 (priority): collapse {}: [{p}, {q}] at cost {cost} \
+         (position {:?}) is not allowed at that cost now ({key:?})",
+        d.collapses,
+        c.position
     );
     for (p, q) in real_edges(d) {
         if let Some(key) = allowed(d, p, q) {

@@ -668,17 +668,17 @@ pub(crate) fn check(input: &TriMesh, o: &DecimateOptions, r: &DecimateResult, la
     );
     assert_eq!(s.collapses, used_in.len() - nv_out, "{label}: collapses");
     assert_eq!(
-        s.per_component.len(),
+        s.component_list.len(),
         cin.parts.len(),
         "{label}: per component"
     );
     assert_eq!(
-        s.per_component.iter().map(|c| c.faces_out).sum::<usize>(),
+        s.component_list.iter().map(|c| c.faces_out).sum::<usize>(),
         out.faces.len(),
         "{label}: per-component faces"
     );
     assert_eq!(
-        s.per_component
+        s.component_list
             .iter()
             .map(|c| c.remaining.total())
             .sum::<usize>(),
@@ -1556,7 +1556,7 @@ fn several_components_are_decimated_together_each_keeping_its_type() {
         {
             let label = format!("{name} {o:?}");
             let (r, _) = run(mesh, &o, &label);
-            assert_eq!(r.stats.per_component.len(), n, "{label}");
+            assert_eq!(r.stats.component_list.len(), n, "{label}");
         }
     }
     // Without a target and the guard, every component is irreducible: the sphere a

@@ -130,9 +130,9 @@ fn stats(v: &Value, like: &Stats) -> Stats {
         max_error: v["max_error"].as_f64().expect("max_error"),
         refused: like.refused,
         remaining: refusals(&v["remaining"]),
-        per_component: v["per_component"]
+        component_list: v["component_list"]
             .as_array()
-            .expect("per_component")
+            .expect("component_list")
             .iter()
             .map(|c| ComponentStats {
                 faces_in: num(c, "faces_in"),

@@ -322,7 +322,7 @@ fn stats_json(s: &Stats) -> Value {
         "collapses": s.collapses,
         "max_error": s.max_error,
         "remaining": refusals_json(&s.remaining),
-        "per_component": s.per_component.iter().map(|c| json!({
+        "component_list": s.component_list.iter().map(|c| json!({
             "faces_in": c.faces_in,
             "faces_out": c.faces_out,
             "vertices_in": c.vertices_in,
