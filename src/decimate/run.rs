@@ -514,12 +514,13 @@ impl<'o> Decimator<'o> {
     }
 
     /// Caches the cost of the real edge `[v, n]` opposite corner `t` at both its
-    /// opposite corners (NaN if its endpoints refuse it).
-    fn cache_cost(&mut self, v: VertexId, n: VertexId, t: Corner) {
+    /// opposite corners (NaN if its endpoints refuse it), and returns it.
+    fn cache_cost(&mut self, v: VertexId, n: VertexId, t: Corner) -> f64 {
         let cost = self.candidate(v, n).map_or(f64::NAN, |c| c.cost);
         self.edge_cost[t.index()] = cost;
         let o = self.tri.opposite(t);
         self.edge_cost[o.index()] = cost;
+        cost
     }
 
     /// Sets `v`'s best key and queues it if it changed.
@@ -612,13 +613,20 @@ impl<'o> Decimator<'o> {
         let mut steps = std::mem::take(&mut self.ring);
         steps.clear();
         steps.extend(self.tri.star(keep).map(|st| (st.corner, st.neighbour)));
+        // `allow_again` left no adjusted edge at `keep`: its best key is the cheapest of
+        // the costs just cached.
+        let mut best = NO_KEY;
         for &(c, n) in &steps {
             if !self.is_virtual(n) {
                 let t = self.third(c, n);
-                self.cache_cost(keep, n, t);
+                let cost = self.cache_cost(keep, n, t);
+                if !cost.is_nan() {
+                    best = best.min(edge_key(keep, n, cost));
+                }
             }
         }
-        self.recompute(keep);
+        debug_assert_eq!(self.adjusted_at[keep.index()], 0);
+        self.set_best(keep, best);
         for &(c, n) in &steps {
             if self.is_virtual(n) {
                 continue;
