@@ -172,6 +172,13 @@ def make_decimator(name):
 def worker(name, cases_path, out_dir):
     """Runs one decimator on the cases of cases_path (from --start on), prints one JSON
     line per case when it is done; outputs of the first run go to out_dir."""
+    # A decimator that loops allocating (igl.decimate and igl.qslim do on some inputs)
+    # fails on this limit instead of taking the machine's memory.
+    gib = float(os.environ.get("DECIMATE_MEMORY_GIB", "0"))
+    if gib > 0:
+        import resource
+        lim = int(gib * 2**30)
+        resource.setrlimit(resource.RLIMIT_AS, (lim, lim))
     # Results go to the original stdout; whatever the libraries print goes to stderr.
     res = os.fdopen(os.dup(1), "w")
     os.dup2(2, 1)
@@ -211,7 +218,7 @@ def worker(name, cases_path, out_dir):
 # The measurement (main process)
 
 
-def run_decimator(name, cases, tmp, reps, budget, timeout, log):
+def run_decimator(name, cases, tmp, reps, budget, timeout, memory, log):
     """{case index: result} for one decimator, restarting its worker after a crash or a
     time-out."""
     results = {}
@@ -219,7 +226,7 @@ def run_decimator(name, cases, tmp, reps, budget, timeout, log):
     start = 0
     while start < len(cases):
         env = dict(os.environ, DECIMATE_START=str(start), DECIMATE_REPS=str(reps),
-                   DECIMATE_BUDGET=str(budget))
+                   DECIMATE_BUDGET=str(budget), DECIMATE_MEMORY_GIB=str(memory))
         errf = open(tmp / f"{name}.stderr", "w+")
         p = subprocess.Popen([sys.executable, str(tmp / "decimate_worker.py"), "--worker", name,
                               str(cases_path), str(tmp)], stdout=subprocess.PIPE,
@@ -511,7 +518,8 @@ def measure(args, log):
     loads = [os.getloadavg()[0]]
     raw = {}
     for d in decimators:
-        raw[d] = run_decimator(d, cases, tmp, args.reps, args.case_budget, args.timeout, log)
+        raw[d] = run_decimator(d, cases, tmp, args.reps, args.case_budget, args.timeout,
+                               args.memory, log)
         loads.append(os.getloadavg()[0])
     bench_s = time.perf_counter() - t_start
 
@@ -581,7 +589,7 @@ def measure(args, log):
             "machine": machine(), "versions": vers, "load": loads,
             "load_at_start": loads[0], "bench_seconds": bench_s,
             "samples": args.samples, "reps": args.reps, "case_budget_s": args.case_budget,
-            "timeout_s": args.timeout, "seed": SEED, "decimators": decimators,
+            "timeout_s": args.timeout, "memory_gib": args.memory, "seed": SEED, "decimators": decimators,
             "not_installed": missing, "note": args.note}
     return {"meta": meta, "meshes": info, "results": rows}
 
@@ -853,8 +861,8 @@ def picture(raw_json, out_png, mesh="bunny_npm", target_pct="10"):
     box = rp.bbox(rp.Mesh(V, [tuple(f) for f in F.tolist()]), view)
 
     def ttl(label, m, r):
-        return (f"{label}\nV = {len(m.vertices):,}   F = {len(m.faces):,} triangles   "
-                f"Hausdorff {pct(r['hausdorff_rel'])} of the diagonal   "
+        return (f"{label}\nV = {len(m.vertices):,}   F = {len(m.faces):,} triangles\n"
+                f"Hausdorff {pct(r['hausdorff_rel'])} of the diagonal, "
                 f"{'topology kept' if r['topology_kept'] else 'topology changed'}")
     fig, a, b = rp.figure(
         ttl(f"contractible.decimate(V, F, faces={t})", outs[OURS], ours),
@@ -889,8 +897,10 @@ def main():
                     "1 with --quick)")
     ap.add_argument("--case-budget", type=float, default=30.0,
                     help="stop repeating a case once its runs took this many seconds")
-    ap.add_argument("--timeout", type=float, default=300.0,
+    ap.add_argument("--timeout", type=float, default=60.0,
                     help="give up a case (kill its worker) after this many seconds")
+    ap.add_argument("--memory", type=float, default=6.0,
+                    help="address-space limit of each worker process, GiB (default 6; 0: none)")
     ap.add_argument("--samples", type=int, default=None,
                     help="points per surface for the Hausdorff distance (default 100000; "
                     "5000 with --quick)")
