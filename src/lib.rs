@@ -1,7 +1,7 @@
 //! `contractible`: topology-preserving edge contraction on triangulated surfaces,
 //! orientable or not, closed or with boundary.
 //!
-//! Three tasks, each one call from a mesh to a verified result:
+//! Four tasks, each one call from a mesh to a verified result:
 //!
 //! - [`reduce`]: an *irreducible* triangulation of every component (no edge can be
 //!   contracted without changing the surface), by Ramaswami–Siqueira's algorithm
@@ -13,7 +13,10 @@
 //!   Edmonds, and Frink's reduction with the Diks–Stańczyk or
 //!   Biedl–Bose–Demaine–Lubiw strategies);
 //! - [`simplify()`]: every edge shorter than ε contracted without changing the topology
-//!   (Pepko–Borisenko, [`simplify`](mod@simplify)).
+//!   (Pepko–Borisenko, [`simplify`](mod@simplify));
+//! - [`decimate()`]: a face budget (a count or a fraction kept) or an error cap reached by
+//!   quadric-error collapses that never change the topology, with a report of why it
+//!   stopped and maps from the output back to the input ([`decimate`](mod@decimate)).
 //!
 //! and [`describe`], which says what a mesh is (each component's surface type) or lists
 //! every reason it is not a surface.
@@ -21,7 +24,7 @@
 //! # Read, run, write
 //!
 //! ```
-//! use contractible::{io, SimplifyOptions};
+//! use contractible::{io, DecimateOptions, SimplifyOptions};
 //!
 //! # fn main() -> Result<(), contractible::Error> {
 //! # let dir = std::env::temp_dir().join(format!("contractible-doc-{}", std::process::id()));
@@ -40,6 +43,10 @@
 //!
 //! let simplified = contractible::simplify(&mesh, &SimplifyOptions::relative(0.05))?;
 //! io::write_mesh(&dir.join("simplified.ply"), &simplified.mesh)?;
+//!
+//! let decimated = contractible::decimate(&mesh, &DecimateOptions::faces(100))?;
+//! assert!(decimated.mesh.faces.len() <= 100); // and still a sphere
+//! io::write_mesh(&dir.join("decimated.obj"), &decimated.mesh)?;
 //! # std::fs::remove_dir_all(&dir).ok();
 //! # Ok(())
 //! # }

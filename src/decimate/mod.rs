@@ -277,7 +277,8 @@ pub(crate) struct Output {
     pub(crate) stats: Stats,
 }
 
-/// The entry of [`Output::collapse_map`] for an input vertex no face uses.
+/// The entry of `collapse_map` ([`crate::DecimateResult::collapse_map`]) for an input
+/// vertex no face uses.
 pub const NO_VERTEX: u32 = NONE;
 
 #[cfg(test)]

@@ -30,7 +30,7 @@ pub struct DecimateOptions {
     /// Stop at this fraction of the input's faces *kept* or fewer (`ceil(keep × faces)`;
     /// in `[0, 1]`).
     pub keep: Option<f64>,
-    /// Make no collapse whose error exceeds this (see [`crate::decimate`] for what the
+    /// Make no collapse whose error exceeds this (see [`crate::decimate`](mod@crate::decimate) for what the
     /// error measures); finite and ≥ 0.
     pub max_error: Option<MaxError>,
     /// See [`Placement`].

@@ -4,7 +4,7 @@
 //! `cargo run --release -p contractible-tools --bin make_decimate_vectors [OUT_DIR]`
 //! (default `spec/vectors` of this checkout). Builds the small input meshes below (every
 //! input coordinate a dyadic rational with few bits), runs `contractible::decimate` on
-//! each with the [`RUNS`] options (every placement, the guard on and off, face and
+//! each with the eight runs of `runs` below (every placement, the guard on and off, face and
 //! fraction targets, error caps, locks, no target), and writes each output with its maps
 //! and statistics. `tests/algorithms/decimate_vectors.rs` checks that the library still
 //! reproduces them exactly and that every stored output passes the independent checks
