@@ -3296,6 +3296,836 @@ fn check_tasks_simplify(
     }
 }
 
+// ---- Decimation (`decimate`): quadric edge collapse to a budget, checked from the face
+// lists and the maps alone.
+
+/// At most this many operations grow a [`DecimateInput`]'s main surface.
+pub const DECIMATE_OPS: usize = 300;
+/// At most this many operations grow its second component.
+pub const DECIMATE_EXTRA_OPS: usize = 60;
+/// At most this many faces are removed to make boundary.
+pub const DECIMATE_HOLES: usize = 6;
+/// At most this many vertices are locked.
+pub const DECIMATE_LOCKED: usize = 4;
+
+/// The error cap of a [`DecimateInput`]: a fraction of the bounding-box diagonal from
+/// [`cap_value`], given as an absolute distance (the fraction times the diagonal, when
+/// that is finite) or as [`contractible::MaxError::Relative`].
+#[derive(Arbitrary, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorCap {
+    /// [`contractible::MaxError::Absolute`].
+    Absolute(u16),
+    /// [`contractible::MaxError::Relative`].
+    Relative(u16),
+}
+
+/// The input of `decimate`: a random closed surface (as `surface_ops` grows it, at most
+/// [`DECIMATE_OPS`] operations), optionally a second one on vertices of its own, faces
+/// removed to open them, unused vertices appended, positions laid out by [`layout`]
+/// (degenerate ones included), and random options: face target, fraction kept, error
+/// cap (each also with values the call must refuse), placement, guard, locks.
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct DecimateInput {
+    /// The main surface (its `seed` is unused).
+    pub base: SurfaceInput,
+    /// A second component: start surface and operations (at most
+    /// [`DECIMATE_EXTRA_OPS`]).
+    pub extra: Option<(Surface, Vec<Op>)>,
+    /// Seed of the positions ([`Rng`]).
+    pub positions: u64,
+    /// The layout of the positions.
+    pub geometry: Geometry,
+    /// Every coordinate times `10^`[`scale_exponent`]`(scale)` ([`layout`]).
+    pub scale: i8,
+    /// Faces to remove (ids mod F, in order); a face sharing a vertex with one already
+    /// removed is kept.
+    pub holes: Vec<u16>,
+    /// `spare % 3` vertices no face uses, appended (at `±1e300`: they must not count in
+    /// the diagonal).
+    pub spare: u8,
+    /// The face target ([`decimate_faces`]).
+    pub faces: Option<u16>,
+    /// The fraction kept ([`keep_value`]).
+    pub keep: Option<u16>,
+    /// The error cap.
+    pub max_error: Option<ErrorCap>,
+    /// `placement % 3` of [`contractible::decimate::Placement::ALL`].
+    pub placement: u8,
+    /// The fold-over guard (the call's `allow_foldover` is its negation).
+    pub guard: bool,
+    /// [`contractible::DecimateOptions::lock_boundary`].
+    pub lock_boundary: bool,
+    /// Locked vertices (mod the vertex count; `u16::MAX`: the vertex count itself, out
+    /// of range); at most [`DECIMATE_LOCKED`].
+    pub locked: Vec<u16>,
+    /// [`contractible::DecimateOptions::skip_verify`] (the harness checks either way).
+    pub skip_verify: bool,
+}
+
+/// The face target of a fuzzed `faces` against the input's face count: `n mod (F + 1)`
+/// (every target from 0 to the input itself), `usize::MAX` for `u16::MAX`.
+pub fn decimate_faces(n: u16, faces_in: usize) -> usize {
+    if n == u16::MAX {
+        usize::MAX
+    } else {
+        usize::from(n) % (faces_in + 1)
+    }
+}
+
+/// The fraction kept of a fuzzed `keep`: `k / 60000` up to 60000 (in `[0, 1]`), above
+/// it up to 1.09 (refused), and three special values: `-0.0` (accepted), `-1e-300` and
+/// NaN (refused).
+pub fn keep_value(k: u16) -> f64 {
+    match k {
+        65533 => -0.0,
+        65534 => -1e-300,
+        65535 => f64::NAN,
+        _ => f64::from(k) / 60000.0,
+    }
+}
+
+/// The fraction of the diagonal of a fuzzed error cap: `(x / 65529)² · 0.2` below
+/// 65530, then 0, −1, NaN, ∞, `f64::MAX` and `1e-300`.
+pub fn cap_value(x: u16) -> f64 {
+    match x {
+        65530 => 0.0,
+        65531 => -1.0,
+        65532 => f64::NAN,
+        65533 => f64::INFINITY,
+        65534 => f64::MAX,
+        65535 => 1e-300,
+        _ => {
+            let r = f64::from(x) / 65529.0;
+            r * r * 0.2
+        }
+    }
+}
+
+/// The mesh and options a [`DecimateInput`] describes.
+pub fn decimate_case(
+    input: &DecimateInput,
+) -> (contractible::TriMesh, contractible::DecimateOptions) {
+    use contractible::decimate::Placement;
+    use contractible::{DecimateOptions, MaxError};
+    let base = SurfaceInput {
+        ops: input.base.ops.iter().take(DECIMATE_OPS).copied().collect(),
+        ..input.base.clone()
+    };
+    let tri = build_surface(&base);
+    let mut n = tri.vertex_capacity();
+    let mut faces = tri.face_list();
+    if let Some((surface, ops)) = &input.extra {
+        let extra = build_surface(&SurfaceInput {
+            surface: *surface,
+            ops: ops.iter().take(DECIMATE_EXTRA_OPS).copied().collect(),
+            seed: 0,
+        });
+        let shift = n as u32;
+        faces.extend(extra.face_list().iter().map(|f| f.map(|v| v + shift)));
+        n += extra.vertex_capacity();
+    }
+    let mut pos = layout(
+        input.geometry,
+        input.scale,
+        input.positions,
+        &neighbours(n, &faces),
+    );
+    let mut holed = vec![false; n];
+    for &h in input.holes.iter().take(DECIMATE_HOLES) {
+        if faces.len() <= 1 {
+            break;
+        }
+        let i = usize::from(h) % faces.len();
+        if faces[i].iter().any(|&v| holed[v as usize]) {
+            continue;
+        }
+        for &v in &faces[i] {
+            holed[v as usize] = true;
+        }
+        faces.swap_remove(i);
+    }
+    for k in 0..input.spare % 3 {
+        let far = if k == 0 { 1e300 } else { -1e300 };
+        pos.push([far, 0.0, -far]);
+    }
+    let vertex_count = pos.len();
+    let faces_in = faces.len();
+    let mesh = contractible::TriMesh::with_positions(pos, faces);
+    let diag = diagonal(
+        used_vertices(&mesh)
+            .iter()
+            .map(|&v| &mesh.positions.as_deref().expect("positions")[v as usize]),
+    );
+    let max_error = input.max_error.map(|cap| match cap {
+        ErrorCap::Absolute(x) => {
+            let f = cap_value(x);
+            let e = f * diag;
+            // A usable fraction of a usable diagonal; the refused values as they are.
+            MaxError::Absolute(if e.is_finite() && f.is_finite() && f >= 0.0 {
+                e
+            } else {
+                f
+            })
+        }
+        ErrorCap::Relative(x) => MaxError::Relative(cap_value(x)),
+    });
+    let options = DecimateOptions {
+        faces: input.faces.map(|f| decimate_faces(f, faces_in)),
+        keep: input.keep.map(keep_value),
+        max_error,
+        placement: Placement::ALL[usize::from(input.placement % 3)],
+        allow_foldover: !input.guard,
+        lock_boundary: input.lock_boundary,
+        locked: input
+            .locked
+            .iter()
+            .take(DECIMATE_LOCKED)
+            .map(|&v| {
+                if v == u16::MAX {
+                    vertex_count as u32
+                } else {
+                    u32::from(v) % vertex_count as u32
+                }
+            })
+            .collect(),
+        skip_verify: input.skip_verify,
+        ..DecimateOptions::default()
+    };
+    (mesh, options)
+}
+
+/// Why [`contractible::decimate()`](fn@contractible::decimate) must refuse `mesh` (a
+/// union of surfaces with finite positions, one per vertex) with `options`, decided here
+/// from the documented rules: `no_coordinates` when every used vertex (two at least) is
+/// at one point (checked first); `bad_option` for a fraction kept outside `[0, 1]`, an
+/// error cap that is not a finite number ≥ 0, a relative cap whose product with the used
+/// vertices' diagonal is not finite, a locked vertex out of range. `None`: it must
+/// succeed. The second value says that the decision is too close to call (the product
+/// of a relative cap and the diagonal at the edge of the `f64` range, where the
+/// library's diagonal may differ from this one in the last bit): then either outcome
+/// is accepted.
+pub fn decimate_refusal(
+    mesh: &contractible::TriMesh,
+    options: &contractible::DecimateOptions,
+) -> (Option<&'static str>, bool) {
+    use contractible::MaxError;
+    let p = mesh.positions.as_deref().expect("positions");
+    let used = used_vertices(mesh);
+    if let Some(&first) = used.first() {
+        if used.len() > 1 && used.iter().all(|&v| p[v as usize] == p[first as usize]) {
+            return (Some("no_coordinates"), false);
+        }
+    }
+    let usable = |e: f64| e.is_finite() && e >= 0.0;
+    if let Some(k) = options.keep {
+        if !(k.is_finite() && (0.0..=1.0).contains(&k)) {
+            return (Some("bad_option"), false);
+        }
+    }
+    match options.max_error {
+        None => {}
+        Some(MaxError::Absolute(e)) if !usable(e) => return (Some("bad_option"), false),
+        Some(MaxError::Absolute(_)) => {}
+        Some(MaxError::Relative(r)) if !usable(r) => return (Some("bad_option"), false),
+        Some(MaxError::Relative(r)) => {
+            let d = diagonal(used.iter().map(|&v| &p[v as usize]));
+            let (lo, hi) = (r * d * (1.0 - 1e-12), r * d * (1.0 + 1e-12));
+            if lo.is_finite() != hi.is_finite() {
+                return (None, true);
+            }
+            if !(r * d).is_finite() {
+                return (Some("bad_option"), false);
+            }
+        }
+    }
+    if options
+        .locked
+        .iter()
+        .any(|&v| v as usize >= mesh.vertex_count)
+    {
+        return (Some("bad_option"), false);
+    }
+    (None, false)
+}
+
+/// `decimate`: the mesh and options of `input` through
+/// [`contractible::decimate()`](fn@contractible::decimate): a refusal exactly when
+/// [`decimate_refusal`] says so, of that kind; otherwise the result passes
+/// [`check_decimated`], the library's own [`contractible::verify_decimation`] accepts
+/// it, and a second run with `skip_verify` flipped gives the same output (the call is
+/// deterministic, and the check changes nothing).
+pub fn check_decimate_input(input: &DecimateInput) {
+    let (mesh, options) = decimate_case(input);
+    let r = check_decimate_call(&mesh, &options, "decimate");
+    if let Ok(r) = r {
+        let again = contractible::DecimateOptions {
+            skip_verify: !options.skip_verify,
+            ..options.clone()
+        };
+        let s = contractible::decimate(&mesh, &again)
+            .unwrap_or_else(|e| panic!("decimate: the second run refused: {e}"));
+        assert_same_decimation(&r, &s, "decimate: the second run");
+    }
+}
+
+/// The call on `mesh` with `options`, checked: refused exactly for the reason
+/// [`decimate_refusal`] finds (a typed input error), otherwise checked by
+/// [`check_decimated`].
+pub fn check_decimate_call(
+    mesh: &contractible::TriMesh,
+    options: &contractible::DecimateOptions,
+    label: &str,
+) -> Result<contractible::DecimateResult, contractible::Error> {
+    let (refusal, ambiguous) = decimate_refusal(mesh, options);
+    match contractible::decimate(mesh, options) {
+        Err(e) => {
+            assert!(e.is_input(), "{label}: {e} is not the input's fault");
+            if !ambiguous {
+                assert_eq!(
+                    Some(e.kind()),
+                    refusal,
+                    "{label}: refused ({e}), expected {refusal:?}"
+                );
+            } else {
+                assert_eq!(e.kind(), "bad_option", "{label}: refused ({e})");
+            }
+            Err(e)
+        }
+        Ok(r) => {
+            assert!(
+                refusal.is_none() || ambiguous,
+                "{label}: accepted, expected a refusal: {refusal:?}"
+            );
+            check_decimated(mesh, options, &r, label);
+            Ok(r)
+        }
+    }
+}
+
+/// Two results of one call are the same: mesh (positions bit for bit), maps and
+/// statistics but the timings.
+pub fn assert_same_decimation(
+    a: &contractible::DecimateResult,
+    b: &contractible::DecimateResult,
+    label: &str,
+) {
+    assert_eq!(a.mesh.faces, b.mesh.faces, "{label}: faces");
+    assert_eq!(
+        a.mesh.vertex_count, b.mesh.vertex_count,
+        "{label}: vertices"
+    );
+    let bits = |m: &contractible::TriMesh| {
+        m.positions
+            .as_ref()
+            .map(|p| p.iter().map(|q| q.map(f64::to_bits)).collect::<Vec<_>>())
+    };
+    assert_eq!(bits(&a.mesh), bits(&b.mesh), "{label}: positions");
+    assert_eq!(a.vertex_map, b.vertex_map, "{label}: vertex_map");
+    assert_eq!(a.collapse_map, b.collapse_map, "{label}: collapse_map");
+    assert_eq!(a.face_origin, b.face_origin, "{label}: face_origin");
+    assert_eq!(
+        a.bbox_diagonal.to_bits(),
+        b.bbox_diagonal.to_bits(),
+        "{label}: bbox_diagonal"
+    );
+    let mut sa = a.stats.clone();
+    let mut sb = b.stats.clone();
+    sa.seconds = 0.0;
+    sb.seconds = 0.0;
+    assert_eq!(sa, sb, "{label}: statistics");
+}
+
+/// The sorted vertex pair of an edge.
+fn edge_key(a: u32, b: u32) -> (u32, u32) {
+    (a.min(b), a.max(b))
+}
+
+/// The link condition of a surface with boundary decided from a face list alone (each
+/// boundary loop coned to an apex of its own): `[u, v]` passes iff the common
+/// neighbours of its endpoints in the coned surface are exactly the third vertices of
+/// its two coned faces, the endpoints are not on two different loops, and they are not
+/// both of degree 3 in the coned surface (an edge of a tetrahedron).
+pub struct LinkOracle {
+    neighbours: std::collections::BTreeMap<u64, std::collections::BTreeSet<u64>>,
+    opposite: std::collections::BTreeMap<(u32, u32), std::collections::BTreeSet<u64>>,
+    loop_of: std::collections::BTreeMap<u32, u64>,
+}
+
+impl LinkOracle {
+    /// The oracle of the surface `faces`.
+    pub fn new(faces: &[[u32; 3]]) -> Self {
+        use std::collections::{BTreeMap, BTreeSet};
+        let mut neighbours: BTreeMap<u64, BTreeSet<u64>> = BTreeMap::new();
+        let mut opposite: BTreeMap<(u32, u32), BTreeSet<u64>> = BTreeMap::new();
+        for f in faces {
+            for k in 0..3 {
+                let (a, b, c) = (f[k], f[(k + 1) % 3], f[(k + 2) % 3]);
+                opposite
+                    .entry(edge_key(a, b))
+                    .or_default()
+                    .insert(u64::from(c));
+                neighbours.entry(a.into()).or_default().insert(b.into());
+                neighbours.entry(b.into()).or_default().insert(a.into());
+            }
+        }
+        let boundary: Vec<(u32, u32)> = opposite
+            .iter()
+            .filter(|(_, o)| o.len() == 1)
+            .map(|(&e, _)| e)
+            .collect();
+        let n = faces
+            .iter()
+            .flatten()
+            .map(|&v| v as usize + 1)
+            .max()
+            .unwrap_or(0);
+        let mut parent: Vec<u32> = (0..n as u32).collect();
+        for &(a, b) in &boundary {
+            uf_union(&mut parent, a, b);
+        }
+        let mut loop_of = BTreeMap::new();
+        for &(a, b) in &boundary {
+            let apex = (1u64 << 32) + u64::from(uf_find(&mut parent, a));
+            for v in [a, b] {
+                loop_of.insert(v, apex);
+                neighbours.entry(v.into()).or_default().insert(apex);
+                neighbours.entry(apex).or_default().insert(v.into());
+            }
+            opposite.get_mut(&(a, b)).expect("an edge").insert(apex);
+        }
+        LinkOracle {
+            neighbours,
+            opposite,
+            loop_of,
+        }
+    }
+
+    /// Every edge, as a sorted pair.
+    pub fn edges(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+        self.opposite.keys().copied()
+    }
+
+    /// Whether collapsing `[u, v]` keeps the surface.
+    pub fn passes(&self, u: u32, v: u32) -> bool {
+        let (nu, nv) = (
+            &self.neighbours[&u64::from(u)],
+            &self.neighbours[&u64::from(v)],
+        );
+        let common: std::collections::BTreeSet<u64> = nu.intersection(nv).copied().collect();
+        let two_loops = matches!(
+            (self.loop_of.get(&u), self.loop_of.get(&v)),
+            (Some(a), Some(b)) if a != b
+        );
+        common == self.opposite[&edge_key(u, v)] && !two_loops && !(nu.len() == 3 && nv.len() == 3)
+    }
+}
+
+/// The edges of `faces` in exactly one face, as sorted pairs, increasing.
+fn boundary_edges(faces: &[[u32; 3]]) -> Vec<(u32, u32)> {
+    let mut edges: Vec<(u32, u32)> = faces
+        .iter()
+        .flat_map(|f| (0..3).map(move |k| edge_key(f[k], f[(k + 1) % 3])))
+        .collect();
+    edges.sort_unstable();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < edges.len() {
+        let j = edges[i..].iter().take_while(|&&e| e == edges[i]).count();
+        if j == 1 {
+            out.push(edges[i]);
+        }
+        i += j;
+    }
+    out
+}
+
+/// Twice the squared area of the triangle `f` against its longest edge, `|n|² / L⁴`, on
+/// positions multiplied by `scale` (a power of two); 0 for a degenerate one.
+fn relative_area2(p: &[[f64; 3]], f: &[u32; 3], scale: f64) -> f64 {
+    let [a, b, c] = f.map(|v| p[v as usize].map(|x| x * scale));
+    let d = |x: [f64; 3], y: [f64; 3]| [y[0] - x[0], y[1] - x[1], y[2] - x[2]];
+    let (u, w) = (d(a, b), d(a, c));
+    let n = [
+        u[1] * w[2] - u[2] * w[1],
+        u[2] * w[0] - u[0] * w[2],
+        u[0] * w[1] - u[1] * w[0],
+    ];
+    let n2 = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    let l2 = |x: [f64; 3]| x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+    let l = l2(u).max(l2(w)).max(l2(d(b, c)));
+    if l == 0.0 {
+        0.0
+    } else {
+        n2 / (l * l)
+    }
+}
+
+/// Checks a decimation `r` of `mesh` made with `options`, by code that shares nothing
+/// with the decimator:
+///
+/// - the output is a union of surfaces ([`surface_topology`]) using every output vertex,
+///   with finite positions, one per vertex; each of its components descends (through
+///   `face_origin`) from exactly one input component, one to one, with the same (χ,
+///   orientable, boundary loops); the library's rebuild of the output
+///   (`Surfaces::from_mesh_with_boundary`) gives each component that type too;
+/// - the maps: `vertex_map` increasing over input vertices, `collapse_map` its inverse
+///   there, defined exactly on the used input vertices; `face_origin` increasing, and
+///   every output face is `collapse_map ∘ input.faces[face_origin]`;
+/// - locked vertices (and, with `lock_boundary`, the boundary vertices, whose boundary
+///   edges stay) survive at their input positions; endpoint placement moves nothing;
+///   with the guard on, an input whose faces all have area keeps area in every face;
+/// - the statistics agree with the meshes (counts, one vertex per collapse, faces lost,
+///   the target and the cap, the diagonal, the dropped vertices);
+/// - the stop rule: at the target, at most the target's faces (and at most one below
+///   it); otherwise above it, every edge left classified, the error cap reached only with
+///   a cap, and without a cap the link-condition refusals are exactly the edges that fail
+///   the face-list [`LinkOracle`] among those not locked at both ends (with the guard
+///   off too, no edge left passes it).
+pub fn check_decimated(
+    mesh: &contractible::TriMesh,
+    options: &contractible::DecimateOptions,
+    r: &contractible::DecimateResult,
+    label: &str,
+) {
+    use contractible::decimate::{Placement, Stopped, NO_VERTEX};
+    use contractible::MaxError;
+    let out = &r.mesh;
+    let before = surface_topology(&mesh.faces).unwrap_or_else(|e| panic!("{label}: input: {e}"));
+    let after = surface_topology(&out.faces)
+        .unwrap_or_else(|e| panic!("{label}: the output is not a surface: {e}"));
+    let (nv_in, nv_out) = (mesh.vertex_count, out.vertex_count);
+    assert_eq!(after.vertices, nv_out, "{label}: an unused output vertex");
+    let pin = mesh.positions.as_deref().expect("input positions");
+    let pout = out
+        .positions
+        .as_deref()
+        .unwrap_or_else(|| panic!("{label}: output without positions"));
+    assert_eq!(pout.len(), nv_out, "{label}: one position per vertex");
+    assert!(
+        pout.iter().flatten().all(|x| x.is_finite()),
+        "{label}: a non-finite output coordinate"
+    );
+    // The maps.
+    assert_eq!(r.vertex_map.len(), nv_out, "{label}: vertex_map length");
+    assert_eq!(r.collapse_map.len(), nv_in, "{label}: collapse_map length");
+    assert_eq!(
+        r.face_origin.len(),
+        out.faces.len(),
+        "{label}: face_origin length"
+    );
+    for (o, &i) in r.vertex_map.iter().enumerate() {
+        assert!((i as usize) < nv_in, "{label}: vertex_map[{o}] = {i}");
+        assert!(
+            o == 0 || r.vertex_map[o - 1] < i,
+            "{label}: vertex_map not increasing at {o}"
+        );
+        assert_eq!(
+            r.collapse_map[i as usize], o as u32,
+            "{label}: output vertex {o} survives as {i}, not in collapse_map"
+        );
+    }
+    let used = used_vertices(mesh);
+    let mut is_used = vec![false; nv_in];
+    for &v in &used {
+        is_used[v as usize] = true;
+    }
+    for (i, &o) in r.collapse_map.iter().enumerate() {
+        if is_used[i] {
+            assert!(
+                (o as usize) < nv_out,
+                "{label}: collapse_map[{i}] = {o} is no output vertex"
+            );
+        } else {
+            assert_eq!(o, NO_VERTEX, "{label}: collapse_map of unused vertex {i}");
+        }
+    }
+    for (k, (&f, face)) in r.face_origin.iter().zip(&out.faces).enumerate() {
+        assert!(
+            (f as usize) < mesh.faces.len(),
+            "{label}: face_origin[{k}] = {f}"
+        );
+        assert!(
+            k == 0 || r.face_origin[k - 1] < f,
+            "{label}: face_origin not increasing at {k}"
+        );
+        let renamed = mesh.faces[f as usize].map(|v| r.collapse_map[v as usize]);
+        assert_eq!(
+            renamed, *face,
+            "{label}: output face {k} is not input face {f} renamed"
+        );
+    }
+    // Components, one to one, each of its input component's type.
+    let comps_in = component_faces(&mesh.faces);
+    let comps_out = component_faces(&out.faces);
+    assert_eq!(
+        comps_out.len(),
+        comps_in.len(),
+        "{label}: {} components in, {} out",
+        comps_in.len(),
+        comps_out.len()
+    );
+    let mut comp_of_face = vec![usize::MAX; mesh.faces.len()];
+    for (c, fs) in comps_in.iter().enumerate() {
+        for &f in fs {
+            comp_of_face[f] = c;
+        }
+    }
+    let types_in: Vec<ComponentType> = comps_in
+        .iter()
+        .map(|fs| component_topology(&mesh.faces, fs).components[0])
+        .collect();
+    let mut seen = vec![false; comps_in.len()];
+    for fs in &comps_out {
+        let from = comp_of_face[r.face_origin[fs[0]] as usize];
+        assert!(
+            fs.iter()
+                .all(|&f| comp_of_face[r.face_origin[f] as usize] == from),
+            "{label}: an output component descends from two input components"
+        );
+        assert!(
+            !std::mem::replace(&mut seen[from], true),
+            "{label}: input component {from} split"
+        );
+        let t = component_topology(&out.faces, fs).components[0];
+        assert_eq!(
+            t, types_in[from],
+            "{label}: input component {from} changed its type"
+        );
+    }
+    let rebuilt = Surfaces::from_mesh_with_boundary(out)
+        .unwrap_or_else(|e| panic!("{label}: the library does not rebuild the output: {e}"));
+    assert!(
+        rebuilt.dropped_vertices.is_empty(),
+        "{label}: the rebuild drops vertices"
+    );
+    assert_eq!(
+        rebuilt.components.len(),
+        comps_in.len(),
+        "{label}: rebuilt components"
+    );
+    for c in &rebuilt.components {
+        let t = c.surface_type();
+        let from = comp_of_face[r.face_origin[c.face_origin[0] as usize] as usize];
+        let want = types_in[from];
+        assert_eq!(
+            (
+                t.euler_characteristic(),
+                t.is_orientable(),
+                t.boundary_loops()
+            ),
+            (want.euler, want.orientable, want.boundary_loops),
+            "{label}: a rebuilt component differs from its input component"
+        );
+    }
+    // Locks and placements.
+    let boundary_in = boundary_edges(&mesh.faces);
+    let survives = |i: u32, why: &str| {
+        let o = r.collapse_map[i as usize];
+        if o == NO_VERTEX {
+            return;
+        }
+        assert_eq!(
+            r.vertex_map[o as usize], i,
+            "{label}: {why} vertex {i} did not survive"
+        );
+        assert_eq!(
+            pout[o as usize].map(f64::to_bits),
+            pin[i as usize].map(f64::to_bits),
+            "{label}: {why} vertex {i} moved"
+        );
+    };
+    for &i in &options.locked {
+        survives(i, "locked");
+    }
+    let mut locked_set: std::collections::BTreeSet<u32> = options.locked.iter().copied().collect();
+    if options.lock_boundary {
+        for &(a, b) in &boundary_in {
+            survives(a, "boundary");
+            survives(b, "boundary");
+            locked_set.insert(a);
+            locked_set.insert(b);
+        }
+        let mut boundary_out: Vec<(u32, u32)> = boundary_edges(&out.faces)
+            .into_iter()
+            .map(|(a, b)| edge_key(r.vertex_map[a as usize], r.vertex_map[b as usize]))
+            .collect();
+        boundary_out.sort_unstable();
+        assert_eq!(
+            boundary_out, boundary_in,
+            "{label}: the boundary edges changed"
+        );
+    }
+    if options.placement == Placement::Endpoint {
+        for (o, &i) in r.vertex_map.iter().enumerate() {
+            assert_eq!(
+                pout[o].map(f64::to_bits),
+                pin[i as usize].map(f64::to_bits),
+                "{label}: endpoint placement moved vertex {i}"
+            );
+        }
+    }
+    if !options.allow_foldover {
+        let largest = pin
+            .iter()
+            .chain(pout)
+            .flatten()
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        let scale = unit_scale(largest);
+        if mesh
+            .faces
+            .iter()
+            .all(|f| relative_area2(pin, f, scale) > 1e-16)
+        {
+            for (k, f) in out.faces.iter().enumerate() {
+                assert!(
+                    relative_area2(pout, f, scale) > 0.0,
+                    "{label}: the guard left output face {k} {f:?} without area"
+                );
+            }
+        }
+    }
+    // The statistics against the meshes.
+    let s = &r.stats;
+    assert_eq!(s.faces_in, mesh.faces.len(), "{label}: faces_in");
+    assert_eq!(s.faces_out, out.faces.len(), "{label}: faces_out");
+    assert_eq!(s.vertices_in, used.len(), "{label}: vertices_in");
+    assert_eq!(s.vertices_out, nv_out, "{label}: vertices_out");
+    assert_eq!(s.components, comps_in.len(), "{label}: components");
+    assert_eq!(s.boundary_loops, before.loops(), "{label}: boundary_loops");
+    assert_eq!(s.collapses, used.len() - nv_out, "{label}: collapses");
+    let lost_boundary = before.boundary_edges - after.boundary_edges;
+    assert_eq!(
+        s.faces_in - s.faces_out,
+        2 * s.collapses - lost_boundary,
+        "{label}: two faces per collapse, one per boundary edge lost"
+    );
+    assert_eq!(
+        r.dropped_vertices,
+        nv_in - used.len(),
+        "{label}: dropped vertices"
+    );
+    assert_eq!(r.verified, !options.skip_verify, "{label}: verified");
+    let diag = diagonal(used.iter().map(|&v| &pin[v as usize]));
+    assert!(
+        r.bbox_diagonal == diag || (r.bbox_diagonal - diag).abs() <= 1e-12 * diag,
+        "{label}: bbox_diagonal {} but the used vertices' is {diag}",
+        r.bbox_diagonal
+    );
+    let by_keep = options
+        .keep
+        .map(|k| (k * mesh.faces.len() as f64).ceil() as usize);
+    let target = match (options.faces, by_keep) {
+        (None, None) => None,
+        (a, b) => Some(a.unwrap_or(0).max(b.unwrap_or(0))),
+    };
+    assert_eq!(s.target_faces, target, "{label}: target_faces");
+    let cap = options.max_error.map(|m| match m {
+        MaxError::Absolute(e) => e,
+        MaxError::Relative(f) => f * r.bbox_diagonal,
+    });
+    assert_eq!(s.max_error_cap, cap, "{label}: the cap");
+    assert!(
+        s.max_error.is_finite() && s.max_error >= 0.0,
+        "{label}: max_error {}",
+        s.max_error
+    );
+    if let Some(cap) = cap {
+        assert!(
+            s.max_error <= cap,
+            "{label}: max_error {} > cap {cap}",
+            s.max_error
+        );
+    }
+    if s.collapses == 0 {
+        assert_eq!(s.max_error, 0.0, "{label}: an error without a collapse");
+    }
+    // The stop rule.
+    let oracle = LinkOracle::new(&out.faces);
+    let both_locked = |a: u32, b: u32| {
+        locked_set.contains(&r.vertex_map[a as usize])
+            && locked_set.contains(&r.vertex_map[b as usize])
+    };
+    match s.stopped {
+        Stopped::Target => {
+            let t = target.unwrap_or_else(|| panic!("{label}: stopped at a target without one"));
+            assert!(out.faces.len() <= t, "{label}: above the target {t}");
+            if mesh.faces.len() > t {
+                assert!(
+                    out.faces.len() + 1 >= t,
+                    "{label}: {} faces, more than one below the target {t}",
+                    out.faces.len()
+                );
+            } else {
+                assert_eq!(s.collapses, 0, "{label}: collapses below the target");
+            }
+            assert_eq!(s.remaining.total(), 0, "{label}: remaining at the target");
+        }
+        Stopped::Error | Stopped::Blocked => {
+            if let Some(t) = target {
+                assert!(
+                    out.faces.len() > t,
+                    "{label}: stopped {} at the target {t}",
+                    s.stopped
+                );
+            }
+            assert_eq!(
+                s.remaining.total(),
+                after.edges,
+                "{label}: every edge left classified"
+            );
+            let locked_edges = oracle.edges().filter(|&(a, b)| both_locked(a, b)).count();
+            assert_eq!(
+                s.remaining.lock + s.remaining.boundary,
+                locked_edges,
+                "{label}: edges locked at both ends"
+            );
+            if !options.lock_boundary {
+                assert_eq!(s.remaining.boundary, 0, "{label}: boundary refusals");
+            }
+            if s.stopped == Stopped::Error {
+                assert!(cap.is_some(), "{label}: stopped by the error without a cap");
+                assert!(
+                    s.remaining.error > 0,
+                    "{label}: Error with no edge over the cap"
+                );
+            } else {
+                assert_eq!(
+                    s.remaining.error, 0,
+                    "{label}: Blocked with edges over the cap"
+                );
+            }
+            if options.allow_foldover {
+                assert_eq!(
+                    s.remaining.foldover, 0,
+                    "{label}: fold-over with the guard off"
+                );
+            }
+            if cap.is_none() {
+                let failing = oracle
+                    .edges()
+                    .filter(|&(a, b)| !both_locked(a, b) && !oracle.passes(a, b))
+                    .count();
+                assert_eq!(
+                    s.remaining.link_condition, failing,
+                    "{label}: link-condition refusals against the face-list oracle"
+                );
+                if options.allow_foldover {
+                    if let Some((a, b)) = oracle
+                        .edges()
+                        .find(|&(a, b)| !both_locked(a, b) && oracle.passes(a, b))
+                    {
+                        panic!("{label}: stopped {} with [{a}, {b}] collapsible", s.stopped);
+                    }
+                }
+            }
+        }
+    }
+    // The library's own check agrees.
+    if let Err(e) = contractible::verify_decimation(mesh, options, r) {
+        panic!("{label}: verify_decimation refuses a result the harness accepts: {e}");
+    }
+}
+
 // ---- The polygon reader, polygon triangulation and welding (`poly_weld`).
 
 /// What `poly_weld` declares to the readers: nothing (the content decides), then each

@@ -18,8 +18,8 @@ use std::path::PathBuf;
 use contractible::io::Format;
 use contractible::rng::Rng;
 use harness::{
-    ContractInput, Edit, Geometry, JournalInput, JournalStep, Op, Part, Positions, SimplifyInput,
-    Surface, SurfaceInput, TaskInput, VertexCount,
+    ContractInput, DecimateInput, Edit, ErrorCap, Geometry, JournalInput, JournalStep, Op, Part,
+    Positions, SimplifyInput, Surface, SurfaceInput, TaskInput, VertexCount,
 };
 
 /// The files of `fuzz/<dir>/<target>/`, sorted. The seed corpora (`corpus`) are part of
@@ -88,6 +88,8 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
     assert!(n >= 4, "simplify: {n} inputs decoded");
     let n = replay_decoded("tasks", harness::check_tasks);
     assert!(n >= 8, "tasks: {n} inputs decoded");
+    let n = replay_decoded("decimate", harness::check_decimate_input);
+    assert!(n >= 8, "decimate: {n} inputs decoded");
 }
 
 #[test]
@@ -311,6 +313,71 @@ fn simplify_on_degenerate_and_extreme_layouts() {
                 quadric: k % 2 == 1,
                 guard: t % 3 != 1,
                 nested: j % 2 == 0,
+            });
+        }
+    }
+}
+
+/// `decimate` on every layout of the positions at unit and extreme scales, closed and
+/// opened, one and two components, with every placement, the guard on and off, face,
+/// fraction and error targets (valid and refused values), boundary and vertex locks (the
+/// `decimate` target's checks: refusals of the documented kind, outputs checked from
+/// their face lists and maps, a second run identical).
+#[test]
+fn decimate_on_degenerate_layouts_and_every_option() {
+    let layouts = [
+        Geometry::Random { smoothing: 1 },
+        Geometry::Grid { range: 2 },
+        Geometry::Grid { range: 0 },
+        Geometry::Clusters { points: 1 },
+        Geometry::Flat { plane: false },
+        Geometry::Flat { plane: true },
+        Geometry::Perturbed {
+            range: 0,
+            digits: 3,
+        },
+        Geometry::Scales { spread: 63 },
+        Geometry::Shifted { digits: 17 },
+    ];
+    let caps = [
+        None,
+        Some(ErrorCap::Relative(3_000)),
+        Some(ErrorCap::Absolute(20_000)),
+        Some(ErrorCap::Relative(65_530)),
+        Some(ErrorCap::Relative(65_534)),
+        Some(ErrorCap::Absolute(65_532)),
+    ];
+    for (k, geometry) in layouts.into_iter().enumerate() {
+        for (j, scale) in [0i8, 127, -127].into_iter().enumerate() {
+            let t = 3 * k + j;
+            harness::check_decimate_input(&DecimateInput {
+                base: SurfaceInput {
+                    surface: if t % 4 == 3 {
+                        Surface::NonOrientable(t as u8)
+                    } else {
+                        Surface::Orientable((t % 3) as u8)
+                    },
+                    ops: ops(700 + t as u64, 80),
+                    seed: 0,
+                },
+                extra: (t % 3 == 1).then(|| (Surface::NonOrientable(0), ops(900 + t as u64, 20))),
+                positions: t as u64,
+                geometry,
+                scale,
+                holes: if t % 2 == 0 { vec![] } else { vec![5, 11, 29] },
+                spare: t as u8,
+                faces: (t % 4 != 0).then_some(7 * t as u16),
+                keep: (t % 5 == 1).then_some([6_000, 60_000, 65_533, 65_535][t % 4]),
+                max_error: caps[t % caps.len()],
+                placement: t as u8,
+                guard: t % 3 != 2,
+                lock_boundary: t % 4 == 1,
+                locked: if t % 3 == 0 {
+                    vec![]
+                } else {
+                    vec![t as u16, 3, 40]
+                },
+                skip_verify: t % 2 == 1,
             });
         }
     }
@@ -596,4 +663,43 @@ fn welding_merges_a_pair_at_exactly_the_tolerance() {
     let m = contractible::io::read_tri_mesh_bytes(off.as_bytes(), Some(Format::Off)).expect("OFF");
     let (w, merged) = m.welded_within(1.0).expect("a tolerance");
     assert_eq!((merged, w.faces[0]), (1, [0, 0, 1]));
+}
+
+/// Found by the `decimate` target's seed corpus (the minimized input is
+/// `fuzz/regressions/decimate/m1-guard-on-positions-spanning-many-decades`): the
+/// 7-vertex torus after one split (8 vertices, 16 faces), each vertex scaled by its own
+/// power of ten (exponents up to ±63) and everything by 10^252, decimated to 1/6 of its
+/// faces with the optimal placement and the fold-over guard on. The first collapse,
+/// `[1, 7]` at cost 0, fails the specification check M1 (`src/decimate/spec.rs`): the
+/// check's own decision of the guards (the naive link condition, the reference
+/// fold-over test on every moved face, then the decimator's alternatives) does not allow
+/// that edge at all, while the decimator collapsed it. Fails until the decimator and
+/// its specification agree.
+#[test]
+fn decimate_collapses_only_what_its_specification_allows_on_extreme_scales() {
+    harness::check_decimate_input(&DecimateInput {
+        base: SurfaceInput {
+            surface: Surface::Orientable(1),
+            ops: vec![Op::Split {
+                vertex: 33899,
+                i: 1,
+                j: 0,
+            }],
+            seed: 120_199_328_135_659_671,
+        },
+        extra: None,
+        positions: 1_008_806_316_547_768_359,
+        geometry: Geometry::Scales { spread: 63 },
+        scale: 127,
+        holes: vec![],
+        spare: 0,
+        faces: None,
+        keep: Some(10_000),
+        max_error: None,
+        placement: 0,
+        guard: true,
+        lock_boundary: false,
+        locked: vec![],
+        skip_verify: false,
+    });
 }
