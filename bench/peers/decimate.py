@@ -705,9 +705,10 @@ def report(data):
     w(f"- Error: the two-sided Hausdorff distance, in % of the input's bounding-box diagonal. "
       f"Each surface gets {meta['samples']:,} points uniformly by area (seed {meta['seed']}) "
       f"plus its vertices; each point's distance to the other surface is exact "
-      f"(point–triangle, candidates from a k-d tree over triangle pieces with a lower bound "
-      f"for the rest), so the figure can miss the true maximum between samples but never "
-      f"exceeds it.")
+      f"(point–triangle, over every triangle piece whose bounding ball can hold a nearer "
+      f"point, found by k-d tree ball queries), so the figure can miss the true maximum "
+      f"between samples but never exceeds it. \"0 faces\": the decimator returned an "
+      f"empty mesh.")
     w(f"- faces ÷ t: output faces over the target (1.00 = reached; above: the decimator "
       f"stopped early). \"Best peer\": the topology-keeping peer of least error among those "
       f"within ±{SAME_FACES:.0%} of contractible's output face count; ratio = contractible's "
@@ -789,7 +790,8 @@ def report(data):
             if r is None or "faces_out" not in r:
                 cells.append(r.get("failed", "–") if r else "–")
                 continue
-            s = pct(r.get("hausdorff_rel")) + (" ✓" if r["topology_kept"] else " ✗")
+            s = (pct(r.get("hausdorff_rel")) if r["faces_out"] else "0 faces") + (
+                " ✓" if r["topology_kept"] else " ✗")
             if r["faces_ratio"] > 1.05:
                 s += f" ({r['faces_ratio']:.2f}×t)"
             cells.append(s)
