@@ -18,7 +18,7 @@ use super::run::{Candidate, Decimator};
 use super::Stopped;
 use crate::core::ids::NONE;
 use crate::core::VertexId;
-use crate::simplify::geometry::{area_normal, moved_triangle_ok, Point, Quadric};
+use crate::simplify::geometry::{fan_move_ok, Quadric};
 use crate::spec::ENABLED;
 
 /// Live faces up to which the checks over every edge run.
@@ -49,8 +49,13 @@ fn allowed(d: &Decimator<'_>, p: VertexId, q: VertexId) -> Option<(f64, u32, u32
     Some((cost, a.0, b.0))
 }
 
-/// The fold-over guard by its definition: every real face with exactly one of the two
-/// endpoints, whose corner there moves, keeps an area and turns by less than 90°.
+/// The fold-over guard over the faces found here: every real face with exactly one of
+/// the two endpoints, whose corner there moves, passes the guard's test
+/// (`fan_move_ok`, with the face rotated to start at the moving corner: the same
+/// arithmetic as the decimator's, so that both decide alike on any scale; the test
+/// itself is checked against its reference form `moved_triangle_ok` in
+/// `simplify::geometry`'s tests). The faces are enumerated from the stars of both
+/// endpoints, sorted and deduplicated, without the decimator's walk.
 fn guard_ok(d: &Decimator<'_>, c: &Candidate) -> bool {
     let pos = |v: VertexId| d.pos[v.index()];
     let mut faces: Vec<_> = [c.keep, c.gone]
@@ -72,9 +77,9 @@ fn guard_ok(d: &Decimator<'_>, c: &Candidate) -> bool {
         if pos(moved) == c.position {
             continue;
         }
-        let ps = vs.map(pos);
-        let new: [Point; 3] = [0, 1, 2].map(|k| if vs[k] == moved { c.position } else { ps[k] });
-        if !moved_triangle_ok(area_normal(ps[0], ps[1], ps[2]), new) {
+        let k = vs.iter().position(|&v| v == moved).unwrap_or(0);
+        let (p1, p2) = (vs[(k + 1) % 3], vs[(k + 2) % 3]);
+        if !fan_move_ok(pos(moved), c.position, pos(p1), pos(p2)) {
             return false;
         }
     }

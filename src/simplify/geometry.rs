@@ -83,6 +83,7 @@ pub const ZERO_AREA: f64 = 1e-10;
 /// after the move, and one whose normal turns by 90° or more (when it had a normal
 /// before: a triangle that was already degenerate only has to end non-degenerate). The
 /// reference form of [`fan_move_ok`], which the guard calls.
+#[cfg(test)]
 pub(crate) fn moved_triangle_ok(old: Point, new_corners: [Point; 3]) -> bool {
     let [a, b, c] = new_corners;
     let n = area_normal(a, b, c);
