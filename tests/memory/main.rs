@@ -4,15 +4,21 @@
 //! megabytes. Had the readers kept the decompressed input, these would need over a
 //! gigabyte each.
 //!
+//! Decimation needs memory in proportion to the faces: the heap's peak during a
+//! `decimate` call, beyond the input mesh, is bounded per triangle.
+//!
 //! This target has its own binary because it replaces the global allocator with one that
-//! records the peak of live heap bytes; its one test runs the cases one after the other so
-//! that no other test's allocations are counted.
+//! records the peak of live heap bytes; its tests hold one lock, each running its cases
+//! one after the other, so that no other test's allocations are counted.
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::io::Write;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
+use contractible::gen::{isosurface, Implicit, IsoParams, Tessellation};
 use contractible::io::{self, Format, ReadErrorKind};
+use contractible::{decimate, DecimateOptions};
 
 /// The system allocator, counting live bytes and their peak.
 struct Counting;
@@ -58,6 +64,9 @@ unsafe impl GlobalAlloc for Counting {
 #[global_allocator]
 static ALLOCATOR: Counting = Counting;
 
+/// Held by every test for its whole run: the counters are global, so one test at a time.
+static SERIAL: Mutex<()> = Mutex::new(());
+
 const MIB: usize = 1 << 20;
 /// The decompressed size of each bomb.
 const EXPANDED: usize = 1 << 30;
@@ -87,6 +96,7 @@ const TET_FACES: &str = "3 0 1 2\n3 0 3 1\n3 1 3 2\n3 2 3 0\n";
 
 #[test]
 fn decompression_bombs_are_read_or_refused_in_bounded_memory() {
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
     let dir = std::env::temp_dir().join(format!("contractible-memory-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
 
@@ -168,4 +178,38 @@ fn decompression_bombs_are_read_or_refused_in_bounded_memory() {
     assert!(peak < 8 * MIB + gz.len(), "peak {peak} bytes");
 
     std::fs::remove_dir_all(&dir).ok();
+}
+
+/// `decimate` with the default options to 10 % of the faces of a marching-tetrahedra
+/// sphere: the heap's peak during the call, beyond the input mesh (24 bytes per vertex,
+/// 12 per face), stays below 400 bytes per input triangle, whatever the build (debug
+/// builds keep the specification checks' state too). The sphere has 64 cells across
+/// (73,944 triangles), or `DECIMATE_MEMORY_RESOLUTION` (470: 3,985,392 triangles, for the
+/// figure in docs/benchmarks.md, in a release build).
+#[test]
+fn decimation_needs_memory_in_proportion_to_the_faces() {
+    let _serial = SERIAL.lock().unwrap_or_else(|e| e.into_inner());
+    let resolution = std::env::var("DECIMATE_MEMORY_RESOLUTION")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(64);
+    let mesh = isosurface(&IsoParams::new(
+        Implicit::Sphere { radius: 1.0 },
+        Tessellation::SixTetrahedra,
+        resolution,
+    ))
+    .expect("a sphere");
+    let faces = mesh.faces.len();
+    let (r, peak) = peak_during(|| decimate(&mesh, &DecimateOptions::keep(0.1)));
+    let r = r.expect("a sphere decimates");
+    assert!(r.verified);
+    assert!(r.mesh.faces.len() * 10 <= faces + 9);
+    let per_triangle = peak as f64 / faces as f64;
+    eprintln!(
+        "decimate to 10 % of {faces} triangles ({} vertices): heap peak beyond the input \
+         {:.1} MiB, {per_triangle:.1} bytes per triangle",
+        mesh.vertex_count,
+        peak as f64 / MIB as f64
+    );
+    assert!(per_triangle < 400.0, "{per_triangle} bytes per triangle");
 }
