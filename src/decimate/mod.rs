@@ -43,8 +43,9 @@
 //! vertex order (and so the orientation) of its input face.
 //!
 //! **Complexity.** O(F log F) time: each collapse costs O(d²) for the re-checks and
-//! queue entries of the merged vertex's neighbourhood (d its degree); memory about 120
-//! bytes per triangle (corner table, positions, quadrics, queue).
+//! queue entries of the merged vertex's neighbourhood (d its degree); memory about 150
+//! bytes per triangle beyond the input (corner table, positions, quadrics, per-corner
+//! edge costs, queue; 151.8 measured on a 4M-triangle sphere, `docs/benchmarks.md`).
 
 mod queue;
 mod run;
