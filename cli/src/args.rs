@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::choice;
 // The choices are the library's own enums (one list of names, parsed and printed by
 // them, adapted to clap by `choice`); under these names for the arguments below.
-use contractible::decimate::Placement;
+use contractible::decimate::{Placement, Schedule};
 use contractible::irreducible::Algorithm as Algo;
 use contractible::quad::Algorithm as QuadAlgo;
 use contractible::simplify::{
@@ -496,6 +496,11 @@ pub struct DecimateArgs {
     /// overrides it: the edge collapses onto that endpoint).
     #[arg(long, value_parser = choice::parser::<Placement>(), default_value_t = Placement::Optimal)]
     pub placement: Placement,
+    /// The order of the collapses: `exact` (always the cheapest edge the guards allow)
+    /// or `passes` (the fast option: passes of independent collapses, somewhat larger
+    /// error). The topology, guards and targets are kept either way.
+    #[arg(long, value_parser = choice::parser::<Schedule>(), default_value_t = Schedule::Exact)]
+    pub schedule: Schedule,
     /// Turn off the geometry guard (which refuses a collapse that would turn a face by
     /// 90° or more or leave it with zero area). The topology is kept either way.
     #[arg(long)]

@@ -40,6 +40,7 @@ choice!(contractible::simplify::Mode);
 choice!(contractible::simplify::Side);
 choice!(contractible::simplify::Position);
 choice!(contractible::decimate::Placement);
+choice!(contractible::decimate::Schedule);
 
 /// The clap value parser of a [`Choice`] (`#[arg(value_parser = parser::<T>())]`).
 #[derive(Clone)]

@@ -59,6 +59,8 @@ pub struct DecimateReport {
     /// Diagonal of the bounding box of the vertices the faces use.
     pub bbox_diagonal: f64,
     pub placement: &'static str,
+    /// `exact` or `passes`.
+    pub schedule: &'static str,
     /// Whether the fold-over guard was on (`--allow-foldover` turns it off).
     pub guard: bool,
     pub lock_boundary: bool,
@@ -295,6 +297,7 @@ pub fn compute(a: &DecimateArgs, ui: Ui) -> Result<DecimateReport, CliError> {
         keep: a.keep,
         max_error,
         placement: a.placement,
+        schedule: a.schedule,
         allow_foldover: a.allow_foldover,
         lock_boundary: a.lock_boundary,
         locked: locked_mesh,
@@ -344,6 +347,7 @@ pub fn compute(a: &DecimateArgs, ui: Ui) -> Result<DecimateReport, CliError> {
         },
         bbox_diagonal: out.bbox_diagonal,
         placement: a.placement.name(),
+        schedule: a.schedule.name(),
         guard: !a.allow_foldover,
         lock_boundary: a.lock_boundary,
         locked,
@@ -388,6 +392,7 @@ fn print_human(r: &DecimateReport) {
     let s = &r.stats;
     let mut how = vec![
         format!("{} placement", r.placement),
+        format!("{} schedule", r.schedule),
         format!("fold-over guard {}", if r.guard { "on" } else { "off" }),
     ];
     if r.lock_boundary {

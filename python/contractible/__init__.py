@@ -183,12 +183,13 @@ class Decimated:
             ``faces_out``, ``vertices_in``, ``vertices_out``, ``components``,
             ``boundary_loops``, ``target_faces``, ``max_error_cap``, ``stopped``
             (``"target"``, ``"error"`` or ``"blocked"``), ``collapses``, ``max_error``,
-            ``refused`` and ``remaining`` (dicts of counts by guard: ``lock``,
+            ``passes`` (0 under the exact schedule), ``refused`` and ``remaining``
+            (dicts of counts by guard: ``lock``,
             ``boundary``, ``error``, ``link_condition``, ``foldover``),
             ``component_list``, ``seconds``; the options: ``targets`` (``faces``,
             ``keep``, ``max_error``, ``max_error_rel`` as given, None when not),
-            ``placement``, ``guard``, ``lock_boundary``, ``locked`` (sorted, without
-            repeats); and ``bbox_diagonal``, ``verified``, ``dropped_vertices``.
+            ``placement``, ``schedule``, ``guard``, ``lock_boundary``, ``locked``
+            (sorted, without repeats); and ``bbox_diagonal``, ``verified``, ``dropped_vertices``.
     """
 
     vertices: np.ndarray
@@ -314,7 +315,7 @@ def decimate(V: Any, F: Any = None, *, faces: Optional[int] = None,
              keep: Optional[float] = None, max_error: Optional[float] = None,
              max_error_rel: Optional[float] = None, placement: str = "optimal",
              guard: bool = True, lock_boundary: bool = False,
-             locked: Any = None) -> Decimated:
+             locked: Any = None, schedule: str = "exact") -> Decimated:
     """Collapses edges, cheapest quadric error first, without changing the topology:
     every component of the output has the input's Euler characteristic, orientability
     and boundary loops, since every collapse passes the link condition (closed surfaces
@@ -336,6 +337,9 @@ def decimate(V: Any, F: Any = None, *, faces: Optional[int] = None,
     collapses that turn a face by 90° or more or leave it without area.
     ``lock_boundary=True`` keeps every boundary vertex where it is; ``locked`` (input
     vertex ids, any integer array-like) survive at their input positions.
+    ``schedule``: ``exact`` (every collapse is of the cheapest edge the guards allow,
+    default) or ``passes`` (the fast option: passes of independent collapses over a
+    sorted edge list, with a somewhat larger error; every guarantee above still holds).
 
     Deterministic, and the same as ``contractible decimate`` for the same mesh and
     options. A negative or out-of-range ``locked`` id raises :class:`MeshError` (kind
@@ -363,6 +367,6 @@ def decimate(V: Any, F: Any = None, *, faces: Optional[int] = None,
     d = _native.decimate(Va, Fa, target, None if keep is None else float(keep),
                          None if cap is None else float(cap), max_error_rel is not None,
                          placement, bool(guard), bool(lock_boundary),
-                         _locked(locked, None if Va is None else len(Va)))
+                         _locked(locked, None if Va is None else len(Va)), schedule)
     return Decimated(d["vertices"], d["faces"], d["vertex_map"], d["collapse_map"],
                      d["face_origin"], d["stats"])

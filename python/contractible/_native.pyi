@@ -36,4 +36,5 @@ def decimate(vertices: Optional[_Coords], faces: _Indices, target_faces: Optiona
              keep: Optional[float] = None, max_error: Optional[float] = None,
              relative: bool = False, placement: str = "optimal", guard: bool = True,
              lock_boundary: bool = False,
-             locked: Optional[npt.NDArray[np.uint32]] = None) -> Dict[str, Any]: ...
+             locked: Optional[npt.NDArray[np.uint32]] = None,
+             schedule: str = "exact") -> Dict[str, Any]: ...

@@ -701,7 +701,7 @@ fn simplify_py<'py>(
 /// (per input vertex, the output vertex it went into; -1 for a vertex no face uses),
 /// `face_origin` (per output face, the input face it descends from), `stats`.
 #[pyfunction(name = "decimate")]
-#[pyo3(signature = (vertices, faces, target_faces=None, keep=None, max_error=None, relative=false, placement="optimal", guard=true, lock_boundary=false, locked=None))]
+#[pyo3(signature = (vertices, faces, target_faces=None, keep=None, max_error=None, relative=false, placement="optimal", guard=true, lock_boundary=false, locked=None, schedule="exact"))]
 #[allow(clippy::too_many_arguments)]
 fn decimate_py<'py>(
     py: Python<'py>,
@@ -715,6 +715,7 @@ fn decimate_py<'py>(
     guard: bool,
     lock_boundary: bool,
     locked: Option<PyReadonlyArray1<'py, u32>>,
+    schedule: &str,
 ) -> PyResult<Bound<'py, PyDict>> {
     let options = DecimateOptions {
         faces: target_faces,
@@ -727,6 +728,7 @@ fn decimate_py<'py>(
             }
         }),
         placement: choice::<decimate::Placement>(py, placement)?,
+        schedule: choice::<decimate::Schedule>(py, schedule)?,
         allow_foldover: !guard,
         lock_boundary,
         locked: locked.map(|l| l.as_array().to_vec()).unwrap_or_default(),
@@ -749,6 +751,7 @@ fn decimate_py<'py>(
     stats.set_item("targets", targets)?;
     stats.set_item("bbox_diagonal", r.bbox_diagonal)?;
     stats.set_item("placement", options.placement.name())?;
+    stats.set_item("schedule", options.schedule.name())?;
     stats.set_item("guard", guard)?;
     stats.set_item("lock_boundary", lock_boundary)?;
     stats.set_item("locked", locked)?;

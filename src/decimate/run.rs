@@ -4,7 +4,9 @@
 use std::collections::HashMap;
 
 use super::queue::{key, unpack, Queue};
-use super::{spec, ComponentStats, Options, Output, Placement, Refusal, Refusals, Stats, Stopped};
+use super::{
+    spec, ComponentStats, Options, Output, Placement, Refusal, Refusals, Schedule, Stats, Stopped,
+};
 use crate::core::ids::NONE;
 use crate::core::{ConedWhole, Corner, Triangulation, VertexId};
 use crate::progress::{Progress, Throttle};
@@ -85,6 +87,14 @@ pub(crate) struct Decimator<'o> {
     /// real edges.
     edge_cost: Vec<f64>,
     pub(super) collapses: usize,
+    /// Passes made (the pass schedule).
+    pub(super) passes: usize,
+    /// Per vertex: the last pass in which a collapse merged it (the pass schedule; empty
+    /// under the exact one).
+    pub(super) pass_mark: Vec<u32>,
+    /// Per vertex: the last pass in which a collapse merged it or a neighbour (the pass
+    /// schedule).
+    pub(super) near_mark: Vec<u32>,
     pub(super) max_error2: f64,
     pub(super) refused: Refusals,
     /// The initial quadrics, kept only when the specification checks run.
@@ -165,6 +175,9 @@ impl<'o> Decimator<'o> {
             ring: Vec::new(),
             edge_cost: Vec::new(),
             collapses: 0,
+            passes: 0,
+            pass_mark: Vec::new(),
+            near_mark: Vec::new(),
             max_error2: 0.0,
             refused: Refusals::default(),
             initial: Vec::new(),
@@ -177,6 +190,12 @@ impl<'o> Decimator<'o> {
                 .copied()
                 .zip(d.weight.iter().copied())
                 .collect();
+        }
+        if opts.schedule == Schedule::Passes {
+            // The pass schedule keeps its own sorted list (module `passes`).
+            d.pass_mark = vec![0; nv];
+            d.near_mark = vec![0; nv];
+            return d;
         }
         d.edge_cost = vec![f64::NAN; d.tri.corner_vertex.len()];
         let edges: Vec<(VertexId, VertexId, Corner)> = d.tri.edges().collect();
@@ -464,8 +483,15 @@ impl<'o> Decimator<'o> {
         true
     }
 
-    /// Collapses a resolved candidate (the stars are still walked).
+    /// Collapses a resolved candidate (the stars are still walked) and updates the queue.
     fn collapse(&mut self, c: &Candidate, removed_faces: usize) {
+        self.merge(c, removed_faces);
+        self.update_around(c.keep, c.gone);
+    }
+
+    /// Collapses a resolved candidate (the stars are still walked): the triangulation,
+    /// the merged vertex's position and quadric, the counts. Leaves the queue alone.
+    pub(super) fn merge(&mut self, c: &Candidate, removed_faces: usize) {
         let (keep, gone) = (c.keep, c.gone);
         let (star, link) = if gone == self.walked[1] {
             (&self.star_q, &self.nbr_q)
@@ -482,13 +508,12 @@ impl<'o> Decimator<'o> {
         self.real_faces -= removed_faces;
         self.collapses += 1;
         self.max_error2 = self.max_error2.max(c.error2);
-        self.update_around(keep, gone);
     }
 
     /// The corner opposite the edge `[v, n]` in the face of the star step `step` at `v`
     /// whose exit neighbour is `n`: the face's third corner.
     #[inline]
-    fn third(&self, step: Corner, n: VertexId) -> Corner {
+    pub(super) fn third(&self, step: Corner, n: VertexId) -> Corner {
         if self.tri.vertex(step.next()) == n {
             step.prev()
         } else {
@@ -838,6 +863,7 @@ impl<'o> Decimator<'o> {
         stats.vertices_out = vertex_map.len();
         stats.stopped = stopped;
         stats.collapses = self.collapses;
+        stats.passes = self.passes;
         stats.max_error = self.max_error2.sqrt() / self.scale;
         stats.refused = self.refused;
         for (s, input) in per.iter_mut().zip(&stats.component_list) {
@@ -905,7 +931,7 @@ pub(crate) fn input_stats(whole: &ConedWhole, vertex_count: usize) -> Stats {
 }
 
 /// The queue key of the edge `[p, q]` at `cost`.
-fn edge_key(p: VertexId, q: VertexId, cost: f64) -> u128 {
+pub(super) fn edge_key(p: VertexId, q: VertexId, cost: f64) -> u128 {
     let (p, q) = if p < q { (p, q) } else { (q, p) };
     key(cost, p.0, q.0)
 }

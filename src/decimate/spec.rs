@@ -130,6 +130,77 @@ pub(super) fn before_collapse(d: &Decimator<'_>, chosen: (f64, u32, u32), c: &Ca
     }
 }
 
+/// P1 (the pass schedule's M1), before the collapse of the edge `chosen` (its key in
+/// the pass's list; candidate `c`) in the current pass, `previous` the key of the pass's
+/// last collapse, `limit` the pass's first cost limit: the key is current (its cost is
+/// the placement's cost now), the edge passes every guard, the pass takes keys in
+/// increasing order, and no edge that passes every guard at a cost within `limit` has a
+/// smaller key among those whose endpoints are neither merged in this pass nor next to
+/// a vertex merged in it (only a collapse next to an edge can change its verdict, so
+/// the pass met each of those with its verdict of now, and took it).
+pub(super) fn before_pass_collapse(
+    d: &Decimator<'_>,
+    chosen: (f64, u32, u32),
+    previous: Option<u128>,
+    limit: f64,
+    c: &Candidate,
+) {
+    if !ENABLED {
+        return;
+    }
+    let (cost, p, q) = chosen;
+    let (vp, vq) = (VertexId(p), VertexId(q));
+    let now = d.candidate(vp, vq).ok().map(|c| c.cost);
+    assert!(
+        now.is_some_and(|now| now.to_bits() == cost.to_bits()) && allowed(d, vp, vq).is_some(),
+        "specification violated: P1 (pass order): collapse {}: [{p}, {q}] at cost {cost} \
+         (position {:?}) is not allowed at that cost now (its cost now: {now:?})",
+        d.collapses,
+        c.position
+    );
+    let k = super::queue::key(cost, p, q);
+    assert!(
+        previous.is_none_or(|prev| prev < k),
+        "specification violated: P1 (pass order): collapse {}: [{p}, {q}] at cost {cost} \
+         comes after a dearer key in pass {}",
+        d.collapses,
+        d.passes
+    );
+    if d.tri.face_count() > FULL_CHECK_FACES {
+        return;
+    }
+    let pass = d.passes as u32;
+    let n = d.pass_mark.len();
+    let mut near = vec![false; n];
+    for v in 0..n {
+        if d.pass_mark[v] != pass {
+            continue;
+        }
+        near[v] = true;
+        let v = VertexId(v as u32);
+        if d.tri.is_vertex(v) {
+            for w in d.tri.link(v) {
+                near[w.index()] = true;
+            }
+        }
+    }
+    for (a, b) in real_edges(d) {
+        if near[a.index()] || near[b.index()] || allowed(d, a, b).is_none_or(|k| k.0 > limit) {
+            continue;
+        }
+        let Ok(e) = d.candidate(a, b) else { continue };
+        let (x, y) = if a < b { (a.0, b.0) } else { (b.0, a.0) };
+        assert!(
+            super::queue::key(e.cost, x, y) >= k,
+            "specification violated: P1 (pass order): collapse {}: [{x}, {y}] (cost {}) is \
+             allowed, away from this pass's collapses and cheaper than the chosen [{p}, {q}] \
+             (cost {cost})",
+            d.collapses,
+            e.cost
+        );
+    }
+}
+
 /// M3, when the queue is empty short of the target: the sweep found `missed` allowed
 /// edges; there must be none.
 pub(super) fn nothing_missed(d: &Decimator<'_>, missed: usize) {
@@ -246,6 +317,7 @@ mod tests {
             target_faces,
             max_error: None,
             placement: Placement::Optimal,
+            schedule: crate::decimate::Schedule::Exact,
             guard: true,
             lock_boundary: false,
             locked: Vec::new(),
@@ -297,6 +369,57 @@ mod tests {
         // The right edge with a cost that is not its own.
         let wrong = (cheap.0 + 1.0, cheap.1, cheap.2);
         assert_fails("M1", || before_collapse(&d, wrong, &c));
+    }
+
+    #[test]
+    fn p1_accepts_the_cheapest_edge_and_fails_on_a_dearer_one_a_stale_key_or_a_step_back() {
+        let mesh = sphere();
+        let opts = Options {
+            schedule: crate::decimate::Schedule::Passes,
+            ..options(0)
+        };
+        let mut d = decimator(&mesh, &opts);
+        d.passes = 1;
+        // The pass orders by the placement's cost: the cheapest and the dearest allowed
+        // edge by that cost, among those the guard takes at the placement's position.
+        let mut all: Vec<_> = real_edges(&d)
+            .into_iter()
+            .filter_map(|(p, q)| {
+                let k = allowed(&d, p, q)?;
+                let c = d.candidate(p, q).ok()?;
+                (k.0 == c.cost).then_some((k, c))
+            })
+            .collect();
+        all.sort_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
+        let ((cheap, c), (dear, e)) = (all[0], all[all.len() - 1]);
+        assert!(cheap.0 < dear.0);
+        let k = |x: (f64, u32, u32)| super::super::queue::key(x.0, x.1, x.2);
+        before_pass_collapse(&d, cheap, None, f64::INFINITY, &c);
+        assert_fails("P1", || {
+            before_pass_collapse(&d, dear, None, f64::INFINITY, &e)
+        });
+        assert_fails("P1", || {
+            before_pass_collapse(&d, dear, Some(k(cheap)), f64::INFINITY, &e)
+        });
+        // A dearer edge is fine when every cheaper one is beyond the first limit, or next
+        // to a collapse of the pass.
+        before_pass_collapse(&d, dear, None, -1.0, &e);
+        let n = d.pass_mark.len();
+        for v in 0..n {
+            if v as u32 != dear.1 && v as u32 != dear.2 {
+                d.pass_mark[v] = 1;
+            }
+        }
+        before_pass_collapse(&d, dear, None, f64::INFINITY, &e);
+        d.pass_mark.fill(0);
+        // A stale cost; a key below the pass's previous one.
+        let wrong = (cheap.0 + 1.0, cheap.1, cheap.2);
+        assert_fails("P1", || {
+            before_pass_collapse(&d, wrong, None, f64::INFINITY, &c)
+        });
+        assert_fails("P1", || {
+            before_pass_collapse(&d, cheap, Some(k(dear)), f64::INFINITY, &c)
+        });
     }
 
     #[test]

@@ -2,7 +2,7 @@
 //! specification checks (module `spec`: priority, quadric sums, stop rule) run on every
 //! collapse of these runs, so each run here is also a check of M1–M3.
 
-use super::{Placement, Stopped};
+use super::{Placement, Schedule, Stopped};
 use crate::gen::{self, Implicit, IsoParams, Tessellation};
 use crate::{decimate, DecimateOptions, MaxError, TriMesh};
 
@@ -111,4 +111,47 @@ fn the_tetrahedron_is_irreducible_and_stays() {
     assert_eq!(d.mesh.faces.len(), 4);
     assert_eq!(d.stats.stopped, Stopped::Blocked);
     assert_eq!(d.stats.remaining.link_condition, 6);
+}
+
+/// The pass schedule under every option (the specification's P1, M2 and M3 run on every
+/// collapse here), and where it must agree with the exact schedule: the stop rule, so
+/// with no target both end blocked with every edge left refused.
+#[test]
+fn the_pass_schedule_keeps_the_checks_and_stops_where_nothing_passes() {
+    for (name, mesh) in shapes() {
+        let f = mesh.faces.len();
+        let targets = [
+            DecimateOptions::keep(0.3),
+            DecimateOptions::faces(f / 10),
+            DecimateOptions {
+                max_error: Some(MaxError::Relative(0.01)),
+                ..Default::default()
+            },
+            DecimateOptions::default(),
+        ];
+        for (i, placement) in Placement::ALL.into_iter().enumerate() {
+            for (j, target) in targets.iter().enumerate() {
+                let o = DecimateOptions {
+                    placement,
+                    schedule: Schedule::Passes,
+                    allow_foldover: (i + j) % 2 == 1,
+                    lock_boundary: (i + j) % 3 == 2,
+                    locked: vec![0, 5],
+                    ..target.clone()
+                };
+                let d = decimate(&mesh, &o).unwrap_or_else(|e| panic!("{name}: {e}"));
+                assert!(d.verified && d.stats.passes > 0, "{name}");
+                match d.stats.stopped {
+                    Stopped::Target => {
+                        let t = d.stats.target_faces.expect("a face target");
+                        assert!(d.mesh.faces.len() <= t && d.mesh.faces.len() + 2 > t);
+                    }
+                    _ => assert!(d.stats.remaining.total() > 0, "{name}"),
+                }
+                if let Some(cap) = d.stats.max_error_cap {
+                    assert!(d.stats.max_error <= cap * (1.0 + 1e-12), "{name}");
+                }
+            }
+        }
+    }
 }

@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 
 use crate::core::{ConedSurfaces, Surfaces};
-use crate::decimate::{self, Placement, Stats, NO_VERTEX};
+use crate::decimate::{self, Placement, Schedule, Stats, NO_VERTEX};
 use crate::mesh::TriMesh;
 use crate::simplify::bbox_diagonal;
 
@@ -35,6 +35,8 @@ pub struct DecimateOptions {
     pub max_error: Option<MaxError>,
     /// See [`Placement`].
     pub placement: Placement,
+    /// See [`Schedule`]: [`Schedule::Passes`] is the fast option.
+    pub schedule: Schedule,
     /// Allow collapses that turn a face by 90° or more or leave it with zero area (off
     /// by default: the guard refuses them; the topology is kept either way).
     pub allow_foldover: bool,
@@ -181,6 +183,7 @@ fn resolve(
         target_faces,
         max_error,
         placement: options.placement,
+        schedule: options.schedule,
         guard: !options.allow_foldover,
         lock_boundary: options.lock_boundary,
         locked,
@@ -242,7 +245,11 @@ pub fn decimate(mesh: &TriMesh, options: &DecimateOptions) -> Result<DecimateRes
     monitor.step(Step::Run, 0, 1, mesh.faces.len())?;
     let mut d = decimate::Decimator::new(whole, positions, &opts);
     let mut observer = monitor.progress(0);
-    if !d.run(&mut observer, &|| monitor.is_cancelled()) {
+    let finished = match opts.schedule {
+        Schedule::Exact => d.run(&mut observer, &|| monitor.is_cancelled()),
+        Schedule::Passes => d.run_passes(&mut observer, &|| monitor.is_cancelled()),
+    };
+    if !finished {
         return Err(Error::Cancelled);
     }
     let out = d.finish(stats);

@@ -24,13 +24,13 @@
 //!   input faces it absorbed (and the boundary planes), recomputed here, within the cap;
 //!   a tighter cap keeps at least as many faces.
 //! - **Determinism**: repeated runs and runs inside rayon pools of 1, 2 and 8 threads give
-//!   identical outputs; the tetrahedron is never collapsed; bad options and bad meshes
+//!   identical outputs, under both schedules; the tetrahedron is never collapsed; bad options and bad meshes
 //!   are errors, never panics; property tests over random surfaces grown by vertex
 //!   splits with random positions, holes, targets and options.
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use contractible::decimate::{Placement, Stopped, NO_VERTEX};
+use contractible::decimate::{Placement, Schedule, Stopped, NO_VERTEX};
 use contractible::gen::{
     self, isosurface, Implicit, IsoParams, RandomParams, SurfaceKind, Tessellation,
 };
@@ -1114,9 +1114,12 @@ fn option_matrix(faces_in: usize) -> Vec<DecimateOptions> {
     for (i, placement) in Placement::ALL.into_iter().enumerate() {
         for allow_foldover in [false, true] {
             let k = 2 * i + usize::from(allow_foldover);
+            // The pass schedule on half of the rows, every placement among them.
+            let schedule = Schedule::ALL[(k + k / 3) % 2];
             let base = DecimateOptions {
                 placement,
                 allow_foldover,
+                schedule,
                 ..opts()
             };
             out.push(match k % 6 {
@@ -1325,12 +1328,15 @@ fn irreducible_triangulations_without_a_target_and_without_the_guard() {
         } else {
             vec![Placement::ALL[i % 3]]
         };
-        for placement in placements {
+        for (j, placement) in placements.into_iter().enumerate() {
+            // Both schedules, taken in turn (each must end irreducible).
+            let schedule = Schedule::ALL[(i + j) % 2];
             let o = DecimateOptions {
                 placement,
+                schedule,
                 ..as_far_as_possible()
             };
-            let label = format!("{name} {}", placement.name());
+            let label = format!("{name} {} {}", placement.name(), schedule.name());
             let (r, seen) = run(mesh, &o, &label);
             assert!(seen.closed, "{label}");
             assert_eq!(r.stats.stopped, Stopped::Blocked, "{label}");
@@ -1748,6 +1754,17 @@ fn runs_are_deterministic_on_any_thread_pool() {
             locked: (0..3000).step_by(13).collect(),
             ..opts()
         },
+        DecimateOptions {
+            schedule: Schedule::Passes,
+            ..DecimateOptions::keep(0.2)
+        },
+        DecimateOptions {
+            schedule: Schedule::Passes,
+            placement: Placement::Midpoint,
+            max_error: Some(MaxError::Relative(0.004)),
+            locked: (0..3000).step_by(11).collect(),
+            ..opts()
+        },
     ] {
         let label = format!("{o:?}");
         let (first, _) = run(&mesh, &o, &label);
@@ -1956,6 +1973,7 @@ proptest! {
                 .prop_map(|(f, e)| (Some(f), None, Some(MaxError::Relative(e)))),
         ],
         placement in placement_strategy(),
+        passes in any::<bool>(),
         allow_foldover in any::<bool>(),
         lock_boundary in any::<bool>(),
         lock_every in prop::option::of(2usize..30),
@@ -1977,6 +1995,7 @@ proptest! {
             keep,
             max_error,
             placement,
+            schedule: if passes { Schedule::Passes } else { Schedule::Exact },
             allow_foldover,
             lock_boundary,
             locked,

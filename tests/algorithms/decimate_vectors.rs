@@ -12,7 +12,9 @@
 
 use std::collections::BTreeSet;
 
-use contractible::decimate::{ComponentStats, Placement, Refusals, Stats, Stopped, NO_VERTEX};
+use contractible::decimate::{
+    ComponentStats, Placement, Refusals, Schedule, Stats, Stopped, NO_VERTEX,
+};
 use contractible::{decimate, DecimateOptions, MaxError, TriMesh};
 use serde_json::Value;
 
@@ -22,16 +24,19 @@ use crate::common;
 const VECTORS: usize = 10;
 
 /// The options of the runs, in order: (placement, guard off, lock_boundary, locks,
-/// target kind).
-const RUNS: [(&str, bool, bool, bool, &str); 8] = [
-    ("optimal", false, false, false, "keep"),
-    ("midpoint", false, false, false, "faces"),
-    ("endpoint", true, false, false, "faces"),
-    ("optimal", true, false, false, "none"),
-    ("midpoint", false, false, false, "relative"),
-    ("endpoint", false, true, false, "keep+absolute"),
-    ("optimal", false, false, true, "faces"),
-    ("midpoint", false, false, false, "none"),
+/// target kind, schedule).
+const RUNS: [(&str, bool, bool, bool, &str, &str); 11] = [
+    ("optimal", false, false, false, "keep", "exact"),
+    ("midpoint", false, false, false, "faces", "exact"),
+    ("endpoint", true, false, false, "faces", "exact"),
+    ("optimal", true, false, false, "none", "exact"),
+    ("midpoint", false, false, false, "relative", "exact"),
+    ("endpoint", false, true, false, "keep+absolute", "exact"),
+    ("optimal", false, false, true, "faces", "exact"),
+    ("midpoint", false, false, false, "none", "exact"),
+    ("optimal", false, false, false, "faces", "passes"),
+    ("optimal", false, false, false, "none", "passes"),
+    ("endpoint", false, true, true, "relative", "passes"),
 ];
 
 fn all() -> Vec<Value> {
@@ -87,6 +92,11 @@ fn options(o: &Value) -> DecimateOptions {
             .expect("placement")
             .parse()
             .expect("a placement name"),
+        schedule: o["schedule"]
+            .as_str()
+            .expect("schedule")
+            .parse()
+            .expect("a schedule name"),
         allow_foldover: o["allow_foldover"].as_bool().expect("allow_foldover"),
         lock_boundary: o["lock_boundary"].as_bool().expect("lock_boundary"),
         locked: ids(&o["locked"]),
@@ -127,6 +137,7 @@ fn stats(v: &Value, like: &Stats) -> Stats {
         max_error_cap: v["max_error_cap"].as_f64(),
         stopped: stopped(&v["stopped"]),
         collapses: num(v, "collapses"),
+        passes: num(v, "passes"),
         max_error: v["max_error"].as_f64().expect("max_error"),
         refused: like.refused,
         remaining: refusals(&v["remaining"]),
@@ -175,9 +186,12 @@ fn decimate_vector_file_holds_the_documented_runs() {
         }
         let runs = v["runs"].as_array().expect("runs");
         assert_eq!(runs.len(), RUNS.len(), "{name}");
-        for (r, &(placement, foldover, lock_boundary, locks, target)) in runs.iter().zip(&RUNS) {
+        for (r, &(placement, foldover, lock_boundary, locks, target, schedule)) in
+            runs.iter().zip(&RUNS)
+        {
             let o = options(&r["options"]);
             assert_eq!(o.placement.name(), placement, "{name}");
+            assert_eq!(o.schedule.name(), schedule, "{name}");
             assert_eq!(o.allow_foldover, foldover, "{name}");
             assert_eq!(o.lock_boundary, lock_boundary, "{name}");
             assert_eq!(!o.locked.is_empty(), locks, "{name}");
@@ -200,6 +214,9 @@ fn decimate_vector_file_holds_the_documented_runs() {
     assert!(Placement::ALL
         .iter()
         .all(|p| RUNS.iter().any(|r| r.0 == p.name())));
+    assert!(Schedule::ALL
+        .iter()
+        .all(|s| RUNS.iter().any(|r| r.5 == s.name())));
 }
 
 #[test]

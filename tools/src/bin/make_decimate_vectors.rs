@@ -4,8 +4,8 @@
 //! `cargo run --release -p contractible-tools --bin make_decimate_vectors [OUT_DIR]`
 //! (default `spec/vectors` of this checkout). Builds the small input meshes below (every
 //! input coordinate a dyadic rational with few bits), runs `contractible::decimate` on
-//! each with the eight runs of `runs` below (every placement, the guard on and off, face and
-//! fraction targets, error caps, locks, no target), and writes each output with its maps
+//! each with the eleven runs of `runs` below (every placement, both schedules, the guard on
+//! and off, face and fraction targets, error caps, locks, no target), and writes each output with its maps
 //! and statistics. `tests/algorithms/decimate_vectors.rs` checks that the library still
 //! reproduces them exactly and that every stored output passes the independent checks
 //! of `tests/algorithms/decimate.rs`.
@@ -13,7 +13,7 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use contractible::decimate::{Placement, Refusals, Stats, NO_VERTEX};
+use contractible::decimate::{Placement, Refusals, Schedule, Stats, NO_VERTEX};
 use contractible::gen::{self, isosurface, Implicit, IsoParams, Tessellation};
 use contractible::rng::Rng;
 use contractible::{DecimateOptions, MaxError, TriMesh};
@@ -279,6 +279,23 @@ fn runs(faces: usize, vertices: usize) -> Vec<DecimateOptions> {
             placement: Placement::Midpoint,
             ..base()
         },
+        DecimateOptions {
+            faces: Some(faces / 4),
+            schedule: Schedule::Passes,
+            ..base()
+        },
+        DecimateOptions {
+            schedule: Schedule::Passes,
+            ..base()
+        },
+        DecimateOptions {
+            placement: Placement::Endpoint,
+            schedule: Schedule::Passes,
+            max_error: Some(MaxError::Relative(0.0625)),
+            lock_boundary: true,
+            locked: (0..vertices as u32).step_by(7).collect(),
+            ..base()
+        },
     ]
 }
 
@@ -292,6 +309,7 @@ fn options_json(o: &DecimateOptions) -> Value {
             Some(MaxError::Relative(r)) => json!({"relative": r}),
         },
         "placement": o.placement.name(),
+        "schedule": o.schedule.name(),
         "allow_foldover": o.allow_foldover,
         "lock_boundary": o.lock_boundary,
         "locked": o.locked,
@@ -320,6 +338,7 @@ fn stats_json(s: &Stats) -> Value {
         "max_error_cap": s.max_error_cap,
         "stopped": s.stopped.name(),
         "collapses": s.collapses,
+        "passes": s.passes,
         "max_error": s.max_error,
         "remaining": refusals_json(&s.remaining),
         "component_list": s.component_list.iter().map(|c| json!({
