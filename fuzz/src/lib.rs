@@ -3360,6 +3360,9 @@ pub struct DecimateInput {
     pub locked: Vec<u16>,
     /// [`contractible::DecimateOptions::skip_verify`] (the harness checks either way).
     pub skip_verify: bool,
+    /// The pass schedule ([`contractible::decimate::Schedule::Passes`]) instead of the
+    /// exact one.
+    pub passes: bool,
 }
 
 /// The face target of a fuzzed `faces` against the input's face count: `n mod (F + 1)`
@@ -3405,7 +3408,7 @@ pub fn cap_value(x: u16) -> f64 {
 pub fn decimate_case(
     input: &DecimateInput,
 ) -> (contractible::TriMesh, contractible::DecimateOptions) {
-    use contractible::decimate::Placement;
+    use contractible::decimate::{Placement, Schedule};
     use contractible::{DecimateOptions, MaxError};
     let base = SurfaceInput {
         ops: input.base.ops.iter().take(DECIMATE_OPS).copied().collect(),
@@ -3474,6 +3477,11 @@ pub fn decimate_case(
         keep: input.keep.map(keep_value),
         max_error,
         placement: Placement::ALL[usize::from(input.placement % 3)],
+        schedule: if input.passes {
+            Schedule::Passes
+        } else {
+            Schedule::Exact
+        },
         allow_foldover: !input.guard,
         lock_boundary: input.lock_boundary,
         locked: input

@@ -378,6 +378,7 @@ fn decimate_on_degenerate_layouts_and_every_option() {
                     vec![t as u16, 3, 40]
                 },
                 skip_verify: t % 2 == 1,
+                passes: t % 3 == 1,
             });
         }
     }
@@ -702,5 +703,6 @@ fn decimate_collapses_only_what_its_specification_allows_on_extreme_scales() {
         lock_boundary: false,
         locked: vec![],
         skip_verify: false,
+        passes: false,
     });
 }
