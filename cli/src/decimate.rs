@@ -22,7 +22,7 @@
 use std::path::Path;
 use std::time::Instant;
 
-use contractible::decimate::{Refusals, Stats, Stopped, NO_VERTEX};
+use contractible::decimate::{Refusals, Schedule, Stats, Stopped, NO_VERTEX};
 use contractible::{DecimateOptions, DecimateResult, MaxError, TriMesh};
 use serde::Serialize;
 
@@ -392,9 +392,11 @@ fn print_human(r: &DecimateReport) {
     let s = &r.stats;
     let mut how = vec![
         format!("{} placement", r.placement),
-        format!("{} schedule", r.schedule),
         format!("fold-over guard {}", if r.guard { "on" } else { "off" }),
     ];
+    if r.schedule != Schedule::Exact.name() {
+        how.push(format!("{} schedule", r.schedule));
+    }
     if r.lock_boundary {
         how.push("boundary locked".into());
     }
@@ -489,8 +491,13 @@ fn print_human(r: &DecimateReport) {
     }
     // The refusals on the way (`refused`) stay in the JSON: they count the queue's
     // re-checks, which say more about the method than about the result.
+    let passes = if s.passes > 0 {
+        format!(" in {}", plural(s.passes, "pass", "passes"))
+    } else {
+        String::new()
+    };
     outln!(
-        "  collapses {}; largest error {}; {:.4} s",
+        "  collapses {}{passes}; largest error {}; {:.4} s",
         s.collapses,
         fmt_len(s.max_error),
         s.seconds

@@ -416,6 +416,9 @@ fn decimate_checked(input: &Path, output: &Path, extra: &[&str]) -> Value {
     }
     let placement = flag(extra, "--placement").unwrap_or("optimal");
     assert_eq!(j["placement"], placement, "{what}");
+    let schedule = flag(extra, "--schedule").unwrap_or("exact");
+    assert_eq!(j["schedule"], schedule, "{what}");
+    assert_eq!(int(&j, "passes") > 0, schedule == "passes", "{what}");
     if placement == "endpoint" {
         // Every written position is an input position, and its own vertex's.
         let inputs: BTreeSet<[u64; 3]> = pin.iter().map(|p| p.map(f64::to_bits)).collect();
@@ -457,6 +460,18 @@ fn closed_real_meshes_reach_their_targets_keeping_each_component_s_topology() {
         ),
         ("box_stl", &["--faces", "3000", "--placement", "endpoint"]),
         ("plate_holes_stl", &["--keep", "0.3", "--allow-foldover"]),
+        ("bunny_npm", &["--keep", "0.05", "--schedule", "passes"]),
+        (
+            "box_stl",
+            &[
+                "--faces",
+                "3000",
+                "--schedule",
+                "passes",
+                "--placement",
+                "midpoint",
+            ],
+        ),
     ] {
         let j = decimate_checked(&data_closed(name), &d.path(&format!("{name}.ply")), extra);
         assert_eq!(j["stopped"], "target", "{name}");
@@ -1019,6 +1034,10 @@ fn bad_values_are_refused_before_anything_is_written() {
         (
             &["--placement", "nope"],
             "invalid value 'nope' for '--placement".into(),
+        ),
+        (
+            &["--schedule", "fast"],
+            "invalid value 'fast' for '--schedule".into(),
         ),
         (
             &["--max-error", "1", "--max-error-rel", "0.1"],

@@ -239,6 +239,23 @@ def test_no_target_goes_as_far_as_the_guards_allow():
     assert 10 <= len(d.vertices) < 200
 
 
+@pytest.mark.parametrize("name", CLOSED)
+def test_the_pass_schedule_reaches_the_target_keeping_the_topology(name):
+    V, F = c.read(data_mesh(name))
+    d = c.decimate(V, F, keep=0.1, schedule="passes")
+    s = check(V, F, d)
+    assert s["schedule"] == "passes" and s["passes"] >= 1
+    if s["stopped"] == "target":
+        assert len(d.faces) <= s["target_faces"]
+    else:
+        assert sum(s["remaining"].values()) > 0
+    exact = c.decimate(V, F, keep=0.1)
+    assert exact.stats["schedule"] == "exact" and exact.stats["passes"] == 0
+    # The same when asked twice.
+    again = c.decimate(V, F, keep=0.1, schedule="passes")
+    assert np.array_equal(d.faces, again.faces) and np.array_equal(d.vertices, again.vertices)
+
+
 def test_keep_zero_and_one():
     V, F = c.read(data_mesh("plate_holes_stl"))
     d = c.decimate(V, F, keep=1.0)
@@ -456,6 +473,7 @@ def test_locked_unsigned_beyond_the_vertices():
     {"max_error_rel": np.nan},
     {"max_error_rel": -0.5},
     {"placement": "quadric"},
+    {"schedule": "fast"},
     {"locked": [0.5, 1.0]},
     {"locked": [True, False]},
     {"locked": [[0, 1], [2, 3]]},
@@ -497,6 +515,11 @@ CLI_CASES = [
                            "max_error": 0.2}),
     ("plate_holes_stl", ["--allow-foldover", "--placement", "midpoint"],
      {"guard": False, "placement": "midpoint"}),
+    # The pass schedule: a target, then a cap with locks on a surface with boundary.
+    ("high_genus_3", ["--keep", 0.1, "--schedule", "passes"],
+     {"keep": 0.1, "schedule": "passes"}),
+    ("bunny_open", ["--schedule", "passes", "--max-error-rel", 0.004, "--lock", "3,77"],
+     {"schedule": "passes", "max_error_rel": 0.004, "locked": [3, 77]}),
 ]
 
 
