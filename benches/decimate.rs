@@ -12,14 +12,16 @@
 //!
 //! Groups: `keep_10pct`, `keep_1pct` (one `decimate` call from the mesh: validation,
 //! building, the decimation, the output assembled and checked), `keep_10pct_unverified`,
-//! `keep_1pct_unverified` (the same with `skip_verify`). Run: `cargo bench --bench
-//! decimate` (about three minutes); input triangles per second = the input's triangle
-//! count divided by the median.
+//! `keep_1pct_unverified` (the same with `skip_verify`), `passes_10pct`, `passes_1pct`
+//! (the default options but `Schedule::Passes`, the fast option), so that one run gives
+//! the two schedules' ratio. Run: `cargo bench --bench decimate` (about four minutes);
+//! input triangles per second = the input's triangle count divided by the median.
 
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::{Mutex, OnceLock};
 
+use contractible::decimate::Schedule;
 use contractible::gen::{isosurface, large_torus, Implicit, IsoParams, Tessellation};
 use contractible::{decimate, DecimateOptions, TriMesh};
 
@@ -68,9 +70,14 @@ fn input(name: &str) -> &'static TriMesh {
 }
 
 fn run(b: divan::Bencher, name: &str, keep: f64, skip_verify: bool) {
+    run_with(b, name, keep, skip_verify, Schedule::Exact);
+}
+
+fn run_with(b: divan::Bencher, name: &str, keep: f64, skip_verify: bool, schedule: Schedule) {
     let mesh = input(name);
     let opts = DecimateOptions {
         skip_verify,
+        schedule,
         ..DecimateOptions::keep(keep)
     };
     b.bench_local(|| decimate(mesh, &opts).expect("a valid surface"));
@@ -94,4 +101,14 @@ fn keep_10pct_unverified(b: divan::Bencher, name: &str) {
 #[divan::bench(args = INPUTS, sample_count = 5, sample_size = 1)]
 fn keep_1pct_unverified(b: divan::Bencher, name: &str) {
     run(b, name, 0.01, true);
+}
+
+#[divan::bench(args = INPUTS, sample_count = 5, sample_size = 1)]
+fn passes_10pct(b: divan::Bencher, name: &str) {
+    run_with(b, name, 0.1, false, Schedule::Passes);
+}
+
+#[divan::bench(args = INPUTS, sample_count = 5, sample_size = 1)]
+fn passes_1pct(b: divan::Bencher, name: &str) {
+    run_with(b, name, 0.01, false, Schedule::Passes);
 }

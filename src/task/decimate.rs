@@ -224,6 +224,13 @@ fn resolve(
 /// // into an output vertex.
 /// assert_eq!(d.vertex_map.len(), d.mesh.vertex_count);
 /// assert_eq!(d.collapse_map[d.vertex_map[0] as usize], 0);
+/// // The fast option: the same guarantees, another order of collapses.
+/// let fast = decimate(&sphere, &DecimateOptions {
+///     schedule: contractible::decimate::Schedule::Passes,
+///     ..DecimateOptions::keep(0.1)
+/// })?;
+/// assert_eq!(fast.mesh.faces.len(), d.mesh.faces.len());
+/// assert!(fast.stats.passes > 0 && d.stats.passes == 0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn decimate(mesh: &TriMesh, options: &DecimateOptions) -> Result<DecimateResult, Error> {
