@@ -40,10 +40,10 @@
 //! 16 bytes per listed edge, 8 per vertex for the marks.
 
 use super::queue::unpack;
-use super::run::{edge_key, Decimator, REMOVED};
+use super::run::{edge_key, Decimator, Reporter};
 use super::spec;
 use crate::core::VertexId;
-use crate::progress::{Progress, Throttle};
+use crate::progress::Progress;
 
 /// A pass aims at this fraction (1 / this) of the collapses still needed: its limit is
 /// set from the key at that place in the list.
@@ -79,11 +79,7 @@ impl Decimator<'_> {
         observer: &mut dyn FnMut(Progress),
         cancelled: &dyn Fn() -> bool,
     ) -> bool {
-        let start_faces = self.real_faces;
-        let total = start_faces.saturating_sub(self.target) as u64;
-        observer(Progress::new(REMOVED, 0, total));
-        let mut throttle = Throttle::new();
-        let mut steps = 0u64;
+        let mut report = Reporter::start(self, observer);
         let mut keys = self.all_keys();
         let mut lists = Lists::default();
         // Set after a pass that made no collapse but left edges the guard moved to dearer
@@ -107,16 +103,8 @@ impl Decimator<'_> {
             lists.kept.clear();
             lists.refused.clear();
             for &k in &keys {
-                steps += 1;
-                if throttle.due(steps) {
-                    if cancelled() {
-                        return false;
-                    }
-                    observer(Progress::new(
-                        REMOVED,
-                        (start_faces - self.real_faces) as u64,
-                        total,
-                    ));
+                if !report.step(self, observer, cancelled) {
+                    return false;
                 }
                 let (cost, p, q) = unpack(k);
                 if cost > limit {
@@ -174,11 +162,7 @@ impl Decimator<'_> {
             }
             self.refresh(&mut keys, &mut lists, pass);
         }
-        observer(Progress::new(
-            REMOVED,
-            (start_faces - self.real_faces) as u64,
-            total,
-        ));
+        report.end(self, observer);
         true
     }
 

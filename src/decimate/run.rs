@@ -686,24 +686,12 @@ impl<'o> Decimator<'o> {
         observer: &mut dyn FnMut(Progress),
         cancelled: &dyn Fn() -> bool,
     ) -> bool {
-        let start_faces = self.real_faces;
-        let total = start_faces.saturating_sub(self.target) as u64;
-        observer(Progress::new(REMOVED, 0, total));
-        let mut throttle = Throttle::new();
-        let mut steps = 0u64;
+        let mut report = Reporter::start(self, observer);
         loop {
             while self.real_faces > self.target {
                 let Some(e) = self.heap.pop() else { break };
-                steps += 1;
-                if throttle.due(steps) {
-                    if cancelled() {
-                        return false;
-                    }
-                    observer(Progress::new(
-                        REMOVED,
-                        (start_faces - self.real_faces) as u64,
-                        total,
-                    ));
+                if !report.step(self, observer, cancelled) {
+                    return false;
                 }
                 let (cost, p, q) = unpack(e);
                 // An entry is current while it is the best key of one of its ends (both
@@ -748,11 +736,7 @@ impl<'o> Decimator<'o> {
                 self.adjust(p, q, Some(at));
             }
         }
-        observer(Progress::new(
-            REMOVED,
-            (start_faces - self.real_faces) as u64,
-            total,
-        ));
+        report.end(self, observer);
         true
     }
 
@@ -927,6 +911,56 @@ pub(crate) fn input_stats(whole: &ConedWhole, vertex_count: usize) -> Stats {
         boundary_loops: per.iter().map(|c| c.boundary_loops).sum(),
         component_list: per,
         ..Stats::default()
+    }
+}
+
+/// The progress reports of a run (faces removed of those to remove, throttled) and its
+/// cancellation checks, shared by both schedules.
+pub(super) struct Reporter {
+    start_faces: usize,
+    total: u64,
+    throttle: Throttle,
+    steps: u64,
+}
+
+impl Reporter {
+    /// Reports the start of the run.
+    pub(super) fn start(d: &Decimator<'_>, observer: &mut dyn FnMut(Progress)) -> Self {
+        let total = d.real_faces.saturating_sub(d.target) as u64;
+        observer(Progress::new(REMOVED, 0, total));
+        Reporter {
+            start_faces: d.real_faces,
+            total,
+            throttle: Throttle::new(),
+            steps: 0,
+        }
+    }
+
+    /// One step of the run: reports now and then; `false` if `cancelled` says so.
+    #[inline]
+    pub(super) fn step(
+        &mut self,
+        d: &Decimator<'_>,
+        observer: &mut dyn FnMut(Progress),
+        cancelled: &dyn Fn() -> bool,
+    ) -> bool {
+        self.steps += 1;
+        if self.throttle.due(self.steps) {
+            if cancelled() {
+                return false;
+            }
+            self.end(d, observer);
+        }
+        true
+    }
+
+    /// Reports where the run is.
+    pub(super) fn end(&self, d: &Decimator<'_>, observer: &mut dyn FnMut(Progress)) {
+        observer(Progress::new(
+            REMOVED,
+            (self.start_faces - d.real_faces) as u64,
+            self.total,
+        ));
     }
 }
 

@@ -38,19 +38,24 @@ fn shapes() -> Vec<(&'static str, TriMesh)> {
     ]
 }
 
+/// A fraction kept, a face count, an error cap, no target (for `f` input faces).
+fn targets(f: usize) -> [DecimateOptions; 4] {
+    [
+        DecimateOptions::keep(0.3),
+        DecimateOptions::faces(f / 10),
+        DecimateOptions {
+            max_error: Some(MaxError::Relative(0.01)),
+            ..Default::default()
+        },
+        DecimateOptions::default(),
+    ]
+}
+
 #[test]
 fn every_option_keeps_the_checks_and_the_output_check() {
     for (name, mesh) in shapes() {
         let f = mesh.faces.len();
-        let targets = [
-            DecimateOptions::keep(0.3),
-            DecimateOptions::faces(f / 10),
-            DecimateOptions {
-                max_error: Some(MaxError::Relative(0.01)),
-                ..Default::default()
-            },
-            DecimateOptions::default(),
-        ];
+        let targets = targets(f);
         let guards = [(true, false), (false, false), (true, true)];
         // Every placement with every guard setting, the targets taken in turn (the
         // checks examine every edge at every collapse: all 36 combinations per shape
@@ -120,15 +125,7 @@ fn the_tetrahedron_is_irreducible_and_stays() {
 fn the_pass_schedule_keeps_the_checks_and_stops_where_nothing_passes() {
     for (name, mesh) in shapes() {
         let f = mesh.faces.len();
-        let targets = [
-            DecimateOptions::keep(0.3),
-            DecimateOptions::faces(f / 10),
-            DecimateOptions {
-                max_error: Some(MaxError::Relative(0.01)),
-                ..Default::default()
-            },
-            DecimateOptions::default(),
-        ];
+        let targets = targets(f);
         for (i, placement) in Placement::ALL.into_iter().enumerate() {
             for (j, target) in targets.iter().enumerate() {
                 let o = DecimateOptions {
