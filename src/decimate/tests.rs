@@ -152,3 +152,21 @@ fn the_pass_schedule_keeps_the_checks_and_stops_where_nothing_passes() {
         }
     }
 }
+
+/// A target the input already meets makes no collapse, under both schedules (the run
+/// stops at the first face count at or below the target, which is the input's).
+#[test]
+fn a_target_already_met_collapses_nothing() {
+    for (name, mesh) in shapes() {
+        let f = mesh.faces.len();
+        for schedule in Schedule::ALL {
+            for o in [DecimateOptions::faces(f), DecimateOptions::keep(1.0)] {
+                let o = DecimateOptions { schedule, ..o };
+                let d = decimate(&mesh, &o).unwrap_or_else(|e| panic!("{name}: {e}"));
+                assert_eq!(d.stats.stopped, Stopped::Target, "{name} {o:?}");
+                assert_eq!((d.stats.collapses, d.stats.passes), (0, 0), "{name} {o:?}");
+                assert_eq!(d.mesh.faces, mesh.faces, "{name} {o:?}");
+            }
+        }
+    }
+}
