@@ -95,7 +95,7 @@ impl Decimator<'_> {
                 Some(&k) if !unlimited => LIMIT_FACTOR * unpack(k).0,
                 _ => f64::INFINITY,
             };
-            let mut deferred = 0usize;
+            let mut deferred = false;
             let min_made = goal.div_ceil(MIN_SHARE);
             let first_limit = limit;
             let made_before = self.collapses;
@@ -121,7 +121,7 @@ impl Decimator<'_> {
                 match self.resolve(p, q) {
                     // The guard moved the collapse to a dearer position than the pass
                     // takes: the edge waits for a pass with a higher limit.
-                    Ok((_, at, _)) if at > limit => deferred += 1,
+                    Ok((_, at, _)) if at > limit => deferred = true,
                     Ok((c, _, removed)) => {
                         spec::before_pass_collapse(
                             self,
@@ -146,7 +146,7 @@ impl Decimator<'_> {
                 }
             }
             if self.collapses == made_before {
-                if deferred > 0 && !unlimited {
+                if deferred && !unlimited {
                     unlimited = true;
                     self.refresh(&mut keys, &mut lists, pass);
                     continue;
