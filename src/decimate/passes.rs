@@ -260,7 +260,80 @@ fn merge_sorted(a: &mut Vec<u128>, b: &[u128]) {
 
 #[cfg(test)]
 mod tests {
-    use super::merge_sorted;
+    use super::{merge_sorted, Lists};
+    use crate::core::{ConedSurfaces, VertexId};
+    use crate::decimate::queue::unpack;
+    use crate::decimate::run::Decimator;
+    use crate::decimate::{Options, Placement, Schedule};
+    use crate::gen;
+
+    /// After a pass without collapses, `refresh` takes the refused keys out of the list
+    /// and parks them; after a pass that kept a vertex, it costs that vertex's edges
+    /// again and returns the parked keys next to it, and only those.
+    #[test]
+    fn refresh_parks_refused_keys_until_a_collapse_next_to_them() {
+        let mesh = gen::isosurface(&gen::IsoParams::new(
+            gen::Implicit::Sphere { radius: 1.0 },
+            gen::Tessellation::SixTetrahedra,
+            5,
+        ))
+        .expect("a sphere");
+        let opts = Options {
+            target_faces: 0,
+            max_error: None,
+            placement: Placement::Optimal,
+            schedule: Schedule::Passes,
+            guard: true,
+            lock_boundary: false,
+            locked: Vec::new(),
+        };
+        let whole = ConedSurfaces::whole(mesh.vertex_count, &mesh.faces).expect("a surface");
+        let positions = mesh.positions.as_deref().expect("positions");
+        let mut d = Decimator::new(whole, positions, &opts);
+        let all = d.all_keys();
+        let n = all.len();
+        assert!(n > 20);
+        // Pass 1 refused three keys and made no collapse.
+        let refused = vec![all[1], all[n / 2], all[n - 1]];
+        let mut keys = all.clone();
+        let mut lists = Lists {
+            refused: refused.clone(),
+            ..Lists::default()
+        };
+        d.refresh(&mut keys, &mut lists, 1);
+        let rest: Vec<u128> = all
+            .iter()
+            .copied()
+            .filter(|k| !refused.contains(k))
+            .collect();
+        assert_eq!(keys, rest);
+        assert_eq!(lists.parked, refused);
+        // Pass 2 kept a neighbour `v` of the first parked edge's endpoint `p` (its
+        // position and quadric as they were): that key comes back, the others stay.
+        let (_, p, q) = unpack(refused[0]);
+        let v = d
+            .tri
+            .link(VertexId(p))
+            .find(|&v| v.0 != q)
+            .expect("a neighbour");
+        d.pass_mark[v.index()] = 2;
+        lists.kept = vec![v];
+        lists.refused.clear();
+        d.refresh(&mut keys, &mut lists, 2);
+        let near = |x: u32| {
+            let x = VertexId(x);
+            x == v || d.tri.link(v).any(|w| w == x)
+        };
+        let (back, parked): (Vec<u128>, Vec<u128>) = refused.iter().partition(|&&k| {
+            let (_, a, b) = unpack(k);
+            near(a) || near(b)
+        });
+        assert!(back.contains(&refused[0]));
+        assert_eq!(lists.parked, parked);
+        let mut want: Vec<u128> = rest.iter().chain(&back).copied().collect();
+        want.sort_unstable();
+        assert_eq!(keys, want);
+    }
 
     #[test]
     fn merging_keeps_every_key_in_order() {
