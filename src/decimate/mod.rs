@@ -133,7 +133,17 @@ impl Schedule {
     /// Every schedule.
     pub const ALL: [Schedule; 2] = [Schedule::Exact, Schedule::Passes];
 
-    /// The name used on the command line, in Python and in JSON.
+    /// The name used on the command line, in Python and in JSON; it reads back as the
+    /// schedule.
+    ///
+    /// ```
+    /// use contractible::decimate::Schedule;
+    /// assert_eq!(Schedule::Passes.name(), "passes");
+    /// for s in Schedule::ALL {
+    ///     assert_eq!(s.name().parse::<Schedule>(), Ok(s));
+    /// }
+    /// assert!("fast".parse::<Schedule>().is_err());
+    /// ```
     pub fn name(self) -> &'static str {
         match self {
             Schedule::Exact => "exact",
@@ -142,6 +152,12 @@ impl Schedule {
     }
 
     /// One line on the schedule (the command line's help).
+    ///
+    /// ```
+    /// use contractible::decimate::Schedule;
+    /// assert!(Schedule::Exact.summary().contains("cheapest edge"));
+    /// assert!(Schedule::Passes.summary().starts_with("Passes"));
+    /// ```
     pub fn summary(self) -> &'static str {
         match self {
             Schedule::Exact => "Always the cheapest edge the guards allow (one priority queue)",
