@@ -51,9 +51,10 @@
 //!
 //! **Complexity.** O(F log F) time: each collapse costs O(d²) for the re-checks and
 //! queue entries of the merged vertex's neighbourhood (d its degree; the pass schedule:
-//! O(d) per collapse and O(E) per pass); memory about 150
-//! bytes per triangle beyond the input (corner table, positions, quadrics, per-corner
-//! edge costs, queue; 151.8 measured on a 4M-triangle sphere, `docs/benchmarks.md`).
+//! O(d) per collapse and O(E) per pass); memory under 150 bytes per triangle beyond
+//! the input (corner table, positions, quadrics, per-corner edge costs or the pass
+//! schedule's sorted keys, queue; 142.9 and 148.4 measured on a 4M-triangle sphere,
+//! `docs/benchmarks.md`).
 
 mod passes;
 mod queue;

@@ -101,6 +101,17 @@ pub(crate) struct Decimator<'o> {
     pub(super) initial: Vec<(Quadric, f64)>,
 }
 
+/// The edge `c` is opposite to, as `(smaller id, larger id)`, if `c` is a live face's
+/// corner and the smaller of the edge's two opposite corners: each edge once, in the
+/// order of `Triangulation::edges`.
+fn edge_from(tri: &Triangulation, c: Corner) -> Option<(VertexId, VertexId)> {
+    if !tri.is_face(c.face()) || c >= tri.opposite(c) {
+        return None;
+    }
+    let [a, b] = tri.edge_endpoints(c);
+    Some((a.min(b), a.max(b)))
+}
+
 impl<'o> Decimator<'o> {
     /// Takes over the coned mesh with its positions (checked finite by the caller) and
     /// builds the quadrics and the queue. O(F log F).
@@ -198,8 +209,13 @@ impl<'o> Decimator<'o> {
             return d;
         }
         d.edge_cost = vec![f64::NAN; d.tri.corner_vertex.len()];
-        let edges: Vec<(VertexId, VertexId, Corner)> = d.tri.edges().collect();
-        for (p, q, c) in edges {
+        // Walked corner by corner rather than collected from `edges()`: the list would
+        // be the call's largest allocation at its peak (12 bytes an edge, and the growth
+        // of a vector of unknown length), 18–24 bytes an input triangle.
+        for c in (0..d.tri.corner_vertex.len() as u32).map(Corner) {
+            let Some((p, q)) = edge_from(&d.tri, c) else {
+                continue;
+            };
             if d.is_virtual(q) {
                 continue;
             }
