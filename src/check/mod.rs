@@ -1,0 +1,511 @@
+//! Independent verdicts on outputs of **any** implementation: whether a file is a
+//! correct answer to a task on an input, judged by the answer's properties, not by its
+//! bytes (another implementation may break ties differently and still be right).
+//!
+//! **Guarantee.** A verdict lists every reason an output is wrong, each located (the
+//! output's face index, edge, vertex, or the input's component), at most 20 of a kind
+//! with the count of all; an output with no reason passes. The checks share no code with
+//! the algorithms or the core's corner table: faces, edges, fans, components, χ,
+//! orientability, boundary loops and the link condition are computed here from the face
+//! lists alone (module `surface`).
+//!
+//! - [`reduce`]: the output is a closed 2-manifold on input vertices (matched by id when
+//!   the output keeps the input's vertex list, else by exact position), with the input's
+//!   positions, one component per input component of the same surface (χ and
+//!   orientability), and **irreducible**: every edge fails the link condition (its ends
+//!   have a common neighbour besides the two opposite vertices), the tetrahedron aside.
+//!
+//! **Complexity.** O(F log F) for the surfaces, plus Σ over output edges of the two
+//! ends' degrees for the link condition.
+//!
+//! An input that is not a valid input of the task (for `reduce`: not a closed surface)
+//! is an error, not a failed verdict: the task must refuse it.
+
+mod surface;
+
+use std::collections::HashMap;
+
+use crate::{Error, TriMesh};
+use surface::{analyse, push, Analysis};
+
+/// What is wrong with an output.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum FailureKind {
+    /// A face names a vertex the output does not have.
+    VertexOutOfRange,
+    /// A face repeats a vertex.
+    DegenerateFace,
+    /// Two faces have the same three vertices.
+    RepeatedFace,
+    /// An edge lies in more than two faces.
+    NonManifoldEdge,
+    /// A vertex's faces form more than one fan.
+    NonManifoldVertex,
+    /// An edge lies in one face only where the output must be closed.
+    BoundaryEdge,
+    /// An output vertex is no input vertex (by id, or by exact position).
+    UnknownVertex,
+    /// An output vertex kept the input's id but not its position.
+    MovedVertex,
+    /// An output component takes vertices of two input components.
+    ComponentsMerged,
+    /// An input component has no output component.
+    ComponentLost,
+    /// An input component has two or more output components.
+    ComponentSplit,
+    /// An output component is not the surface of its input component (χ,
+    /// orientability, boundary loops).
+    SurfaceChanged,
+    /// An edge passes the link condition: the output is not irreducible.
+    ContractibleEdge,
+}
+
+impl FailureKind {
+    /// Every kind, in declaration order.
+    pub const ALL: [FailureKind; 13] = [
+        FailureKind::VertexOutOfRange,
+        FailureKind::DegenerateFace,
+        FailureKind::RepeatedFace,
+        FailureKind::NonManifoldEdge,
+        FailureKind::NonManifoldVertex,
+        FailureKind::BoundaryEdge,
+        FailureKind::UnknownVertex,
+        FailureKind::MovedVertex,
+        FailureKind::ComponentsMerged,
+        FailureKind::ComponentLost,
+        FailureKind::ComponentSplit,
+        FailureKind::SurfaceChanged,
+        FailureKind::ContractibleEdge,
+    ];
+
+    /// The kind's name in reports (snake case), stable across versions.
+    ///
+    /// ```
+    /// use contractible::check::FailureKind;
+    /// assert_eq!(FailureKind::ContractibleEdge.name(), "contractible_edge");
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            FailureKind::VertexOutOfRange => "vertex_out_of_range",
+            FailureKind::DegenerateFace => "degenerate_face",
+            FailureKind::RepeatedFace => "repeated_face",
+            FailureKind::NonManifoldEdge => "non_manifold_edge",
+            FailureKind::NonManifoldVertex => "non_manifold_vertex",
+            FailureKind::BoundaryEdge => "boundary_edge",
+            FailureKind::UnknownVertex => "unknown_vertex",
+            FailureKind::MovedVertex => "moved_vertex",
+            FailureKind::ComponentsMerged => "components_merged",
+            FailureKind::ComponentLost => "component_lost",
+            FailureKind::ComponentSplit => "component_split",
+            FailureKind::SurfaceChanged => "surface_changed",
+            FailureKind::ContractibleEdge => "contractible_edge",
+        }
+    }
+}
+
+/// One reason an output fails, with where (ids of the output file unless said).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Failure {
+    /// What is wrong.
+    pub kind: FailureKind,
+    /// A sentence saying what and where.
+    pub message: String,
+    /// An output face involved.
+    pub face: Option<usize>,
+    /// An output edge (its ends, smaller first).
+    pub edge: Option<[u32; 2]>,
+    /// An output vertex.
+    pub vertex: Option<u32>,
+    /// An input component (numbered by their smallest face).
+    pub component: Option<usize>,
+}
+
+impl Failure {
+    fn new(kind: FailureKind, message: String) -> Self {
+        Failure {
+            kind,
+            message,
+            face: None,
+            edge: None,
+            vertex: None,
+            component: None,
+        }
+    }
+    fn face(mut self, f: usize) -> Self {
+        self.face = Some(f);
+        self
+    }
+    fn edge(mut self, e: [u32; 2]) -> Self {
+        self.edge = Some(e);
+        self
+    }
+    fn vertex(mut self, v: u32) -> Self {
+        self.vertex = Some(v);
+        self
+    }
+    fn component(mut self, c: usize) -> Self {
+        self.component = Some(c);
+        self
+    }
+}
+
+/// The verdict on one output.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Verdict {
+    /// The task judged.
+    pub task: &'static str,
+    /// The reasons it fails, at most 20 of a kind, in the order found.
+    pub failures: Vec<Failure>,
+    /// Per kind found: how many there were (listed or not), in the order first found.
+    pub counts: Vec<(FailureKind, usize)>,
+}
+
+impl Verdict {
+    /// Whether the output is a correct answer.
+    pub fn passed(&self) -> bool {
+        self.failures.is_empty()
+    }
+
+    fn new(task: &'static str) -> Self {
+        Verdict {
+            task,
+            failures: Vec::new(),
+            counts: Vec::new(),
+        }
+    }
+
+    fn fail(&mut self, f: Failure) {
+        push(&mut self.failures, &mut self.counts, f);
+    }
+}
+
+/// How the output's vertices are the input's.
+enum Matching {
+    /// The output keeps the input's vertex list: ids are the input's.
+    ById,
+    /// Per output vertex, the input vertex at its exact position (`u32::MAX`: none).
+    ByPosition(Vec<u32>),
+}
+
+/// Matches the output's vertices to the input's: by id when the output has as many
+/// vertices and the same positions (or neither has positions), else by exact position.
+/// Referenced output vertices that match nothing are failures; `None` when no matching
+/// is possible at all (counts differ and a side has no positions).
+fn match_vertices(input: &TriMesh, output: &TriMesh, verdict: &mut Verdict) -> Option<Matching> {
+    let same_list = output.vertex_count == input.vertex_count
+        && match (&input.positions, &output.positions) {
+            (Some(a), Some(b)) => a.len() == b.len(),
+            (None, None) => true,
+            _ => false,
+        };
+    let referenced = referenced(output);
+    if same_list {
+        if let (Some(a), Some(b)) = (&input.positions, &output.positions) {
+            for &v in &referenced {
+                let (p, q) = (a[v as usize], b[v as usize]);
+                if p.map(f64::to_bits) != q.map(f64::to_bits) {
+                    verdict.fail(
+                        Failure::new(
+                            FailureKind::MovedVertex,
+                            format!("output vertex {v} is at {q:?}, input vertex {v} at {p:?}"),
+                        )
+                        .vertex(v),
+                    );
+                }
+            }
+        }
+        return Some(Matching::ById);
+    }
+    let (Some(a), Some(b)) = (&input.positions, &output.positions) else {
+        if output.vertex_count <= input.vertex_count {
+            // No positions to match: ids are taken as the input's.
+            return Some(Matching::ById);
+        }
+        return None;
+    };
+    let mut at: HashMap<[u64; 3], u32> = HashMap::with_capacity(a.len());
+    for (i, p) in a.iter().enumerate().rev() {
+        // The smallest id of a repeated position wins.
+        at.insert(p.map(|x| (x + 0.0).to_bits()), i as u32);
+    }
+    let mut map = vec![u32::MAX; output.vertex_count];
+    for &v in &referenced {
+        let Some(q) = b.get(v as usize) else { continue };
+        match at.get(&q.map(|x| (x + 0.0).to_bits())) {
+            Some(&i) => map[v as usize] = i,
+            None => verdict.fail(
+                Failure::new(
+                    FailureKind::UnknownVertex,
+                    format!("output vertex {v} at {q:?} is at no input vertex's position"),
+                )
+                .vertex(v),
+            ),
+        }
+    }
+    Some(Matching::ByPosition(map))
+}
+
+/// The output vertices its faces use, increasing.
+fn referenced(mesh: &TriMesh) -> Vec<u32> {
+    let mut used = vec![false; mesh.vertex_count];
+    for f in &mesh.faces {
+        for &v in f {
+            if let Some(u) = used.get_mut(v as usize) {
+                *u = true;
+            }
+        }
+    }
+    (0..mesh.vertex_count as u32)
+        .filter(|&v| used[v as usize])
+        .collect()
+}
+
+/// The input analysed as a task input: a closed surface for `reduce`.
+fn closed_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> {
+    let a = analyse(input.vertex_count, &input.faces, "input").map_err(|(failures, _)| {
+        // The reader's build locates the defect as every task reports it.
+        match crate::ConedSurfaces::from_mesh(input) {
+            Err(e) => Error::Mesh(e),
+            Ok(_) => Error::BadOption {
+                option: "input",
+                value: failures
+                    .first()
+                    .map_or_else(String::new, |f| f.message.clone()),
+                expected: format!("a surface ({task} input)"),
+            },
+        }
+    })?;
+    if let Some(&((x, y), _, f)) = a.edges.iter().find(|(_, o, _)| o[1] == u32::MAX) {
+        return Err(Error::NotClosed {
+            task,
+            a: x,
+            b: y,
+            face: f as usize,
+            boundary_loops: Some(a.parts.iter().map(|p| p.boundary_loops).sum()),
+        });
+    }
+    Ok(a)
+}
+
+/// Judges `output` as an irreducible triangulation of `input` (the task `reduce`): see
+/// the [module](self) for what is checked.
+///
+/// # Errors
+/// [`Error::NotClosed`] or [`Error::Mesh`] (locating the first defect) when `input` is
+/// not a closed surface, which `reduce` must refuse.
+///
+/// # Example
+/// ```
+/// use contractible::{check, gen, reduce};
+/// let sphere = gen::icosahedron();
+/// let ours = reduce(&sphere, &Default::default())?;
+/// assert!(check::reduce(&sphere, &ours.mesh)?.passed());
+/// // The input itself is not irreducible: its edges pass the link condition.
+/// let verdict = check::reduce(&sphere, &sphere)?;
+/// assert!(!verdict.passed());
+/// assert_eq!(verdict.failures[0].kind, check::FailureKind::ContractibleEdge);
+/// # Ok::<(), contractible::Error>(())
+/// ```
+pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
+    let inp = closed_input(input, "reduce")?;
+    let mut verdict = Verdict::new("reduce");
+    let out = match analyse(output.vertex_count, &output.faces, "output") {
+        Ok(a) => a,
+        Err((failures, counts)) => {
+            verdict.failures = failures;
+            verdict.counts = counts;
+            return Ok(verdict);
+        }
+    };
+    for &((a, b), _, f) in out.edges.iter().filter(|(_, o, _)| o[1] == u32::MAX) {
+        verdict.fail(
+            Failure::new(
+                FailureKind::BoundaryEdge,
+                format!("output edge [{a}, {b}] is in one face only (face {f})"),
+            )
+            .face(f as usize)
+            .edge([a, b]),
+        );
+    }
+    if !verdict.passed() {
+        // Not closed: the surface checks below would only restate it.
+        return Ok(verdict);
+    }
+    let Some(matching) = match_vertices(input, output, &mut verdict) else {
+        verdict.fail(Failure::new(
+            FailureKind::UnknownVertex,
+            format!(
+                "the output has {} vertices, the input {}, and no positions to match them by",
+                output.vertex_count, input.vertex_count
+            ),
+        ));
+        return Ok(verdict);
+    };
+    let to_input = |v: u32| -> Option<u32> {
+        match &matching {
+            Matching::ById => (v < input.vertex_count as u32).then_some(v),
+            Matching::ByPosition(m) => m.get(v as usize).copied().filter(|&i| i != u32::MAX),
+        }
+    };
+    // The input component of each input vertex.
+    let mut part_of_vertex = vec![usize::MAX; input.vertex_count];
+    for (k, p) in inp.parts.iter().enumerate() {
+        for &v in &p.vertices {
+            part_of_vertex[v as usize] = k;
+        }
+    }
+    // Each output component lies in one input component of the same surface.
+    let mut outputs_of: Vec<Vec<usize>> = vec![Vec::new(); inp.parts.len()];
+    for (j, q) in out.parts.iter().enumerate() {
+        let mut parts: Vec<usize> = Vec::new();
+        for &v in &q.vertices {
+            match to_input(v).map(|i| part_of_vertex[i as usize]) {
+                Some(k) if k != usize::MAX => parts.push(k),
+                Some(_) => {
+                    verdict.fail(
+                        Failure::new(
+                            FailureKind::UnknownVertex,
+                            format!("output vertex {v} is an input vertex no input face uses"),
+                        )
+                        .vertex(v),
+                    );
+                }
+                None => {
+                    if matches!(matching, Matching::ById) {
+                        verdict.fail(
+                            Failure::new(
+                                FailureKind::UnknownVertex,
+                                format!("output vertex {v} is beyond the input's vertices"),
+                            )
+                            .vertex(v),
+                        );
+                    }
+                }
+            }
+        }
+        parts.sort_unstable();
+        parts.dedup();
+        if parts.len() > 1 {
+            verdict.fail(
+                Failure::new(
+                    FailureKind::ComponentsMerged,
+                    format!(
+                        "the output component of face {} joins input components {parts:?}",
+                        q.first_face
+                    ),
+                )
+                .face(q.first_face)
+                .component(parts[0]),
+            );
+        } else if let Some(&k) = parts.first() {
+            // Unknown vertices aside, the component is this input component's.
+            outputs_of[k].push(j);
+        }
+    }
+    for (k, p) in inp.parts.iter().enumerate() {
+        match outputs_of[k].as_slice() {
+            [] => verdict.fail(
+                Failure::new(
+                    FailureKind::ComponentLost,
+                    format!(
+                        "input component {k} (of face {}) has no output component",
+                        p.first_face
+                    ),
+                )
+                .component(k),
+            ),
+            [j] => {
+                let q = &out.parts[*j];
+                if (q.euler(), q.orientable) != (p.euler(), p.orientable) {
+                    verdict.fail(
+                        Failure::new(
+                            FailureKind::SurfaceChanged,
+                            format!(
+                                "input component {k}: χ {} {}, its output (of face {}): χ {} {}",
+                                p.euler(),
+                                orientable_name(p.orientable),
+                                q.first_face,
+                                q.euler(),
+                                orientable_name(q.orientable)
+                            ),
+                        )
+                        .face(q.first_face)
+                        .component(k),
+                    );
+                }
+            }
+            many => verdict.fail(
+                Failure::new(
+                    FailureKind::ComponentSplit,
+                    format!(
+                        "input component {k} has {} output components (of faces {:?})",
+                        many.len(),
+                        many.iter()
+                            .map(|&j| out.parts[j].first_face)
+                            .collect::<Vec<_>>()
+                    ),
+                )
+                .component(k),
+            ),
+        }
+    }
+    contractible_edges(&out, &mut verdict);
+    Ok(verdict)
+}
+
+fn orientable_name(o: bool) -> &'static str {
+    if o {
+        "orientable"
+    } else {
+        "non-orientable"
+    }
+}
+
+/// Every closed edge whose ends have no common neighbour besides its two opposite
+/// vertices passes the link condition (on a closed surface the two are the same), unless
+/// its component is the tetrahedron, where contracting any edge leaves two faces on three
+/// vertices.
+fn contractible_edges(out: &Analysis, verdict: &mut Verdict) {
+    for &((a, b), opposite, f) in &out.edges {
+        if opposite[1] == u32::MAX {
+            continue;
+        }
+        let part = &out.parts[out.part_of_face[f as usize]];
+        if part.vertices.len() == 4 && part.faces == 4 {
+            continue;
+        }
+        let (na, nb) = (out.neighbours_of(a), out.neighbours_of(b));
+        let (mut i, mut j, mut other) = (0, 0, None);
+        while i < na.len() && j < nb.len() {
+            match na[i].cmp(&nb[j]) {
+                std::cmp::Ordering::Less => i += 1,
+                std::cmp::Ordering::Greater => j += 1,
+                std::cmp::Ordering::Equal => {
+                    if !opposite.contains(&na[i]) {
+                        other = Some(na[i]);
+                        break;
+                    }
+                    i += 1;
+                    j += 1;
+                }
+            }
+        }
+        if other.is_none() {
+            verdict.fail(
+                Failure::new(
+                    FailureKind::ContractibleEdge,
+                    format!(
+                        "output edge [{a}, {b}] passes the link condition (common neighbours \
+                         only {} and {}): the output is not irreducible",
+                        opposite[0], opposite[1]
+                    ),
+                )
+                .face(f as usize)
+                .edge([a, b]),
+            );
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;
