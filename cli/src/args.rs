@@ -72,6 +72,12 @@ contracted is replaced by one vertex (--position). It is unrelated to the ε col
     /// writing. Needs vertex positions; accepts surfaces with boundary.
     #[command(after_help = DECIMATE_AFTER_HELP)]
     Decimate(DecimateArgs),
+    /// Judge an output of any implementation of a task by its properties (not its
+    /// bytes): exit 0 when it is a correct answer for the input, 1 with every reason
+    /// (located) when it is not, 2 when a file cannot be read or the input is not one
+    /// the task accepts.
+    #[command(after_help = CHECK_AFTER_HELP)]
+    Check(CheckArgs),
     /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
     /// and the brute force, pair into quads, simplify marching-tetrahedra isosurfaces
     /// (naive and nested, ε = 1 % of the bounding-box diagonal), verify.
@@ -456,6 +462,34 @@ pub struct SimplifyArgs {
     /// them one after another). The output is the same for every value.
     #[arg(long, short = 'j')]
     pub jobs: Option<usize>,
+    #[command(flatten)]
+    pub input_opts: InputOpts,
+}
+
+/// What `check` verifies.
+const CHECK_AFTER_HELP: &str = "reduce: OUTPUT is a closed 2-manifold on INPUT's \
+vertices (by id when OUTPUT keeps INPUT's vertex list, else by exact position) with \
+INPUT's positions, one component per input component with the same χ and \
+orientability, and irreducible: every edge fails the link condition (the tetrahedron \
+aside). The checks share no code with the algorithms. At most 20 reasons of a kind are \
+listed, with the count of all.";
+
+/// A task whose outputs `check` judges.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CheckTask {
+    /// An irreducible triangulation of every component.
+    Reduce,
+}
+
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    /// The task the output answers.
+    #[arg(value_enum)]
+    pub task: CheckTask,
+    /// The task's input mesh (.off/.obj/.ply/.stl, optionally .gz).
+    pub input: PathBuf,
+    /// The output to judge, from any implementation.
+    pub output: PathBuf,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

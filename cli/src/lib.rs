@@ -26,6 +26,7 @@ macro_rules! outln {
 
 mod args;
 mod batch;
+mod check;
 mod choice;
 mod convert;
 mod decimate;
@@ -178,6 +179,7 @@ pub fn main() -> ExitCode {
         args::Command::Quad(a) => quad::run(&a, ui),
         args::Command::Simplify(a) => simplify::run(&a, ui),
         args::Command::Decimate(a) => decimate::run(&a, ui),
+        args::Command::Check(a) => check::run(&a, ui),
         args::Command::Demo(a) => demo::run(&a, ui),
         args::Command::Batch(a) => batch::run(&a, ui),
         args::Command::Completions(a) => docs::completions(&a),

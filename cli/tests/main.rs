@@ -9,6 +9,7 @@ mod common;
 
 mod cli_batch;
 mod cli_boundary;
+mod cli_check;
 mod cli_decimate;
 mod cli_docs;
 mod cli_gen;
