@@ -15,6 +15,7 @@ Functions:
     quad(V, F, algo="lrs", seed=0)          perfect triangle pairing   -> Quadrangulated
     simplify(V, F, eps, mode="nested")      short-edge simplification  -> Simplified
     decimate(V, F, faces=n | keep=f)        quadric-error decimation   -> Decimated
+    check(task, V, F, V_out, F_out)         verdict on any implementation's output -> dict
 
 Every problem of a mesh raises :class:`MeshError` (a ``ValueError``) with ``kind`` and
 ``location``; a wrong array shape or dtype, an unknown algorithm name or a bad ``eps``
@@ -48,6 +49,7 @@ __all__ = [
     "quad",
     "simplify",
     "decimate",
+    "check",
 ]
 
 __version__ = _native.__version__
@@ -370,3 +372,27 @@ def decimate(V: Any, F: Any = None, *, faces: Optional[int] = None,
                          _locked(locked, None if Va is None else len(Va)), schedule)
     return Decimated(d["vertices"], d["faces"], d["vertex_map"], d["collapse_map"],
                      d["face_origin"], d["stats"])
+
+
+def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
+          vertex_count: Optional[int] = None,
+          out_vertex_count: Optional[int] = None) -> Dict[str, Any]:
+    """Judges ``(V_out, F_out)``, made by any implementation, as an output of ``task``
+    on ``(V, F)``, by its properties (not its bytes); the command line's
+    ``contractible check TASK INPUT OUTPUT --json`` without the file names.
+
+    ``task`` is ``"reduce"``: the output must be a closed 2-manifold on input vertices
+    (by index when it keeps the input's vertex list, else by exact position) with the
+    input's positions, one component per input component of the same surface, and
+    irreducible. Either ``V`` may be None (combinatorial meshes; then the counts say
+    how many vertices there are, by default one more than the largest index).
+
+    Returns a dict: ``task``, ``passed`` (bool), ``counts`` (per failure kind, every
+    reason found) and ``failures`` (at most 20 of a kind: ``kind``, ``message`` and,
+    where known, ``face``, ``edge``, ``vertex``, ``component``). Raises
+    :class:`MeshError` when the input is not one the task accepts (for ``reduce``: not a
+    closed surface), ``ValueError`` for an unknown task or a bad array.
+    """
+    Va, Fa = _vertices(V), _faces(F)
+    Vb, Fb = _vertices(V_out), _faces(F_out)
+    return _native.check(str(task), Va, Fa, vertex_count, Vb, Fb, out_vertex_count)

@@ -38,3 +38,6 @@ def decimate(vertices: Optional[_Coords], faces: _Indices, target_faces: Optiona
              lock_boundary: bool = False,
              locked: Optional[npt.NDArray[np.uint32]] = None,
              schedule: str = "exact") -> Dict[str, Any]: ...
+def check(task: str, vertices: Optional[_Coords], faces: _Indices,
+          vertex_count: Optional[int], out_vertices: Optional[_Coords],
+          out_faces: _Indices, out_vertex_count: Optional[int]) -> Dict[str, Any]: ...

@@ -778,6 +778,66 @@ fn decimate_py<'py>(
     Ok(d)
 }
 
+/// The verdict of `contractible::check` on `(out_vertices, out_faces)` as an output of
+/// `task` on `(vertices, faces)`: the keys of `contractible check --json` but for the
+/// file names (`task`, `passed`, `counts`, `failures`).
+#[pyfunction(name = "check")]
+#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count))]
+#[allow(clippy::too_many_arguments)]
+fn check_py<'py>(
+    py: Python<'py>,
+    task: &str,
+    vertices: Option<Coordinates<'py>>,
+    faces: Indices<'py>,
+    vertex_count: Option<usize>,
+    out_vertices: Option<Coordinates<'py>>,
+    out_faces: Indices<'py>,
+    out_vertex_count: Option<usize>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let input = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
+    let output = mesh::<3>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
+    let verdict = match task {
+        "reduce" => py.detach(|| contractible::check::reduce(&input, &output)),
+        other => {
+            return Err(PyValueError::new_err(format!(
+                "check: unknown task {other:?} (expected \"reduce\")"
+            )))
+        }
+    }
+    .map_err(|e| raise(py, &e, None))?;
+    let counts = PyDict::new(py);
+    let mut sorted = verdict.counts.clone();
+    sorted.sort_by_key(|&(k, _)| k.name());
+    for (k, n) in sorted {
+        counts.set_item(k.name(), n)?;
+    }
+    let failures = pyo3::types::PyList::empty(py);
+    for f in &verdict.failures {
+        let d = PyDict::new(py);
+        d.set_item("kind", f.kind.name())?;
+        d.set_item("message", &f.message)?;
+        if let Some(x) = f.face {
+            d.set_item("face", x)?;
+        }
+        if let Some(e) = f.edge {
+            d.set_item("edge", e.to_vec())?;
+        }
+        if let Some(v) = f.vertex {
+            d.set_item("vertex", v)?;
+        }
+        if let Some(c) = f.component {
+            d.set_item("component", c)?;
+        }
+        failures.append(d)?;
+    }
+    let d = PyDict::new(py);
+    d.set_item("task", verdict.task)?;
+    d.set_item("passed", verdict.passed())?;
+    d.set_item("counts", counts)?;
+    d.set_item("failures", failures)?;
+    Ok(d)
+}
+
 /// The native module; `contractible/__init__.py` is the public face.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -788,6 +848,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(quad_py, m)?)?;
     m.add_function(wrap_pyfunction!(simplify_py, m)?)?;
     m.add_function(wrap_pyfunction!(decimate_py, m)?)?;
+    m.add_function(wrap_pyfunction!(check_py, m)?)?;
     m.add_class::<History>()?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -191,17 +191,28 @@ enum Matching {
 /// vertices and the same positions (or neither has positions), else by exact position.
 /// Referenced output vertices that match nothing are failures; `None` when no matching
 /// is possible at all (counts differ and a side has no positions).
-fn match_vertices(input: &TriMesh, output: &TriMesh, verdict: &mut Verdict) -> Option<Matching> {
+///
+/// Several input vertices may share a position (two touching objects, a seam): each
+/// output component is then given the input component holding candidates of most of its
+/// vertices (one no earlier output component took, on a tie; components with a
+/// one-candidate vertex first), and each of its vertices the first candidate in that
+/// component no other output vertex took.
+fn match_vertices(
+    input: &TriMesh,
+    output: &TriMesh,
+    inp: &Analysis,
+    out: &Analysis,
+    verdict: &mut Verdict,
+) -> Option<Matching> {
     let same_list = output.vertex_count == input.vertex_count
         && match (&input.positions, &output.positions) {
             (Some(a), Some(b)) => a.len() == b.len(),
             (None, None) => true,
             _ => false,
         };
-    let referenced = referenced(output);
     if same_list {
         if let (Some(a), Some(b)) = (&input.positions, &output.positions) {
-            for &v in &referenced {
+            for &v in &referenced(output) {
                 let (p, q) = (a[v as usize], b[v as usize]);
                 if p.map(f64::to_bits) != q.map(f64::to_bits) {
                     verdict.fail(
@@ -223,26 +234,95 @@ fn match_vertices(input: &TriMesh, output: &TriMesh, verdict: &mut Verdict) -> O
         }
         return None;
     };
-    let mut at: HashMap<[u64; 3], u32> = HashMap::with_capacity(a.len());
-    for (i, p) in a.iter().enumerate().rev() {
-        // The smallest id of a repeated position wins.
-        at.insert(p.map(|x| (x + 0.0).to_bits()), i as u32);
+    // Input vertices no face uses are candidates only where no used one is.
+    let part_of = part_of_vertex(inp, input.vertex_count);
+    let bits = |p: [f64; 3]| p.map(|x| (x + 0.0).to_bits());
+    let mut at: HashMap<[u64; 3], Vec<u32>> = HashMap::with_capacity(a.len());
+    for (i, &p) in a.iter().enumerate() {
+        at.entry(bits(p)).or_default().push(i as u32);
     }
+    for c in at.values_mut() {
+        if c.iter().any(|&i| part_of[i as usize] != usize::MAX) {
+            c.retain(|&i| part_of[i as usize] != usize::MAX);
+        }
+    }
+    let candidates = |v: u32| -> &[u32] {
+        b.get(v as usize)
+            .and_then(|&q| at.get(&bits(q)))
+            .map_or(&[], Vec::as_slice)
+    };
+    let mut order: Vec<usize> = (0..out.parts.len()).collect();
+    order.sort_by_key(|&j| {
+        !out.parts[j]
+            .vertices
+            .iter()
+            .any(|&v| candidates(v).len() == 1)
+    });
+    let mut claimed = vec![false; inp.parts.len()];
+    let mut taken = vec![false; input.vertex_count];
     let mut map = vec![u32::MAX; output.vertex_count];
-    for &v in &referenced {
-        let Some(q) = b.get(v as usize) else { continue };
-        match at.get(&q.map(|x| (x + 0.0).to_bits())) {
-            Some(&i) => map[v as usize] = i,
-            None => verdict.fail(
-                Failure::new(
-                    FailureKind::UnknownVertex,
-                    format!("output vertex {v} at {q:?} is at no input vertex's position"),
-                )
-                .vertex(v),
-            ),
+    for j in order {
+        let mut tally: Vec<(usize, usize)> = Vec::new();
+        for &v in &out.parts[j].vertices {
+            let mut ks: Vec<usize> = candidates(v)
+                .iter()
+                .map(|&i| part_of[i as usize])
+                .filter(|&k| k != usize::MAX)
+                .collect();
+            ks.sort_unstable();
+            ks.dedup();
+            for k in ks {
+                match tally.iter_mut().find(|(x, _)| *x == k) {
+                    Some((_, n)) => *n += 1,
+                    None => tally.push((k, 1)),
+                }
+            }
+        }
+        let home = tally
+            .iter()
+            .max_by_key(|&&(k, n)| (n, !claimed[k], std::cmp::Reverse(k)))
+            .map(|&(k, _)| k);
+        if let Some(k) = home {
+            claimed[k] = true;
+        }
+        for &v in &out.parts[j].vertices {
+            let c = candidates(v);
+            let pick = c
+                .iter()
+                .copied()
+                .find(|&i| Some(part_of[i as usize]) == home && !taken[i as usize])
+                .or_else(|| c.iter().copied().find(|&i| !taken[i as usize]))
+                .or_else(|| c.first().copied());
+            match pick {
+                Some(i) => {
+                    taken[i as usize] = true;
+                    map[v as usize] = i;
+                }
+                None => verdict.fail(
+                    Failure::new(
+                        FailureKind::UnknownVertex,
+                        format!(
+                            "output vertex {v} at {:?} is at no input vertex's position",
+                            b.get(v as usize).copied().unwrap_or_default()
+                        ),
+                    )
+                    .vertex(v),
+                ),
+            }
         }
     }
     Some(Matching::ByPosition(map))
+}
+
+/// Per input vertex, its component (`usize::MAX`: no face uses it).
+fn part_of_vertex(inp: &Analysis, vertex_count: usize) -> Vec<usize> {
+    let mut part_of = vec![usize::MAX; vertex_count];
+    for (k, p) in inp.parts.iter().enumerate() {
+        for &v in &p.vertices {
+            part_of[v as usize] = k;
+        }
+    }
+    part_of
 }
 
 /// The output vertices its faces use, increasing.
@@ -331,7 +411,7 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
         // Not closed: the surface checks below would only restate it.
         return Ok(verdict);
     }
-    let Some(matching) = match_vertices(input, output, &mut verdict) else {
+    let Some(matching) = match_vertices(input, output, &inp, &out, &mut verdict) else {
         verdict.fail(Failure::new(
             FailureKind::UnknownVertex,
             format!(
@@ -347,13 +427,7 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
             Matching::ByPosition(m) => m.get(v as usize).copied().filter(|&i| i != u32::MAX),
         }
     };
-    // The input component of each input vertex.
-    let mut part_of_vertex = vec![usize::MAX; input.vertex_count];
-    for (k, p) in inp.parts.iter().enumerate() {
-        for &v in &p.vertices {
-            part_of_vertex[v as usize] = k;
-        }
-    }
+    let part_of_vertex = part_of_vertex(&inp, input.vertex_count);
     // Each output component lies in one input component of the same surface.
     let mut outputs_of: Vec<Vec<usize>> = vec![Vec::new(); inp.parts.len()];
     for (j, q) in out.parts.iter().enumerate() {
