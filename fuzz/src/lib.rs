@@ -2341,6 +2341,49 @@ pub struct TaskInput {
     pub foldover: bool,
 }
 
+/// Applies `edits` to `faces` over `nv` vertices, in order (see [`Edit`]).
+pub fn apply_edits<'a>(
+    faces: &mut Vec<[u32; 3]>,
+    nv: u32,
+    edits: impl IntoIterator<Item = &'a Edit>,
+) {
+    for &edit in edits {
+        let nf = faces.len();
+        let face = |i: u16| usize::from(i) % nf.max(1);
+        match edit {
+            _ if nf == 0 && !matches!(edit, Edit::Add { .. }) => {}
+            Edit::Remove { face: i } => {
+                faces.remove(face(i));
+            }
+            Edit::Add { corners } => faces.push(corners.map(|c| u32::from(c) % (nv + 2))),
+            Edit::Duplicate { face: i, turn } => {
+                let f = faces[face(i)];
+                let r = usize::from(turn % 3);
+                let mut g = [f[r], f[(r + 1) % 3], f[(r + 2) % 3]];
+                if turn >= 128 {
+                    g.swap(1, 2);
+                }
+                faces.push(g);
+            }
+            Edit::Reverse { face: i } => faces[face(i)].swap(1, 2),
+            Edit::Merge { keep, gone } => {
+                let (k, g) = (u32::from(keep) % nv, u32::from(gone) % nv);
+                for v in faces.iter_mut().flatten() {
+                    if *v == g {
+                        *v = k;
+                    }
+                }
+            }
+            Edit::Corner {
+                face: i,
+                slot,
+                vertex,
+            } => faces[face(i)][usize::from(slot % 3)] = vertex,
+            Edit::Swap { a, b } => faces.swap(face(a), face(b)),
+        }
+    }
+}
+
 /// The mesh a [`TaskInput`] describes: the parts side by side (vertex ids offset), the
 /// edits applied in order, the declared vertex count and the positions.
 pub fn task_mesh(input: &TaskInput) -> contractible::TriMesh {
@@ -2384,41 +2427,7 @@ pub fn task_mesh(input: &TaskInput) -> contractible::TriMesh {
         total += n;
     }
     let nv = total.max(1) as u32;
-    for &edit in input.edits.iter().take(TASK_EDITS) {
-        let nf = faces.len();
-        let face = |i: u16| usize::from(i) % nf.max(1);
-        match edit {
-            _ if nf == 0 && !matches!(edit, Edit::Add { .. }) => {}
-            Edit::Remove { face: i } => {
-                faces.remove(face(i));
-            }
-            Edit::Add { corners } => faces.push(corners.map(|c| u32::from(c) % (nv + 2))),
-            Edit::Duplicate { face: i, turn } => {
-                let f = faces[face(i)];
-                let r = usize::from(turn % 3);
-                let mut g = [f[r], f[(r + 1) % 3], f[(r + 2) % 3]];
-                if turn >= 128 {
-                    g.swap(1, 2);
-                }
-                faces.push(g);
-            }
-            Edit::Reverse { face: i } => faces[face(i)].swap(1, 2),
-            Edit::Merge { keep, gone } => {
-                let (k, g) = (u32::from(keep) % nv, u32::from(gone) % nv);
-                for v in faces.iter_mut().flatten() {
-                    if *v == g {
-                        *v = k;
-                    }
-                }
-            }
-            Edit::Corner {
-                face: i,
-                slot,
-                vertex,
-            } => faces[face(i)][usize::from(slot % 3)] = vertex,
-            Edit::Swap { a, b } => faces.swap(face(a), face(b)),
-        }
-    }
+    apply_edits(&mut faces, nv, input.edits.iter().take(TASK_EDITS));
     let vertex_count = match input.vertices {
         VertexCount::Parts => total,
         VertexCount::Extra { unused } => total + usize::from(unused),
@@ -4806,5 +4815,109 @@ pub fn check_round_trip(t: &contractible::TriMesh) {
         );
         assert_eq!(back.faces, expect.faces, "{name}: faces");
         assert_eq!(bits(&back), bits(&expect), "{name}: positions");
+    }
+}
+
+/// At most this many contraction picks in `check`.
+pub const CHECK_PICKS: usize = 256;
+/// At most this many edits in `check`.
+pub const CHECK_EDITS: usize = 8;
+
+/// The input of `check`: a surface grown by vertex splits (the checker's input), an
+/// answer made from it by contractions that pass the link condition (some, or until
+/// irreducible: a right or a wrong reduction), perhaps corrupted by edits, perhaps
+/// written with a compacted vertex list (matched by position).
+#[derive(Arbitrary, Clone, Debug, PartialEq, Eq)]
+pub struct CheckInput {
+    /// The input surface.
+    pub base: SurfaceInput,
+    /// `(vertex, k)`: contract `[vertex, link(vertex)[k]]` when it passes the link
+    /// condition (ids mod capacity, `k` mod degree; at most [`CHECK_PICKS`]).
+    pub picks: Vec<(u16, u8)>,
+    /// Then contract until irreducible.
+    pub finish: bool,
+    /// Edits of the answer's faces (at most [`CHECK_EDITS`]).
+    pub edits: Vec<Edit>,
+    /// Write the answer with only the vertices its faces use.
+    pub compact: bool,
+}
+
+/// `check::reduce` on a contracted, maybe edited, answer: never a panic or an error (the
+/// input is a closed surface); on an unedited answer the verdict is exactly the core's
+/// naive link predicate (the contractible edges counted, nothing else wrong); and a
+/// verdict that passes is confirmed by the core: the answer, rebuilt, is a closed
+/// irreducible triangulation of the input's surface.
+pub fn check_check(input: &CheckInput) {
+    use contractible::check::{self, FailureKind};
+    let tri = build_surface(&input.base);
+    let n = tri.vertex_capacity();
+    // Distinct positions, so that a compacted answer is matched back exactly.
+    let positions: Vec<[f64; 3]> = (0..n)
+        .map(|v| [v as f64, ((v * 7) % 13) as f64, 0.5])
+        .collect();
+    let source = contractible::TriMesh::with_positions(positions.clone(), tri.face_list());
+    let mut t = tri.clone();
+    let mut scratch = Vec::new();
+    for &(v, k) in input.picks.iter().take(CHECK_PICKS) {
+        let u = VertexId(u32::from(v) % n as u32);
+        if !t.is_vertex(u) {
+            continue;
+        }
+        let link: Vec<VertexId> = t.link(u).collect();
+        let w = link[usize::from(k) % link.len()];
+        if t.link_condition_naive(u, w) {
+            t.collapse(u, w, &mut scratch);
+        }
+    }
+    if input.finish {
+        loop {
+            let next = t.edges().find(|&(a, b, _)| t.link_condition_naive(a, b));
+            let Some((a, b, _)) = next else { break };
+            t.collapse(a, b, &mut scratch);
+        }
+    }
+    let mut faces = t.face_list();
+    let unedited = faces.clone();
+    apply_edits(&mut faces, n as u32, input.edits.iter().take(CHECK_EDITS));
+    let edited = faces != unedited;
+    let answer = contractible::TriMesh::with_positions(positions.clone(), faces.clone());
+    let (answer, compacted) = match answer.compacted() {
+        Some((c, dropped)) if input.compact && dropped > 0 => (c, true),
+        _ => (answer, false),
+    };
+    let v = check::reduce(&source, &answer).expect("a closed input is judged");
+    if !edited {
+        let contractible_edges = t
+            .edges()
+            .filter(|&(a, b, _)| t.link_condition_naive(a, b))
+            .count();
+        let kinds: Vec<FailureKind> = v.counts.iter().map(|&(k, _)| k).collect();
+        if contractible_edges == 0 {
+            assert!(v.passed(), "an irreducible answer fails: {v:?}");
+        } else {
+            assert_eq!(kinds, [FailureKind::ContractibleEdge], "{v:?}");
+            assert_eq!(v.counts[0].1, contractible_edges);
+        }
+    }
+    if v.passed() {
+        // The answer in the input's ids, rebuilt by the core.
+        let faces_in_input_ids: Vec<[u32; 3]> = if compacted {
+            let pos = answer.positions.as_ref().expect("positions");
+            answer
+                .faces
+                .iter()
+                .map(|f| f.map(|x| pos[x as usize][0] as u32))
+                .collect()
+        } else {
+            faces
+        };
+        let rebuilt =
+            Surfaces::from_mesh(&contractible::TriMesh::combinatorial(n, faces_in_input_ids))
+                .unwrap_or_else(|e| panic!("a passing answer is no closed surface: {e}"));
+        assert_eq!(rebuilt.components.len(), 1, "one surface in, one out");
+        let r = &rebuilt.components[0].tri;
+        assert!(r.is_irreducible_naive(), "a passing answer is reducible");
+        assert_eq!(r.euler_characteristic(), tri.euler_characteristic());
+        assert_eq!(r.is_orientable(), tri.is_orientable());
     }
 }

@@ -18,8 +18,8 @@ use std::path::PathBuf;
 use contractible::io::Format;
 use contractible::rng::Rng;
 use harness::{
-    ContractInput, DecimateInput, Edit, ErrorCap, Geometry, JournalInput, JournalStep, Op, Part,
-    Positions, SimplifyInput, Surface, SurfaceInput, TaskInput, VertexCount,
+    CheckInput, ContractInput, DecimateInput, Edit, ErrorCap, Geometry, JournalInput, JournalStep,
+    Op, Part, Positions, SimplifyInput, Surface, SurfaceInput, TaskInput, VertexCount,
 };
 
 /// The files of `fuzz/<dir>/<target>/`, sorted. The seed corpora (`corpus`) are part of
@@ -90,6 +90,8 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
     assert!(n >= 8, "tasks: {n} inputs decoded");
     let n = replay_decoded("decimate", harness::check_decimate_input);
     assert!(n >= 8, "decimate: {n} inputs decoded");
+    let n = replay_decoded("check", harness::check_check);
+    assert!(n >= 8, "check: {n} inputs decoded");
 }
 
 #[test]
@@ -705,4 +707,60 @@ fn decimate_collapses_only_what_its_specification_allows_on_extreme_scales() {
         skip_verify: false,
         passes: false,
     });
+}
+
+/// The `check` target's checks on fixed answers: every surface kind grown by 60 random
+/// splits, contracted by 0, 40 or all possible picks (then irreducible), written in the
+/// input's ids or compacted, unedited and with each kind of edit.
+#[test]
+fn check_judges_contracted_and_corrupted_answers_as_the_core_does() {
+    let mut rng = Rng::new(0xc4ec);
+    let edits = [
+        vec![],
+        vec![Edit::Remove { face: 3 }],
+        vec![Edit::Duplicate { face: 1, turn: 129 }],
+        vec![Edit::Reverse { face: 2 }],
+        vec![Edit::Merge { keep: 1, gone: 5 }],
+        vec![Edit::Swap { a: 0, b: 4 }],
+        vec![Edit::Add {
+            corners: [0, 1, 900],
+        }],
+    ];
+    for (s, surface) in [
+        Surface::Orientable(0),
+        Surface::Orientable(1),
+        Surface::Orientable(3),
+        Surface::NonOrientable(0),
+        Surface::NonOrientable(3),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let ops: Vec<Op> = (0..60)
+            .map(|_| Op::Split {
+                vertex: rng.below(1 << 16) as u16,
+                i: rng.below(256) as u8,
+                j: rng.below(256) as u8,
+            })
+            .collect();
+        for (p, picks) in [0usize, 40].into_iter().enumerate() {
+            for finish in [false, true] {
+                for (e, edit) in edits.iter().enumerate() {
+                    harness::check_check(&CheckInput {
+                        base: SurfaceInput {
+                            surface,
+                            ops: ops.clone(),
+                            seed: 0,
+                        },
+                        picks: (0..picks)
+                            .map(|_| (rng.below(1 << 16) as u16, rng.below(256) as u8))
+                            .collect(),
+                        finish,
+                        edits: edit.clone(),
+                        compact: (s + p + e) % 2 == 0,
+                    });
+                }
+            }
+        }
+    }
 }
