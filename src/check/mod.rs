@@ -214,7 +214,8 @@ fn match_vertices(
         if let (Some(a), Some(b)) = (&input.positions, &output.positions) {
             for &v in &referenced(output) {
                 let (p, q) = (a[v as usize], b[v as usize]);
-                if p.map(f64::to_bits) != q.map(f64::to_bits) {
+                // Bit for bit, but −0 and +0 are one position.
+                if p.map(|x| (x + 0.0).to_bits()) != q.map(|x| (x + 0.0).to_bits()) {
                     verdict.fail(
                         Failure::new(
                             FailureKind::MovedVertex,

@@ -274,6 +274,20 @@ fn vertices_match_by_id_or_by_exact_position() {
     let v = reduce(&ico, &moved).expect("closed");
     assert_eq!(kinds(&v), [FailureKind::UnknownVertex]);
     assert_eq!(v.failures[0].vertex, Some(1));
+    // −0 for +0 is no move, by id or by position (every icosahedron vertex has a zero
+    // coordinate).
+    for mesh in [r.clone(), compact.clone()] {
+        let mut signed = mesh.clone();
+        let mut flipped = 0;
+        for p in signed.positions.as_mut().expect("positions") {
+            for x in p.iter_mut().filter(|x| **x == 0.0) {
+                *x = -0.0;
+                flipped += 1;
+            }
+        }
+        assert!(flipped >= 4);
+        assert!(reduce(&ico, &signed).expect("closed").passed());
+    }
     // The input's vertex list with one position changed: moved.
     let mut same = r.clone();
     let used = same.faces[0][0] as usize;
