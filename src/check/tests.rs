@@ -377,3 +377,104 @@ fn the_surface_analysis_agrees_with_the_core() {
     let a = analyse(12, &annulus, "x").unwrap_or_else(|_| panic!("annulus"));
     assert_eq!((a.parts[0].euler(), a.parts[0].boundary_loops), (0, 2));
 }
+
+#[test]
+fn failure_kind_names_are_distinct_snake_case() {
+    let names: Vec<&str> = FailureKind::ALL.iter().map(|k| k.name()).collect();
+    for (k, n) in FailureKind::ALL.iter().zip(&names) {
+        // The Debug form in snake case.
+        let mut snake = String::new();
+        for (i, ch) in format!("{k:?}").chars().enumerate() {
+            if ch.is_ascii_uppercase() && i > 0 {
+                snake.push('_');
+            }
+            snake.push(ch.to_ascii_lowercase());
+        }
+        assert_eq!(*n, snake);
+    }
+    let mut sorted = names.clone();
+    sorted.sort_unstable();
+    sorted.dedup();
+    assert_eq!(sorted.len(), names.len());
+}
+
+/// A tetrahedron inscribed in a cube, on four of its corners, as two components; the
+/// tetrahedron's vertices first (ids 0..4) or the cube's.
+fn tetrahedron_in_a_cube(tetrahedron_first: bool) -> TriMesh {
+    let corners: Vec<[f64; 3]> = (0..8)
+        .map(|i| [f64::from(i & 1), f64::from((i >> 1) & 1), f64::from(i >> 2)])
+        .collect();
+    let cube: Vec<[u32; 3]> = vec![
+        [0, 2, 3],
+        [0, 3, 1],
+        [4, 5, 7],
+        [4, 7, 6],
+        [0, 1, 5],
+        [0, 5, 4],
+        [2, 6, 7],
+        [2, 7, 3],
+        [0, 4, 6],
+        [0, 6, 2],
+        [1, 3, 7],
+        [1, 7, 5],
+    ];
+    // Corners 0, 3, 5, 6: no two on an edge of the cube.
+    let tet_at = [0usize, 3, 5, 6];
+    let tet: Vec<[u32; 3]> = vec![[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]];
+    let tet_pos: Vec<[f64; 3]> = tet_at.iter().map(|&c| corners[c]).collect();
+    let (first, second, first_faces, second_faces) = if tetrahedron_first {
+        (tet_pos, corners, tet, cube)
+    } else {
+        (corners, tet_pos, cube, tet)
+    };
+    let shift = first.len() as u32;
+    let mut positions = first;
+    positions.extend(second);
+    let mut faces = first_faces;
+    faces.extend(second_faces.iter().map(|f| f.map(|v| v + shift)));
+    TriMesh::with_positions(positions, faces)
+}
+
+#[test]
+fn coincident_positions_go_to_the_component_most_vertices_agree_on() {
+    for tetrahedron_first in [false, true] {
+        let input = tetrahedron_in_a_cube(tetrahedron_first);
+        let n = input.vertex_count;
+        for reversed in [false, true] {
+            // The input as its own answer, its vertex list reversed (so matched by
+            // position) and its components in either order.
+            let pos = input.positions.clone().expect("positions");
+            let mut positions: Vec<[f64; 3]> = pos.iter().rev().copied().collect();
+            positions.push([7.0, 7.0, 7.0]);
+            let mut faces: Vec<[u32; 3]> = input
+                .faces
+                .iter()
+                .map(|f| f.map(|v| (n - 1) as u32 - v))
+                .collect();
+            if reversed {
+                faces.reverse();
+            }
+            let answer = TriMesh::with_positions(positions, faces);
+            let v = reduce(&input, &answer).expect("closed");
+            // The cube is reducible; nothing else is wrong.
+            assert_eq!(
+                kinds(&v),
+                [FailureKind::ContractibleEdge],
+                "tetrahedron first {tetrahedron_first}, reversed {reversed}: {v:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn an_unused_input_vertex_at_a_used_ones_position_is_not_matched() {
+    let oct = gen::octahedron();
+    let mut positions = oct.positions.clone().expect("positions");
+    // An unused vertex 0 at the position of (used) vertex 1 + 1 = the old vertex 0.
+    positions.insert(0, positions[0]);
+    let faces: Vec<[u32; 3]> = oct.faces.iter().map(|f| f.map(|v| v + 1)).collect();
+    let input = TriMesh::with_positions(positions, faces);
+    let (answer, _) = input.compacted().expect("consistent");
+    let v = reduce(&input, &answer).expect("closed");
+    assert_eq!(kinds(&v), [FailureKind::ContractibleEdge], "{v:?}");
+}
