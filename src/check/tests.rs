@@ -478,3 +478,44 @@ fn an_unused_input_vertex_at_a_used_ones_position_is_not_matched() {
     let v = reduce(&input, &answer).expect("closed");
     assert_eq!(kinds(&v), [FailureKind::ContractibleEdge], "{v:?}");
 }
+
+#[test]
+fn the_component_most_vertices_agree_on_wins_even_unclaimed() {
+    // A tetrahedron on four of an octahedron's vertices (component 0) and the
+    // octahedron (component 1), answered by both, the octahedron first and its vertex
+    // list reversed: the octahedron's four shared vertices must go to component 1,
+    // which six of its vertices agree on, though component 0 is free and first.
+    let oct = gen::octahedron();
+    let op = oct.positions.clone().expect("positions");
+    let tet: Vec<[u32; 3]> = vec![[0, 1, 2], [0, 3, 1], [1, 3, 2], [2, 3, 0]];
+    let mut positions: Vec<[f64; 3]> = op[..4].to_vec();
+    positions.extend(op.iter().copied());
+    let mut faces = tet;
+    faces.extend(oct.faces.iter().map(|f| f.map(|v| v + 4)));
+    let input = TriMesh::with_positions(positions.clone(), faces.clone());
+    let n = positions.len() as u32;
+    let mut answer_pos: Vec<[f64; 3]> = positions.iter().rev().copied().collect();
+    answer_pos.push([7.0, 7.0, 7.0]);
+    let mut answer_faces: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| n - 1 - v)).collect();
+    answer_faces.rotate_left(4);
+    let v = reduce(&input, &TriMesh::with_positions(answer_pos, answer_faces)).expect("closed");
+    assert_eq!(kinds(&v), [FailureKind::ContractibleEdge], "{v:?}");
+}
+
+#[test]
+fn an_output_vertex_at_an_unused_input_vertex_is_named_so() {
+    let oct = gen::octahedron();
+    let mut positions = oct.positions.clone().expect("positions");
+    positions.push([5.0, 5.0, 5.0]);
+    let input = TriMesh::with_positions(positions, oct.faces.clone());
+    let mut moved = oct.clone();
+    moved.positions.as_mut().expect("positions")[2] = [5.0, 5.0, 5.0];
+    let v = reduce(&input, &moved).expect("closed");
+    let f = v
+        .failures
+        .iter()
+        .find(|f| f.kind == FailureKind::UnknownVertex)
+        .expect("an unknown vertex");
+    assert_eq!(f.vertex, Some(2));
+    assert!(f.message.contains("no input face uses"), "{}", f.message);
+}
