@@ -482,8 +482,8 @@ fn an_unused_input_vertex_at_a_used_ones_position_is_not_matched() {
 #[test]
 fn the_component_most_vertices_agree_on_wins_even_unclaimed() {
     // A tetrahedron on four of an octahedron's vertices (component 0) and the
-    // octahedron (component 1), answered by both, the octahedron first and its vertex
-    // list reversed: the octahedron's four shared vertices must go to component 1,
+    // octahedron (component 1), answered by both, the octahedron first: the
+    // octahedron's four shared vertices must go to component 1,
     // which six of its vertices agree on, though component 0 is free and first.
     let oct = gen::octahedron();
     let op = oct.positions.clone().expect("positions");
@@ -493,10 +493,11 @@ fn the_component_most_vertices_agree_on_wins_even_unclaimed() {
     let mut faces = tet;
     faces.extend(oct.faces.iter().map(|f| f.map(|v| v + 4)));
     let input = TriMesh::with_positions(positions.clone(), faces.clone());
-    let n = positions.len() as u32;
-    let mut answer_pos: Vec<[f64; 3]> = positions.iter().rev().copied().collect();
+    // One vertex more than the input (matched by position), the octahedron's faces
+    // first; its shared vertices have the smaller ids, so they are tallied first.
+    let mut answer_pos = positions.clone();
     answer_pos.push([7.0, 7.0, 7.0]);
-    let mut answer_faces: Vec<[u32; 3]> = faces.iter().map(|f| f.map(|v| n - 1 - v)).collect();
+    let mut answer_faces = faces.clone();
     answer_faces.rotate_left(4);
     let v = reduce(&input, &TriMesh::with_positions(answer_pos, answer_faces)).expect("closed");
     assert_eq!(kinds(&v), [FailureKind::ContractibleEdge], "{v:?}");
