@@ -152,6 +152,70 @@ mod tests {
         assert_eq!(all, sorted);
     }
 
+    /// Every node's key is at most its children's: the heap order on which the
+    /// O(log₄ n) bound of the operations rests.
+    fn assert_heap_order(q: &Queue) {
+        for (i, &k) in q.heap.iter().enumerate().skip(1) {
+            let parent = (i - 1) / 4;
+            assert!(
+                q.heap[parent] <= k,
+                "node {i} is below a larger key at {parent}"
+            );
+        }
+    }
+
+    /// The heap order holds after the build, after every push and after every pop, for
+    /// heaps of every size up to a few levels (keys drawn with repeats, so that equal
+    /// children occur).
+    #[test]
+    fn the_heap_order_holds_after_every_operation() {
+        let mut x = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        for n in (0..=90).chain([341, 1000]) {
+            let keys: Vec<u128> = (0..n)
+                .map(|_| {
+                    let r = next();
+                    key((r % 40) as f64, (r >> 20) as u32 % 3, (r >> 40) as u32 % 3)
+                })
+                .collect();
+            let mut q = Queue::from_vec(keys.clone());
+            assert_heap_order(&q);
+            let mut popped = Vec::new();
+            while let Some(k) = q.pop() {
+                assert_heap_order(&q);
+                popped.push(k);
+            }
+            let mut sorted = keys.clone();
+            sorted.sort_unstable();
+            assert_eq!(popped, sorted);
+            for (i, &k) in keys.iter().enumerate() {
+                q.push(k);
+                assert_heap_order(&q);
+                if i % 4 == 3 {
+                    q.pop();
+                    assert_heap_order(&q);
+                }
+            }
+        }
+    }
+
+    /// Heaps built from no key, one key and two keys give them back in order (the
+    /// bottom-up build has no parent to sift below two keys).
+    #[test]
+    fn the_smallest_heaps_build_and_pop() {
+        let (a, b) = (key(1.0, 2, 3), key(0.5, 7, 8));
+        assert_eq!(Queue::from_vec(Vec::new()).pop(), None);
+        let mut q = Queue::from_vec(vec![a]);
+        assert_eq!((q.pop(), q.pop()), (Some(a), None));
+        let mut q = Queue::from_vec(vec![a, b]);
+        assert_eq!((q.pop(), q.pop(), q.pop()), (Some(b), Some(a), None));
+    }
+
     #[test]
     fn keys_order_by_cost_then_endpoints_and_unpack() {
         assert!(key(0.5, 9, 9) < key(1.0, 0, 0));

@@ -170,3 +170,40 @@ fn a_target_already_met_collapses_nothing() {
         }
     }
 }
+
+/// The names are the documented ones and read back as their choices; every choice has
+/// its own non-empty summary (the command line's help lists them).
+#[test]
+fn choices_have_their_documented_names_and_distinct_summaries() {
+    let names: Vec<_> = Placement::ALL.map(|p| p.name()).into();
+    assert_eq!(names, ["optimal", "midpoint", "endpoint"]);
+    let names: Vec<_> = Schedule::ALL.map(|s| s.name()).into();
+    assert_eq!(names, ["exact", "passes"]);
+    for p in Placement::ALL {
+        assert_eq!(p.to_string().parse::<Placement>(), Ok(p));
+    }
+    for s in Schedule::ALL {
+        assert_eq!(s.to_string().parse::<Schedule>(), Ok(s));
+    }
+    let summaries: [Vec<&str>; 2] = [
+        Placement::ALL.map(|p| p.summary()).into(),
+        Schedule::ALL.map(|s| s.summary()).into(),
+    ];
+    for mut lines in summaries {
+        assert!(lines.iter().all(|l| !l.trim().is_empty()), "{lines:?}");
+        let n = lines.len();
+        lines.sort_unstable();
+        lines.dedup();
+        assert_eq!(lines.len(), n, "a repeated summary");
+    }
+}
+
+/// A stop prints as its name, the one JSON and Python use.
+#[test]
+fn stops_print_as_their_names() {
+    let stops = [Stopped::Target, Stopped::Error, Stopped::Blocked];
+    assert_eq!(stops.map(|s| s.name()), ["target", "error", "blocked"]);
+    for s in stops {
+        assert_eq!(s.to_string(), s.name());
+    }
+}
