@@ -308,8 +308,9 @@ pub(super) fn at_end(d: &Decimator<'_>, stopped: Stopped) {
 mod tests {
     use super::*;
     use crate::core::ConedSurfaces;
-    use crate::decimate::{Options, Placement};
+    use crate::decimate::{Options, Placement, Schedule};
     use crate::gen;
+    use crate::simplify::Point;
     use crate::spec::testing::assert_fails;
 
     fn options(target_faces: usize) -> Options {
@@ -339,6 +340,56 @@ mod tests {
         Decimator::new(whole, positions, opts)
     }
 
+    /// The `m × n` grid of squares, each split along a diagonal, with vertex `(i, j)` at
+    /// `at(i, j)`; with `wrap`, opposite sides are identified (a torus).
+    fn grid(m: u32, n: u32, wrap: bool, at: impl Fn(u32, u32) -> Point) -> crate::TriMesh {
+        let (vm, vn) = if wrap { (m, n) } else { (m + 1, n + 1) };
+        let id = |i: u32, j: u32| (i % vm) * vn + j % vn;
+        let mut faces = Vec::new();
+        for i in 0..m {
+            for j in 0..n {
+                let (a, b, c, e) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+                faces.push([a, b, c]);
+                faces.push([a, c, e]);
+            }
+        }
+        let positions = (0..vm)
+            .flat_map(|i| (0..vn).map(move |j| (i, j)))
+            .map(|(i, j)| at(i, j))
+            .collect();
+        crate::TriMesh::with_positions(positions, faces)
+    }
+
+    /// A flat square grid on integer points: every edge whose collapse keeps the vertex
+    /// in the plane costs exactly 0, so many allowed edges tie on cost and only their
+    /// endpoints order them.
+    fn flat() -> crate::TriMesh {
+        grid(5, 5, false, |i, j| [f64::from(i), f64::from(j), 0.0])
+    }
+
+    /// Among the allowed edges of cost 0, two with the same smallest endpoint `p`: the
+    /// edge to its smallest allowed neighbour, and the edge to the next one, with its
+    /// candidate. No allowed edge of cost 0 has an endpoint below `p`. (The keys are
+    /// made here from the edge list, which gives each edge as `(u, v)` with `u < v`.)
+    fn tied(d: &Decimator<'_>) -> ((f64, u32, u32), (f64, u32, u32), Candidate) {
+        let mut zero: Vec<_> = real_edges(d)
+            .into_iter()
+            .filter(|&(p, q)| allowed(d, p, q).is_some_and(|k| k.0 == 0.0))
+            .map(|(p, q)| (0.0, p.0, q.0))
+            .collect();
+        zero.sort_by_key(|k| (k.1, k.2));
+        let (first, second) = (zero[0], zero[1]);
+        assert_eq!(
+            first.1, second.1,
+            "two allowed edges of cost 0 at {}",
+            first.1
+        );
+        let c = d
+            .candidate(VertexId(second.1), VertexId(second.2))
+            .expect("allowed");
+        (first, second, c)
+    }
+
     /// The cheapest and the dearest allowed edge with their candidates.
     fn extremes(d: &Decimator<'_>) -> [((f64, u32, u32), Candidate); 2] {
         let mut all: Vec<_> = real_edges(d)
@@ -356,6 +407,21 @@ mod tests {
             "costs differ on a curved sphere"
         );
         [all[0], all[last]]
+    }
+
+    /// The pass orders by the placement's cost: the cheapest and the dearest allowed
+    /// edge by that cost, among those the guard takes at the placement's position.
+    fn pass_extremes(d: &Decimator<'_>) -> [((f64, u32, u32), Candidate); 2] {
+        let mut all: Vec<_> = real_edges(d)
+            .into_iter()
+            .filter_map(|(p, q)| {
+                let k = allowed(d, p, q)?;
+                let c = d.candidate(p, q).ok()?;
+                (k.0 == c.cost).then_some((k, c))
+            })
+            .collect();
+        all.sort_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
+        [all[0], all[all.len() - 1]]
     }
 
     #[test]
@@ -380,18 +446,7 @@ mod tests {
         };
         let mut d = decimator(&mesh, &opts);
         d.passes = 1;
-        // The pass orders by the placement's cost: the cheapest and the dearest allowed
-        // edge by that cost, among those the guard takes at the placement's position.
-        let mut all: Vec<_> = real_edges(&d)
-            .into_iter()
-            .filter_map(|(p, q)| {
-                let k = allowed(&d, p, q)?;
-                let c = d.candidate(p, q).ok()?;
-                (k.0 == c.cost).then_some((k, c))
-            })
-            .collect();
-        all.sort_by(|a, b| a.0 .0.total_cmp(&b.0 .0));
-        let ((cheap, c), (dear, e)) = (all[0], all[all.len() - 1]);
+        let [(cheap, c), (dear, e)] = pass_extremes(&d);
         assert!(cheap.0 < dear.0);
         let k = |x: (f64, u32, u32)| super::super::queue::key(x.0, x.1, x.2);
         before_pass_collapse(&d, cheap, None, f64::INFINITY, &c);
@@ -453,5 +508,149 @@ mod tests {
         d.real_faces += 2;
         assert_fails("M3", || at_end(&d, Stopped::Target));
         assert_fails("M3", || nothing_missed(&d, 1));
+    }
+
+    /// P1 orders the edges away from the pass's collapses by their keys, so at equal cost
+    /// by their endpoints, smaller first.
+    #[test]
+    fn p1_breaks_cost_ties_by_the_endpoints() {
+        let mesh = flat();
+        let opts = Options {
+            schedule: Schedule::Passes,
+            ..options(0)
+        };
+        let mut d = decimator(&mesh, &opts);
+        d.passes = 1;
+        let (first, second, c) = tied(&d);
+        let cf = d
+            .candidate(VertexId(first.1), VertexId(first.2))
+            .expect("allowed");
+        before_pass_collapse(&d, first, None, f64::INFINITY, &cf);
+        assert_fails("cheaper than the chosen", || {
+            before_pass_collapse(&d, second, None, f64::INFINITY, &c)
+        });
+    }
+
+    /// P1's limit includes its bound: with the limit at the smallest cost of an allowed
+    /// edge, the edges at that cost are within it, and a dearer choice fails.
+    #[test]
+    fn p1_holds_the_edges_at_the_limit_itself() {
+        let mesh = sphere();
+        let opts = Options {
+            schedule: Schedule::Passes,
+            ..options(0)
+        };
+        let mut d = decimator(&mesh, &opts);
+        d.passes = 1;
+        let [_, (dear, e)] = pass_extremes(&d);
+        let limit = real_edges(&d)
+            .into_iter()
+            .filter_map(|(p, q)| allowed(&d, p, q))
+            .map(|k| k.0)
+            .fold(f64::INFINITY, f64::min);
+        assert!(limit < dear.0);
+        assert_fails("cheaper than the chosen", || {
+            before_pass_collapse(&d, dear, None, limit, &e)
+        });
+        // Just below the smallest cost no edge is held (costs are never negative).
+        let below = if limit > 0.0 {
+            f64::from_bits(limit.to_bits() - 1)
+        } else {
+            -1.0
+        };
+        before_pass_collapse(&d, dear, None, below, &e);
+    }
+
+    /// The checks over every edge run on a mesh of exactly [`FULL_CHECK_FACES`] faces
+    /// (a closed torus grid, every face real): M1 and P1 fail on the dearest allowed
+    /// edge there.
+    #[test]
+    fn the_full_checks_run_at_their_face_bound() {
+        let (m, n) = (FULL_CHECK_FACES as u32 / 60, 30);
+        let torus = grid(m, n, true, |i, j| {
+            let (u, v) = (
+                std::f64::consts::TAU * f64::from(i) / f64::from(m),
+                std::f64::consts::TAU * f64::from(j) / f64::from(n),
+            );
+            let r = 3.0 + v.cos();
+            [r * u.cos(), r * u.sin(), v.sin()]
+        });
+        assert_eq!(torus.faces.len(), FULL_CHECK_FACES);
+        let opts = options(0);
+        let d = decimator(&torus, &opts);
+        assert_eq!(d.tri.face_count(), FULL_CHECK_FACES);
+        let [(cheap, c), (dear, e)] = extremes(&d);
+        before_collapse(&d, cheap, &c);
+        assert_fails("cheaper than the chosen", || before_collapse(&d, dear, &e));
+        let opts = Options {
+            schedule: Schedule::Passes,
+            ..options(0)
+        };
+        let mut d = decimator(&torus, &opts);
+        d.passes = 1;
+        let [(cheap, c), (dear, e)] = pass_extremes(&d);
+        before_pass_collapse(&d, cheap, None, f64::INFINITY, &c);
+        assert_fails("cheaper than the chosen", || {
+            before_pass_collapse(&d, dear, None, f64::INFINITY, &e)
+        });
+    }
+
+    /// M2 compares the quadrics at three points: the vertex `p`, `p + x̂` and
+    /// `p − ŷ + ẑ`. A difference `u (u ± 1)` in one coordinate `u` measured from `p`
+    /// (zero at `u = 0` and at `u = ∓1`, 2 at `u = ±1`) is seen at exactly one of them,
+    /// and must fail the check: along x at the second point, along y and along z at the
+    /// third.
+    #[test]
+    fn m2_fails_on_a_difference_seen_at_one_of_its_points() {
+        let mesh = sphere();
+        let opts = options(mesh.faces.len() / 2);
+        let mut d = decimator(&mesh, &opts);
+        assert!(d.run(&mut crate::progress::ignore, &|| false));
+        let v = (0..d.first_virtual as usize)
+            .find(|&v| d.tri.is_vertex(VertexId(v as u32)))
+            .expect("a live vertex");
+        let p = d.pos[v];
+        let kept = d.quadric[v];
+        for (axis, sign) in [(0, 1.0), (1, -1.0), (2, 1.0)] {
+            let mut normal = [0.0; 3];
+            normal[axis] = 1.0;
+            let at = |t: f64| {
+                let mut x = p;
+                x[axis] += t;
+                x
+            };
+            // u (u + s) = ¼ (u + s)² + u² − ¼ (u − s)², each square a plane's quadric.
+            let mut bump = Quadric::plane(normal, at(-sign), 0.25);
+            bump.add(&Quadric::plane(normal, p, 1.0));
+            bump.add(&Quadric::plane(normal, at(sign), -0.25));
+            assert!(bump.error(p).abs() < 1e-12 && bump.error(at(-sign)).abs() < 1e-12);
+            assert!((bump.error(at(sign)) - 2.0).abs() < 1e-12);
+            d.quadric[v].add(&bump);
+            assert_fails("quadric gives", || at_end(&d, Stopped::Target));
+            d.quadric[v] = kept;
+            at_end(&d, Stopped::Target);
+        }
+    }
+
+    /// M2 holds a weight to a relative rounding error of 1e-9: off by 1e-12 of itself it
+    /// passes, off by 1e-8 of itself it fails. The vertex is a light one (weight below
+    /// 0.25), where a tolerance that grew with the weight plus a constant, or shrank as
+    /// the weight grew, would let the second through.
+    #[test]
+    fn m2_holds_weights_to_a_relative_tolerance() {
+        let mesh = sphere();
+        let opts = options(mesh.faces.len());
+        let mut d = decimator(&mesh, &opts);
+        at_end(&d, Stopped::Target);
+        let v = (0..d.first_virtual as usize)
+            .filter(|&v| d.tri.is_vertex(VertexId(v as u32)))
+            .min_by(|&a, &b| d.weight[a].total_cmp(&d.weight[b]))
+            .expect("a live vertex");
+        let w = d.weight[v];
+        assert!(0.0 < w && w < 0.25, "a light vertex: {w}");
+        d.weight[v] = w * (1.0 + 1e-12);
+        at_end(&d, Stopped::Target);
+        d.weight[v] = w * (1.0 + 1e-8);
+        assert_fails("weight", || at_end(&d, Stopped::Target));
     }
 }
