@@ -19,7 +19,9 @@
 //! ends' degrees for the link condition.
 //!
 //! An input that is not a valid input of the task (for `reduce`: not a closed surface)
-//! is an error, not a failed verdict: the task must refuse it.
+//! is an error, not a failed verdict: the task must refuse it. (Only there does the
+//! checker call the core: its build locates the input's defect as every task reports
+//! it.)
 
 mod surface;
 
