@@ -88,12 +88,8 @@ pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
             for f in &r.failures {
                 outln!("  {}: {}", f.kind, f.message);
             }
-            for (&(kind, n), listed) in verdict.counts.iter().zip(
-                verdict
-                    .counts
-                    .iter()
-                    .map(|(k, _)| verdict.failures.iter().filter(|f| f.kind == *k).count()),
-            ) {
+            for &(kind, n) in &verdict.counts {
+                let listed = verdict.failures.iter().filter(|f| f.kind == kind).count();
                 if n > listed {
                     outln!("  ... and {} more {}", n - listed, kind.name());
                 }
