@@ -44,8 +44,11 @@
 //! for every output vertex; [`Stats::max_error`] is the largest reached.
 //!
 //! **Determinism.** The output depends only on the input (its face and vertex order)
-//! and the options: no randomness, no hashing, no threads; the queue's ties are broken
-//! by vertex ids. Output vertices are the surviving input vertices in increasing input
+//! and the options: no randomness, no hashing; the queue's ties are broken by vertex
+//! ids. With the `parallel` feature, costing every edge at the start (and, in the pass
+//! schedule, between passes) and sorting keys run on rayon's current pool (module
+//! `pool`): the same costs and the same sorted lists on any number of threads, so the
+//! same output. Output vertices are the surviving input vertices in increasing input
 //! id, output faces the surviving input faces in increasing input id, each with the
 //! vertex order (and so the orientation) of its input face.
 //!
@@ -57,6 +60,7 @@
 //! `docs/benchmarks.md`).
 
 mod passes;
+mod pool;
 mod queue;
 mod run;
 mod spec;

@@ -39,10 +39,11 @@
 //! O(log(F / target)) passes in practice (5–25 on the corpus at 10 % and 1 %). Memory:
 //! 16 bytes per listed edge, 8 per vertex for the marks.
 
+use super::pool;
 use super::queue::unpack;
-use super::run::{edge_key, Decimator, Reporter};
+use super::run::{edge_from, edge_key, Decimator, Reporter};
 use super::spec;
-use crate::core::VertexId;
+use crate::core::{Corner, VertexId};
 use crate::progress::Progress;
 
 /// A pass aims at this fraction (1 / this) of the collapses still needed: its limit is
@@ -62,15 +63,19 @@ impl Decimator<'_> {
         // Sized once: grown by doubling, the list would reach twice its length at the
         // call's peak.
         let mut keys: Vec<u128> = Vec::with_capacity(self.tri.edge_count());
-        for (p, q, _) in self.tri.edges() {
-            if self.is_virtual(p) || self.is_virtual(q) {
-                continue;
+        let this = &*self;
+        pool::extend_keys(this.tri.corner_vertex.len(), &mut keys, |c, out| {
+            let Some((p, q)) = edge_from(&this.tri, Corner(c as u32)) else {
+                return;
+            };
+            if this.is_virtual(p) || this.is_virtual(q) {
+                return;
             }
-            if let Ok(c) = self.candidate(p, q) {
-                keys.push(edge_key(p, q, c.cost));
+            if let Ok(c) = this.candidate(p, q) {
+                out.push(edge_key(p, q, c.cost));
             }
-        }
-        keys.sort_unstable();
+        });
+        pool::sort(&mut keys);
         keys
     }
 
@@ -193,22 +198,27 @@ impl Decimator<'_> {
         // In id order, which is mostly the memory order of their corners (the pass met
         // them in cost order, all over the mesh).
         lists.kept.sort_unstable();
-        let fresh = &mut lists.fresh;
-        fresh.clear();
         for &v in &lists.kept {
             self.near_mark[v.index()] = pass;
-            for st in self.tri.star(v) {
-                let n = st.neighbour;
+            for n in self.tri.link(v) {
                 self.near_mark[n.index()] = pass;
-                // An edge between two kept vertices is costed from its smaller end.
-                if self.is_virtual(n) || (self.pass_mark[n.index()] == pass && n < v) {
-                    continue;
-                }
-                if let Ok(c) = self.candidate(v, n) {
-                    fresh.push(edge_key(v, n, c.cost));
-                }
             }
         }
+        let fresh = &mut lists.fresh;
+        fresh.clear();
+        let (this, kept) = (&*self, &lists.kept);
+        pool::extend_keys(kept.len(), fresh, |i, out| {
+            let v = kept[i];
+            for n in this.tri.link(v) {
+                // An edge between two kept vertices is costed from its smaller end.
+                if this.is_virtual(n) || (this.pass_mark[n.index()] == pass && n < v) {
+                    continue;
+                }
+                if let Ok(c) = this.candidate(v, n) {
+                    out.push(edge_key(v, n, c.cost));
+                }
+            }
+        });
         let (mark, near) = (&self.pass_mark, &self.near_mark);
         let stale = |k: u128| {
             let (_, p, q) = unpack(k);
@@ -225,7 +235,7 @@ impl Decimator<'_> {
             }
             true
         });
-        fresh.sort_unstable();
+        pool::sort(fresh);
         merge_sorted(keys, fresh);
     }
 }

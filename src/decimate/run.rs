@@ -3,6 +3,7 @@
 
 use std::collections::HashMap;
 
+use super::pool;
 use super::queue::{key, unpack, Queue};
 use super::{
     spec, ComponentStats, Options, Output, Placement, Refusal, Refusals, Schedule, Stats, Stopped,
@@ -104,7 +105,7 @@ pub(crate) struct Decimator<'o> {
 /// The edge `c` is opposite to, as `(smaller id, larger id)`, if `c` is a live face's
 /// corner and the smaller of the edge's two opposite corners: each edge once, in the
 /// order of `Triangulation::edges`.
-fn edge_from(tri: &Triangulation, c: Corner) -> Option<(VertexId, VertexId)> {
+pub(super) fn edge_from(tri: &Triangulation, c: Corner) -> Option<(VertexId, VertexId)> {
     if !tri.is_face(c.face()) || c >= tri.opposite(c) {
         return None;
     }
@@ -208,10 +209,21 @@ impl<'o> Decimator<'o> {
             d.near_mark = vec![0; nv];
             return d;
         }
-        d.edge_cost = vec![f64::NAN; d.tri.corner_vertex.len()];
         // Walked corner by corner rather than collected from `edges()`: the list would
         // be the call's largest allocation at its peak (12 bytes an edge, and the growth
-        // of a vector of unknown length), 18–24 bytes an input triangle.
+        // of a vector of unknown length), 18–24 bytes an input triangle. Each edge is
+        // costed at its smaller corner (on the pool), then copied to the other.
+        let mut edge_cost = vec![f64::NAN; d.tri.corner_vertex.len()];
+        let this = &d;
+        pool::fill(&mut edge_cost, |c| {
+            match edge_from(&this.tri, Corner(c as u32)) {
+                Some((p, q)) if !this.is_virtual(q) => {
+                    this.candidate(p, q).map_or(f64::NAN, |c| c.cost)
+                }
+                _ => f64::NAN,
+            }
+        });
+        d.edge_cost = edge_cost;
         for c in (0..d.tri.corner_vertex.len() as u32).map(Corner) {
             let Some((p, q)) = edge_from(&d.tri, c) else {
                 continue;
@@ -219,7 +231,8 @@ impl<'o> Decimator<'o> {
             if d.is_virtual(q) {
                 continue;
             }
-            d.cache_cost(p, q, c);
+            let o = d.tri.opposite(c);
+            d.edge_cost[o.index()] = d.edge_cost[c.index()];
             if let Some(k) = d.cached_key(p, q, c) {
                 for v in [p, q] {
                     d.best[v.index()] = d.best[v.index()].min(k);
