@@ -13,7 +13,7 @@
 //! add at most one block's keys beyond the list being filled.
 
 /// Steps with fewer items run in the calling thread (a task costs microseconds to start).
-pub(super) const MIN_ITEMS: usize = 1 << 14;
+pub(super) const MIN_ITEMS: usize = 1 << 11;
 
 /// Items per block when keys are produced on the pool.
 const BLOCK: usize = 1 << 16;

@@ -36,7 +36,8 @@ use contractible::gen::{
 };
 use contractible::rng::Rng;
 use contractible::{
-    decimate, DecimateOptions, DecimateResult, Error, MaxError, Surfaces, TriMesh, Triangulation,
+    decimate, verify_decimation, DecimateOptions, DecimateResult, Error, MaxError, Surfaces,
+    TriMesh, Triangulation,
 };
 use petgraph::unionfind::UnionFind;
 use proptest::prelude::*;
@@ -1773,6 +1774,168 @@ fn locked_vertices_survive_at_their_input_positions() {
     assert_eq!(r.dropped_vertices, 1);
 }
 
+// ---- The library's own check of a result, shown to reject each kind of wrong one.
+
+/// Swaps output vertices `a` and `b` everywhere: the same result in another vertex order.
+fn swap_output_vertices(r: &mut DecimateResult, a: u32, b: u32) {
+    let sw = |v: u32| {
+        if v == a {
+            b
+        } else if v == b {
+            a
+        } else {
+            v
+        }
+    };
+    r.vertex_map.swap(a as usize, b as usize);
+    for o in r.collapse_map.iter_mut().filter(|o| **o != NO_VERTEX) {
+        *o = sw(*o);
+    }
+    for f in &mut r.mesh.faces {
+        *f = f.map(sw);
+    }
+    let pos = r.mesh.positions.as_mut().expect("positions");
+    pos.swap(a as usize, b as usize);
+}
+
+/// `verify_decimation` refuses `r` with a message containing `what`.
+fn refused(input: &TriMesh, o: &DecimateOptions, r: &DecimateResult, what: &str) {
+    match verify_decimation(input, o, r) {
+        Err(e) => assert!(e.contains(what), "wanted {what:?}, got {e:?}"),
+        Ok(()) => panic!("accepted a result that should fail with {what:?}"),
+    }
+}
+
+/// Each corruption keeps every other property the check tests, so that only the one
+/// named can refuse it.
+#[test]
+fn verify_decimation_rejects_each_kind_of_wrong_result() {
+    let torus = iso(Implicit::GenusG { g: 1 }, Tessellation::BodyCentred, 6);
+    let o = DecimateOptions::keep(0.2);
+    let (r, _) = run(&torus, &o, "torus");
+    assert_eq!(verify_decimation(&torus, &o, &r), Ok(()));
+
+    let mut bad = r.clone();
+    swap_output_vertices(&mut bad, 0, 1);
+    refused(&torus, &o, &bad, "vertex_map is not increasing");
+
+    let mut bad = r.clone();
+    bad.mesh.faces.swap(0, 1);
+    bad.face_origin.swap(0, 1);
+    refused(&torus, &o, &bad, "face_origin is not increasing");
+
+    // A merged vertex that no output face's origin has as a corner, sent past the
+    // output vertices.
+    let corners: BTreeSet<u32> = r
+        .face_origin
+        .iter()
+        .flat_map(|&f| torus.faces[f as usize])
+        .collect();
+    let lone = (0..torus.vertex_count as u32)
+        .find(|v| {
+            !corners.contains(v)
+                && !r.vertex_map.contains(v)
+                && r.collapse_map[*v as usize] != NO_VERTEX
+        })
+        .expect("a merged vertex whose faces all went");
+    let mut bad = r.clone();
+    bad.collapse_map[lone as usize] = r.mesh.vertex_count as u32;
+    refused(&torus, &o, &bad, "is no output vertex");
+
+    // An input vertex no face uses, given an output vertex.
+    let mut spare = torus.clone();
+    spare.vertex_count += 1;
+    spare.positions.as_mut().expect("positions").push([9.0; 3]);
+    let (rs, _) = run(&spare, &o, "an unused vertex");
+    assert_eq!(*rs.collapse_map.last().expect("a vertex"), NO_VERTEX);
+    let mut bad = rs.clone();
+    *bad.collapse_map.last_mut().expect("a vertex") = 0;
+    refused(&spare, &o, &bad, "for a vertex no input face uses");
+
+    // A locked vertex moved; a lock on no input vertex is ignored.
+    let kept = r.vertex_map[3];
+    let lo = DecimateOptions {
+        locked: vec![kept],
+        ..o.clone()
+    };
+    let (rl, _) = run(&torus, &lo, "a locked vertex");
+    let at = rl.collapse_map[kept as usize] as usize;
+    let mut bad = rl.clone();
+    bad.mesh.positions.as_mut().expect("positions")[at][0] += 0.5;
+    refused(&torus, &lo, &bad, "locked vertex");
+    let beyond = DecimateOptions {
+        locked: vec![torus.vertex_count as u32],
+        ..o.clone()
+    };
+    assert_eq!(verify_decimation(&torus, &beyond, &r), Ok(()));
+
+    // A boundary vertex moved under `lock_boundary`.
+    let holed = bounded_inputs().swap_remove(1).1;
+    let lb = DecimateOptions {
+        lock_boundary: true,
+        ..o.clone()
+    };
+    let (rb, _) = run(&holed, &lb, "locked boundary");
+    let on_boundary = edge_faces(&holed.faces)
+        .into_iter()
+        .find(|(_, fs)| fs.len() == 1)
+        .map(|((a, _), _)| a)
+        .expect("a boundary edge");
+    let mut bad = rb.clone();
+    let at = rb.collapse_map[on_boundary as usize] as usize;
+    bad.mesh.positions.as_mut().expect("positions")[at][1] += 0.5;
+    refused(&holed, &lb, &bad, "boundary vertex");
+    assert_eq!(verify_decimation(&holed, &o, &bad), Ok(()), "not locked");
+
+    // An output component made of faces of two input components: a tetrahedron (never
+    // collapsed) beside a sphere decimated to a tetrahedron; a removed sphere face whose
+    // corners neither survive nor are corners of a surviving face's origin is renamed
+    // onto a face of the first tetrahedron
+    // and takes its place. Every other property still holds, so only the provenance of
+    // the components can refuse it.
+    let sphere = iso(
+        Implicit::Sphere { radius: 1.0 },
+        Tessellation::SixTetrahedra,
+        4,
+    );
+    let two = union(&gen::tetrahedron(), &sphere, [5.0, 0.0, 0.0]);
+    let o8 = DecimateOptions {
+        faces: Some(8),
+        allow_foldover: true,
+        ..opts()
+    };
+    let (r2, _) = run(&two, &o8, "tetrahedron and sphere");
+    assert_eq!(r2.mesh.faces.len(), 8);
+    assert_eq!(
+        r2.face_origin[..4],
+        [0, 1, 2, 3],
+        "the tetrahedron first, whole"
+    );
+    let corners: BTreeSet<u32> = r2
+        .face_origin
+        .iter()
+        .flat_map(|&f| two.faces[f as usize])
+        .collect();
+    let stray = (4..two.faces.len())
+        .find(|&f| {
+            two.faces[f]
+                .iter()
+                .all(|v| !corners.contains(v) && !r2.vertex_map.contains(v))
+        })
+        .expect("a removed sphere face away from the survivors");
+    let mut bad = r2.clone();
+    let target = bad.mesh.faces[3];
+    for (v, to) in two.faces[stray].into_iter().zip(target) {
+        bad.collapse_map[v as usize] = to;
+    }
+    bad.mesh.faces.remove(3);
+    bad.face_origin.remove(3);
+    let at = bad.face_origin.partition_point(|&f| (f as usize) < stray);
+    bad.mesh.faces.insert(at, target);
+    bad.face_origin.insert(at, stray as u32);
+    refused(&two, &o8, &bad, "descends from input components 0 and 1");
+}
+
 // ---- The error cap.
 
 #[test]
@@ -1938,6 +2101,32 @@ fn runs_are_deterministic_on_any_thread_pool() {
                     &format!("{label} concurrently on {threads} threads"),
                 );
             }
+        }
+    }
+    // Large enough that the first passes cost their kept vertices' edges on the pool
+    // (more than 2,048 kept vertices a pass), and the exact schedule's start its edges.
+    let large = iso(Implicit::GenusG { g: 1 }, Tessellation::SixTetrahedra, 60);
+    assert!(large.faces.len() > 20_000, "{}", large.faces.len());
+    for schedule in Schedule::ALL {
+        let o = DecimateOptions {
+            schedule,
+            ..DecimateOptions::keep(0.05)
+        };
+        let on = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .expect("pool")
+                .install(|| decimate(&large, &o))
+                .expect("decimate")
+        };
+        let one = on(1);
+        for threads in [2, 8] {
+            same(
+                &one,
+                &on(threads),
+                &format!("{schedule:?}, large, {threads} threads"),
+            );
         }
     }
 }
