@@ -557,8 +557,9 @@ pub struct DecimateArgs {
     #[arg(long, value_name = "FILE")]
     pub maps: Option<PathBuf>,
     /// Threads for checking the input and the output (their surfaces are built on the
-    /// pool from 262,144 faces; default: one per CPU). The decimation itself is
-    /// sequential; the output is the same for every value.
+    /// pool from 262,144 faces) and for costing edges and sorting keys (default: one
+    /// per CPU); the collapses themselves are sequential, and the output is the same
+    /// for every value.
     #[arg(long, short = 'j')]
     pub jobs: Option<usize>,
     #[command(flatten)]
