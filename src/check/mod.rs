@@ -27,9 +27,10 @@
 //! their ends' faces for the guard).
 //!
 //! An input that is not a valid input of the task (for `reduce`: not a closed surface;
-//! for `simplify`: no surface, or no usable positions or ε) is an error, not a failed verdict: the task must refuse it. (Only there does the
-//! checker call the core: its build locates the input's defect as every task reports
-//! it.)
+//! for `simplify`: no surface, or no usable positions or ε) is an error, not a failed
+//! verdict: the task must refuse it. (Only there does the checker call the core: its
+//! build locates the input's defect as every task reports it. The `simplify` checker
+//! takes the task's option types, `Eps` and `simplify::Position`, as plain values.)
 
 mod simplify_check;
 mod surface;

@@ -6,7 +6,8 @@
 //! more than two faces, and every vertex whose faces do not form one fan; on a list with
 //! none of these (a surface, possibly with boundary), the connected components (by shared
 //! edges, numbered by their smallest face) with V, E, F, χ, orientability and boundary
-//! loops each, and the boundary loop of every boundary vertex. **Complexity.** O(F log F) time, O(F) memory.
+//! loops each, and the boundary loop of every boundary vertex. **Complexity.**
+//! O(F log F) time, O(F) memory.
 
 use super::{Failure, FailureKind};
 
