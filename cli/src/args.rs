@@ -471,14 +471,22 @@ const CHECK_AFTER_HELP: &str = "reduce: OUTPUT is a closed 2-manifold on INPUT's
 vertices (by id when OUTPUT keeps INPUT's vertex list, else by exact position) with \
 INPUT's positions, one component per input component with the same χ and \
 orientability, and irreducible: every edge fails the link condition (the tetrahedron \
-aside). The checks share no code with the algorithms. At most 20 reasons of a kind are \
-listed, with the count of all.";
+aside). simplify (with the run's --eps or --eps-rel, and its --position and \
+--allow-foldover): OUTPUT is a 2-manifold, boundary allowed, with finite positions, of \
+INPUT's surface per component (χ, orientability, boundary loops; by id when OUTPUT keeps \
+INPUT's vertex list, else as multisets of surface types), and no edge strictly shorter \
+than ε passes the link condition of the surface with boundary unless the geometry guard \
+refuses it (recomputed for midpoints; with --position quadric and the guard on, no short \
+edge is judged). The checks share no code with the algorithms. At most 20 reasons of a \
+kind are listed, with the count of all.";
 
 /// A task whose outputs `check` judges.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CheckTask {
     /// An irreducible triangulation of every component.
     Reduce,
+    /// Every edge shorter than ε contracted that the link condition and the guard allow.
+    Simplify,
 }
 
 #[derive(Args, Debug)]
@@ -490,6 +498,20 @@ pub struct CheckArgs {
     pub input: PathBuf,
     /// The output to judge, from any implementation.
     pub output: PathBuf,
+    /// simplify: the run's ε, an absolute length (finite, > 0).
+    #[arg(long, allow_negative_numbers = true, conflicts_with = "eps_rel")]
+    pub eps: Option<f64>,
+    /// simplify: the run's ε as a fraction of the diagonal of the bounding box of the
+    /// vertices INPUT's faces use (finite, > 0).
+    #[arg(long, allow_negative_numbers = true)]
+    pub eps_rel: Option<f64>,
+    /// simplify: where the run put the vertex of a contracted edge.
+    #[arg(long, value_parser = choice::parser::<SimplifyPosition>())]
+    pub position: Option<SimplifyPosition>,
+    /// simplify: the run had the geometry guard off (every short edge that passes the
+    /// link condition must then be gone).
+    #[arg(long)]
+    pub allow_foldover: bool,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

@@ -1,9 +1,10 @@
-//! `contractible check TASK INPUT OUTPUT`: the verdict of [`contractible::check`] on an
+//! `contractible check TASK INPUT OUTPUT [--eps E | --eps-rel R]`: the verdict of [`contractible::check`] on an
 //! output of any implementation.
 
 use std::collections::BTreeMap;
 
-use contractible::check::{self, Verdict};
+use contractible::check::{self, SimplifyCheck, Verdict};
+use contractible::Eps;
 use serde::Serialize;
 
 use super::args::{CheckArgs, CheckTask};
@@ -59,13 +60,54 @@ fn report(args: &CheckArgs, v: &Verdict) -> CheckReport {
     }
 }
 
+/// The options of `check simplify` (`None` for `check reduce`, which takes none).
+fn simplify_options(args: &CheckArgs) -> Result<Option<SimplifyCheck>, CliError> {
+    let given: Vec<&str> = [
+        ("--eps", args.eps.is_some()),
+        ("--eps-rel", args.eps_rel.is_some()),
+        ("--position", args.position.is_some()),
+        ("--allow-foldover", args.allow_foldover),
+    ]
+    .iter()
+    .filter(|&&(_, on)| on)
+    .map(|&(flag, _)| flag)
+    .collect();
+    match args.task {
+        CheckTask::Reduce => match given.first() {
+            Some(flag) => Err(CliError::Input(format!(
+                "{flag} is an option of `check simplify`, not of `check reduce`"
+            ))),
+            None => Ok(None),
+        },
+        CheckTask::Simplify => {
+            let eps = match (args.eps, args.eps_rel) {
+                (Some(e), _) => Eps::Absolute(e),
+                (None, Some(r)) => Eps::Relative(r),
+                (None, None) => {
+                    return Err(CliError::Input(
+                        "`check simplify` needs the run's ε: --eps or --eps-rel".into(),
+                    ))
+                }
+            };
+            Ok(Some(SimplifyCheck {
+                eps,
+                position: args.position.unwrap_or_default(),
+                allow_foldover: args.allow_foldover,
+            }))
+        }
+    }
+}
+
 pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
+    let simplify = simplify_options(args)?;
     let (input, _, _, names) = meshio::read_input(&args.input, &args.input_opts, ui)?;
     let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
-    let verdict = match args.task {
-        CheckTask::Reduce => check::reduce(&input, &output),
-    }
-    .map_err(|e| meshio::task_error(&input, &names, "check reduce", e))?;
+    let verdict = match simplify {
+        None => check::reduce(&input, &output)
+            .map_err(|e| meshio::task_error(&input, &names, "check reduce", e)),
+        Some(o) => check::simplify(&input, &output, &o)
+            .map_err(|e| meshio::task_error(&input, &names, "check simplify", e)),
+    }?;
     let r = report(args, &verdict);
     if ui.json {
         print_json(&r)?;

@@ -4,7 +4,9 @@
 
 use contractible::check;
 
-use crate::cli_common::{data_closed, read_mesh, run, run_json, stderr, write_off_text, Scratch};
+use crate::cli_common::{
+    data_closed, grid_torus, read_mesh, run, run_json, stderr, with_holes, write_off_text, Scratch,
+};
 
 #[test]
 fn check_reduce_accepts_our_reduction_and_names_what_is_wrong_with_others() {
@@ -122,6 +124,186 @@ fn check_reduce_exits_2_on_unreadable_files_and_inputs_reduce_refuses() {
         "reduce",
         open_path.to_str().unwrap(),
         input.to_str().unwrap(),
+    ]);
+    assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
+    let j: serde_json::Value = serde_json::from_slice(&r.stdout).expect("JSON");
+    assert_eq!(j["error"]["kind"], "input");
+}
+
+/// The JSON verdict of `check simplify` on two files equals the library's on the meshes.
+fn same_as_library(j: &serde_json::Value, verdict: &check::Verdict) {
+    assert_eq!(j["task"], "simplify");
+    assert_eq!(j["passed"], verdict.passed());
+    let listed = j["failures"].as_array().expect("failures");
+    assert_eq!(listed.len(), verdict.failures.len());
+    for (a, b) in listed.iter().zip(&verdict.failures) {
+        assert_eq!(a["kind"], b.kind.name());
+        assert_eq!(a["message"], b.message.as_str());
+        assert_eq!(a["edge"], serde_json::json!(b.edge), "{a}");
+        assert_eq!(a["face"], serde_json::json!(b.face), "{a}");
+    }
+    for &(k, n) in &verdict.counts {
+        assert_eq!(j["counts"][k.name()].as_u64(), Some(n as u64));
+    }
+}
+
+#[test]
+fn check_simplify_accepts_our_simplifications_and_names_short_edges_left() {
+    let d = Scratch::new("check-simplify");
+    // A closed surface and one with boundary (a torus with three holes).
+    let torus = grid_torus(40, 16, 1.0, 0.3);
+    let closed = d.path("torus.off");
+    write_off_text(&closed, &torus);
+    let holed = d.path("holed.off");
+    write_off_text(&holed, &with_holes(&torus, 3));
+    for input in [closed, holed] {
+        let name = input.display().to_string();
+        for (mode, position, foldover) in [
+            ("naive", "midpoint", false),
+            ("nested", "midpoint", false),
+            ("naive", "quadric", true),
+        ] {
+            let out = d.path("s.off");
+            let mut args = vec![
+                "simplify",
+                input.to_str().unwrap(),
+                "-o",
+                out.to_str().unwrap(),
+                "--eps-rel",
+                "0.05",
+                "--mode",
+                mode,
+                "--position",
+                position,
+                "-q",
+            ];
+            if foldover {
+                args.push("--allow-foldover");
+            }
+            let r = run(&args);
+            assert!(r.status.success(), "{}", stderr(&r));
+            let mut check_args = vec![
+                "check",
+                "simplify",
+                input.to_str().unwrap(),
+                out.to_str().unwrap(),
+                "--eps-rel",
+                "0.05",
+                "--position",
+                position,
+            ];
+            if foldover {
+                check_args.push("--allow-foldover");
+            }
+            let ok = run(&check_args);
+            assert_eq!(ok.status.code(), Some(0), "{name} {mode}: {}", stderr(&ok));
+            assert!(String::from_utf8_lossy(&ok.stdout).contains("a correct simplify output"));
+        }
+        // The input as its own answer: short edges left; exit 1, as the library says.
+        let mesh = read_mesh(&input);
+        let verdict = check::simplify(&mesh, &mesh, &check::SimplifyCheck::relative(0.05))
+            .expect("a valid input");
+        assert!(!verdict.passed());
+        let bad = run(&[
+            "check",
+            "--json",
+            "simplify",
+            input.to_str().unwrap(),
+            input.to_str().unwrap(),
+            "--eps-rel",
+            "0.05",
+        ]);
+        assert_eq!(bad.status.code(), Some(1), "{name}");
+        let j: serde_json::Value = serde_json::from_slice(&bad.stdout).expect("JSON");
+        same_as_library(&j, &verdict);
+        assert!(j["counts"]["short_contractible_edge"].as_u64() > Some(0));
+        // An absolute ε below every edge: nothing left to contract.
+        let tiny = run(&[
+            "check",
+            "simplify",
+            input.to_str().unwrap(),
+            input.to_str().unwrap(),
+            "--eps",
+            "1e-9",
+        ]);
+        assert_eq!(tiny.status.code(), Some(0), "{}", stderr(&tiny));
+    }
+    // A face taken out of a simplification: one boundary loop more.
+    let input = d.path("torus.off");
+    let out = d.path("s2.off");
+    let r = run(&[
+        "simplify",
+        input.to_str().unwrap(),
+        "-o",
+        out.to_str().unwrap(),
+        "--eps",
+        "0.1",
+        "-q",
+    ]);
+    assert!(r.status.success(), "{}", stderr(&r));
+    let mut holed = read_mesh(&out);
+    holed.faces.remove(0);
+    let holed_path = d.path("s2-holed.off");
+    write_off_text(&holed_path, &holed);
+    let verdict = check::simplify(
+        &read_mesh(&input),
+        &holed,
+        &check::SimplifyCheck::absolute(0.1),
+    )
+    .expect("a valid input");
+    let j = run(&[
+        "check",
+        "--json",
+        "simplify",
+        input.to_str().unwrap(),
+        holed_path.to_str().unwrap(),
+        "--eps",
+        "0.1",
+    ]);
+    assert_eq!(j.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&j.stdout).expect("JSON");
+    same_as_library(&j, &verdict);
+    assert!(j["counts"]["surface_changed"].as_u64() == Some(1), "{j}");
+}
+
+#[test]
+fn check_simplify_exits_2_without_eps_and_on_inputs_simplify_refuses() {
+    let d = Scratch::new("check-simplify-errors");
+    let input = data_closed("bunny_npm");
+    let i = input.to_str().unwrap();
+    // No ε; an ε for reduce; two of them; a bad one.
+    for args in [
+        vec!["check", "simplify", i, i],
+        vec!["check", "reduce", i, i, "--eps", "0.1"],
+        vec![
+            "check",
+            "simplify",
+            i,
+            i,
+            "--eps",
+            "0.1",
+            "--eps-rel",
+            "0.1",
+        ],
+        vec!["check", "simplify", i, i, "--eps", "0"],
+        vec!["check", "simplify", i, i, "--eps-rel", "nan"],
+    ] {
+        let r = run(&args);
+        assert_eq!(r.status.code(), Some(2), "{args:?}: {}", stderr(&r));
+    }
+    // Faces that are no surface: `simplify` refuses them.
+    let mut bad = read_mesh(&input);
+    bad.faces.push(bad.faces[0]);
+    let bad_path = d.path("bad.off");
+    write_off_text(&bad_path, &bad);
+    let r = run(&[
+        "check",
+        "--json",
+        "simplify",
+        bad_path.to_str().unwrap(),
+        i,
+        "--eps",
+        "0.1",
     ]);
     assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
     let j: serde_json::Value = serde_json::from_slice(&r.stdout).expect("JSON");

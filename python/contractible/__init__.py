@@ -376,7 +376,9 @@ def decimate(V: Any, F: Any = None, *, faces: Optional[int] = None,
 
 def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
           vertex_count: Optional[int] = None,
-          out_vertex_count: Optional[int] = None) -> Dict[str, Any]:
+          out_vertex_count: Optional[int] = None,
+          eps: Optional[float] = None, eps_rel: Optional[float] = None,
+          position: str = "midpoint", guard: bool = True) -> Dict[str, Any]:
     """Judges ``(V_out, F_out)``, made by any implementation, as an output of ``task``
     on ``(V, F)``, by its properties (not its bytes); the command line's
     ``contractible check TASK INPUT OUTPUT --json`` without the file names.
@@ -387,12 +389,33 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
     irreducible. Either ``V`` may be None (combinatorial meshes; then the counts say
     how many vertices there are, by default one more than the largest index).
 
+    Or ``"simplify"``, with the run's ``eps`` (absolute) or ``eps_rel`` (a fraction of
+    the bounding-box diagonal of the vertices the input's faces use), and its
+    ``position`` and ``guard`` (:func:`simplify`'s names and defaults): the output must
+    be a 2-manifold (boundary allowed) with finite positions, of the input's surface per
+    component (χ, orientability, boundary loops; by index when it keeps the input's
+    vertex list, else as multisets of surface types), and no edge strictly shorter than
+    ε may pass the link condition of the surface with boundary unless the guard refuses
+    it (recomputed at the midpoint; with ``position="quadric"`` and the guard on, no
+    short edge is judged).
+
     Returns a dict: ``task``, ``passed`` (bool), ``counts`` (per failure kind, every
     reason found) and ``failures`` (at most 20 of a kind: ``kind``, ``message`` and,
     where known, ``face``, ``edge``, ``vertex``, ``component``). Raises
     :class:`MeshError` when the input is not one the task accepts (for ``reduce``: not a
-    closed surface), ``ValueError`` for an unknown task or a bad array.
+    closed surface; for ``simplify``: no surface), ``ValueError`` for an unknown task, a
+    bad array, a missing, doubled or bad ε, ε given for ``reduce``, or no input
+    positions for ``simplify``.
     """
+    task = str(task)
     Va, Fa = _vertices(V), _faces(F)
     Vb, Fb = _vertices(V_out), _faces(F_out)
-    return _native.check(str(task), Va, Fa, vertex_count, Vb, Fb, out_vertex_count)
+    if task != "simplify":
+        if eps is not None or eps_rel is not None:
+            raise ValueError(f"check: eps and eps_rel are options of \"simplify\", not {task!r}")
+        return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count)
+    if (eps is None) == (eps_rel is None):
+        raise ValueError("check: give exactly one of eps and eps_rel for \"simplify\"")
+    value = eps if eps is not None else eps_rel
+    return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count,
+                         float(value), eps_rel is not None, str(position), bool(guard))

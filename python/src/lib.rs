@@ -782,7 +782,9 @@ fn decimate_py<'py>(
 /// `task` on `(vertices, faces)`: the keys of `contractible check --json` but for the
 /// file names (`task`, `passed`, `counts`, `failures`).
 #[pyfunction(name = "check")]
-#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count))]
+/// For `simplify`: `eps` (absolute, or with `relative=True` a fraction of the
+/// bounding-box diagonal), the run's `position` and `guard`.
+#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true))]
 #[allow(clippy::too_many_arguments)]
 fn check_py<'py>(
     py: Python<'py>,
@@ -793,14 +795,35 @@ fn check_py<'py>(
     out_vertices: Option<Coordinates<'py>>,
     out_faces: Indices<'py>,
     out_vertex_count: Option<usize>,
+    eps: Option<f64>,
+    relative: bool,
+    position: &str,
+    guard: bool,
 ) -> PyResult<Bound<'py, PyDict>> {
     let input = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
     let output = mesh::<3>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
     let verdict = match task {
         "reduce" => py.detach(|| contractible::check::reduce(&input, &output)),
+        "simplify" => {
+            let Some(e) = eps else {
+                return Err(PyValueError::new_err(
+                    "check: \"simplify\" needs the run's eps or eps_rel",
+                ));
+            };
+            let options = contractible::check::SimplifyCheck {
+                eps: if relative {
+                    Eps::Relative(e)
+                } else {
+                    Eps::Absolute(e)
+                },
+                position: choice::<simplify::Position>(py, position)?,
+                allow_foldover: !guard,
+            };
+            py.detach(|| contractible::check::simplify(&input, &output, &options))
+        }
         other => {
             return Err(PyValueError::new_err(format!(
-                "check: unknown task {other:?} (expected \"reduce\")"
+                "check: unknown task {other:?} (expected \"reduce\" or \"simplify\")"
             )))
         }
     }

@@ -72,3 +72,86 @@ def test_inputs_the_task_refuses_raise():
         c.check("reduce", V, F[1:], V, F)
     with pytest.raises(ValueError, match="unknown task"):
         c.check("simplify-all", V, F, V, F)
+
+
+def _holed(V, F):
+    """The mesh without the faces around vertex 0: one boundary loop more."""
+    return V, F[~(F == 0).any(axis=1)]
+
+
+SIMPLIFY_RUNS = [("naive", "midpoint", True), ("nested", "midpoint", True),
+                 ("naive", "midpoint", False), ("naive", "quadric", True),
+                 ("nested", "quadric", False)]
+
+
+@pytest.mark.parametrize("name", ["bunny_npm", "high_genus_3", "two_objects"])
+@pytest.mark.parametrize("holed", [False, True])
+def test_our_simplifications_pass(name, holed):
+    V, F = c.read(data_mesh(name))
+    if holed:
+        V, F = _holed(V, F)
+    for mode, position, guard in SIMPLIFY_RUNS:
+        s = c.simplify(V, F, eps_rel=0.03, mode=mode, position=position, guard=guard)
+        v = c.check("simplify", V, F, s.vertices, s.faces, eps_rel=0.03,
+                    position=position, guard=guard)
+        assert v == {"task": "simplify", "passed": True, "counts": {}, "failures": []}, \
+            (mode, position, guard)
+
+
+def test_the_input_as_its_own_simplification_fails_as_the_cli_says(cli):
+    src = data_mesh("bunny_npm")
+    V, F = c.read(src)
+    ours = c.check("simplify", V, F, V, F, eps_rel=0.02)
+    theirs = cli("--json", "check", "simplify", src, src, "--eps-rel", "0.02", check=False)
+    assert theirs.returncode == 1
+    t = json.loads(theirs.stdout)
+    for k in ("task", "passed", "counts", "failures"):
+        assert ours[k] == t[k], k
+    assert set(ours["counts"]) == {"short_contractible_edge"}
+    assert all(len(f["edge"]) == 2 and "face" in f for f in ours["failures"])
+    # Judged against a larger ε than its run's, a simplification has short edges left;
+    # with the guard off more of them count.
+    s = c.simplify(V, F, eps_rel=0.02, mode="naive")
+    on = c.check("simplify", V, F, s.vertices, s.faces, eps_rel=0.03)
+    off = c.check("simplify", V, F, s.vertices, s.faces, eps_rel=0.03, guard=False)
+    assert set(on["counts"]) == {"short_contractible_edge"}
+    assert off["counts"]["short_contractible_edge"] >= on["counts"]["short_contractible_edge"]
+    # An ε below every edge: nothing to contract.
+    assert c.check("simplify", V, F, V, F, eps=1e-9)["passed"]
+
+
+def test_wrong_simplifications_are_located():
+    V, F = c.read(data_mesh("bunny_npm"))
+    s = c.simplify(V, F, eps_rel=0.02)
+    # A face dropped: a boundary loop more, χ one less (the output's list is compacted:
+    # compared by surface type).
+    v = c.check("simplify", V, F, s.vertices, s.faces[1:], eps_rel=0.02)
+    assert v["counts"].get("surface_changed") == 1, v
+    f = next(f for f in v["failures"] if f["kind"] == "surface_changed")
+    assert f["component"] == 0 and "1 boundary loop" in f["message"], f
+    # No positions (non-finite ones never get past the array reader).
+    v = c.check("simplify", V, F, None, s.faces, eps_rel=0.02)
+    assert v["counts"] == {"invalid_position": 1}
+    assert "vertex" not in v["failures"][0]
+    with pytest.raises(c.MeshError, match="non-finite"):
+        Vn = s.vertices.copy()
+        Vn[5, 2] = np.nan
+        c.check("simplify", V, F, Vn, s.faces, eps_rel=0.02)
+
+
+def test_simplify_check_refusals():
+    V, F = c.read(data_mesh("bunny_npm"))
+    with pytest.raises(ValueError, match="exactly one of eps and eps_rel"):
+        c.check("simplify", V, F, V, F)
+    with pytest.raises(ValueError, match="exactly one of eps and eps_rel"):
+        c.check("simplify", V, F, V, F, eps=0.1, eps_rel=0.1)
+    with pytest.raises(ValueError, match="options of"):
+        c.check("reduce", V, F, V, F, eps=0.1)
+    with pytest.raises(ValueError):
+        c.check("simplify", V, F, V, F, eps=0.0)
+    with pytest.raises(ValueError):
+        c.check("simplify", V, F, V, F, eps=0.1, position="nowhere")
+    with pytest.raises(ValueError):
+        c.check("simplify", None, F, V, F, eps=0.1)
+    with pytest.raises(c.MeshError):
+        c.check("simplify", V, np.vstack([F, F[:1]]), V, F, eps=0.1)

@@ -14,21 +14,32 @@
 //!   positions, one component per input component of the same surface (χ and
 //!   orientability), and **irreducible**: every edge fails the link condition (its ends
 //!   have a common neighbour besides the two opposite vertices), the tetrahedron aside.
+//! - [`simplify()`]: the output is a surface (boundary allowed) with a finite position
+//!   per used vertex, of the input's surface per component (χ, orientability, boundary
+//!   loops; matched by id when the output keeps the input's vertex list, else as
+//!   multisets of surface types), and no edge strictly shorter than ε passes the link
+//!   condition of the surface with boundary (each loop coned to its own apex; an edge
+//!   between two loops and a coned tetrahedron refused) unless the geometry guard of
+//!   the run ([`SimplifyCheck`]) refuses it.
 //!
 //! **Complexity.** O(F log F) for the surfaces, plus Σ over output edges of the two
-//! ends' degrees for the link condition.
+//! ends' degrees for the link condition (for `simplify`, over the short edges, plus
+//! their ends' faces for the guard).
 //!
-//! An input that is not a valid input of the task (for `reduce`: not a closed surface)
-//! is an error, not a failed verdict: the task must refuse it. (Only there does the
-//! checker call the core: its build locates the input's defect as every task reports
-//! it.)
+//! An input that is not a valid input of the task (for `reduce`: not a closed surface;
+//! for `simplify`: no surface, or no usable positions or ε) is an error, not a failed
+//! verdict: the task must refuse it. (Only there does the checker call the core: its
+//! build locates the input's defect as every task reports it. The `simplify` checker
+//! takes the task's option types, `Eps` and `simplify::Position`, as plain values.)
 
+mod simplify_check;
 mod surface;
 
 use std::collections::HashMap;
 
 use crate::{Error, TriMesh};
-use surface::{analyse, push, Analysis};
+pub use simplify_check::SimplifyCheck;
+use surface::{analyse, push, Analysis, Part};
 
 /// What is wrong with an output.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -60,11 +71,17 @@ pub enum FailureKind {
     SurfaceChanged,
     /// An edge passes the link condition: the output is not irreducible.
     ContractibleEdge,
+    /// An output vertex a face uses has no position or a non-finite one, where the task
+    /// writes positions.
+    InvalidPosition,
+    /// An edge shorter than ε passes the link condition of the surface with boundary
+    /// (and the geometry guard, when it was on): the simplification stopped early.
+    ShortContractibleEdge,
 }
 
 impl FailureKind {
     /// Every kind, in declaration order.
-    pub const ALL: [FailureKind; 13] = [
+    pub const ALL: [FailureKind; 15] = [
         FailureKind::VertexOutOfRange,
         FailureKind::DegenerateFace,
         FailureKind::RepeatedFace,
@@ -78,6 +95,8 @@ impl FailureKind {
         FailureKind::ComponentSplit,
         FailureKind::SurfaceChanged,
         FailureKind::ContractibleEdge,
+        FailureKind::InvalidPosition,
+        FailureKind::ShortContractibleEdge,
     ];
 
     /// The kind's name in reports (snake case), stable across versions.
@@ -101,6 +120,8 @@ impl FailureKind {
             FailureKind::ComponentSplit => "component_split",
             FailureKind::SurfaceChanged => "surface_changed",
             FailureKind::ContractibleEdge => "contractible_edge",
+            FailureKind::InvalidPosition => "invalid_position",
+            FailureKind::ShortContractibleEdge => "short_contractible_edge",
         }
     }
 }
@@ -343,9 +364,10 @@ fn referenced(mesh: &TriMesh) -> Vec<u32> {
         .collect()
 }
 
-/// The input analysed as a task input: a closed surface for `reduce`.
-fn closed_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> {
-    let a = analyse(input.vertex_count, &input.faces, "input").map_err(|(failures, _)| {
+/// The input analysed as a task input: a surface, possibly with boundary (the core's
+/// build locates a defect as every task reports it).
+fn surface_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> {
+    analyse(input.vertex_count, &input.faces, "input").map_err(|(failures, _)| {
         // The reader's build locates the defect as every task reports it.
         match crate::ConedSurfaces::from_mesh(input) {
             Err(e) => Error::Mesh(e),
@@ -357,7 +379,12 @@ fn closed_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> 
                 expected: format!("a surface ({task} input)"),
             },
         }
-    })?;
+    })
+}
+
+/// The input analysed as a task input: a closed surface for `reduce`.
+fn closed_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> {
+    let a = surface_input(input, task)?;
     if let Some(&((x, y), _, f)) = a.edges.iter().find(|(_, o, _)| o[1] == u32::MAX) {
         return Err(Error::NotClosed {
             task,
@@ -430,7 +457,28 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
             Matching::ByPosition(m) => m.get(v as usize).copied().filter(|&i| i != u32::MAX),
         }
     };
-    let part_of_vertex = part_of_vertex(&inp, input.vertex_count);
+    let by_id = matches!(matching, Matching::ById);
+    same_components(input, &inp, &out, &to_input, by_id, false, &mut verdict);
+    contractible_edges(&out, &mut verdict);
+    Ok(verdict)
+}
+
+/// Compares the components of `out` with those of `inp` through `to_input` (an output
+/// vertex's input vertex): each output component within one input component
+/// (`components_merged`), one per input component (`component_lost`, `component_split`),
+/// of its surface (`surface_changed`: χ and orientability, and the boundary loops when
+/// `loops`). `by_id`: an output vertex with no input vertex is beyond the input's list
+/// (by position, the matching has already reported it).
+fn same_components(
+    input: &TriMesh,
+    inp: &Analysis,
+    out: &Analysis,
+    to_input: &dyn Fn(u32) -> Option<u32>,
+    by_id: bool,
+    loops: bool,
+    verdict: &mut Verdict,
+) {
+    let part_of_vertex = part_of_vertex(inp, input.vertex_count);
     // Each output component lies in one input component of the same surface.
     let mut outputs_of: Vec<Vec<usize>> = vec![Vec::new(); inp.parts.len()];
     for (j, q) in out.parts.iter().enumerate() {
@@ -448,7 +496,7 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
                     );
                 }
                 None => {
-                    if matches!(matching, Matching::ById) {
+                    if by_id {
                         verdict.fail(
                             Failure::new(
                                 FailureKind::UnknownVertex,
@@ -493,17 +541,15 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
             ),
             [j] => {
                 let q = &out.parts[*j];
-                if (q.euler(), q.orientable) != (p.euler(), p.orientable) {
+                if surface_of(q, loops) != surface_of(p, loops) {
                     verdict.fail(
                         Failure::new(
                             FailureKind::SurfaceChanged,
                             format!(
-                                "input component {k}: χ {} {}, its output (of face {}): χ {} {}",
-                                p.euler(),
-                                orientable_name(p.orientable),
+                                "input component {k}: {}, its output (of face {}): {}",
+                                surface_name(p, loops),
                                 q.first_face,
-                                q.euler(),
-                                orientable_name(q.orientable)
+                                surface_name(q, loops)
                             ),
                         )
                         .face(q.first_face)
@@ -526,8 +572,64 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
             ),
         }
     }
-    contractible_edges(&out, &mut verdict);
-    Ok(verdict)
+}
+
+/// A component's surface: χ, orientability and, when `loops`, boundary loops.
+fn surface_of(p: &Part, loops: bool) -> (i64, bool, usize) {
+    (
+        p.euler(),
+        p.orientable,
+        if loops { p.boundary_loops } else { 0 },
+    )
+}
+
+/// "χ 2 orientable" (", 1 boundary loop(s)" added when `loops`).
+fn surface_name(p: &Part, loops: bool) -> String {
+    let mut s = format!("χ {} {}", p.euler(), orientable_name(p.orientable));
+    if loops {
+        let b = p.boundary_loops;
+        s.push_str(&format!(
+            ", {b} boundary loop{}",
+            if b == 1 { "" } else { "s" }
+        ));
+    }
+    s
+}
+
+/// Judges `output` as a simplification of `input` (the task `simplify`) by a run with
+/// the ε and options of `options`: see the [module](self) for what is checked. Flags
+/// only what no correct run could have produced: topology changed, or a short edge left
+/// that the run had to contract.
+///
+/// # Errors
+/// As `simplify` refuses its input: [`Error::BadOption`] for an ε that is not a finite
+/// number > 0 (or a relative one that gives none), [`Error::MissingPositions`],
+/// [`Error::PositionCount`], [`Error::NonFiniteCoordinate`], [`Error::NoCoordinates`],
+/// and [`Error::Mesh`] (locating the first defect) for faces that are no surface.
+///
+/// # Example
+/// ```
+/// use contractible::{check, gen, simplify, SimplifyOptions};
+/// let sphere = gen::isosurface(&gen::IsoParams::new(
+///     gen::Implicit::Sphere { radius: 1.0 },
+///     gen::Tessellation::SixTetrahedra,
+///     12,
+/// ))?;
+/// let ours = simplify(&sphere, &SimplifyOptions::relative(0.1))?;
+/// let options = check::SimplifyCheck::relative(0.1);
+/// assert!(check::simplify(&sphere, &ours.mesh, &options)?.passed());
+/// // The input itself has short edges it could still contract.
+/// let verdict = check::simplify(&sphere, &sphere, &options)?;
+/// assert!(!verdict.passed());
+/// assert_eq!(verdict.failures[0].kind, check::FailureKind::ShortContractibleEdge);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn simplify(
+    input: &TriMesh,
+    output: &TriMesh,
+    options: &SimplifyCheck,
+) -> Result<Verdict, Error> {
+    simplify_check::check(input, output, options)
 }
 
 fn orientable_name(o: bool) -> &'static str {
@@ -584,5 +686,7 @@ fn contractible_edges(out: &Analysis, verdict: &mut Verdict) {
     }
 }
 
+#[cfg(test)]
+mod simplify_tests;
 #[cfg(test)]
 mod tests;

@@ -6,7 +6,8 @@
 //! more than two faces, and every vertex whose faces do not form one fan; on a list with
 //! none of these (a surface, possibly with boundary), the connected components (by shared
 //! edges, numbered by their smallest face) with V, E, F, χ, orientability and boundary
-//! loops each. **Complexity.** O(F log F) time, O(F) memory.
+//! loops each, and the boundary loop of every boundary vertex. **Complexity.**
+//! O(F log F) time, O(F) memory.
 
 use super::{Failure, FailureKind};
 
@@ -46,6 +47,9 @@ pub(super) struct Analysis {
     /// range of `neighbours`.
     pub neighbour_start: Vec<usize>,
     pub neighbours: Vec<u32>,
+    /// Per vertex (by id): its boundary loop (numbered from 0 in the order of their
+    /// smallest edge, over all parts), `u32::MAX` for a vertex on no boundary edge.
+    pub loop_of: Vec<u32>,
 }
 
 impl Analysis {
@@ -310,18 +314,24 @@ pub(super) fn analyse(
         .filter(|(_, o, _)| o[1] == u32::MAX)
         .map(|&((a, b), _, f)| (a, b, f))
         .collect();
+    let mut loop_of = vec![u32::MAX; vertex_count];
     if !boundary.is_empty() {
         let mut loops = Sets::new(vertex_count);
         for &(a, b, _) in &boundary {
             loops.union(a, b);
         }
-        let mut counted = vec![false; vertex_count];
-        for &(a, _, f) in &boundary {
+        // Per root: its loop's number.
+        let mut number = vec![u32::MAX; vertex_count];
+        let mut next = 0u32;
+        for &(a, b, f) in &boundary {
             let r = loops.find(a) as usize;
-            if !counted[r] {
-                counted[r] = true;
+            if number[r] == u32::MAX {
+                number[r] = next;
+                next += 1;
                 out[part_of_face[f as usize]].boundary_loops += 1;
             }
+            loop_of[a as usize] = number[r];
+            loop_of[b as usize] = number[r];
         }
     }
     // Neighbours per vertex (CSR), increasing.
@@ -351,5 +361,6 @@ pub(super) fn analyse(
         edges,
         neighbour_start,
         neighbours,
+        loop_of,
     })
 }
