@@ -4921,3 +4921,114 @@ pub fn check_check(input: &CheckInput) {
         assert_eq!(r.is_orientable(), tri.is_orientable());
     }
 }
+
+/// A `simplify` answer judged by `check::simplify`: the library's own run on a
+/// [`SimplifyInput`] case (a surface with holes, positions, ε and the run's options),
+/// then edits of the answer's faces.
+#[derive(Arbitrary, Clone, Debug)]
+pub struct CheckSimplifyInput {
+    /// The input, ε and the run's options.
+    pub case: SimplifyInput,
+    /// Edits of the answer's faces (at most [`CHECK_EDITS`]).
+    pub edits: Vec<Edit>,
+}
+
+/// `check::simplify` on the library's own answer and on edited ones: never a panic; the
+/// checker refuses exactly the inputs the task refuses; the library's answer passes; and
+/// an edited answer that passes is confirmed by the core: rebuilt as a surface with
+/// boundary, it has the input's component types (χ, orientability, boundary loops) as a
+/// multiset and, when the run had no geometry guard, no edge shorter than ε (by a
+/// relative margin of 1e-9) that passes the core's link condition of the surface with
+/// boundary.
+pub fn check_simplify_check(input: &CheckSimplifyInput) {
+    use contractible::check::{self, SimplifyCheck};
+    use contractible::simplify::Mode;
+    use contractible::ConedSurfaces;
+    let s = &input.case;
+    let case = simplify_mesh(s);
+    let lower = simplify_options(s, case.eps);
+    let opts = contractible::SimplifyOptions {
+        eps: if s.relative {
+            contractible::Eps::Relative(case.fraction)
+        } else {
+            contractible::Eps::Absolute(case.eps)
+        },
+        mode: if s.nested { Mode::Nested } else { Mode::Naive },
+        side: lower.side,
+        position: lower.position,
+        allow_foldover: !s.guard,
+        ..contractible::SimplifyOptions::default()
+    };
+    let judge = SimplifyCheck {
+        eps: opts.eps,
+        position: opts.position,
+        allow_foldover: opts.allow_foldover,
+    };
+    let r = match contractible::simplify(&case.mesh, &opts) {
+        Ok(r) => r,
+        Err(e) => {
+            assert!(
+                check::simplify(&case.mesh, &case.mesh, &judge).is_err(),
+                "the task refuses the input ({e}) but the checker judges it"
+            );
+            return;
+        }
+    };
+    let v = check::simplify(&case.mesh, &r.mesh, &judge)
+        .unwrap_or_else(|e| panic!("the task accepts the input, the checker refuses it: {e}"));
+    assert!(v.passed(), "the library's own answer fails: {v:?}");
+    let mut faces = r.mesh.faces.clone();
+    apply_edits(
+        &mut faces,
+        r.mesh.vertex_count as u32,
+        input.edits.iter().take(CHECK_EDITS),
+    );
+    if faces == r.mesh.faces {
+        return;
+    }
+    let pos = r.mesh.positions.clone().expect("simplify gives positions");
+    let answer = contractible::TriMesh::with_positions(pos.clone(), faces);
+    let v = check::simplify(&case.mesh, &answer, &judge).expect("an accepted input is judged");
+    if !v.passed() {
+        return;
+    }
+    let types = |m: &contractible::TriMesh| -> Vec<(i64, bool, usize)> {
+        let s = ConedSurfaces::from_mesh(m)
+            .unwrap_or_else(|e| panic!("a passing answer is no surface with boundary: {e}"));
+        let mut t: Vec<(i64, bool, usize)> = s
+            .components
+            .iter()
+            .map(|c| {
+                let t = c.surface_type();
+                (
+                    t.euler_characteristic(),
+                    t.is_orientable(),
+                    t.boundary_loops(),
+                )
+            })
+            .collect();
+        t.sort_unstable();
+        t
+    };
+    assert_eq!(types(&answer), types(&case.mesh), "a passing answer changed the surfaces");
+    if opts.allow_foldover {
+        let bound = r.eps * r.eps * (1.0 - 1e-9);
+        let s = ConedSurfaces::from_mesh(&answer).expect("rebuilt above");
+        for c in &s.components {
+            for (a, b, _) in c.tri().edges() {
+                if c.is_virtual(a) || c.is_virtual(b) {
+                    continue;
+                }
+                let (x, y) = (
+                    pos[c.vertex_origin[a.index()] as usize],
+                    pos[c.vertex_origin[b.index()] as usize],
+                );
+                let d2: f64 = (0..3).map(|k| (x[k] - y[k]) * (x[k] - y[k])).sum();
+                assert!(
+                    !(d2 < bound && c.is_contractible(a, b)),
+                    "a passing answer keeps a short contractible edge"
+                );
+            }
+        }
+    }
+}

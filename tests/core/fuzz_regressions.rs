@@ -92,6 +92,8 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
     assert!(n >= 8, "decimate: {n} inputs decoded");
     let n = replay_decoded("check", harness::check_check);
     assert!(n >= 8, "check: {n} inputs decoded");
+    let n = replay_decoded("check_simplify", harness::check_simplify_check);
+    assert!(n >= 8, "check_simplify: {n} inputs decoded");
 }
 
 #[test]
