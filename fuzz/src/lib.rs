@@ -5010,7 +5010,11 @@ pub fn check_simplify_check(input: &CheckSimplifyInput) {
         t.sort_unstable();
         t
     };
-    assert_eq!(types(&answer), types(&case.mesh), "a passing answer changed the surfaces");
+    assert_eq!(
+        types(&answer),
+        types(&case.mesh),
+        "a passing answer changed the surfaces"
+    );
     if opts.allow_foldover {
         let bound = r.eps * r.eps * (1.0 - 1e-9);
         let s = ConedSurfaces::from_mesh(&answer).expect("rebuilt above");

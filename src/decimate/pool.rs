@@ -107,7 +107,66 @@ pub(super) fn sort(keys: &mut [u128]) {
 
 #[cfg(test)]
 mod tests {
-    use super::{extend_keys, fill, sort, MIN_ITEMS};
+    use super::{extend_keys, fill, sort, threads, MIN_ITEMS};
+    use std::collections::BTreeSet;
+    use std::sync::Mutex;
+    use std::time::{Duration, Instant};
+
+    fn pool(threads: usize) -> rayon::ThreadPool {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a pool")
+    }
+
+    /// A step of [`MIN_ITEMS`] items on a pool of two threads runs on both: each item
+    /// records its thread and waits (until a deadline five seconds away) for a second
+    /// one, which can only come if the step handed work to the other thread. Smaller
+    /// steps, and any step on one thread, stay in the calling thread.
+    #[test]
+    fn large_steps_use_both_threads_of_a_pool() {
+        pool(2).install(|| {
+            assert_eq!(threads(MIN_ITEMS), 2);
+            assert_eq!(threads(MIN_ITEMS - 1), 1);
+            let seen = Mutex::new(BTreeSet::new());
+            let deadline = Instant::now() + Duration::from_secs(5);
+            let meet = || {
+                let me = rayon::current_thread_index();
+                seen.lock().expect("no poisoned lock").insert(me);
+                while seen.lock().expect("no poisoned lock").len() < 2 && Instant::now() < deadline
+                {
+                    std::thread::yield_now();
+                }
+            };
+            let mut out = vec![0u8; MIN_ITEMS];
+            fill(&mut out, |_| {
+                meet();
+                1
+            });
+            assert_eq!(seen.lock().expect("no poisoned lock").len(), 2, "fill");
+            seen.lock().expect("no poisoned lock").clear();
+            let deadline = Instant::now() + Duration::from_secs(5);
+            let meet = || {
+                let me = rayon::current_thread_index();
+                seen.lock().expect("no poisoned lock").insert(me);
+                while seen.lock().expect("no poisoned lock").len() < 2 && Instant::now() < deadline
+                {
+                    std::thread::yield_now();
+                }
+            };
+            let mut keys = Vec::new();
+            extend_keys(MIN_ITEMS, &mut keys, |i, out| {
+                meet();
+                out.push(i as u128);
+            });
+            assert_eq!(
+                seen.lock().expect("no poisoned lock").len(),
+                2,
+                "extend_keys"
+            );
+        });
+        pool(1).install(|| assert_eq!(threads(usize::MAX), 1));
+    }
 
     /// The helpers give what their sequential definitions give, below and above the
     /// size at which they use the pool, on pools of 1, 2 and 3 threads.
@@ -127,11 +186,7 @@ mod tests {
             want_keys.sort_unstable();
             want_fill.reverse();
             for threads in [1, 2, 3] {
-                let pool = rayon::ThreadPoolBuilder::new()
-                    .num_threads(threads)
-                    .build()
-                    .expect("a pool");
-                pool.install(|| {
+                pool(threads).install(|| {
                     let mut filled = vec![0u128; n];
                     fill(&mut filled, |i| key(n - 1 - i));
                     assert_eq!(filled, want_fill, "fill, n = {n}, {threads} threads");
