@@ -168,8 +168,9 @@ mod tests {
         pool(1).install(|| assert_eq!(threads(usize::MAX), 1));
     }
 
-    /// The helpers give what their sequential definitions give, below and above the
-    /// size at which they use the pool, on pools of 1, 2 and 3 threads.
+    /// `fill`, `extend_keys` and `sort` give what their sequential definitions give,
+    /// below and above the size at which they use the pool, on pools of 1, 2 and 3
+    /// threads.
     #[test]
     fn every_pool_gives_the_sequential_result() {
         let key = |i: usize| ((i as u128 * 0x9E37_79B9_7F4A_7C15) % 1_000_003) << 64 | i as u128;
