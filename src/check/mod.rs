@@ -397,6 +397,19 @@ fn closed_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> 
     Ok(a)
 }
 
+/// The face-list analysis of `output`; `None`, with the reasons in `verdict`, when its
+/// faces are no surface (the later checks would only restate them).
+fn output_surface(output: &TriMesh, verdict: &mut Verdict) -> Option<Analysis> {
+    match analyse(output.vertex_count, &output.faces, "output") {
+        Ok(a) => Some(a),
+        Err((failures, counts)) => {
+            verdict.failures = failures;
+            verdict.counts = counts;
+            None
+        }
+    }
+}
+
 /// Judges `output` as an irreducible triangulation of `input` (the task `reduce`): see
 /// the [module](self) for what is checked.
 ///
@@ -419,13 +432,8 @@ fn closed_input(input: &TriMesh, task: &'static str) -> Result<Analysis, Error> 
 pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
     let inp = closed_input(input, "reduce")?;
     let mut verdict = Verdict::new("reduce");
-    let out = match analyse(output.vertex_count, &output.faces, "output") {
-        Ok(a) => a,
-        Err((failures, counts)) => {
-            verdict.failures = failures;
-            verdict.counts = counts;
-            return Ok(verdict);
-        }
+    let Some(out) = output_surface(output, &mut verdict) else {
+        return Ok(verdict);
     };
     for &((a, b), _, f) in out.edges.iter().filter(|(_, o, _)| o[1] == u32::MAX) {
         verdict.fail(

@@ -1,8 +1,10 @@
 //! The verdict on an output of `simplify`: a surface of the input's type per component,
 //! with no edge shorter than ε left that could still be contracted.
 
-use super::surface::{analyse, Analysis, Part};
-use super::{same_components, surface_input, surface_name, Failure, FailureKind, Verdict};
+use super::surface::{Analysis, Part};
+use super::{
+    output_surface, same_components, surface_input, surface_name, Failure, FailureKind, Verdict,
+};
 use crate::simplify::Position;
 use crate::{Eps, Error, TriMesh};
 
@@ -226,13 +228,8 @@ pub(super) fn check(
     };
     drop(used);
     let mut verdict = Verdict::new("simplify");
-    let out = match analyse(output.vertex_count, &output.faces, "output") {
-        Ok(a) => a,
-        Err((failures, counts)) => {
-            verdict.failures = failures;
-            verdict.counts = counts;
-            return Ok(verdict);
-        }
+    let Some(out) = output_surface(output, &mut verdict) else {
+        return Ok(verdict);
     };
     let out_positions = output_positions(output, &out, &mut verdict);
     if output.vertex_count == input.vertex_count {

@@ -129,8 +129,8 @@ mod tests {
             assert_eq!(threads(MIN_ITEMS), 2);
             assert_eq!(threads(MIN_ITEMS - 1), 1);
             let seen = Mutex::new(BTreeSet::new());
-            let deadline = Instant::now() + Duration::from_secs(5);
-            let meet = || {
+            // Records the calling thread, then waits (until `deadline`) for a second one.
+            let meet = |deadline: Instant| {
                 let me = rayon::current_thread_index();
                 seen.lock().expect("no poisoned lock").insert(me);
                 while seen.lock().expect("no poisoned lock").len() < 2 && Instant::now() < deadline
@@ -138,25 +138,18 @@ mod tests {
                     std::thread::yield_now();
                 }
             };
+            let deadline = Instant::now() + Duration::from_secs(5);
             let mut out = vec![0u8; MIN_ITEMS];
             fill(&mut out, |_| {
-                meet();
+                meet(deadline);
                 1
             });
             assert_eq!(seen.lock().expect("no poisoned lock").len(), 2, "fill");
             seen.lock().expect("no poisoned lock").clear();
             let deadline = Instant::now() + Duration::from_secs(5);
-            let meet = || {
-                let me = rayon::current_thread_index();
-                seen.lock().expect("no poisoned lock").insert(me);
-                while seen.lock().expect("no poisoned lock").len() < 2 && Instant::now() < deadline
-                {
-                    std::thread::yield_now();
-                }
-            };
             let mut keys = Vec::new();
             extend_keys(MIN_ITEMS, &mut keys, |i, out| {
-                meet();
+                meet(deadline);
                 out.push(i as u128);
             });
             assert_eq!(
