@@ -119,14 +119,22 @@ mod tests {
             .expect("a pool")
     }
 
-    /// A step of [`MIN_ITEMS`] items on a pool of two threads runs on both: each item
-    /// records its thread and waits (until a deadline five seconds away) for a second
-    /// one, which can only come if the step handed work to the other thread. Smaller
-    /// steps, and any step on one thread, stay in the calling thread.
+    /// A step of [`MIN_ITEMS`] items on a pool of two or three threads runs on two of
+    /// them at least: each item records its thread and waits (until a deadline five
+    /// seconds away) for a second one, which can only come if the step handed work to
+    /// another thread. Smaller steps, and any step on one thread, stay in the calling
+    /// thread.
     #[test]
-    fn large_steps_use_both_threads_of_a_pool() {
-        pool(2).install(|| {
-            assert_eq!(threads(MIN_ITEMS), 2);
+    fn large_steps_use_two_threads_of_a_pool() {
+        for n in [2, 3] {
+            large_steps_use_two_threads_of(n);
+        }
+        pool(1).install(|| assert_eq!(threads(usize::MAX), 1));
+    }
+
+    fn large_steps_use_two_threads_of(n: usize) {
+        pool(n).install(|| {
+            assert_eq!(threads(MIN_ITEMS), n);
             assert_eq!(threads(MIN_ITEMS - 1), 1);
             let seen = Mutex::new(BTreeSet::new());
             // Records the calling thread, then waits (until `deadline`) for a second one.
@@ -158,7 +166,6 @@ mod tests {
                 "extend_keys"
             );
         });
-        pool(1).install(|| assert_eq!(threads(usize::MAX), 1));
     }
 
     /// `fill`, `extend_keys` and `sort` give what their sequential definitions give,
