@@ -661,23 +661,7 @@ fn contractible_edges(out: &Analysis, verdict: &mut Verdict) {
         if part.vertices.len() == 4 && part.faces == 4 {
             continue;
         }
-        let (na, nb) = (out.neighbours_of(a), out.neighbours_of(b));
-        let (mut i, mut j, mut other) = (0, 0, None);
-        while i < na.len() && j < nb.len() {
-            match na[i].cmp(&nb[j]) {
-                std::cmp::Ordering::Less => i += 1,
-                std::cmp::Ordering::Greater => j += 1,
-                std::cmp::Ordering::Equal => {
-                    if !opposite.contains(&na[i]) {
-                        other = Some(na[i]);
-                        break;
-                    }
-                    i += 1;
-                    j += 1;
-                }
-            }
-        }
-        if other.is_none() {
+        if out.other_common_neighbour(a, b, opposite).is_none() {
             verdict.fail(
                 Failure::new(
                     FailureKind::ContractibleEdge,

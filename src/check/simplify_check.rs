@@ -396,22 +396,7 @@ pub(super) fn passes_link_condition(
     if part.vertices.len() + part.boundary_loops == 4 && part.faces + boundary_edges == 4 {
         return false;
     }
-    let (na, nb) = (out.neighbours_of(a), out.neighbours_of(b));
-    let (mut i, mut j) = (0, 0);
-    while i < na.len() && j < nb.len() {
-        match na[i].cmp(&nb[j]) {
-            std::cmp::Ordering::Less => i += 1,
-            std::cmp::Ordering::Greater => j += 1,
-            std::cmp::Ordering::Equal => {
-                if !opposite.contains(&na[i]) {
-                    return false;
-                }
-                i += 1;
-                j += 1;
-            }
-        }
-    }
-    true
+    out.other_common_neighbour(a, b, opposite).is_none()
 }
 
 /// Per vertex, the faces holding it (CSR: `start`, `faces`).

@@ -58,6 +58,28 @@ impl Analysis {
         let v = v as usize;
         &self.neighbours[self.neighbour_start[v]..self.neighbour_start[v + 1]]
     }
+
+    /// A common neighbour of `a` and `b` that is not in `opposite`, if there is one (the
+    /// smallest): the link condition's witness. O(d_a + d_b), the two sorted lists
+    /// walked together.
+    pub fn other_common_neighbour(&self, a: u32, b: u32, opposite: [u32; 2]) -> Option<u32> {
+        let (na, nb) = (self.neighbours_of(a), self.neighbours_of(b));
+        let (mut i, mut j) = (0, 0);
+        while i < na.len() && j < nb.len() {
+            match na[i].cmp(&nb[j]) {
+                std::cmp::Ordering::Less => i += 1,
+                std::cmp::Ordering::Greater => j += 1,
+                std::cmp::Ordering::Equal => {
+                    if !opposite.contains(&na[i]) {
+                        return Some(na[i]);
+                    }
+                    i += 1;
+                    j += 1;
+                }
+            }
+        }
+        None
+    }
 }
 
 /// Union–find over `0..n`, by size, with path halving.
