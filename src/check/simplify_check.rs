@@ -1,6 +1,8 @@
 //! The verdict on an output of `simplify`: a surface of the input's type per component,
 //! with no edge shorter than ε left that could still be contracted.
 
+use std::collections::HashMap;
+
 use super::surface::{Analysis, Part};
 use super::{
     output_surface, same_components, surface_input, surface_name, Failure, FailureKind, Verdict,
@@ -302,10 +304,17 @@ fn output_positions<'m>(
 /// `component_split` (output: more components than the input has).
 fn same_surface_types(inp: &Analysis, out: &Analysis, verdict: &mut Verdict) {
     let key = |p: &Part| (p.euler(), p.orientable, p.boundary_loops);
+    // Per type, the output components of that type in order, taken from the front:
+    // O(components) instead of a scan of the output per input component.
+    let mut of_type: HashMap<(i64, bool, usize), std::collections::VecDeque<usize>> =
+        HashMap::new();
+    for (j, q) in out.parts.iter().enumerate() {
+        of_type.entry(key(q)).or_default().push_back(j);
+    }
     let mut taken = vec![false; out.parts.len()];
     let mut unpaired: Vec<usize> = Vec::new();
     for (k, p) in inp.parts.iter().enumerate() {
-        match (0..out.parts.len()).find(|&j| !taken[j] && key(&out.parts[j]) == key(p)) {
+        match of_type.get_mut(&key(p)).and_then(|js| js.pop_front()) {
             Some(j) => taken[j] = true,
             None => unpaired.push(k),
         }
