@@ -21,23 +21,29 @@
 //!   condition of the surface with boundary (each loop coned to its own apex; an edge
 //!   between two loops and a coned tetrahedron refused) unless the geometry guard of
 //!   the run ([`SimplifyCheck`]) refuses it.
+//! - [`quad()`]: every quad is two triangles of the paired triangulation (the input's
+//!   faces, or a stated K of the input's surface on its vertices, [`QuadCheck`]) split
+//!   along one of its diagonals, and every triangle is in exactly one quad: a perfect
+//!   pairing of edge-adjacent triangles.
 //!
-//! **Complexity.** O(F log F) for the surfaces, plus Σ over output edges of the two
-//! ends' degrees for the link condition (for `simplify`, over the short edges, plus
-//! their ends' faces for the guard).
+//! **Complexity.** O(F log F) for the surfaces (and O(F) expected for the pairing),
+//! plus Σ over output edges of the two ends' degrees for the link condition (for
+//! `simplify`, over the short edges, plus their ends' faces for the guard).
 //!
-//! An input that is not a valid input of the task (for `reduce`: not a closed surface;
-//! for `simplify`: no surface, or no usable positions or ε) is an error, not a failed
-//! verdict: the task must refuse it. (Only there does the checker call the core: its
+//! An input that is not a valid input of the task (for `reduce` and `quad`: not a
+//! closed surface; for `simplify`: no surface, or no usable positions or ε) is an
+//! error, not a failed verdict: the task must refuse it. (Only there does the checker call the core: its
 //! build locates the input's defect as every task reports it. The `simplify` checker
 //! takes the task's option types, `Eps` and `simplify::Position`, as plain values.)
 
+mod quad_check;
 mod simplify_check;
 mod surface;
 
 use std::collections::HashMap;
 
-use crate::{Error, TriMesh};
+use crate::{Error, Mesh, QuadMesh, TriMesh};
+pub use quad_check::QuadCheck;
 pub use simplify_check::SimplifyCheck;
 use surface::{analyse, push, Analysis, Part};
 
@@ -77,11 +83,23 @@ pub enum FailureKind {
     /// An edge shorter than ε passes the link condition of the surface with boundary
     /// (and the geometry guard, when it was on): the simplification stopped early.
     ShortContractibleEdge,
+    /// A quad is not two triangles of the paired triangulation split along one of its
+    /// diagonals.
+    QuadNotTwoTriangles,
+    /// A triangle of the paired triangulation is in two or more quads.
+    TriangleUsedTwice,
+    /// A triangle of the paired triangulation is in no quad.
+    TriangleUnused,
+    /// A stated pair is not the two triangles of its quad (or the pairs and the quads
+    /// differ in number).
+    WrongPair,
+    /// An input vertex is missing from a stated triangulation that must keep every one.
+    MissingVertex,
 }
 
 impl FailureKind {
     /// Every kind, in declaration order.
-    pub const ALL: [FailureKind; 15] = [
+    pub const ALL: [FailureKind; 20] = [
         FailureKind::VertexOutOfRange,
         FailureKind::DegenerateFace,
         FailureKind::RepeatedFace,
@@ -97,6 +115,11 @@ impl FailureKind {
         FailureKind::ContractibleEdge,
         FailureKind::InvalidPosition,
         FailureKind::ShortContractibleEdge,
+        FailureKind::QuadNotTwoTriangles,
+        FailureKind::TriangleUsedTwice,
+        FailureKind::TriangleUnused,
+        FailureKind::WrongPair,
+        FailureKind::MissingVertex,
     ];
 
     /// The kind's name in reports (snake case), stable across versions.
@@ -122,6 +145,11 @@ impl FailureKind {
             FailureKind::ContractibleEdge => "contractible_edge",
             FailureKind::InvalidPosition => "invalid_position",
             FailureKind::ShortContractibleEdge => "short_contractible_edge",
+            FailureKind::QuadNotTwoTriangles => "quad_not_two_triangles",
+            FailureKind::TriangleUsedTwice => "triangle_used_twice",
+            FailureKind::TriangleUnused => "triangle_unused",
+            FailureKind::WrongPair => "wrong_pair",
+            FailureKind::MissingVertex => "missing_vertex",
         }
     }
 }
@@ -200,6 +228,30 @@ impl Verdict {
     fn fail(&mut self, f: Failure) {
         push(&mut self.failures, &mut self.counts, f);
     }
+
+    /// Adds the reasons `failures` counted in `counts` (as [`surface::analyse`] lists
+    /// them: at most `LISTED` of a kind, every one counted).
+    fn absorb(&mut self, failures: Vec<Failure>, counts: Vec<(FailureKind, usize)>) {
+        for (kind, n) in counts {
+            match self.counts.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, m)) => *m += n,
+                None => self.counts.push((kind, n)),
+            }
+        }
+        self.failures.extend(failures);
+    }
+}
+
+/// The reason when no output vertex can be matched to the input's.
+fn no_matching(input: &TriMesh, output_vertices: usize) -> Failure {
+    Failure::new(
+        FailureKind::UnknownVertex,
+        format!(
+            "the output has {output_vertices} vertices, the input {}, and no positions to match \
+             them by",
+            input.vertex_count
+        ),
+    )
 }
 
 /// How the output's vertices are the input's.
@@ -220,11 +272,11 @@ enum Matching {
 /// vertices (one no earlier output component took, on a tie; components with a
 /// one-candidate vertex first), and each of its vertices the first candidate in that
 /// component no other output vertex took.
-fn match_vertices(
+fn match_vertices<const N: usize>(
     input: &TriMesh,
-    output: &TriMesh,
+    output: &Mesh<N>,
     inp: &Analysis,
-    out: &Analysis,
+    out_parts: &[&[u32]],
     verdict: &mut Verdict,
 ) -> Option<Matching> {
     let same_list = output.vertex_count == input.vertex_count
@@ -275,19 +327,14 @@ fn match_vertices(
             .and_then(|&q| at.get(&bits(q)))
             .map_or(&[], Vec::as_slice)
     };
-    let mut order: Vec<usize> = (0..out.parts.len()).collect();
-    order.sort_by_key(|&j| {
-        !out.parts[j]
-            .vertices
-            .iter()
-            .any(|&v| candidates(v).len() == 1)
-    });
+    let mut order: Vec<usize> = (0..out_parts.len()).collect();
+    order.sort_by_key(|&j| !out_parts[j].iter().any(|&v| candidates(v).len() == 1));
     let mut claimed = vec![false; inp.parts.len()];
     let mut taken = vec![false; input.vertex_count];
     let mut map = vec![u32::MAX; output.vertex_count];
     for j in order {
         let mut tally: Vec<(usize, usize)> = Vec::new();
-        for &v in &out.parts[j].vertices {
+        for &v in out_parts[j] {
             let mut ks: Vec<usize> = candidates(v)
                 .iter()
                 .map(|&i| part_of[i as usize])
@@ -309,7 +356,7 @@ fn match_vertices(
         if let Some(k) = home {
             claimed[k] = true;
         }
-        for &v in &out.parts[j].vertices {
+        for &v in out_parts[j] {
             let c = candidates(v);
             let pick = c
                 .iter()
@@ -350,7 +397,7 @@ fn part_of_vertex(inp: &Analysis, vertex_count: usize) -> Vec<usize> {
 }
 
 /// The output vertices its faces use, increasing.
-fn referenced(mesh: &TriMesh) -> Vec<u32> {
+fn referenced<const N: usize>(mesh: &Mesh<N>) -> Vec<u32> {
     let mut used = vec![false; mesh.vertex_count];
     for f in &mesh.faces {
         for &v in f {
@@ -449,14 +496,9 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
         // Not closed: the surface checks below would only restate it.
         return Ok(verdict);
     }
-    let Some(matching) = match_vertices(input, output, &inp, &out, &mut verdict) else {
-        verdict.fail(Failure::new(
-            FailureKind::UnknownVertex,
-            format!(
-                "the output has {} vertices, the input {}, and no positions to match them by",
-                output.vertex_count, input.vertex_count
-            ),
-        ));
+    let out_parts: Vec<&[u32]> = out.parts.iter().map(|p| p.vertices.as_slice()).collect();
+    let Some(matching) = match_vertices(input, output, &inp, &out_parts, &mut verdict) else {
+        verdict.fail(no_matching(input, output.vertex_count));
         return Ok(verdict);
     };
     let to_input = |v: u32| -> Option<u32> {
@@ -640,6 +682,42 @@ pub fn simplify(
     simplify_check::check(input, output, options)
 }
 
+/// Judges `output` as a tri-quad conversion of `input` (the task `quad`) with what the
+/// answer states besides its quads (`stated`: the paired triangulation K, when edges
+/// were flipped, and the pairs): every quad is two triangles of K split along one of
+/// its diagonals (the pair stated for it, when pairs are given), every triangle of K in
+/// exactly one quad, and K (when stated) a closed surface on the input's vertices with
+/// the input's surface per component (χ, orientability). Output vertices are matched to
+/// the input's as for [`reduce`]. The quad mesh is then a closed polygon surface of the
+/// input's χ per component (see `spec/conformance.md`).
+///
+/// # Errors
+/// [`Error::NotClosed`] or [`Error::Mesh`] (locating the first defect) when `input` is
+/// not a closed surface, which the conversion must refuse.
+///
+/// # Example
+/// ```
+/// use contractible::{check, gen, quadrangulate, QuadOptions};
+/// let sphere = gen::icosahedron();
+/// let ours = quadrangulate(&sphere, &QuadOptions::default())?;
+/// let stated = check::QuadCheck {
+///     triangles: Some(&ours.triangles),
+///     pairs: Some(&ours.pairs),
+/// };
+/// assert!(check::quad(&sphere, &ours.mesh, &stated)?.passed());
+/// // A quad given twice pairs its triangles twice and leaves two others unpaired.
+/// let mut wrong = ours.mesh.clone();
+/// wrong.faces[1] = wrong.faces[0];
+/// let k_only = check::QuadCheck { triangles: Some(&ours.triangles), pairs: None };
+/// let verdict = check::quad(&sphere, &wrong, &k_only)?;
+/// assert!(!verdict.passed());
+/// assert_eq!(verdict.failures[0].kind, check::FailureKind::TriangleUsedTwice);
+/// # Ok::<(), contractible::Error>(())
+/// ```
+pub fn quad(input: &TriMesh, output: &QuadMesh, stated: &QuadCheck<'_>) -> Result<Verdict, Error> {
+    quad_check::check(input, output, stated)
+}
+
 fn orientable_name(o: bool) -> &'static str {
     if o {
         "orientable"
@@ -678,6 +756,8 @@ fn contractible_edges(out: &Analysis, verdict: &mut Verdict) {
     }
 }
 
+#[cfg(test)]
+mod quad_tests;
 #[cfg(test)]
 mod simplify_tests;
 #[cfg(test)]

@@ -83,19 +83,19 @@ impl Analysis {
 }
 
 /// Union–find over `0..n`, by size, with path halving.
-struct Sets {
+pub(super) struct Sets {
     parent: Vec<u32>,
     size: Vec<u32>,
 }
 
 impl Sets {
-    fn new(n: usize) -> Self {
+    pub(super) fn new(n: usize) -> Self {
         Sets {
             parent: (0..n as u32).collect(),
             size: vec![1; n],
         }
     }
-    fn find(&mut self, mut x: u32) -> u32 {
+    pub(super) fn find(&mut self, mut x: u32) -> u32 {
         while self.parent[x as usize] != x {
             let g = self.parent[self.parent[x as usize] as usize];
             self.parent[x as usize] = g;
@@ -103,7 +103,7 @@ impl Sets {
         }
         x
     }
-    fn union(&mut self, a: u32, b: u32) {
+    pub(super) fn union(&mut self, a: u32, b: u32) {
         let (mut a, mut b) = (self.find(a), self.find(b));
         if a == b {
             return;
