@@ -415,6 +415,12 @@ pub struct QuadArgs {
     /// triangulation K, which keeps the input's face indices. `-` writes them to stdout.
     #[arg(long)]
     pub pairs: Option<PathBuf>,
+    /// Write the paired triangulation K here as a triangle mesh (.off/.obj/.ply/.stl,
+    /// optionally .gz; the input's vertices and positions, one face per input face, in the
+    /// input's order): the input's faces, except those LRS's flips changed. With the
+    /// quads and `--pairs`, what `check quad` needs to judge a conversion that flips.
+    #[arg(long, value_name = "FILE")]
+    pub triangles: Option<PathBuf>,
     /// Components of the mesh processed at once (default: one per CPU; 1 processes
     /// them one after another). The output is the same for every value.
     #[arg(long, short = 'j')]
@@ -471,7 +477,11 @@ const CHECK_AFTER_HELP: &str = "reduce: OUTPUT is a closed 2-manifold on INPUT's
 vertices (by id when OUTPUT keeps INPUT's vertex list, else by exact position) with \
 INPUT's positions, one component per input component with the same χ and \
 orientability, and irreducible: every edge fails the link condition (the tetrahedron \
-aside). simplify (with the run's --eps or --eps-rel, and its --position and \
+aside). quad (OUTPUT a quad mesh; with --triangles K and --pairs P when the run flipped \
+edges): every quad is two triangles of K (of INPUT's faces without --triangles) split \
+along one of its diagonals (the pair P states for it, if given), every triangle in \
+exactly one quad, and K a closed surface on INPUT's vertices of INPUT's surface per \
+component. simplify (with the run's --eps or --eps-rel, and its --position and \
 --allow-foldover): OUTPUT is a 2-manifold, boundary allowed, with finite positions, of \
 INPUT's surface per component (χ, orientability, boundary loops; by id when OUTPUT keeps \
 INPUT's vertex list, else as multisets of surface types), and no edge strictly shorter \
@@ -485,6 +495,8 @@ kind are listed, with the count of all.";
 pub enum CheckTask {
     /// An irreducible triangulation of every component.
     Reduce,
+    /// A perfect pairing of edge-adjacent triangles, as quads.
+    Quad,
     /// Every edge shorter than ε contracted that the link condition and the guard allow.
     Simplify,
 }
@@ -512,6 +524,14 @@ pub struct CheckArgs {
     /// link condition must then be gone).
     #[arg(long)]
     pub allow_foldover: bool,
+    /// quad: the triangulation K the quads pair, a triangle mesh in OUTPUT's vertex ids
+    /// (as `quad --triangles` writes it); without it, the quads must pair INPUT's faces.
+    #[arg(long, value_name = "FILE")]
+    pub triangles: Option<PathBuf>,
+    /// quad: the pairs, one line per quad of two 0-based face indices of K (of INPUT
+    /// without --triangles), as `quad --pairs` writes them.
+    #[arg(long, value_name = "FILE")]
+    pub pairs: Option<PathBuf>,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

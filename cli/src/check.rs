@@ -1,13 +1,15 @@
-//! `contractible check TASK INPUT OUTPUT [--eps E | --eps-rel R]`: the verdict of [`contractible::check`] on an
+//! `contractible check TASK INPUT OUTPUT [options]`: the verdict of [`contractible::check`] on an
 //! output of any implementation.
 
 use std::collections::BTreeMap;
 
-use contractible::check::{self, SimplifyCheck, Verdict};
-use contractible::Eps;
+use std::path::{Path, PathBuf};
+
+use contractible::check::{self, QuadCheck, SimplifyCheck, Verdict};
+use contractible::{Eps, QuadMesh};
 use serde::Serialize;
 
-use super::args::{CheckArgs, CheckTask};
+use super::args::{CheckArgs, CheckTask, InputOpts};
 use super::{meshio, print_json, CliError, Ui};
 
 /// One reason in the JSON report.
@@ -60,25 +62,49 @@ fn report(args: &CheckArgs, v: &Verdict) -> CheckReport {
     }
 }
 
-/// The options of `check simplify` (`None` for `check reduce`, which takes none).
-fn simplify_options(args: &CheckArgs) -> Result<Option<SimplifyCheck>, CliError> {
-    let given: Vec<&str> = [
+/// The task's options, checked against the task.
+enum Judged {
+    Reduce,
+    Quad {
+        triangles: Option<PathBuf>,
+        pairs: Option<PathBuf>,
+    },
+    Simplify(SimplifyCheck),
+}
+
+/// The options `args` gives, refused where they belong to another task.
+fn judged(args: &CheckArgs) -> Result<Judged, CliError> {
+    let simplify_flags = [
         ("--eps", args.eps.is_some()),
         ("--eps-rel", args.eps_rel.is_some()),
         ("--position", args.position.is_some()),
         ("--allow-foldover", args.allow_foldover),
-    ]
-    .iter()
-    .filter(|&&(_, on)| on)
-    .map(|&(flag, _)| flag)
-    .collect();
-    match args.task {
-        CheckTask::Reduce => match given.first() {
-            Some(flag) => Err(CliError::Input(format!(
-                "{flag} is an option of `check simplify`, not of `check reduce`"
+    ];
+    let quad_flags = [
+        ("--triangles", args.triangles.is_some()),
+        ("--pairs", args.pairs.is_some()),
+    ];
+    let foreign = |flags: &[(&'static str, bool)], owner: &str| -> Result<(), CliError> {
+        match flags.iter().find(|&&(_, on)| on) {
+            Some((flag, _)) => Err(CliError::Input(format!(
+                "{flag} is an option of `check {owner}`, not of `check {}`",
+                task_name(args.task)
             ))),
-            None => Ok(None),
-        },
+            None => Ok(()),
+        }
+    };
+    if args.task != CheckTask::Simplify {
+        foreign(&simplify_flags, "simplify")?;
+    }
+    if args.task != CheckTask::Quad {
+        foreign(&quad_flags, "quad")?;
+    }
+    match args.task {
+        CheckTask::Reduce => Ok(Judged::Reduce),
+        CheckTask::Quad => Ok(Judged::Quad {
+            triangles: args.triangles.clone(),
+            pairs: args.pairs.clone(),
+        }),
         CheckTask::Simplify => {
             let eps = match (args.eps, args.eps_rel) {
                 (Some(e), _) => Eps::Absolute(e),
@@ -89,7 +115,7 @@ fn simplify_options(args: &CheckArgs) -> Result<Option<SimplifyCheck>, CliError>
                     ))
                 }
             };
-            Ok(Some(SimplifyCheck {
+            Ok(Judged::Simplify(SimplifyCheck {
                 eps,
                 position: args.position.unwrap_or_default(),
                 allow_foldover: args.allow_foldover,
@@ -98,16 +124,99 @@ fn simplify_options(args: &CheckArgs) -> Result<Option<SimplifyCheck>, CliError>
     }
 }
 
+fn task_name(t: CheckTask) -> &'static str {
+    match t {
+        CheckTask::Reduce => "reduce",
+        CheckTask::Quad => "quad",
+        CheckTask::Simplify => "simplify",
+    }
+}
+
+/// The output of `check quad`: its faces must all be quads.
+fn read_quads(path: &Path, opts: &InputOpts, ui: Ui) -> Result<QuadMesh, CliError> {
+    let loaded = meshio::load(path, opts, ui)?;
+    let poly = &loaded.poly;
+    let mut faces = Vec::with_capacity(poly.face_count());
+    for i in 0..poly.face_count() {
+        match <[u32; 4]>::try_from(poly.face(i)) {
+            Ok(q) => faces.push(q),
+            Err(_) => {
+                return Err(CliError::Input(format!(
+                    "{}: {} has {} corners: a quad output has quads only",
+                    loaded.names.shown,
+                    loaded.names.face(i),
+                    poly.face(i).len()
+                )))
+            }
+        }
+    }
+    Ok(QuadMesh {
+        vertex_count: poly.vertex_count,
+        positions: poly.positions.clone(),
+        faces,
+    })
+}
+
+/// A pairs file: one line per quad, two 0-based face indices (blank lines skipped).
+fn read_pairs(path: &Path) -> Result<Vec<[u32; 2]>, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let mut pairs = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        if line.trim().is_empty() {
+            continue;
+        }
+        let mut words = line.split_whitespace().map(str::parse::<u32>);
+        match (words.next(), words.next(), words.next()) {
+            (Some(Ok(f)), Some(Ok(g)), None) => pairs.push([f, g]),
+            _ => {
+                return Err(CliError::Input(format!(
+                    "{}:{}: expected two face indices (0-based integers), found {:?}",
+                    path.display(),
+                    n + 1,
+                    line.trim()
+                )))
+            }
+        }
+    }
+    Ok(pairs)
+}
+
 pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
-    let simplify = simplify_options(args)?;
+    let judged = judged(args)?;
     let (input, _, _, names) = meshio::read_input(&args.input, &args.input_opts, ui)?;
-    let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
-    let verdict = match simplify {
-        None => check::reduce(&input, &output)
-            .map_err(|e| meshio::task_error(&input, &names, "check reduce", e)),
-        Some(o) => check::simplify(&input, &output, &o)
-            .map_err(|e| meshio::task_error(&input, &names, "check simplify", e)),
-    }?;
+    let (verdict, faces) = match &judged {
+        Judged::Reduce => {
+            let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
+            let v = check::reduce(&input, &output)
+                .map_err(|e| meshio::task_error(&input, &names, "check reduce", e))?;
+            (v, output.faces.len())
+        }
+        Judged::Simplify(o) => {
+            let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
+            let v = check::simplify(&input, &output, o)
+                .map_err(|e| meshio::task_error(&input, &names, "check simplify", e))?;
+            (v, output.faces.len())
+        }
+        Judged::Quad { triangles, pairs } => {
+            let output = read_quads(&args.output, &args.input_opts, ui)?;
+            let k = match triangles {
+                Some(path) => Some(meshio::read_input(path, &args.input_opts, ui)?.0.faces),
+                None => None,
+            };
+            let pairs = match pairs {
+                Some(path) => Some(read_pairs(path)?),
+                None => None,
+            };
+            let stated = QuadCheck {
+                triangles: k.as_deref(),
+                pairs: pairs.as_deref(),
+            };
+            let v = check::quad(&input, &output, &stated)
+                .map_err(|e| meshio::task_error(&input, &names, "check quad", e))?;
+            (v, output.faces.len())
+        }
+    };
     let r = report(args, &verdict);
     if ui.json {
         print_json(&r)?;
@@ -118,7 +227,7 @@ pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
                 r.output,
                 r.task,
                 r.input,
-                output.faces.len()
+                faces
             );
         } else {
             outln!(

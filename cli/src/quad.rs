@@ -1,4 +1,5 @@
-//! `contractible quad IN [-o OUT] [--pairs FILE]`: tri-quad conversion per component.
+//! `contractible quad IN [-o OUT] [--pairs FILE] [--triangles FILE]`: tri-quad conversion
+//! per component.
 
 use std::path::Path;
 use std::time::Instant;
@@ -19,6 +20,9 @@ pub struct QuadReport {
     pub file: String,
     pub output: Option<String>,
     pub pairs: Option<String>,
+    /// The paired triangulation's file (absent without `--triangles`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub triangles: Option<String>,
     pub seed: u64,
     pub components: usize,
     pub dropped_vertices: usize,
@@ -38,6 +42,9 @@ pub struct QuadReport {
     /// Writing the pairs file (absent without `--pairs`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seconds_write_pairs: Option<f64>,
+    /// Writing the paired triangulation (absent without `--triangles`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds_write_triangles: Option<f64>,
 }
 
 /// What the bar of the conversions says.
@@ -100,6 +107,24 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
             meshio::check_side_file(p, &[&a.input])?;
         }
     }
+    let triangles = match &a.triangles {
+        Some(t) => {
+            if t.as_os_str() == "-" {
+                return Err(CliError::Input(
+                    "--triangles writes a mesh file: give it a file name, not -".into(),
+                ));
+            }
+            let o = meshio::check_output(t, None, &[&a.input])?;
+            if output.as_ref().is_some_and(|out| out.path == o.path) {
+                return Err(CliError::Input(format!(
+                    "{}: -o and --triangles name the same file",
+                    o.display()
+                )));
+            }
+            Some(o)
+        }
+        None => None,
+    };
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
     let r = with_jobs(a.jobs, |parallel| {
@@ -118,10 +143,22 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
         write_pairs(path, &r.pairs)?;
         seconds_write_pairs = Some(t.elapsed().as_secs_f64());
     }
+    let seconds_write_triangles = match &triangles {
+        Some(out) => {
+            let k = TriMesh {
+                vertex_count: r.mesh.vertex_count,
+                positions: r.mesh.positions.clone(),
+                faces: r.triangles.clone(),
+            };
+            Some(meshio::write(out, &k, ui)?)
+        }
+        None => None,
+    };
     Ok(QuadReport {
         file: a.input.display().to_string(),
         output: output.as_ref().map(meshio::Output::display),
         pairs: a.pairs.as_deref().map(|p: &Path| p.display().to_string()),
+        triangles: triangles.as_ref().map(meshio::Output::display),
         seed: a.seed,
         components: r.components.len(),
         dropped_vertices: r.dropped_vertices,
@@ -133,6 +170,7 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
         seconds_verify: r.seconds_verify.unwrap_or(0.0),
         seconds_write,
         seconds_write_pairs,
+        seconds_write_triangles,
     })
 }
 
@@ -170,8 +208,14 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         if let Some(w) = report.seconds_write_pairs {
             steps.push(format!("write pairs {w:.3} s"));
         }
+        if let Some(w) = report.seconds_write_triangles {
+            steps.push(format!("write triangles {w:.3} s"));
+        }
         outln!("time: {}", steps.join(", "));
-        for o in [&report.output, &report.pairs].into_iter().flatten() {
+        for o in [&report.output, &report.pairs, &report.triangles]
+            .into_iter()
+            .flatten()
+        {
             outln!("wrote {o}");
         }
     }

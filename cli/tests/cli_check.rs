@@ -5,7 +5,8 @@
 use contractible::check;
 
 use crate::cli_common::{
-    data_closed, grid_torus, read_mesh, run, run_json, stderr, with_holes, write_off_text, Scratch,
+    data_closed, gen_file, grid_torus, read_mesh, run, run_json, stderr, with_holes,
+    write_off_text, Scratch,
 };
 
 #[test]
@@ -130,9 +131,9 @@ fn check_reduce_exits_2_on_unreadable_files_and_inputs_reduce_refuses() {
     assert_eq!(j["error"]["kind"], "input");
 }
 
-/// The JSON verdict of `check simplify` on two files equals the library's on the meshes.
+/// The JSON verdict of `check` on two files equals the library's on the meshes.
 fn same_as_library(j: &serde_json::Value, verdict: &check::Verdict) {
-    assert_eq!(j["task"], "simplify");
+    assert_eq!(j["task"], verdict.task);
     assert_eq!(j["passed"], verdict.passed());
     let listed = j["failures"].as_array().expect("failures");
     assert_eq!(listed.len(), verdict.failures.len());
@@ -308,4 +309,143 @@ fn check_simplify_exits_2_without_eps_and_on_inputs_simplify_refuses() {
     assert_eq!(r.status.code(), Some(2), "{}", stderr(&r));
     let j: serde_json::Value = serde_json::from_slice(&r.stdout).expect("JSON");
     assert_eq!(j["error"]["kind"], "input");
+}
+
+#[test]
+fn check_quad_judges_the_files_quad_writes_with_and_without_k() {
+    let d = Scratch::new("check-quad");
+    // LRS flips edges on this genus-2 surface (asserted below): without K its quads are
+    // not pairs of input faces.
+    let input = gen_file(
+        &d,
+        "g2.off",
+        &["random", "--genus", "2", "--faces", "300", "--seed", "1"],
+    );
+    let (out, k, pairs) = (d.path("q.off"), d.path("k.off"), d.path("p.txt"));
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_owned();
+    let conv = run_json(&[
+        "quad",
+        &s(&input),
+        "--algo",
+        "lrs",
+        "-o",
+        &s(&out),
+        "--triangles",
+        &s(&k),
+        "--pairs",
+        &s(&pairs),
+    ]);
+    assert!(conv["flips"].as_u64().unwrap_or(0) > 0, "{conv}");
+    assert_eq!(conv["triangles"], s(&k));
+    let full = [
+        "check",
+        "quad",
+        &s(&input),
+        &s(&out),
+        "--triangles",
+        &s(&k),
+        "--pairs",
+        &s(&pairs),
+    ];
+    let ok = run(&full);
+    assert_eq!(ok.status.code(), Some(0), "{}", stderr(&ok));
+    assert!(String::from_utf8_lossy(&ok.stdout).contains("a correct quad output"));
+    // Without K: exit 1, the verdict the library gives on the same meshes.
+    let mesh = read_mesh(&input);
+    let quads = contractible::io::read_poly_mesh(&out, None)
+        .expect("reads")
+        .mesh;
+    let quads = contractible::QuadMesh {
+        vertex_count: quads.vertex_count,
+        positions: quads.positions.clone(),
+        faces: quads.faces().map(|f| [f[0], f[1], f[2], f[3]]).collect(),
+    };
+    let verdict = check::quad(&mesh, &quads, &check::QuadCheck::default()).expect("closed");
+    assert!(!verdict.passed());
+    let bare = run(&["check", "--json", "quad", &s(&input), &s(&out)]);
+    assert_eq!(bare.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&bare.stdout).expect("JSON");
+    same_as_library(&j, &verdict);
+    assert!(j["failures"][0]["message"]
+        .as_str()
+        .is_some_and(|m| m.contains("must state the triangulation")));
+    // Pairs swapped: exit 1 naming the pair.
+    let text = std::fs::read_to_string(&pairs).expect("pairs");
+    let mut lines: Vec<&str> = text.lines().collect();
+    lines.swap(0, 1);
+    let swapped = d.path("swapped.txt");
+    std::fs::write(&swapped, lines.join("\n")).expect("writes");
+    let r = run(&[
+        "check",
+        "--json",
+        "quad",
+        &s(&input),
+        &s(&out),
+        "--triangles",
+        &s(&k),
+        "--pairs",
+        &s(&swapped),
+    ]);
+    assert_eq!(r.status.code(), Some(1));
+    let r: serde_json::Value = serde_json::from_slice(&r.stdout).expect("JSON");
+    assert_eq!(r["passed"], false);
+    assert_eq!(r["failures"][0]["kind"], "wrong_pair");
+    assert_eq!(r["failures"][0]["face"], 0);
+}
+
+#[test]
+fn check_quad_exits_2_on_files_it_cannot_read_as_an_answer() {
+    let d = Scratch::new("check-quad-errors");
+    let input = data_closed("bunny_npm");
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_owned();
+    let (out, pairs) = (d.path("q.off"), d.path("p.txt"));
+    let r = run(&[
+        "quad",
+        &s(&input),
+        "--algo",
+        "matching",
+        "-o",
+        &s(&out),
+        "-q",
+    ]);
+    assert!(r.status.success(), "{}", stderr(&r));
+    // A triangle mesh is no quad answer: located.
+    let r = run(&["check", "quad", &s(&input), &s(&input)]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(stderr(&r).contains("has 3 corners"), "{}", stderr(&r));
+    // A malformed pairs file: its line.
+    std::fs::write(&pairs, "0 1\n2 x\n").expect("writes");
+    let r = run(&["check", "quad", &s(&input), &s(&out), "--pairs", &s(&pairs)]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(stderr(&r).contains("p.txt:2:"), "{}", stderr(&r));
+    // Options of another task.
+    let r = run(&["check", "quad", &s(&input), &s(&out), "--eps", "0.1"]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(
+        stderr(&r).contains("--eps is an option of `check simplify`"),
+        "{}",
+        stderr(&r)
+    );
+    let r = run(&[
+        "check",
+        "reduce",
+        &s(&input),
+        &s(&input),
+        "--pairs",
+        &s(&pairs),
+    ]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(
+        stderr(&r).contains("--pairs is an option of `check quad`"),
+        "{}",
+        stderr(&r)
+    );
+    // `quad --triangles -` is refused before any work.
+    let r = run(&["quad", &s(&input), "--triangles", "-"]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(
+        stderr(&r).contains("--triangles writes a mesh file"),
+        "{}",
+        stderr(&r)
+    );
 }

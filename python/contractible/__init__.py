@@ -378,7 +378,8 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
           vertex_count: Optional[int] = None,
           out_vertex_count: Optional[int] = None,
           eps: Optional[float] = None, eps_rel: Optional[float] = None,
-          position: str = "midpoint", guard: bool = True) -> Dict[str, Any]:
+          position: str = "midpoint", guard: bool = True,
+          triangles: Any = None, pairs: Any = None) -> Dict[str, Any]:
     """Judges ``(V_out, F_out)``, made by any implementation, as an output of ``task``
     on ``(V, F)``, by its properties (not its bytes); the command line's
     ``contractible check TASK INPUT OUTPUT --json`` without the file names.
@@ -399,20 +400,40 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
     it (recomputed at the midpoint; with ``position="quadric"`` and the guard on, no
     short edge is judged).
 
+    Or ``"quad"``, with ``F_out`` the quads ``(m, 4)`` and, from a conversion that
+    flips edges, the ``triangles`` K it paired (``(t, 3)``, in the output's indices)
+    and optionally the ``pairs`` (``(m, 2)``, rows of K, of ``F`` without
+    ``triangles``), as :func:`quadrangulate` returns them: every quad must be two
+    triangles of K split along one of its diagonals (the stated pair, if given), every
+    triangle in exactly one quad, and K a closed surface on the input's vertices of
+    its surface per component.
+
     Returns a dict: ``task``, ``passed`` (bool), ``counts`` (per failure kind, every
     reason found) and ``failures`` (at most 20 of a kind: ``kind``, ``message`` and,
     where known, ``face``, ``edge``, ``vertex``, ``component``). Raises
     :class:`MeshError` when the input is not one the task accepts (for ``reduce``: not a
     closed surface; for ``simplify``: no surface), ``ValueError`` for an unknown task, a
-    bad array, a missing, doubled or bad ε, ε given for ``reduce``, or no input
-    positions for ``simplify``.
+    bad array, a missing, doubled or bad ε, ε given for another task than ``simplify``,
+    ``triangles`` or ``pairs`` for another than ``quad``, or no input positions for
+    ``simplify``.
     """
     task = str(task)
     Va, Fa = _vertices(V), _faces(F)
-    Vb, Fb = _vertices(V_out), _faces(F_out)
+    Vb, Fb = _vertices(V_out), _faces(F_out, (4,) if task == "quad" else (3,))
+    if task != "quad" and (triangles is not None or pairs is not None):
+        raise ValueError(f"check: triangles and pairs are options of \"quad\", not {task!r}")
     if task != "simplify":
         if eps is not None or eps_rel is not None:
             raise ValueError(f"check: eps and eps_rel are options of \"simplify\", not {task!r}")
+        if task == "quad":
+            K = None if triangles is None else _faces(triangles)
+            P = None
+            if pairs is not None:
+                if np.asarray(pairs).ndim != 2 or np.asarray(pairs).shape[1] != 2:
+                    raise ValueError(f"pairs must have shape (m, 2), got {np.asarray(pairs).shape}")
+                P = _faces(pairs, (2,))
+            return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count,
+                                 triangles=K, pairs=P)
         return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count)
     if (eps is None) == (eps_rel is None):
         raise ValueError("check: give exactly one of eps and eps_rel for \"simplify\"")

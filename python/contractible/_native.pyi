@@ -40,4 +40,8 @@ def decimate(vertices: Optional[_Coords], faces: _Indices, target_faces: Optiona
              schedule: str = "exact") -> Dict[str, Any]: ...
 def check(task: str, vertices: Optional[_Coords], faces: _Indices,
           vertex_count: Optional[int], out_vertices: Optional[_Coords],
-          out_faces: _Indices, out_vertex_count: Optional[int]) -> Dict[str, Any]: ...
+          out_faces: _Indices, out_vertex_count: Optional[int],
+          eps: Optional[float] = None, relative: bool = False,
+          position: str = "midpoint", guard: bool = True,
+          triangles: Optional[_Indices] = None,
+          pairs: Optional[_Indices] = None) -> Dict[str, Any]: ...

@@ -783,8 +783,9 @@ fn decimate_py<'py>(
 /// file names (`task`, `passed`, `counts`, `failures`).
 #[pyfunction(name = "check")]
 /// For `simplify`: `eps` (absolute, or with `relative=True` a fraction of the
-/// bounding-box diagonal), the run's `position` and `guard`.
-#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true))]
+/// bounding-box diagonal), the run's `position` and `guard`. For `quad` (`out_faces`
+/// `(m, 4)`): the stated `triangles` K (in the output's ids) and `pairs` (rows of K).
+#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true, triangles=None, pairs=None))]
 #[allow(clippy::too_many_arguments)]
 fn check_py<'py>(
     py: Python<'py>,
@@ -799,8 +800,29 @@ fn check_py<'py>(
     relative: bool,
     position: &str,
     guard: bool,
+    triangles: Option<Indices<'py>>,
+    pairs: Option<Indices<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let input = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
+    if task == "quad" {
+        let output = mesh::<4>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
+        let k = match &triangles {
+            Some(t) => Some(mesh::<3>(py, None, t, Some(output.vertex_count))?.faces),
+            None => None,
+        };
+        let pairs = match &pairs {
+            Some(p) => Some(pair_list(p)?),
+            None => None,
+        };
+        let stated = contractible::check::QuadCheck {
+            triangles: k.as_deref(),
+            pairs: pairs.as_deref(),
+        };
+        let verdict = py
+            .detach(|| contractible::check::quad(&input, &output, &stated))
+            .map_err(|e| raise(py, &e, None))?;
+        return verdict_dict(py, &verdict);
+    }
     let output = mesh::<3>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
     let verdict = match task {
         "reduce" => py.detach(|| contractible::check::reduce(&input, &output)),
@@ -823,11 +845,50 @@ fn check_py<'py>(
         }
         other => {
             return Err(PyValueError::new_err(format!(
-                "check: unknown task {other:?} (expected \"reduce\" or \"simplify\")"
+                "check: unknown task {other:?} (expected \"reduce\", \"quad\" or \"simplify\")"
             )))
         }
     }
     .map_err(|e| raise(py, &e, None))?;
+    verdict_dict(py, &verdict)
+}
+
+/// A `(m, 2)` array of row indices (each in `0..2³²`; the checker judges the range).
+fn pair_list(p: &Indices<'_>) -> PyResult<Vec<[u32; 2]>> {
+    if p.shape()[1] != 2 {
+        return Err(PyValueError::new_err(format!(
+            "pairs must have shape (m, 2), got ({}, {})",
+            p.shape()[0],
+            p.shape()[1]
+        )));
+    }
+    fn rows<T: Copy + Into<i64>>(values: &[T]) -> PyResult<Vec<[u32; 2]>> {
+        values
+            .chunks_exact(2)
+            .enumerate()
+            .map(|(i, r)| {
+                let get = |x: T| {
+                    let x: i64 = x.into();
+                    u32::try_from(x).map_err(|_| {
+                        PyValueError::new_err(format!("pair {i}: {x} is no face index"))
+                    })
+                };
+                Ok([get(r[0])?, get(r[1])?])
+            })
+            .collect()
+    }
+    match p {
+        Indices::I64(a) => with_values(a, rows),
+        Indices::I32(a) => with_values(a, rows),
+        Indices::U32(a) => with_values(a, rows),
+    }
+}
+
+/// A verdict as the dict `contractible check --json` prints, without the file names.
+fn verdict_dict<'py>(
+    py: Python<'py>,
+    verdict: &contractible::check::Verdict,
+) -> PyResult<Bound<'py, PyDict>> {
     let counts = PyDict::new(py);
     let mut sorted = verdict.counts.clone();
     sorted.sort_by_key(|&(k, _)| k.name());

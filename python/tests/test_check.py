@@ -155,3 +155,51 @@ def test_simplify_check_refusals():
         c.check("simplify", None, F, V, F, eps=0.1)
     with pytest.raises(c.MeshError):
         c.check("simplify", V, np.vstack([F, F[:1]]), V, F, eps=0.1)
+
+
+@pytest.mark.parametrize("algo", ["lrs", "ps", "matching", "ds"])
+def test_quad_answers_pass_and_the_cli_agrees(algo, cli, tmp_path, mesh_file):
+    src = mesh_file("high_genus_3")
+    V, F = c.read(src)
+    q = c.quad(V, F, algo=algo)
+    ok = c.check("quad", V, F, q.vertices, q.quads, triangles=q.triangles, pairs=q.pairs)
+    assert ok == {"task": "quad", "passed": True, "counts": {}, "failures": []}
+    # Without K the quads must pair the input's faces: true unless edges were flipped.
+    bare = c.check("quad", V, F, q.vertices, q.quads)
+    flipped = not np.array_equal(q.triangles, F)
+    assert bare["passed"] == (not flipped)
+    # The command line's verdict on the files `quad` writes is the same.
+    out, k, p = tmp_path / "q.off", tmp_path / "k.off", tmp_path / "p.txt"
+    cli("quad", src, "--algo", algo, "-o", out, "--triangles", k, "--pairs", p, "-q")
+    for extra, expected in (([], bare), (["--triangles", k, "--pairs", p], ok)):
+        r = cli("--json", "check", "quad", src, out, *extra, check=False)
+        assert r.returncode == (0 if expected["passed"] else 1), r.stderr
+        t = json.loads(r.stdout)
+        for key in ("task", "passed", "counts", "failures"):
+            assert t[key] == expected[key], key
+
+
+def test_wrong_quad_answers_are_located():
+    V, F = c.read(data_mesh("bunny_npm"))
+    q = c.quad(V, F, algo="matching")
+    Q = q.quads.copy()
+    Q[3] = Q[0]
+    v = c.check("quad", V, F, q.vertices, Q)
+    assert v["counts"] == {"triangle_used_twice": 2, "triangle_unused": 2}
+    P = q.pairs.copy()
+    P[[0, 1]] = P[[1, 0]]
+    v = c.check("quad", V, F, q.vertices, q.quads, pairs=P)
+    assert v["counts"]["wrong_pair"] == 2
+    assert v["failures"][0]["face"] == 0
+    Q = q.quads.copy()
+    Q[7, [1, 2]] = Q[7, [2, 1]]
+    v = c.check("quad", V, F, q.vertices, Q)
+    assert "quad_not_two_triangles" in v["counts"]
+    with pytest.raises(ValueError, match="options of \"quad\""):
+        c.check("reduce", V, F, V, F, pairs=q.pairs)
+    with pytest.raises(ValueError, match="shape"):
+        c.check("quad", V, F, q.vertices, q.quads, pairs=q.pairs[:, :1])
+    with pytest.raises(ValueError, match="shape"):
+        c.check("quad", V, F, V, F)
+    with pytest.raises(c.MeshError):
+        c.check("quad", V, F[1:], q.vertices, q.quads)

@@ -154,10 +154,13 @@ pub(super) fn check(
             Cow::Owned(mapped)
         }
     };
-    let which = if stated.triangles.is_some() {
-        "stated triangle"
+    let (which, hint) = if stated.triangles.is_some() {
+        ("stated triangle", "")
     } else {
-        "input face"
+        (
+            "input face",
+            " (a conversion that flips edges must state the triangulation it paired)",
+        )
     };
     let row: HashMap<[u32; 3], u32> = k_faces
         .iter()
@@ -213,7 +216,7 @@ pub(super) fn check(
                         FailureKind::QuadNotTwoTriangles,
                         format!(
                             "output quad {i} {q:?} is not two {which}s sharing one of its \
-                             diagonals"
+                             diagonals{hint}"
                         ),
                     )
                     .face(i),
