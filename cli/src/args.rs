@@ -78,6 +78,17 @@ contracted is replaced by one vertex (--position). It is unrelated to the ε col
     /// the task accepts.
     #[command(after_help = CHECK_AFTER_HELP)]
     Check(CheckArgs),
+    /// Run an implementation of the conformance protocol (any program: a port, another
+    /// library's wrapper) over the suite, one process per case, and judge every answer
+    /// by its properties (with --exact, also against the stored output): exit 0 when
+    /// every selected case passes, 1 when any fails or times out, 2 for a usage error.
+    #[command(after_help = CONFORMANCE_AFTER_HELP)]
+    Conformance(ConformanceArgs),
+    /// Answer one conformance case with this library: read the case (a JSON object) on
+    /// stdin, print the answer on stdout (exit 0), or the refusal
+    /// `{"error": {"kind", "message"}}` (exit 2). The adapter `conformance --impl
+    /// 'contractible answer'` runs.
+    Answer,
     /// Run the main job on built-in inputs: generate, describe, reduce with RS, Schipper
     /// and the brute force, pair into quads, simplify marching-tetrahedra isosurfaces
     /// (naive and nested, ε = 1 % of the bounding-box diagonal), verify.
@@ -472,6 +483,18 @@ pub struct SimplifyArgs {
     pub input_opts: InputOpts,
 }
 
+/// The protocol and the verdicts of `conformance`.
+const CONFORMANCE_AFTER_HELP: &str = "Each case is written to the implementation's \
+standard input as one JSON object {\"protocol\": 1, \"id\", \"task\", \"options\", \
+\"vertex_count\", \"faces\", \"positions\"}; it answers with one JSON object on its \
+standard output: {\"faces\", \"positions\"} (for quad also \"triangles\" and \"pairs\") \
+and exit code 0, or {\"error\": {\"kind\", \"message\"}} and a nonzero exit code for \
+an input it refuses (spec/conformance.md). A valid case passes when the answer passes \
+`check` (and, with --exact, equals the stored output); an invalid case passes when the \
+input is refused. Before the run, the checker must reject every wrong answer of the \
+suite with its stated reason. --script prints the --skip arguments of the failures, to \
+commit as known failures.";
+
 /// What `check` verifies.
 const CHECK_AFTER_HELP: &str = "reduce: OUTPUT is a closed 2-manifold on INPUT's \
 vertices (by id when OUTPUT keeps INPUT's vertex list, else by exact position) with \
@@ -534,6 +557,81 @@ pub struct CheckArgs {
     pub pairs: Option<PathBuf>,
     #[command(flatten)]
     pub input_opts: InputOpts,
+}
+
+/// A task of the conformance protocol.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ProtocolTask {
+    Reduce,
+    Quad,
+    Simplify,
+}
+
+impl ProtocolTask {
+    pub fn name(self) -> &'static str {
+        match self {
+            ProtocolTask::Reduce => "reduce",
+            ProtocolTask::Quad => "quad",
+            ProtocolTask::Simplify => "simplify",
+        }
+    }
+}
+
+/// A class of conformance cases.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CaseClass {
+    /// Inputs with a correct answer.
+    Valid,
+    /// Inputs the implementation must refuse.
+    Invalid,
+}
+
+impl CaseClass {
+    pub fn class(self) -> crate::conformance::suite::Class {
+        match self {
+            CaseClass::Valid => crate::conformance::suite::Class::Valid,
+            CaseClass::Invalid => crate::conformance::suite::Class::Invalid,
+        }
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct ConformanceArgs {
+    /// The implementation: a program and its arguments, quoted as a shell would (run
+    /// once per case, without a shell).
+    #[arg(long = "impl", value_name = "CMD ARGS")]
+    pub implementation: String,
+    /// The suite folder: its vectors/*.jsonl and suite/*.jsonl (default: spec, the
+    /// repository's).
+    #[arg(long, value_name = "DIR", default_value = "spec")]
+    pub suite: PathBuf,
+    /// Only the cases of this task (repeatable).
+    #[arg(long, value_enum)]
+    pub task: Vec<ProtocolTask>,
+    /// Only the cases of this class.
+    #[arg(long, value_enum)]
+    pub class: Option<CaseClass>,
+    /// Also demand the stored output where a case has one (for faithful ports).
+    #[arg(long)]
+    pub exact: bool,
+    /// Only the cases whose id matches this glob (repeatable: any of them).
+    #[arg(long, value_name = "GLOB")]
+    pub run: Vec<String>,
+    /// Skip the cases whose id matches this glob (repeatable): known failures.
+    #[arg(long, value_name = "GLOB")]
+    pub skip: Vec<String>,
+    /// Skip the invalid cases (an implementation that does not validate its input).
+    #[arg(long)]
+    pub skip_must_fail: bool,
+    /// Seconds a case may take before it is stopped and counted as timed out.
+    #[arg(long, value_name = "S", default_value_t = 10.0)]
+    pub timeout: f64,
+    /// Cases run at once (default: one per CPU). The report is the same for every value.
+    #[arg(long, short = 'j')]
+    pub jobs: Option<usize>,
+    /// Print only the --skip arguments of the failed and timed-out cases.
+    #[arg(long)]
+    pub script: bool,
 }
 
 #[derive(Args, Debug)]

@@ -24,10 +24,12 @@ macro_rules! outln {
     };
 }
 
+mod answer;
 mod args;
 mod batch;
 mod check;
 mod choice;
+mod conformance;
 mod convert;
 mod decimate;
 mod demo;
@@ -180,6 +182,8 @@ pub fn main() -> ExitCode {
         args::Command::Simplify(a) => simplify::run(&a, ui),
         args::Command::Decimate(a) => decimate::run(&a, ui),
         args::Command::Check(a) => check::run(&a, ui),
+        args::Command::Conformance(a) => conformance::run(&a, ui),
+        args::Command::Answer => answer::run(),
         args::Command::Demo(a) => demo::run(&a, ui),
         args::Command::Batch(a) => batch::run(&a, ui),
         args::Command::Completions(a) => docs::completions(&a),
