@@ -10,6 +10,7 @@ mod common;
 mod cli_batch;
 mod cli_boundary;
 mod cli_check;
+mod cli_conformance;
 mod cli_decimate;
 mod cli_docs;
 mod cli_gen;
