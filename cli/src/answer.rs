@@ -157,7 +157,7 @@ pub fn respond(case: &CaseMessage) -> Result<Answer, Refused> {
             };
             let options = SimplifyOptions {
                 eps,
-                mode: o.choice("mode", "naive")?,
+                mode: o.choice("mode", "nested")?,
                 side: o.choice("side", "count")?,
                 position: o.choice("position", "midpoint")?,
                 allow_foldover: !o.flag("guard", true)?,
