@@ -5036,3 +5036,114 @@ pub fn check_simplify_check(input: &CheckSimplifyInput) {
         }
     }
 }
+
+/// A `quad` answer judged by `check::quad`: the library's conversion of a surface grown
+/// by vertex splits (any algorithm), with or without its statements (K, the pairs),
+/// then edits of the quads.
+#[derive(Arbitrary, Clone, Debug)]
+pub struct CheckQuadInput {
+    /// The input surface.
+    pub base: SurfaceInput,
+    /// The algorithm (mod the number of algorithms) and its seed.
+    pub algorithm: u8,
+    pub seed: u8,
+    /// State K; state the pairs.
+    pub state_k: bool,
+    pub state_pairs: bool,
+    /// `(quad, kind, value)` edits of the quads (at most [`CHECK_EDITS`]): swap two
+    /// corners, set a corner to a vertex (maybe out of range), copy another quad, remove
+    /// the quad, rotate it.
+    pub edits: Vec<(u16, u8, u16)>,
+}
+
+/// `check::quad` on the library's conversion and on edited answers: never a panic; the
+/// library's answer passes with its statements, and without them exactly when no edge
+/// was flipped; and an answer that passes is confirmed by the core: with K built as a
+/// `Triangulation`, each quad is two faces of K across one of its diagonals (found by the
+/// core's edge lookup), and the faces so found are each of K's faces exactly once.
+pub fn check_quad_check(input: &CheckQuadInput) {
+    use contractible::check::{self, QuadCheck};
+    use contractible::quad::Algorithm;
+    let tri = build_surface(&input.base);
+    let n = tri.vertex_capacity();
+    let mesh = contractible::TriMesh::combinatorial(n, tri.face_list());
+    let algorithm = Algorithm::ALL[usize::from(input.algorithm) % Algorithm::ALL.len()];
+    let opts = contractible::QuadOptions {
+        algorithm,
+        seed: u64::from(input.seed),
+        ..contractible::QuadOptions::default()
+    };
+    let r = contractible::quadrangulate(&mesh, &opts).expect("a closed surface converts");
+    let full = QuadCheck {
+        triangles: Some(&r.triangles),
+        pairs: Some(&r.pairs),
+    };
+    let v = check::quad(&mesh, &r.mesh, &full).expect("a closed input is judged");
+    assert!(v.passed(), "the library's answer fails: {v:?}");
+    let bare = check::quad(&mesh, &r.mesh, &QuadCheck::default()).expect("judged");
+    assert_eq!(bare.passed(), r.triangles == mesh.faces, "{bare:?}");
+    let stated = QuadCheck {
+        triangles: input.state_k.then_some(r.triangles.as_slice()),
+        pairs: (input.state_k && input.state_pairs).then_some(r.pairs.as_slice()),
+    };
+    let mut quads = r.mesh.faces.clone();
+    for &(i, kind, value) in input.edits.iter().take(CHECK_EDITS) {
+        if quads.is_empty() {
+            break;
+        }
+        let i = usize::from(i) % quads.len();
+        let k = usize::from(value) % 4;
+        match kind % 5 {
+            0 => quads[i].swap(k, (k + 1 + usize::from(kind / 5) % 3) % 4),
+            1 => quads[i][k] = u32::from(value) % (n as u32 + 2),
+            2 => quads[i] = quads[usize::from(value) % quads.len()],
+            3 => {
+                quads.remove(i);
+            }
+            _ => quads[i].rotate_left(1 + k % 3),
+        }
+    }
+    let answer = contractible::QuadMesh {
+        vertex_count: n,
+        positions: None,
+        faces: quads.clone(),
+    };
+    let v = check::quad(&mesh, &answer, &stated).expect("a closed input is judged");
+    if !v.passed() {
+        return;
+    }
+    let k_faces: &[[u32; 3]] = stated.triangles.unwrap_or(&mesh.faces);
+    let k = Triangulation::from_faces(n, k_faces)
+        .unwrap_or_else(|e| panic!("a passing answer's K is no closed surface: {e}"));
+    assert_eq!(k.euler_characteristic(), tri.euler_characteristic());
+    assert_eq!(k.is_orientable(), tri.is_orientable());
+    let mut used = vec![0u32; k_faces.len()];
+    let mut ambiguous = Vec::new();
+    for q in &quads {
+        let found: Vec<[usize; 2]> = [(0, 2), (1, 3)]
+            .into_iter()
+            .filter_map(|(a, b)| {
+                let [c, d] = k.edge_corners(VertexId(q[a]), VertexId(q[b]))?;
+                let others = [k.vertex(c).0, k.vertex(d).0];
+                let (x, y) = (q[(a + 1) % 4], q[(a + 3) % 4]);
+                (others == [x, y] || others == [y, x]).then(|| [c.face().index(), d.face().index()])
+            })
+            .collect();
+        match found.as_slice() {
+            [] => panic!("a passing quad {q:?} is not two faces of K"),
+            [f] => f.iter().for_each(|&x| used[x] += 1),
+            _ => ambiguous.push(found),
+        }
+    }
+    for found in ambiguous {
+        let f = found
+            .iter()
+            .find(|f| f.iter().all(|&x| used[x] == 0))
+            .unwrap_or(&found[0]);
+        f.iter().for_each(|&x| used[x] += 1);
+    }
+    assert!(
+        used.iter().all(|&u| u == 1),
+        "a passing answer does not use every face of K once: {used:?}"
+    );
+}
