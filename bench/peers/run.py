@@ -349,11 +349,11 @@ def make_runs(task, V, F, eps):
     if task == "reduce":
         def ours():
             r = contractible.reduce(V, F)
-            return r.vertices, r.faces, r.stats
+            return r.vertices, r.faces, r.stats, r.vertex_map
 
         def igl_dec():
-            U, G, _, _ = igl.decimate(Vf, Ff, 0)
-            return U, G
+            U, G, _, I = igl.decimate(Vf, Ff, 0)
+            return U, G, I  # I: the input vertex each output vertex was born from
 
         def pml_q():
             ms, mm = pml_run(V, F, "meshing_decimation_quadric_edge_collapse",
@@ -389,10 +389,35 @@ def make_runs(task, V, F, eps):
     raise ValueError(task)
 
 
+def conformance_verdict(lib, V, F, out):
+    """The library's own conformance checker (`contractible.check("reduce", ...)`) on an
+    output, beside the script's checks: in the input's vertex ids where the library says
+    which input vertex each output vertex is (contractible: `vertex_map`; igl.decimate:
+    its birth-vertex map I, the positions having moved to edge midpoints), else as a
+    combinatorial answer in its own ids (pymeshlab moves vertices and gives no map)."""
+    n = len(V)
+    if lib.startswith("contractible"):
+        ids = np.asarray(out[3])
+    elif lib == "igl.decimate":
+        ids = np.asarray(out[2]).reshape(-1)
+    else:
+        ids = None
+    G = np.asarray(out[1], dtype=np.int64).reshape(-1, 3)
+    if ids is not None:
+        v = contractible.check("reduce", None, F, None, ids[G], vertex_count=n,
+                               out_vertex_count=n)
+    else:
+        v = contractible.check("reduce", None, F, None, G, vertex_count=n,
+                               out_vertex_count=len(out[0]))
+    return {"check_passed": bool(v["passed"]), "check_counts": v["counts"]}
+
+
 def check(task, lib, V, F, before, out):
     n = len(V)
     if task == "reduce":
-        return reduce_check(before, out[1])
+        rep = reduce_check(before, out[1])
+        rep.update(conformance_verdict(lib, V, F, out))
+        return rep
     if task == "quad":
         if lib.startswith("contractible"):
             return quad_check_contractible(before, F, out, n)
@@ -668,7 +693,8 @@ def reduce_section(data, w):
           + " | ".join(cell(t[l], ours) for l in libs) + " |")
     w("")
     skipped_lines(data, "reduce", w)
-    w("Outputs (faces out; irreducible by the naive link test / topology unchanged):")
+    w("Outputs (faces out; irreducible by the naive link test / topology unchanged / the "
+      "verdict of `contractible check reduce`, the conformance checker):")
     w("")
     w("| mesh | " + " | ".join(libs) + " |")
     w("|---|" + "---|" * len(libs))
@@ -683,6 +709,8 @@ def reduce_section(data, w):
                 cells.append("not run")
                 continue
             s = f"{r['faces_out']}; {yn(r['irreducible'])} / {yn(r['topology_kept'])}"
+            if "check_passed" in r:
+                s += f" / {yn(r['check_passed'])}"
             if r["contractible_edges_left"]:
                 s += f" ({plural(r['contractible_edges_left'], 'contractible edge')} left)"
             if not r["closed"]:
@@ -692,6 +720,11 @@ def reduce_section(data, w):
     w("")
     w(summary_line(data, "reduce", "irreducible", "irreducible output"))
     w(summary_line(data, "reduce", "topology_kept", "topology unchanged"))
+    w(summary_line(data, "reduce", "check_passed", "passed by `contractible check reduce`"))
+    agree = [d["name"] + " " + l for d in data for l, r in d["tasks"].get("reduce", {}).items()
+             if "check_passed" in r and r["check_passed"] != (r["irreducible"] and r["topology_kept"])]
+    w("- the checker's verdict equals (irreducible and topology unchanged) on every output"
+      if not agree else f"- the checker disagrees with the script's checks on: {', '.join(agree)}")
     w("")
     w("![reduce](peers/reduce.png)")
     w("")
