@@ -36,6 +36,7 @@
 //! build locates the input's defect as every task reports it. The `simplify` checker
 //! takes the task's option types, `Eps` and `simplify::Position`, as plain values.)
 
+mod decimate_check;
 mod quad_check;
 mod simplify_check;
 mod surface;
@@ -43,6 +44,7 @@ mod surface;
 use std::collections::HashMap;
 
 use crate::{Error, Mesh, QuadMesh, TriMesh};
+pub use decimate_check::DecimateCheck;
 pub use quad_check::QuadCheck;
 pub use simplify_check::SimplifyCheck;
 use surface::{analyse, push, Analysis, Part};
@@ -95,11 +97,16 @@ pub enum FailureKind {
     WrongPair,
     /// An input vertex is missing from a stated triangulation that must keep every one.
     MissingVertex,
+    /// The output's face count is not one the run's target explains: below it by more
+    /// than a collapse, or above it with an edge left that nothing refused.
+    TargetMissed,
+    /// A stated provenance map contradicts itself, the other map or the faces.
+    InconsistentMap,
 }
 
 impl FailureKind {
     /// Every kind, in declaration order.
-    pub const ALL: [FailureKind; 20] = [
+    pub const ALL: [FailureKind; 22] = [
         FailureKind::VertexOutOfRange,
         FailureKind::DegenerateFace,
         FailureKind::RepeatedFace,
@@ -120,6 +127,8 @@ impl FailureKind {
         FailureKind::TriangleUnused,
         FailureKind::WrongPair,
         FailureKind::MissingVertex,
+        FailureKind::TargetMissed,
+        FailureKind::InconsistentMap,
     ];
 
     /// The kind's name in reports (snake case), stable across versions.
@@ -150,6 +159,8 @@ impl FailureKind {
             FailureKind::TriangleUnused => "triangle_unused",
             FailureKind::WrongPair => "wrong_pair",
             FailureKind::MissingVertex => "missing_vertex",
+            FailureKind::TargetMissed => "target_missed",
+            FailureKind::InconsistentMap => "inconsistent_map",
         }
     }
 }
@@ -718,6 +729,53 @@ pub fn quad(input: &TriMesh, output: &QuadMesh, stated: &QuadCheck<'_>) -> Resul
     quad_check::check(input, output, stated)
 }
 
+/// Judges `output` as a decimation of `input` (the task `decimate`) by a run with the
+/// target and options of `options`, and its provenance maps where stated: a surface
+/// (boundary allowed) with a finite position per used vertex, of the input's surface per
+/// component (χ, orientability, boundary loops; by the stated `vertex_map`, or by id
+/// when the output keeps the input's vertex list, else as multisets of surface types);
+/// the maps consistent with each other and with the faces (every output vertex's input
+/// vertices joined by input edges, every output face its origin renamed, every other
+/// input face degenerate); locked vertices where they were; under
+/// [`Placement::Endpoint`](crate::decimate::Placement) every position an input
+/// position; and a face count the target explains: at least the target less one
+/// collapse's faces, and above the target only when, for a run without guard or cap,
+/// no unlocked edge passes the link condition of the surface with boundary.
+///
+/// # Errors
+/// As `decimate` refuses its input: [`Error::MissingPositions`],
+/// [`Error::PositionCount`], [`Error::NonFiniteCoordinate`], [`Error::NoCoordinates`],
+/// [`Error::Mesh`] for faces that are no surface, and [`Error::BadOption`] for a `keep`
+/// outside [0, 1] or a locked vertex that is no input vertex.
+///
+/// # Example
+/// ```
+/// use contractible::{check, decimate, gen, DecimateOptions};
+/// let sphere = gen::subdivide(&gen::icosahedron(), 2)?;
+/// let ours = decimate(&sphere, &DecimateOptions::keep(0.25))?;
+/// let options = check::DecimateCheck {
+///     keep: Some(0.25),
+///     vertex_map: Some(&ours.vertex_map),
+///     collapse_map: Some(&ours.collapse_map),
+///     face_origin: Some(&ours.face_origin),
+///     ..Default::default()
+/// };
+/// assert!(check::decimate(&sphere, &ours.mesh, &options)?.passed());
+/// // The input is no answer: it has four times the faces asked for... and is
+/// // judged so once the run's guard is known to be off.
+/// let unguarded = check::DecimateCheck { keep: Some(0.25), allow_foldover: true, ..Default::default() };
+/// let verdict = check::decimate(&sphere, &sphere, &unguarded)?;
+/// assert_eq!(verdict.failures[0].kind, check::FailureKind::TargetMissed);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn decimate(
+    input: &TriMesh,
+    output: &TriMesh,
+    options: &DecimateCheck<'_>,
+) -> Result<Verdict, Error> {
+    decimate_check::check(input, output, options)
+}
+
 fn orientable_name(o: bool) -> &'static str {
     if o {
         "orientable"
@@ -756,6 +814,8 @@ fn contractible_edges(out: &Analysis, verdict: &mut Verdict) {
     }
 }
 
+#[cfg(test)]
+mod decimate_tests;
 #[cfg(test)]
 mod quad_tests;
 #[cfg(test)]

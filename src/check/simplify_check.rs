@@ -114,7 +114,7 @@ fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
 
 /// The diagonal of the bounding box of `points`, computed at a power-of-two scale so
 /// that no square overflows or underflows (0 for no points).
-fn bbox_diagonal(points: impl Iterator<Item = [f64; 3]>) -> f64 {
+pub(super) fn bbox_diagonal(points: impl Iterator<Item = [f64; 3]>) -> f64 {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     let mut any = false;
@@ -134,10 +134,12 @@ fn bbox_diagonal(points: impl Iterator<Item = [f64; 3]>) -> f64 {
     dot(scaled, scaled).sqrt() / s
 }
 
-/// The input's positions, refused as `simplify` refuses them: present, one per vertex,
-/// finite, and the used vertices not all at one point.
-fn input_positions(input: &TriMesh) -> Result<(&[[f64; 3]], Vec<usize>), Error> {
-    let task = "simplify";
+/// The input's positions, refused as `task` (`simplify`, `decimate`) refuses them:
+/// present, one per vertex, finite, and the used vertices not all at one point.
+pub(super) fn input_positions<'m>(
+    input: &'m TriMesh,
+    task: &'static str,
+) -> Result<(&'m [[f64; 3]], Vec<usize>), Error> {
     let positions = input
         .positions
         .as_deref()
@@ -209,7 +211,7 @@ pub(super) fn check(
         }
         _ => {}
     }
-    let (positions, used) = input_positions(input)?;
+    let (positions, used) = input_positions(input, "simplify")?;
     let inp = surface_input(input, "simplify")?;
     let eps = match options.eps {
         Eps::Absolute(e) => e,
@@ -250,7 +252,7 @@ pub(super) fn check(
 
 /// The output's positions when every vertex a face uses has a finite one; otherwise
 /// each missing or non-finite one is an `invalid_position` and `None`.
-fn output_positions<'m>(
+pub(super) fn output_positions<'m>(
     output: &'m TriMesh,
     out: &Analysis,
     verdict: &mut Verdict,
@@ -302,7 +304,7 @@ fn output_positions<'m>(
 /// unpaired output component of its type, in order; the unpaired ones left are paired
 /// in order (`surface_changed`), and those left then are `component_lost` (input) or
 /// `component_split` (output: more components than the input has).
-fn same_surface_types(inp: &Analysis, out: &Analysis, verdict: &mut Verdict) {
+pub(super) fn same_surface_types(inp: &Analysis, out: &Analysis, verdict: &mut Verdict) {
     let key = |p: &Part| (p.euler(), p.orientable, p.boundary_loops);
     // Per type, the output components of that type in order, taken from the front:
     // O(components) instead of a scan of the output per input component.

@@ -84,7 +84,7 @@ fn with_holes(mesh: &TriMesh, k: usize, step: usize) -> TriMesh {
 }
 
 /// Surfaces with and without boundary, with positions.
-fn surfaces() -> Vec<(&'static str, TriMesh)> {
+pub(super) fn surfaces() -> Vec<(&'static str, TriMesh)> {
     let torus = random(SurfaceKind::Orientable(1), 200, 1);
     let klein = random(SurfaceKind::NonOrientable(2), 200, 4);
     let hyperboloid = iso(
@@ -299,7 +299,7 @@ fn perturbed(mesh: &TriMesh, amount: f64, seed: u64) -> TriMesh {
     m
 }
 
-fn geometric() -> Vec<(&'static str, TriMesh)> {
+pub(super) fn geometric() -> Vec<(&'static str, TriMesh)> {
     let hyperboloid = iso(
         Implicit::TwoSheetHyperboloid {
             c: 0.25,

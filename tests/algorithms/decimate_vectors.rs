@@ -292,3 +292,56 @@ fn stored_decimate_outputs_are_valid_independently() {
     }
     assert_eq!(runs, VECTORS * RUNS.len());
 }
+
+#[test]
+fn stored_decimate_outputs_pass_the_conformance_checker() {
+    // `contractible::check::decimate` (shares no code with the decimator) on every
+    // stored run, with its options and its three maps: every one passes; with the
+    // vertex map shifted by one, none does.
+    let mut judged = 0;
+    for v in all() {
+        let input = input_mesh(&v);
+        for run in v["runs"].as_array().expect("runs") {
+            let o = options(&run["options"]);
+            let out = TriMesh::with_positions(
+                positions(&run["output_positions"]),
+                common::json_faces(&run["output_faces"]),
+            );
+            let (vm, cm, fo) = (
+                ids(&run["vertex_map"]),
+                ids(&run["collapse_map"]),
+                ids(&run["face_origin"]),
+            );
+            let c = contractible::check::DecimateCheck {
+                faces: o.faces,
+                keep: o.keep,
+                max_error: o.max_error,
+                placement: o.placement,
+                allow_foldover: o.allow_foldover,
+                lock_boundary: o.lock_boundary,
+                locked: &o.locked,
+                vertex_map: Some(&vm),
+                collapse_map: Some(&cm),
+                face_origin: Some(&fo),
+            };
+            let verdict = contractible::check::decimate(&input, &out, &c).expect("judged");
+            assert!(verdict.passed(), "{}: {:?}", v["name"], verdict.failures);
+            if vm.len() > 1 {
+                let mut shifted = vm.clone();
+                shifted.rotate_left(1);
+                let wrong = contractible::check::DecimateCheck {
+                    vertex_map: Some(&shifted),
+                    ..c.clone()
+                };
+                let verdict = contractible::check::decimate(&input, &out, &wrong).expect("judged");
+                assert!(
+                    !verdict.passed(),
+                    "{}: a shifted vertex map passes",
+                    v["name"]
+                );
+            }
+            judged += 1;
+        }
+    }
+    assert_eq!(judged, VECTORS * RUNS.len());
+}
