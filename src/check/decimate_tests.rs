@@ -83,7 +83,7 @@ fn the_librarys_decimations_pass_with_and_without_their_maps() {
                 let v = judge(&mesh, &r, &o, maps);
                 assert!(v.passed(), "{name} {o:?} maps {maps}: {:?}", v.failures);
             }
-            if o.allow_foldover && o.max_error.is_none() && r.mesh.faces.len() > 0 {
+            if o.allow_foldover && o.max_error.is_none() && !r.mesh.faces.is_empty() {
                 blocked_unguarded +=
                     usize::from(r.stats.stopped == crate::decimate::Stopped::Blocked);
             }

@@ -110,6 +110,48 @@ fn a_flipping_conversion_is_judged_on_its_stated_triangulation() {
 }
 
 #[test]
+fn a_flipped_edge_whose_two_faces_are_paired_gives_the_input_quad_back() {
+    // The octahedron's faces [0 2 4] and [2 1 4] share [2, 4]; flipped, K has [0 2 1] and
+    // [0 1 4] instead. Pairing those two gives the cycle 0 2 1 4, which is also the quad
+    // of the two input faces: the answer passes with K and without it.
+    let mesh = gen::octahedron();
+    let find = |t: [u32; 3]| {
+        let mut s = t;
+        s.sort_unstable();
+        mesh.faces.iter().position(|f| {
+            let mut g = *f;
+            g.sort_unstable();
+            g == s
+        })
+    };
+    let (Some(a), Some(b)) = (find([0, 2, 4]), find([1, 2, 4])) else {
+        panic!("the octahedron has faces 0 2 4 and 1 2 4");
+    };
+    let mut k = mesh.faces.clone();
+    k[a] = [0, 2, 1];
+    k[b] = [0, 1, 4];
+    let quads = vec![[0, 2, 1, 4]];
+    // Only that quad: the other six faces are unused either way, the flipped pair is not.
+    let out = QuadMesh {
+        vertex_count: 6,
+        positions: None,
+        faces: quads,
+    };
+    let with_k = quad(
+        &mesh,
+        &out,
+        &QuadCheck {
+            triangles: Some(&k),
+            pairs: None,
+        },
+    )
+    .expect("closed");
+    let bare = quad(&mesh, &out, &QuadCheck::default()).expect("closed");
+    assert_eq!(with_k.counts, vec![(FailureKind::TriangleUnused, 6)]);
+    assert_eq!(bare.counts, vec![(FailureKind::TriangleUnused, 6)]);
+}
+
+#[test]
 fn any_rotation_or_reversal_of_a_quad_passes() {
     let mesh = gen::icosahedron();
     let r = convert(&mesh, Algorithm::Matching);
