@@ -504,7 +504,13 @@ aside). quad (OUTPUT a quad mesh; with --triangles K and --pairs P when the run 
 edges): every quad is two triangles of K (of INPUT's faces without --triangles) split \
 along one of its diagonals (the pair P states for it, if given), every triangle in \
 exactly one quad, and K a closed surface on INPUT's vertices of INPUT's surface per \
-component. simplify (with the run's --eps or --eps-rel, and its --position and \
+component. decimate (with the run's target and options as `decimate` takes them, and \
+its --maps file if any): OUTPUT is a surface of INPUT's type per component with finite \
+positions, the maps consistent with each other and the faces, locked vertices kept, \
+every position an input position with --placement endpoint, and a face count the \
+target explains (at most one collapse below it; above it, for a run with \
+--allow-foldover and no cap, no unlocked edge passing the link condition). simplify \
+(with the run's --eps or --eps-rel, and its --position and \
 --allow-foldover): OUTPUT is a 2-manifold, boundary allowed, with finite positions, of \
 INPUT's surface per component (χ, orientability, boundary loops; by id when OUTPUT keeps \
 INPUT's vertex list, else as multisets of surface types), and no edge strictly shorter \
@@ -520,6 +526,8 @@ pub enum CheckTask {
     Reduce,
     /// A perfect pairing of edge-adjacent triangles, as quads.
     Quad,
+    /// A decimation to a budget that kept every component's surface.
+    Decimate,
     /// Every edge shorter than ε contracted that the link condition and the guard allow.
     Simplify,
 }
@@ -555,6 +563,38 @@ pub struct CheckArgs {
     /// without --triangles), as `quad --pairs` writes them.
     #[arg(long, value_name = "FILE")]
     pub pairs: Option<PathBuf>,
+    /// decimate: the run's face target.
+    #[arg(long, value_name = "N")]
+    pub faces: Option<usize>,
+    /// decimate: the run's fraction of the faces kept.
+    #[arg(long, value_name = "F", allow_negative_numbers = true)]
+    pub keep: Option<f64>,
+    /// decimate: the run's error cap (then a run may stop above its target anywhere).
+    #[arg(long, value_name = "E", allow_negative_numbers = true)]
+    pub max_error: Option<f64>,
+    /// decimate: the run's error cap as a fraction of the bounding-box diagonal.
+    #[arg(
+        long,
+        value_name = "R",
+        allow_negative_numbers = true,
+        conflicts_with = "max_error"
+    )]
+    pub max_error_rel: Option<f64>,
+    /// decimate: the run's placement (with `endpoint`, every output position must be
+    /// an input position).
+    #[arg(long, value_parser = choice::parser::<Placement>())]
+    pub placement: Option<Placement>,
+    /// decimate: the run locked the boundary vertices.
+    #[arg(long)]
+    pub lock_boundary: bool,
+    /// decimate: the run's locked input vertices (ids from 0, comma-separated or
+    /// repeated).
+    #[arg(long, value_name = "V", value_delimiter = ',')]
+    pub lock: Vec<u32>,
+    /// decimate: the provenance maps, as `decimate --maps` writes them (vertex_map,
+    /// collapse_map, face_origin).
+    #[arg(long, value_name = "FILE")]
+    pub maps: Option<PathBuf>,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

@@ -5,8 +5,8 @@ use std::collections::BTreeMap;
 
 use std::path::{Path, PathBuf};
 
-use contractible::check::{self, QuadCheck, SimplifyCheck, Verdict};
-use contractible::{Eps, QuadMesh};
+use contractible::check::{self, DecimateCheck, QuadCheck, SimplifyCheck, Verdict};
+use contractible::{Eps, MaxError, QuadMesh};
 use serde::Serialize;
 
 use super::args::{CheckArgs, CheckTask, InputOpts};
@@ -70,6 +70,7 @@ enum Judged {
         pairs: Option<PathBuf>,
     },
     Simplify(SimplifyCheck),
+    Decimate,
 }
 
 /// The options `args` gives, refused where they belong to another task.
@@ -84,6 +85,16 @@ fn judged(args: &CheckArgs) -> Result<Judged, CliError> {
         ("--triangles", args.triangles.is_some()),
         ("--pairs", args.pairs.is_some()),
     ];
+    let decimate_flags = [
+        ("--faces", args.faces.is_some()),
+        ("--keep", args.keep.is_some()),
+        ("--max-error", args.max_error.is_some()),
+        ("--max-error-rel", args.max_error_rel.is_some()),
+        ("--placement", args.placement.is_some()),
+        ("--lock-boundary", args.lock_boundary),
+        ("--lock", !args.lock.is_empty()),
+        ("--maps", args.maps.is_some()),
+    ];
     let foreign = |flags: &[(&'static str, bool)], owner: &str| -> Result<(), CliError> {
         match flags.iter().find(|&&(_, on)| on) {
             Some((flag, _)) => Err(CliError::Input(format!(
@@ -94,13 +105,23 @@ fn judged(args: &CheckArgs) -> Result<Judged, CliError> {
         }
     };
     if args.task != CheckTask::Simplify {
-        foreign(&simplify_flags, "simplify")?;
+        // --allow-foldover is also decimate's.
+        let flags = if args.task == CheckTask::Decimate {
+            &simplify_flags[..3]
+        } else {
+            &simplify_flags[..]
+        };
+        foreign(flags, "simplify")?;
+    }
+    if args.task != CheckTask::Decimate {
+        foreign(&decimate_flags, "decimate")?;
     }
     if args.task != CheckTask::Quad {
         foreign(&quad_flags, "quad")?;
     }
     match args.task {
         CheckTask::Reduce => Ok(Judged::Reduce),
+        CheckTask::Decimate => Ok(Judged::Decimate),
         CheckTask::Quad => Ok(Judged::Quad {
             triangles: args.triangles.clone(),
             pairs: args.pairs.clone(),
@@ -129,7 +150,46 @@ fn task_name(t: CheckTask) -> &'static str {
         CheckTask::Reduce => "reduce",
         CheckTask::Quad => "quad",
         CheckTask::Simplify => "simplify",
+        CheckTask::Decimate => "decimate",
     }
+}
+
+/// The three maps of a `decimate --maps` document (a `null` collapse_map entry, a
+/// vertex no face uses, read as `NO_VERTEX`).
+struct Maps {
+    vertex_map: Vec<u32>,
+    collapse_map: Vec<u32>,
+    face_origin: Vec<u32>,
+}
+
+fn read_maps(path: &Path) -> Result<Maps, CliError> {
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+    let doc: serde_json::Value = serde_json::from_str(&text)
+        .map_err(|e| CliError::Input(format!("{}: not JSON: {e}", path.display())))?;
+    let list = |key: &str, nulls: bool| -> Result<Vec<u32>, CliError> {
+        let bad = |what: String| CliError::Input(format!("{}: {key}: {what}", path.display()));
+        let items = doc[key]
+            .as_array()
+            .ok_or_else(|| bad("missing, or not an array".into()))?;
+        items
+            .iter()
+            .enumerate()
+            .map(|(i, x)| match x {
+                serde_json::Value::Null if nulls => Ok(contractible::decimate::NO_VERTEX),
+                _ => x
+                    .as_u64()
+                    .and_then(|v| u32::try_from(v).ok())
+                    .filter(|&v| v != contractible::decimate::NO_VERTEX)
+                    .ok_or_else(|| bad(format!("entry {i} is {x}, not an id"))),
+            })
+            .collect()
+    };
+    Ok(Maps {
+        vertex_map: list("vertex_map", false)?,
+        collapse_map: list("collapse_map", true)?,
+        face_origin: list("face_origin", false)?,
+    })
 }
 
 /// The output of `check quad`: its faces must all be quads.
@@ -196,6 +256,32 @@ pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
             let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
             let v = check::simplify(&input, &output, o)
                 .map_err(|e| meshio::task_error(&input, &names, "check simplify", e))?;
+            (v, output.faces.len())
+        }
+        Judged::Decimate => {
+            let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
+            let maps = match &args.maps {
+                Some(p) => Some(read_maps(p)?),
+                None => None,
+            };
+            let options = DecimateCheck {
+                faces: args.faces,
+                keep: args.keep,
+                max_error: match (args.max_error, args.max_error_rel) {
+                    (Some(e), _) => Some(MaxError::Absolute(e)),
+                    (None, Some(r)) => Some(MaxError::Relative(r)),
+                    (None, None) => None,
+                },
+                placement: args.placement.unwrap_or_default(),
+                allow_foldover: args.allow_foldover,
+                lock_boundary: args.lock_boundary,
+                locked: &args.lock,
+                vertex_map: maps.as_ref().map(|m| m.vertex_map.as_slice()),
+                collapse_map: maps.as_ref().map(|m| m.collapse_map.as_slice()),
+                face_origin: maps.as_ref().map(|m| m.face_origin.as_slice()),
+            };
+            let v = check::decimate(&input, &output, &options)
+                .map_err(|e| meshio::task_error(&input, &names, "check decimate", e))?;
             (v, output.faces.len())
         }
         Judged::Quad { triangles, pairs } => {

@@ -449,3 +449,119 @@ fn check_quad_exits_2_on_files_it_cannot_read_as_an_answer() {
         stderr(&r)
     );
 }
+
+#[test]
+fn check_decimate_judges_the_files_decimate_writes_with_its_maps() {
+    let d = Scratch::new("check-decimate");
+    let input = data_closed("bunny_npm");
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_owned();
+    let (out, maps) = (d.path("d.off"), d.path("d.maps"));
+    let r = run(&[
+        "decimate",
+        &s(&input),
+        "--keep",
+        "0.2",
+        "-o",
+        &s(&out),
+        "--maps",
+        &s(&maps),
+        "-q",
+    ]);
+    assert!(r.status.success(), "{}", stderr(&r));
+    let ok = run(&[
+        "check",
+        "decimate",
+        &s(&input),
+        &s(&out),
+        "--keep",
+        "0.2",
+        "--maps",
+        &s(&maps),
+    ]);
+    assert_eq!(ok.status.code(), Some(0), "{}", stderr(&ok));
+    // Judged against a larger target: gone past it; the JSON is the library's verdict.
+    let mesh = read_mesh(&input);
+    let output = read_mesh(&out);
+    let verdict = check::decimate(
+        &mesh,
+        &output,
+        &check::DecimateCheck {
+            keep: Some(0.5),
+            ..check::DecimateCheck::default()
+        },
+    )
+    .expect("judged");
+    let bad = run(&[
+        "check",
+        "--json",
+        "decimate",
+        &s(&input),
+        &s(&out),
+        "--keep",
+        "0.5",
+    ]);
+    assert_eq!(bad.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&bad.stdout).expect("JSON");
+    same_as_library(&j, &verdict);
+    assert_eq!(j["failures"][0]["kind"], "target_missed");
+    // Maps edited: the first two vertex_map entries swapped.
+    let text = std::fs::read_to_string(&maps).expect("maps");
+    let mut doc: serde_json::Value = serde_json::from_str(&text).expect("JSON");
+    let vm = doc["vertex_map"].as_array_mut().expect("vertex_map");
+    vm.swap(0, 1);
+    let edited = d.path("edited.maps");
+    std::fs::write(&edited, doc.to_string()).expect("writes");
+    let r = run(&[
+        "check",
+        "--json",
+        "decimate",
+        &s(&input),
+        &s(&out),
+        "--keep",
+        "0.2",
+        "--maps",
+        &s(&edited),
+    ]);
+    assert_eq!(r.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&r.stdout).expect("JSON");
+    assert_eq!(j["failures"][0]["kind"], "inconsistent_map");
+    // The input as its own answer of an unguarded run: edges it could still collapse.
+    let r = run(&[
+        "check",
+        "--json",
+        "decimate",
+        &s(&input),
+        &s(&input),
+        "--keep",
+        "0.2",
+        "--allow-foldover",
+    ]);
+    assert_eq!(r.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&r.stdout).expect("JSON");
+    assert!(j["failures"][0]["edge"].is_array());
+    // A maps file that is no maps document, and options of other tasks: exit 2.
+    std::fs::write(&edited, "{\"vertex_map\": [0, -3]}").expect("writes");
+    let r = run(&[
+        "check",
+        "decimate",
+        &s(&input),
+        &s(&out),
+        "--maps",
+        &s(&edited),
+    ]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(
+        stderr(&r).contains("vertex_map: entry 1 is -3"),
+        "{}",
+        stderr(&r)
+    );
+    let r = run(&["check", "decimate", &s(&input), &s(&out), "--eps", "0.1"]);
+    assert_eq!(r.status.code(), Some(2));
+    let r = run(&["check", "reduce", &s(&input), &s(&out), "--keep", "0.1"]);
+    assert_eq!(r.status.code(), Some(2));
+    assert!(
+        stderr(&r).contains("--keep is an option of `check decimate`"),
+        "{}",
+        stderr(&r)
+    );
+}

@@ -379,7 +379,12 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
           out_vertex_count: Optional[int] = None,
           eps: Optional[float] = None, eps_rel: Optional[float] = None,
           position: str = "midpoint", guard: bool = True,
-          triangles: Any = None, pairs: Any = None) -> Dict[str, Any]:
+          triangles: Any = None, pairs: Any = None,
+          faces: Optional[int] = None, keep: Optional[float] = None,
+          max_error: Optional[float] = None, max_error_rel: Optional[float] = None,
+          placement: str = "optimal", lock_boundary: bool = False, locked: Any = None,
+          vertex_map: Any = None, collapse_map: Any = None,
+          face_origin: Any = None) -> Dict[str, Any]:
     """Judges ``(V_out, F_out)``, made by any implementation, as an output of ``task``
     on ``(V, F)``, by its properties (not its bytes); the command line's
     ``contractible check TASK INPUT OUTPUT --json`` without the file names.
@@ -408,6 +413,16 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
     triangle in exactly one quad, and K a closed surface on the input's vertices of
     its surface per component.
 
+    Or ``"decimate"``, with the run's target and options (:func:`decimate`'s names:
+    ``faces``, ``keep``, ``max_error`` or ``max_error_rel``, ``placement``, ``guard``,
+    ``lock_boundary``, ``locked``) and, if known, its maps (``vertex_map``,
+    ``collapse_map`` with -1 for an unused vertex, ``face_origin``, as :func:`decimate`
+    returns them): the output must be a surface of the input's type per component with
+    finite positions, the maps consistent with each other and the faces, locked vertices
+    kept, every position an input position with ``placement="endpoint"``, and a face
+    count the target explains (at most one collapse below it; above it, for a run with
+    ``guard=False`` and no cap, no unlocked edge passing the link condition).
+
     Returns a dict: ``task``, ``passed`` (bool), ``counts`` (per failure kind, every
     reason found) and ``failures`` (at most 20 of a kind: ``kind``, ``message`` and,
     where known, ``face``, ``edge``, ``vertex``, ``component``). Raises
@@ -422,6 +437,28 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
     Vb, Fb = _vertices(V_out), _faces(F_out, (4,) if task == "quad" else (3,))
     if task != "quad" and (triangles is not None or pairs is not None):
         raise ValueError(f"check: triangles and pairs are options of \"quad\", not {task!r}")
+    decimate_options = dict(faces=faces, keep=keep, max_error=max_error,
+                            max_error_rel=max_error_rel, locked=locked, vertex_map=vertex_map,
+                            collapse_map=collapse_map, face_origin=face_origin)
+    given = [k for k, v in decimate_options.items() if v is not None]
+    given += [k for k, on in (("placement", placement != "optimal"),
+                              ("lock_boundary", bool(lock_boundary))) if on]
+    if task != "decimate" and given:
+        raise ValueError(f"check: {given[0]} is an option of \"decimate\", not {task!r}")
+    if task == "decimate":
+        if eps is not None or eps_rel is not None:
+            raise ValueError("check: eps and eps_rel are options of \"simplify\", not 'decimate'")
+        if max_error is not None and max_error_rel is not None:
+            raise ValueError("check: give at most one of max_error and max_error_rel")
+        cap = max_error if max_error is not None else max_error_rel
+        ints = lambda a: None if a is None else [int(x) for x in np.asarray(a).reshape(-1)]
+        return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count,
+                             None if cap is None else float(cap), max_error_rel is not None,
+                             "midpoint", bool(guard), None, None,
+                             None if faces is None else int(faces),
+                             None if keep is None else float(keep), str(placement),
+                             bool(lock_boundary), ints(locked), ints(vertex_map),
+                             ints(collapse_map), ints(face_origin))
     if task != "simplify":
         if eps is not None or eps_rel is not None:
             raise ValueError(f"check: eps and eps_rel are options of \"simplify\", not {task!r}")

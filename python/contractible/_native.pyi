@@ -1,6 +1,6 @@
 # Type stubs of the native module (python/src/lib.rs). The public API is in __init__.py.
 from os import PathLike
-from typing import Any, Dict, Optional, Tuple, Union
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -44,4 +44,9 @@ def check(task: str, vertices: Optional[_Coords], faces: _Indices,
           eps: Optional[float] = None, relative: bool = False,
           position: str = "midpoint", guard: bool = True,
           triangles: Optional[_Indices] = None,
-          pairs: Optional[_Indices] = None) -> Dict[str, Any]: ...
+          pairs: Optional[_Indices] = None,
+          target_faces: Optional[int] = None, keep: Optional[float] = None,
+          placement: str = "optimal", lock_boundary: bool = False,
+          locked: Optional[List[int]] = None, vertex_map: Optional[List[int]] = None,
+          collapse_map: Optional[List[int]] = None,
+          face_origin: Optional[List[int]] = None) -> Dict[str, Any]: ...

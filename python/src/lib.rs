@@ -785,7 +785,9 @@ fn decimate_py<'py>(
 /// For `simplify`: `eps` (absolute, or with `relative=True` a fraction of the
 /// bounding-box diagonal), the run's `position` and `guard`. For `quad` (`out_faces`
 /// `(m, 4)`): the stated `triangles` K (in the output's ids) and `pairs` (rows of K).
-#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true, triangles=None, pairs=None))]
+/// For `decimate`: the run's `target_faces`, `keep`, `max_error` (with `relative`),
+/// `placement`, `guard`, `lock_boundary`, `locked`, and the maps.
+#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true, triangles=None, pairs=None, target_faces=None, keep=None, placement="optimal", lock_boundary=false, locked=None, vertex_map=None, collapse_map=None, face_origin=None))]
 #[allow(clippy::too_many_arguments)]
 fn check_py<'py>(
     py: Python<'py>,
@@ -802,8 +804,66 @@ fn check_py<'py>(
     guard: bool,
     triangles: Option<Indices<'py>>,
     pairs: Option<Indices<'py>>,
+    target_faces: Option<usize>,
+    keep: Option<f64>,
+    placement: &str,
+    lock_boundary: bool,
+    locked: Option<Vec<u32>>,
+    vertex_map: Option<Vec<i64>>,
+    collapse_map: Option<Vec<i64>>,
+    face_origin: Option<Vec<i64>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let input = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
+    if task == "decimate" {
+        let output = mesh::<3>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
+        // Ids as the library's maps hold them: -1 (a vertex no face uses) is NO_VERTEX;
+        // anything else outside u32 is a ValueError.
+        let ids = |name: &str, v: Option<Vec<i64>>| -> PyResult<Option<Vec<u32>>> {
+            v.map(|v| {
+                v.iter()
+                    .enumerate()
+                    .map(|(i, &x)| match x {
+                        -1 => Ok(decimate::NO_VERTEX),
+                        x => u32::try_from(x)
+                            .ok()
+                            .filter(|&x| x != decimate::NO_VERTEX)
+                            .ok_or_else(|| {
+                                PyValueError::new_err(format!("{name}[{i}] = {x} is no id"))
+                            }),
+                    })
+                    .collect()
+            })
+            .transpose()
+        };
+        let (vm, cm, fo) = (
+            ids("vertex_map", vertex_map)?,
+            ids("collapse_map", collapse_map)?,
+            ids("face_origin", face_origin)?,
+        );
+        let locked = locked.unwrap_or_default();
+        let options = contractible::check::DecimateCheck {
+            faces: target_faces,
+            keep,
+            max_error: eps.map(|e| {
+                if relative {
+                    contractible::MaxError::Relative(e)
+                } else {
+                    contractible::MaxError::Absolute(e)
+                }
+            }),
+            placement: choice::<decimate::Placement>(py, placement)?,
+            allow_foldover: !guard,
+            lock_boundary,
+            locked: &locked,
+            vertex_map: vm.as_deref(),
+            collapse_map: cm.as_deref(),
+            face_origin: fo.as_deref(),
+        };
+        let verdict = py
+            .detach(|| contractible::check::decimate(&input, &output, &options))
+            .map_err(|e| raise(py, &e, None))?;
+        return verdict_dict(py, &verdict);
+    }
     if task == "quad" {
         let output = mesh::<4>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
         let k = match &triangles {
@@ -845,7 +905,7 @@ fn check_py<'py>(
         }
         other => {
             return Err(PyValueError::new_err(format!(
-                "check: unknown task {other:?} (expected \"reduce\", \"quad\" or \"simplify\")"
+                "check: unknown task {other:?} (expected \"reduce\", \"quad\", \"simplify\" or \"decimate\")"
             )))
         }
     }

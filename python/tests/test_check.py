@@ -203,3 +203,40 @@ def test_wrong_quad_answers_are_located():
         c.check("quad", V, F, V, F)
     with pytest.raises(c.MeshError):
         c.check("quad", V, F[1:], q.vertices, q.quads)
+
+
+def test_decimations_pass_with_their_maps_and_wrong_ones_are_named(cli, tmp_path):
+    src = data_mesh("bunny_npm")
+    V, F = c.read(src)
+    d = c.decimate(V, F, keep=0.2)
+    maps = dict(vertex_map=d.vertex_map, collapse_map=d.collapse_map, face_origin=d.face_origin)
+    ok = c.check("decimate", V, F, d.vertices, d.faces, keep=0.2, **maps)
+    assert ok == {"task": "decimate", "passed": True, "counts": {}, "failures": []}
+    # The command line's verdict on the files decimate writes is the same.
+    out, mp = tmp_path / "d.off", tmp_path / "d.maps"
+    cli("decimate", src, "--keep", "0.2", "-o", out, "--maps", mp, "-q")
+    r = cli("--json", "check", "decimate", src, out, "--keep", "0.5", check=False)
+    t = json.loads(r.stdout)
+    ours = c.check("decimate", V, F, d.vertices, d.faces, keep=0.5)
+    assert r.returncode == 1 and not ours["passed"]
+    for key in ("task", "passed", "counts", "failures"):
+        assert ours[key] == t[key], key
+    # Wrong maps, a moved locked vertex, the input as an unguarded run's answer.
+    bad = d.vertex_map.copy()
+    bad[[0, 1]] = bad[[1, 0]]
+    v = c.check("decimate", V, F, d.vertices, d.faces, keep=0.2, vertex_map=bad,
+                collapse_map=d.collapse_map)
+    assert "inconsistent_map" in v["counts"]
+    lk = c.decimate(V, F, keep=0.2, locked=[5])
+    Vm = lk.vertices.copy()
+    Vm[lk.collapse_map[5], 0] += 1.0
+    v = c.check("decimate", V, F, Vm, lk.faces, keep=0.2, locked=[5], vertex_map=lk.vertex_map)
+    assert v["counts"] == {"moved_vertex": 1}
+    v = c.check("decimate", V, F, V, F, keep=0.2, guard=False)
+    assert set(v["counts"]) == {"target_missed"}
+    with pytest.raises(ValueError, match="option of \"decimate\""):
+        c.check("reduce", V, F, V, F, keep=0.2)
+    with pytest.raises(ValueError, match="no id"):
+        c.check("decimate", V, F, V, F, vertex_map=[-5])
+    with pytest.raises(ValueError, match="decimate needs coordinates"):
+        c.check("decimate", None, F, V, F)
