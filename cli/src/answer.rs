@@ -5,7 +5,9 @@
 use std::io::Read;
 use std::str::FromStr;
 
-use contractible::{Eps, QuadOptions, ReduceOptions, SimplifyOptions, TriMesh};
+use contractible::{
+    DecimateOptions, Eps, MaxError, QuadOptions, ReduceOptions, SimplifyOptions, TriMesh,
+};
 use serde_json::{Map, Value};
 
 use super::conformance::protocol::{Answer, CaseMessage, Refusal, PROTOCOL};
@@ -66,9 +68,45 @@ impl<'a> Options<'a> {
         }
     }
 
+    fn count(&self, key: &str) -> Result<Option<usize>, Refused> {
+        match self.map.get(key) {
+            None | Some(Value::Null) => Ok(None),
+            Some(v) => v
+                .as_u64()
+                .and_then(|n| usize::try_from(n).ok())
+                .map(Some)
+                .ok_or_else(|| {
+                    refused("bad_option", format!("option {key:?} is {v}, not a count"))
+                }),
+        }
+    }
+
+    fn ids(&self, key: &str) -> Result<Vec<u32>, Refused> {
+        match self.map.get(key) {
+            None | Some(Value::Null) => Ok(Vec::new()),
+            Some(Value::Array(items)) => items
+                .iter()
+                .map(|x| {
+                    x.as_u64()
+                        .and_then(|v| u32::try_from(v).ok())
+                        .ok_or_else(|| {
+                            refused(
+                                "bad_option",
+                                format!("option {key:?} holds {x}, not a vertex id"),
+                            )
+                        })
+                })
+                .collect(),
+            Some(v) => Err(refused(
+                "bad_option",
+                format!("option {key:?} is {v}, not a list of ids"),
+            )),
+        }
+    }
+
     fn number(&self, key: &str) -> Result<Option<f64>, Refused> {
         match self.map.get(key) {
-            None => Ok(None),
+            None | Some(Value::Null) => Ok(None),
             Some(v) => v.as_f64().map(Some).ok_or_else(|| {
                 refused("bad_option", format!("option {key:?} is {v}, not a number"))
             }),
@@ -170,9 +208,62 @@ pub fn respond(case: &CaseMessage) -> Result<Answer, Refused> {
                 ..Answer::default()
             })
         }
+        "decimate" => {
+            let o = Options::new(
+                &case.options,
+                &[
+                    "faces",
+                    "keep",
+                    "max_error",
+                    "max_error_rel",
+                    "placement",
+                    "schedule",
+                    "guard",
+                    "lock_boundary",
+                    "locked",
+                ],
+            )?;
+            let max_error = match (o.number("max_error")?, o.number("max_error_rel")?) {
+                (None, None) => None,
+                (Some(e), None) => Some(MaxError::Absolute(e)),
+                (None, Some(r)) => Some(MaxError::Relative(r)),
+                _ => {
+                    return Err(refused(
+                        "bad_option",
+                        "give at most one of \"max_error\" and \"max_error_rel\"",
+                    ))
+                }
+            };
+            let options = DecimateOptions {
+                faces: o.count("faces")?,
+                keep: o.number("keep")?,
+                max_error,
+                placement: o.choice("placement", "optimal")?,
+                schedule: o.choice("schedule", "exact")?,
+                allow_foldover: !o.flag("guard", true)?,
+                lock_boundary: o.flag("lock_boundary", false)?,
+                locked: o.ids("locked")?,
+                ..DecimateOptions::default()
+            };
+            let r = contractible::decimate(&mesh, &options).map_err(|e| library(&e))?;
+            let none = contractible::decimate::NO_VERTEX;
+            Ok(Answer {
+                faces: Some(r.mesh.faces.iter().map(|f| f.to_vec()).collect()),
+                positions: r.mesh.positions,
+                vertex_map: Some(r.vertex_map),
+                collapse_map: Some(
+                    r.collapse_map
+                        .iter()
+                        .map(|&o| (o != none).then_some(o))
+                        .collect(),
+                ),
+                face_origin: Some(r.face_origin),
+                ..Answer::default()
+            })
+        }
         other => Err(refused(
             "unsupported",
-            format!("unknown task {other:?} (expected reduce, quad or simplify)"),
+            format!("unknown task {other:?} (expected reduce, quad, simplify or decimate)"),
         )),
     }
 }

@@ -605,6 +605,7 @@ pub enum ProtocolTask {
     Reduce,
     Quad,
     Simplify,
+    Decimate,
 }
 
 impl ProtocolTask {
@@ -613,6 +614,7 @@ impl ProtocolTask {
             ProtocolTask::Reduce => "reduce",
             ProtocolTask::Quad => "quad",
             ProtocolTask::Simplify => "simplify",
+            ProtocolTask::Decimate => "decimate",
         }
     }
 }

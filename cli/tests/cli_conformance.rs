@@ -343,7 +343,7 @@ fn answer_refuses_what_is_no_case_with_an_error_object() {
             "protocol",
         ),
         (
-            r#"{"protocol": 1, "id": "x", "task": "decimate", "options": {}, "vertex_count": 3, "faces": [[0,1,2]], "positions": null}"#,
+            r#"{"protocol": 1, "id": "x", "task": "dilate", "options": {}, "vertex_count": 3, "faces": [[0,1,2]], "positions": null}"#,
             "unsupported",
         ),
         (

@@ -13,8 +13,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::{Duration, Instant};
 
-use contractible::check::{self, QuadCheck, SimplifyCheck, Verdict};
-use contractible::Eps;
+use contractible::check::{self, DecimateCheck, QuadCheck, SimplifyCheck, Verdict};
+use contractible::{Eps, MaxError};
 use serde::Serialize;
 use wait_timeout::ChildExt;
 
@@ -119,6 +119,56 @@ pub fn judge(case: &Case, answer: &Answer) -> Result<Vec<String>, String> {
                 allow_foldover: !guard,
             };
             check::simplify(&input, &answer.mesh::<3>(n)?, &options)
+        }
+        "decimate" => {
+            let num = |k: &str| o.get(k).and_then(serde_json::Value::as_f64);
+            let max_error = match (num("max_error"), num("max_error_rel")) {
+                (Some(e), _) => Some(MaxError::Absolute(e)),
+                (None, Some(r)) => Some(MaxError::Relative(r)),
+                (None, None) => None,
+            };
+            let locked: Vec<u32> = o
+                .get("locked")
+                .and_then(|v| v.as_array())
+                .map(|a| {
+                    a.iter()
+                        .filter_map(|x| x.as_u64().map(|x| x as u32))
+                        .collect()
+                })
+                .unwrap_or_default();
+            let placement = o
+                .get("placement")
+                .and_then(|v| v.as_str())
+                .unwrap_or("optimal")
+                .parse()
+                .map_err(|e: contractible::UnknownName| e.to_string())?;
+            let none = contractible::decimate::NO_VERTEX;
+            let collapse_map: Option<Vec<u32>> = answer
+                .collapse_map
+                .as_ref()
+                .map(|m| m.iter().map(|x| x.unwrap_or(none)).collect());
+            let options = DecimateCheck {
+                faces: o
+                    .get("faces")
+                    .and_then(serde_json::Value::as_u64)
+                    .map(|f| f as usize),
+                keep: num("keep"),
+                max_error,
+                placement,
+                allow_foldover: !o
+                    .get("guard")
+                    .and_then(serde_json::Value::as_bool)
+                    .unwrap_or(true),
+                lock_boundary: o
+                    .get("lock_boundary")
+                    .and_then(serde_json::Value::as_bool)
+                    .unwrap_or(false),
+                locked: &locked,
+                vertex_map: answer.vertex_map.as_deref(),
+                collapse_map: collapse_map.as_deref(),
+                face_origin: answer.face_origin.as_deref(),
+            };
+            check::decimate(&input, &answer.mesh::<3>(n)?, &options)
         }
         other => return Err(format!("no checker for task {other:?}")),
     }

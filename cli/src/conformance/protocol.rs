@@ -9,7 +9,7 @@ use serde_json::{Map, Value};
 pub const PROTOCOL: u32 = 1;
 
 /// The tasks of the protocol, by name.
-pub const TASKS: [&str; 3] = ["reduce", "quad", "simplify"];
+pub const TASKS: [&str; 4] = ["reduce", "quad", "simplify", "decimate"];
 
 /// One case, as the implementation receives it.
 #[derive(Serialize, Deserialize, Clone, Debug, PartialEq)]
@@ -19,7 +19,7 @@ pub struct CaseMessage {
     pub protocol: u32,
     /// The case's id in the suite (for the implementation's own logs).
     pub id: String,
-    /// `reduce`, `quad` or `simplify`.
+    /// `reduce`, `quad`, `simplify` or `decimate`.
     pub task: String,
     /// The task's options (`spec/conformance.md` lists them per task).
     pub options: Map<String, Value>,
@@ -79,6 +79,16 @@ pub struct Answer {
     /// `quad`: per quad, its two rows of K (of the input's faces without `triangles`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pairs: Option<Vec<[u32; 2]>>,
+    /// `decimate`: per output vertex, the input vertex that survives as it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertex_map: Option<Vec<u32>>,
+    /// `decimate`: per input vertex, the output vertex it went into (`null`: a vertex no
+    /// face uses).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub collapse_map: Option<Vec<Option<u32>>>,
+    /// `decimate`: per output face, the input face it descends from.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub face_origin: Option<Vec<u32>>,
     /// The refusal of an input, instead of an output.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub error: Option<Refusal>,
@@ -119,6 +129,8 @@ pub struct Expected {
     /// `quad`: K and the pairs.
     pub triangles: Option<Vec<[u32; 3]>>,
     pub pairs: Option<Vec<[u32; 2]>>,
+    /// `decimate`: the three maps.
+    pub maps: Option<(Vec<u32>, Vec<Option<u32>>, Vec<u32>)>,
 }
 
 /// Where an answer differs from the stored one (`None`: the same bytes of data).
@@ -150,6 +162,14 @@ pub fn differs(answer: &Answer, expected: &Expected) -> Option<String> {
     }
     if expected.pairs.is_some() && answer.pairs != expected.pairs {
         return Some("pairs differ from the stored output".into());
+    }
+    if let Some((vm, cm, fo)) = &expected.maps {
+        if answer.vertex_map.as_ref() != Some(vm)
+            || answer.collapse_map.as_ref() != Some(cm)
+            || answer.face_origin.as_ref() != Some(fo)
+        {
+            return Some("the maps differ from the stored ones".into());
+        }
     }
     None
 }

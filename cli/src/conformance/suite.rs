@@ -66,9 +66,9 @@ pub struct Suite {
     pub wrong: Vec<WrongAnswer>,
 }
 
-/// Vector groups with no protocol task yet (marching tetrahedra, decimation): read and
-/// left out.
-const NOT_IN_PROTOCOL: [&str; 3] = ["iso-exact", "iso-rounded", "decimate"];
+/// Vector groups with no protocol task (marching tetrahedra: a generator, not a task on
+/// a mesh): read and left out.
+const NOT_IN_PROTOCOL: [&str; 2] = ["iso-exact", "iso-rounded"];
 
 /// The `*.jsonl` files of `dir`, in name order (none if `dir` is missing).
 fn files(dir: &Path) -> Result<Vec<PathBuf>, String> {
@@ -178,6 +178,7 @@ fn triangles_expected(faces: Vec<[u32; 3]>, positions: Option<Vec<[f64; 3]>>) ->
         positions,
         triangles: None,
         pairs: None,
+        maps: None,
     }
 }
 
@@ -189,7 +190,48 @@ fn from_vector(v: &Value) -> Result<Vec<Case>, String> {
         return Ok(Vec::new());
     }
     let mut cases = Vec::new();
-    if group.starts_with("quad-") {
+    if group == "decimate" {
+        let runs: Vec<Value> = parse(v, "runs")?;
+        for (i, run) in runs.iter().enumerate() {
+            let o = field(run, "options")?;
+            let mut options = Map::new();
+            for key in ["faces", "keep", "placement", "schedule", "lock_boundary"] {
+                if !o[key].is_null() {
+                    options.insert(key.to_string(), o[key].clone());
+                }
+            }
+            options.insert(
+                "guard".into(),
+                json!(!o["allow_foldover"].as_bool().unwrap_or(false)),
+            );
+            if o["locked"].as_array().is_some_and(|l| !l.is_empty()) {
+                options.insert("locked".into(), o["locked"].clone());
+            }
+            match (
+                o["max_error"].get("absolute"),
+                o["max_error"].get("relative"),
+            ) {
+                (Some(e), _) => {
+                    options.insert("max_error".into(), e.clone());
+                }
+                (None, Some(r)) => {
+                    options.insert("max_error_rel".into(), r.clone());
+                }
+                (None, None) => {}
+            }
+            let id = format!("decimate/{group}/{name}/run{i}");
+            let mut expected = triangles_expected(
+                parse(run, "output_faces")?,
+                Some(parse(run, "output_positions")?),
+            );
+            expected.maps = Some((
+                parse(run, "vertex_map")?,
+                parse(run, "collapse_map")?,
+                parse(run, "face_origin")?,
+            ));
+            cases.push(valid(message(id, "decimate", options, v)?, expected));
+        }
+    } else if group.starts_with("quad-") {
         let runs: Vec<Value> = parse(v, "runs")?;
         for run in &runs {
             let algorithm: String = parse(run, "algorithm")?;
@@ -206,6 +248,7 @@ fn from_vector(v: &Value) -> Result<Vec<Case>, String> {
                 positions: None,
                 triangles: Some(k),
                 pairs: Some(parse(run, "pairs")?),
+                maps: None,
             };
             cases.push(valid(message(id, "quad", options, v)?, expected));
         }

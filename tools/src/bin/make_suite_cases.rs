@@ -132,7 +132,13 @@ fn main() {
         m.faces[3][2] = 6;
         m
     };
-    for (task, options) in [("reduce", &none), ("quad", &none), ("simplify", &eps)] {
+    let keep = json!({"keep": 0.5});
+    for (task, options) in [
+        ("reduce", &none),
+        ("quad", &none),
+        ("simplify", &eps),
+        ("decimate", &keep),
+    ] {
         inv.push(invalid(
             "non-manifold-edge",
             task,
@@ -201,6 +207,22 @@ fn main() {
         &gen::octahedron(),
         "bad_option",
         "ε must be a finite number > 0",
+    ));
+    inv.push(invalid(
+        "no-positions",
+        "decimate",
+        keep.clone(),
+        &no_positions,
+        "missing_positions",
+        "decimate measures quadric errors: it needs positions",
+    ));
+    inv.push(invalid(
+        "keep-above-one",
+        "decimate",
+        json!({"keep": 1.5}),
+        &gen::octahedron(),
+        "bad_option",
+        "the fraction of the faces kept must be in [0, 1]",
     ));
     let mut one_point = gen::octahedron();
     one_point.positions = Some(vec![[1.0, 2.0, 3.0]; 6]);
@@ -325,6 +347,53 @@ fn main() {
         &ball,
         json!({"faces": s.mesh.faces[1..], "positions": s.mesh.positions}),
         "surface_changed",
+    ));
+
+    // decimate: the input as an unguarded run's answer; maps that lie; a locked vertex
+    // moved.
+    let d = contractible::decimate(&ball, &contractible::DecimateOptions::keep(0.25))
+        .expect("decimates");
+    let cm: Vec<Option<u32>> = d
+        .collapse_map
+        .iter()
+        .map(|&o| (o != contractible::decimate::NO_VERTEX).then_some(o))
+        .collect();
+    bad.push(wrong(
+        "stopped-early",
+        "decimate",
+        json!({"keep": 0.25, "guard": false}),
+        &ball,
+        json!({"faces": ball.faces, "positions": ball.positions}),
+        "target_missed",
+    ));
+    let mut shifted = d.vertex_map.clone();
+    shifted.rotate_left(1);
+    bad.push(wrong(
+        "maps-that-lie",
+        "decimate",
+        json!({"keep": 0.25}),
+        &ball,
+        json!({"faces": d.mesh.faces, "positions": d.mesh.positions, "vertex_map": shifted,
+               "collapse_map": cm, "face_origin": d.face_origin}),
+        "inconsistent_map",
+    ));
+    let l = contractible::decimate(
+        &ball,
+        &contractible::DecimateOptions {
+            locked: vec![0],
+            ..contractible::DecimateOptions::keep(0.25)
+        },
+    )
+    .expect("decimates");
+    let mut moved = l.mesh.positions.clone().expect("positions");
+    moved[l.collapse_map[0] as usize][2] += 0.125;
+    bad.push(wrong(
+        "locked-vertex-moved",
+        "decimate",
+        json!({"keep": 0.25, "locked": [0]}),
+        &ball,
+        json!({"faces": l.mesh.faces, "positions": moved, "vertex_map": l.vertex_map}),
+        "moved_vertex",
     ));
 
     for (name, lines) in [("invalid.jsonl", &inv), ("wrong-answers.jsonl", &bad)] {
