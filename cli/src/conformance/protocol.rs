@@ -130,8 +130,12 @@ pub struct Expected {
     pub triangles: Option<Vec<[u32; 3]>>,
     pub pairs: Option<Vec<[u32; 2]>>,
     /// `decimate`: the three maps.
-    pub maps: Option<(Vec<u32>, Vec<Option<u32>>, Vec<u32>)>,
+    pub maps: Option<StoredMaps>,
 }
+
+/// A decimation's stored maps: `vertex_map`, `collapse_map` (`None`: a vertex no face
+/// uses), `face_origin`.
+pub type StoredMaps = (Vec<u32>, Vec<Option<u32>>, Vec<u32>);
 
 /// Where an answer differs from the stored one (`None`: the same bytes of data).
 pub fn differs(answer: &Answer, expected: &Expected) -> Option<String> {
