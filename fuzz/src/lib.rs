@@ -5164,3 +5164,153 @@ pub fn check_quad_check(input: &CheckQuadInput) {
         "a passing answer does not use every face of K once: {used:?}"
     );
 }
+
+/// A `decimate` answer judged by `check::decimate`: the library's own run on a
+/// [`DecimateInput`] case (any target, cap, placement, guard, locks, schedule), then
+/// edits of the answer's faces and maps.
+#[derive(Arbitrary, Clone, Debug)]
+pub struct CheckDecimateInput {
+    /// The input and the run's options.
+    pub case: DecimateInput,
+    /// State the maps.
+    pub maps: bool,
+    /// Edits of the answer's faces (at most [`CHECK_EDITS`]).
+    pub edits: Vec<Edit>,
+    /// `(map, index, value)` edits of the maps (at most [`CHECK_EDITS`]): vertex_map,
+    /// collapse_map or face_origin (`map % 3`), entry `index` set to `value` (mod the
+    /// map's range plus two).
+    pub map_edits: Vec<(u8, u16, u16)>,
+}
+
+/// `check::decimate` on the library's own answer and on edited ones: never a panic; the
+/// checker refuses exactly the inputs the task refuses; the library's answer passes,
+/// with and without its maps; and an edited answer that passes is confirmed by the
+/// core: rebuilt as a surface with boundary, it has the input's component types (χ,
+/// orientability, boundary loops) as a multiset, at least the target less two faces,
+/// and, for an unguarded, uncapped run without locks above its target, no edge that
+/// passes the core's link condition of the surface with boundary.
+pub fn check_decimate_check(input: &CheckDecimateInput) {
+    use contractible::check::{self, DecimateCheck};
+    use contractible::ConedSurfaces;
+    type Maps<'a> = Option<(&'a [u32], &'a [u32], &'a [u32])>;
+    fn judge<'a>(o: &'a contractible::DecimateOptions, maps: Maps<'a>) -> DecimateCheck<'a> {
+        DecimateCheck {
+            faces: o.faces,
+            keep: o.keep,
+            max_error: o.max_error,
+            placement: o.placement,
+            allow_foldover: o.allow_foldover,
+            lock_boundary: o.lock_boundary,
+            locked: &o.locked,
+            vertex_map: maps.map(|m| m.0),
+            collapse_map: maps.map(|m| m.1),
+            face_origin: maps.map(|m| m.2),
+        }
+    }
+    let (mesh, o) = decimate_case(&input.case);
+    let r = match contractible::decimate(&mesh, &o) {
+        Ok(r) => r,
+        Err(e) => {
+            let refused = check::decimate(&mesh, &mesh, &judge(&o, None));
+            // The checker validates what it reads (positions, faces, keep, locks); the
+            // task also refuses a bad cap, which the checker does not evaluate.
+            assert!(
+                refused.is_err() || e.kind() == "bad_option",
+                "the task refuses the input ({e}) but the checker judges it"
+            );
+            return;
+        }
+    };
+    let full = (
+        r.vertex_map.as_slice(),
+        r.collapse_map.as_slice(),
+        r.face_origin.as_slice(),
+    );
+    for maps in [Some(full), None] {
+        let v = check::decimate(&mesh, &r.mesh, &judge(&o, maps))
+            .unwrap_or_else(|e| panic!("the task accepts the input, the checker refuses it: {e}"));
+        assert!(v.passed(), "the library's own answer fails: {v:?}");
+    }
+    let mut faces = r.mesh.faces.clone();
+    apply_edits(
+        &mut faces,
+        r.mesh.vertex_count as u32,
+        input.edits.iter().take(CHECK_EDITS),
+    );
+    let (mut vm, mut cm, mut fo) = (
+        r.vertex_map.clone(),
+        r.collapse_map.clone(),
+        r.face_origin.clone(),
+    );
+    for &(which, i, value) in input.map_edits.iter().take(CHECK_EDITS) {
+        let (map, range) = match which % 3 {
+            0 => (&mut vm, mesh.vertex_count),
+            1 => (&mut cm, r.mesh.vertex_count),
+            _ => (&mut fo, mesh.faces.len()),
+        };
+        if map.is_empty() {
+            continue;
+        }
+        let k = usize::from(i) % map.len();
+        map[k] = u32::from(value) % (range as u32 + 2);
+    }
+    let edited_maps = (vm.as_slice(), cm.as_slice(), fo.as_slice());
+    let pos = r.mesh.positions.clone().expect("decimate gives positions");
+    let answer = contractible::TriMesh::with_positions(pos, faces);
+    let v = check::decimate(
+        &mesh,
+        &answer,
+        &judge(&o, input.maps.then_some(edited_maps)),
+    )
+    .expect("an accepted input is judged");
+    if !v.passed() {
+        return;
+    }
+    let types = |m: &contractible::TriMesh| -> Vec<(i64, bool, usize)> {
+        let s = ConedSurfaces::from_mesh(m)
+            .unwrap_or_else(|e| panic!("a passing answer is no surface with boundary: {e}"));
+        let mut t: Vec<(i64, bool, usize)> = s
+            .components
+            .iter()
+            .map(|c| {
+                let t = c.surface_type();
+                (
+                    t.euler_characteristic(),
+                    t.is_orientable(),
+                    t.boundary_loops(),
+                )
+            })
+            .collect();
+        t.sort_unstable();
+        t
+    };
+    assert_eq!(
+        types(&answer),
+        types(&mesh),
+        "a passing answer changed the surfaces"
+    );
+    let by_fraction = o
+        .keep
+        .map(|k| (k * mesh.faces.len() as f64).ceil() as usize);
+    let target = match (o.faces, by_fraction) {
+        (Some(a), Some(b)) => a.max(b),
+        (a, b) => a.or(b).unwrap_or(0),
+    };
+    assert!(
+        answer.faces.len() + 1 >= target,
+        "a passing answer has {} faces for a target of {target}",
+        answer.faces.len()
+    );
+    let unlocked = o.locked.is_empty() && !o.lock_boundary;
+    if answer.faces.len() > target && o.allow_foldover && o.max_error.is_none() && unlocked {
+        let s = ConedSurfaces::from_mesh(&answer).expect("rebuilt above");
+        for c in &s.components {
+            for (a, b, _) in c.tri().edges() {
+                assert!(
+                    c.is_virtual(a) || c.is_virtual(b) || !c.is_contractible(a, b),
+                    "a passing answer above its target keeps a contractible edge"
+                );
+            }
+        }
+    }
+}

@@ -96,6 +96,8 @@ fn seed_corpora_and_regressions_of_the_structured_targets() {
     assert!(n >= 8, "check_simplify: {n} inputs decoded");
     let n = replay_decoded("check_quad", harness::check_quad_check);
     assert!(n >= 8, "check_quad: {n} inputs decoded");
+    let n = replay_decoded("check_decimate", harness::check_decimate_check);
+    assert!(n >= 8, "check_decimate: {n} inputs decoded");
 }
 
 #[test]
