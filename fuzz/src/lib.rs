@@ -4922,6 +4922,28 @@ pub fn check_check(input: &CheckInput) {
     }
 }
 
+/// The component types (χ, orientability, boundary loops) of `m` rebuilt by the core as a
+/// surface with boundary, sorted: a multiset (panics naming the defect when `m` is no
+/// surface with boundary: for the checkers' passing answers, that is the finding).
+fn component_types(m: &contractible::TriMesh) -> Vec<(i64, bool, usize)> {
+    let s = contractible::ConedSurfaces::from_mesh(m)
+        .unwrap_or_else(|e| panic!("a passing answer is no surface with boundary: {e}"));
+    let mut t: Vec<(i64, bool, usize)> = s
+        .components
+        .iter()
+        .map(|c| {
+            let t = c.surface_type();
+            (
+                t.euler_characteristic(),
+                t.is_orientable(),
+                t.boundary_loops(),
+            )
+        })
+        .collect();
+    t.sort_unstable();
+    t
+}
+
 /// A `simplify` answer judged by `check::simplify`: the library's own run on a
 /// [`SimplifyInput`] case (a surface with holes, positions, ε and the run's options),
 /// then edits of the answer's faces.
@@ -4992,27 +5014,9 @@ pub fn check_simplify_check(input: &CheckSimplifyInput) {
     if !v.passed() {
         return;
     }
-    let types = |m: &contractible::TriMesh| -> Vec<(i64, bool, usize)> {
-        let s = ConedSurfaces::from_mesh(m)
-            .unwrap_or_else(|e| panic!("a passing answer is no surface with boundary: {e}"));
-        let mut t: Vec<(i64, bool, usize)> = s
-            .components
-            .iter()
-            .map(|c| {
-                let t = c.surface_type();
-                (
-                    t.euler_characteristic(),
-                    t.is_orientable(),
-                    t.boundary_loops(),
-                )
-            })
-            .collect();
-        t.sort_unstable();
-        t
-    };
     assert_eq!(
-        types(&answer),
-        types(&case.mesh),
+        component_types(&answer),
+        component_types(&case.mesh),
         "a passing answer changed the surfaces"
     );
     if opts.allow_foldover {
@@ -5195,16 +5199,10 @@ pub fn check_decimate_check(input: &CheckDecimateInput) {
     type Maps<'a> = Option<(&'a [u32], &'a [u32], &'a [u32])>;
     fn judge<'a>(o: &'a contractible::DecimateOptions, maps: Maps<'a>) -> DecimateCheck<'a> {
         DecimateCheck {
-            faces: o.faces,
-            keep: o.keep,
-            max_error: o.max_error,
-            placement: o.placement,
-            allow_foldover: o.allow_foldover,
-            lock_boundary: o.lock_boundary,
-            locked: &o.locked,
             vertex_map: maps.map(|m| m.0),
             collapse_map: maps.map(|m| m.1),
             face_origin: maps.map(|m| m.2),
+            ..DecimateCheck::of_run(o)
         }
     }
     let (mesh, o) = decimate_case(&input.case);
@@ -5266,27 +5264,9 @@ pub fn check_decimate_check(input: &CheckDecimateInput) {
     if !v.passed() {
         return;
     }
-    let types = |m: &contractible::TriMesh| -> Vec<(i64, bool, usize)> {
-        let s = ConedSurfaces::from_mesh(m)
-            .unwrap_or_else(|e| panic!("a passing answer is no surface with boundary: {e}"));
-        let mut t: Vec<(i64, bool, usize)> = s
-            .components
-            .iter()
-            .map(|c| {
-                let t = c.surface_type();
-                (
-                    t.euler_characteristic(),
-                    t.is_orientable(),
-                    t.boundary_loops(),
-                )
-            })
-            .collect();
-        t.sort_unstable();
-        t
-    };
     assert_eq!(
-        types(&answer),
-        types(&mesh),
+        component_types(&answer),
+        component_types(&mesh),
         "a passing answer changed the surfaces"
     );
     let by_fraction = o

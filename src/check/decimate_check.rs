@@ -8,7 +8,7 @@ use super::simplify_check::{
 use super::surface::{Analysis, Sets};
 use super::{output_surface, same_components, surface_input, Failure, FailureKind, Verdict};
 use crate::decimate::{Placement, NO_VERTEX};
-use crate::{Error, MaxError, TriMesh};
+use crate::{DecimateOptions, DecimateResult, Error, MaxError, TriMesh};
 
 /// The run being judged and what its answer states besides the mesh: the target and
 /// options of [`crate::DecimateOptions`] (same names, same meaning) that decide when a
@@ -56,6 +56,54 @@ pub struct DecimateCheck<'a> {
     /// Per output face, the input face it descends from (its corners renamed by the
     /// collapses, slot by slot).
     pub face_origin: Option<&'a [u32]>,
+}
+
+impl<'a> DecimateCheck<'a> {
+    /// The check of a run with `options` (its target, cap, placement, guard and locks),
+    /// without maps.
+    ///
+    /// # Example
+    /// ```
+    /// use contractible::{check::DecimateCheck, DecimateOptions};
+    /// let run = DecimateOptions { allow_foldover: true, ..DecimateOptions::keep(0.1) };
+    /// let c = DecimateCheck::of_run(&run);
+    /// assert_eq!((c.keep, c.allow_foldover, c.vertex_map), (Some(0.1), true, None));
+    /// ```
+    pub fn of_run(options: &'a DecimateOptions) -> Self {
+        DecimateCheck {
+            faces: options.faces,
+            keep: options.keep,
+            max_error: options.max_error,
+            placement: options.placement,
+            allow_foldover: options.allow_foldover,
+            lock_boundary: options.lock_boundary,
+            locked: &options.locked,
+            vertex_map: None,
+            collapse_map: None,
+            face_origin: None,
+        }
+    }
+
+    /// The check of `result`, a run with `options`, with the three maps it states.
+    ///
+    /// # Example
+    /// ```
+    /// use contractible::{check, decimate, gen, DecimateOptions};
+    /// let mesh = gen::subdivide(&gen::octahedron(), 2)?;
+    /// let run = DecimateOptions::faces(40);
+    /// let result = decimate(&mesh, &run)?;
+    /// let c = check::DecimateCheck::of_result(&run, &result);
+    /// assert!(check::decimate(&mesh, &result.mesh, &c)?.passed());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn of_result(options: &'a DecimateOptions, result: &'a DecimateResult) -> Self {
+        DecimateCheck {
+            vertex_map: Some(&result.vertex_map),
+            collapse_map: Some(&result.collapse_map),
+            face_origin: Some(&result.face_origin),
+            ..DecimateCheck::of_run(options)
+        }
+    }
 }
 
 fn bad(option: &'static str, value: String, expected: &str) -> Error {

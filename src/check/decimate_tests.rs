@@ -3,29 +3,17 @@
 //! the target, maps that lie, moved locked vertices, positions off the input's.
 
 use super::simplify_tests::{geometric, surfaces};
+use super::tests::kinds;
 use super::*;
 use crate::decimate::{Placement, Schedule, NO_VERTEX};
 use crate::{decimate as run_decimate, gen, DecimateOptions, DecimateResult, MaxError};
 
-fn kinds(v: &Verdict) -> Vec<FailureKind> {
-    let mut k: Vec<FailureKind> = v.counts.iter().map(|&(k, _)| k).collect();
-    k.sort_unstable();
-    k
-}
-
 /// The check of `r` with the run's `o`, the maps stated or not.
 fn judge(mesh: &TriMesh, r: &DecimateResult, o: &DecimateOptions, maps: bool) -> Verdict {
-    let c = DecimateCheck {
-        faces: o.faces,
-        keep: o.keep,
-        max_error: o.max_error,
-        placement: o.placement,
-        allow_foldover: o.allow_foldover,
-        lock_boundary: o.lock_boundary,
-        locked: &o.locked,
-        vertex_map: maps.then_some(r.vertex_map.as_slice()),
-        collapse_map: maps.then_some(r.collapse_map.as_slice()),
-        face_origin: maps.then_some(r.face_origin.as_slice()),
+    let c = if maps {
+        DecimateCheck::of_result(o, r)
+    } else {
+        DecimateCheck::of_run(o)
     };
     decimate(mesh, &r.mesh, &c).expect("the task accepts the input")
 }

@@ -1,28 +1,12 @@
 //! The `quad` checker on right and wrong answers, and against a brute-force reading of
 //! its definition (some choice of one diagonal per quad partitions the faces).
 
+use super::tests::{kinds, random};
 use super::*;
-use crate::gen::{self, RandomParams, SurfaceKind};
+use crate::gen::{self, SurfaceKind};
 use crate::quad::Algorithm;
 use crate::rng::Rng;
 use crate::{quadrangulate, QuadOptions, QuadResult};
-
-fn kinds(v: &Verdict) -> Vec<FailureKind> {
-    let mut k: Vec<FailureKind> = v.counts.iter().map(|&(k, _)| k).collect();
-    k.sort_unstable();
-    k
-}
-
-fn random(kind: SurfaceKind, faces: usize, seed: u64) -> TriMesh {
-    let t = gen::random(&RandomParams {
-        surface: kind,
-        min_faces: faces,
-        flip_percent: 30,
-        seed,
-    })
-    .expect("a random surface");
-    TriMesh::combinatorial(t.vertex_capacity(), t.face_list())
-}
 
 fn surfaces() -> Vec<(&'static str, TriMesh)> {
     vec![

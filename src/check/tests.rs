@@ -5,13 +5,13 @@ use super::*;
 use crate::gen::{self, RandomParams, SurfaceKind};
 use crate::{reduce as run_reduce, ReduceOptions, Triangulation};
 
-fn kinds(v: &Verdict) -> Vec<FailureKind> {
+pub(super) fn kinds(v: &Verdict) -> Vec<FailureKind> {
     let mut k: Vec<FailureKind> = v.counts.iter().map(|&(k, _)| k).collect();
     k.sort_unstable();
     k
 }
 
-fn random(kind: SurfaceKind, faces: usize, seed: u64) -> TriMesh {
+pub(super) fn random(kind: SurfaceKind, faces: usize, seed: u64) -> TriMesh {
     let t = gen::random(&RandomParams {
         surface: kind,
         min_faces: faces,

@@ -313,16 +313,10 @@ fn stored_decimate_outputs_pass_the_conformance_checker() {
                 ids(&run["face_origin"]),
             );
             let c = contractible::check::DecimateCheck {
-                faces: o.faces,
-                keep: o.keep,
-                max_error: o.max_error,
-                placement: o.placement,
-                allow_foldover: o.allow_foldover,
-                lock_boundary: o.lock_boundary,
-                locked: &o.locked,
                 vertex_map: Some(&vm),
                 collapse_map: Some(&cm),
                 face_origin: Some(&fo),
+                ..contractible::check::DecimateCheck::of_run(&o)
             };
             let verdict = contractible::check::decimate(&input, &out, &c).expect("judged");
             assert!(verdict.passed(), "{}: {:?}", v["name"], verdict.failures);

@@ -78,13 +78,13 @@ pub struct Report {
     pub seconds: f64,
 }
 
-/// The verdict of the checker on `answer` to the valid `case`, as failure lines
-/// (empty: a correct output).
-pub fn judge(case: &Case, answer: &Answer) -> Result<Vec<String>, String> {
+/// The verdict of the checker on `answer` to the valid `case` (`Err`: the answer is
+/// no mesh of the task, or the checker refuses the case's input).
+pub fn verdict(case: &Case, answer: &Answer) -> Result<Verdict, String> {
     let input = case.message.mesh()?;
     let n = input.vertex_count;
     let o = &case.message.options;
-    let verdict: Verdict = match case.task() {
+    match case.task() {
         "reduce" => check::reduce(&input, &answer.mesh::<3>(n)?),
         "quad" => check::quad(
             &input,
@@ -172,7 +172,13 @@ pub fn judge(case: &Case, answer: &Answer) -> Result<Vec<String>, String> {
         }
         other => return Err(format!("no checker for task {other:?}")),
     }
-    .map_err(|e| format!("the checker refuses the case's input: {e}"))?;
+    .map_err(|e| format!("the checker refuses the case's input: {e}"))
+}
+
+/// The verdict of the checker on `answer` to the valid `case`, as failure lines: the
+/// first three reasons and the count of all (empty: a correct output).
+pub fn judge(case: &Case, answer: &Answer) -> Result<Vec<String>, String> {
+    let verdict = verdict(case, answer)?;
     let mut lines: Vec<String> = verdict
         .failures
         .iter()
@@ -190,31 +196,7 @@ pub fn judge(case: &Case, answer: &Answer) -> Result<Vec<String>, String> {
 /// kind. Returns how many did, or the first that did not.
 pub fn self_test(suite: &Suite) -> Result<usize, String> {
     for w in &suite.wrong {
-        let input = w.case.message.mesh()?;
-        let n = input.vertex_count;
-        let v = match w.case.task() {
-            "reduce" => check::reduce(&input, &w.answer.mesh::<3>(n)?),
-            "quad" => check::quad(
-                &input,
-                &w.answer.mesh::<4>(n)?,
-                &QuadCheck {
-                    triangles: w.answer.triangles.as_deref(),
-                    pairs: w.answer.pairs.as_deref(),
-                },
-            ),
-            _ => {
-                let lines = judge(&w.case, &w.answer)?;
-                if lines.iter().any(|l| l.starts_with(&format!("{}:", w.kind))) {
-                    continue;
-                }
-                return Err(format!(
-                    "the checker does not reject the wrong answer {} with {}: {lines:?}",
-                    w.case.id(),
-                    w.kind
-                ));
-            }
-        }
-        .map_err(|e| format!("{}: {e}", w.case.id()))?;
+        let v = verdict(&w.case, &w.answer).map_err(|e| format!("{}: {e}", w.case.id()))?;
         if !v.counts.iter().any(|&(k, _)| k.name() == w.kind) {
             return Err(format!(
                 "the checker does not reject the wrong answer {} with {} (it found {:?})",
