@@ -2377,3 +2377,75 @@ mod corpus {
         );
     }
 }
+
+#[test]
+fn decimation_reports_the_faces_removed_and_stops_when_cancelled() {
+    use contractible::progress::{Progress, REPORT_EVERY};
+    use contractible::task::Event;
+    use contractible::Monitor;
+    use std::sync::atomic::AtomicBool;
+    use std::sync::{Arc, Mutex};
+    // 5,120 faces to 512: about nine queue entries a collapse, several reports.
+    let mesh =
+        contractible::gen::subdivide(&contractible::gen::icosahedron(), 4).expect("subdivides");
+    for schedule in [Schedule::Exact, Schedule::Passes] {
+        let seen: Arc<Mutex<Vec<Progress>>> = Arc::new(Mutex::new(Vec::new()));
+        let sink = Arc::clone(&seen);
+        let o = DecimateOptions {
+            schedule,
+            monitor: Monitor::new().observe(move |e| {
+                if let Event::Progress { progress, .. } = e {
+                    sink.lock().expect("lock").push(*progress);
+                }
+            }),
+            ..DecimateOptions::keep(0.1)
+        };
+        let r = decimate(&mesh, &o).expect("decimates");
+        let seen = seen.lock().expect("lock").clone();
+        let total = (mesh.faces.len() - 512) as u64;
+        assert!(seen
+            .iter()
+            .all(|p| p.stage == contractible::decimate::REMOVED && p.total == total));
+        assert_eq!(
+            seen.first().map(|p| p.done),
+            Some(0),
+            "{schedule:?}: the start"
+        );
+        let removed = (mesh.faces.len() - r.mesh.faces.len()) as u64;
+        assert_eq!(
+            seen.last().map(|p| p.done),
+            Some(removed.min(total)),
+            "{schedule:?}: the end"
+        );
+        // Between: the faces removed so far, increasing, short of the end; reports
+        // every REPORT_EVERY steps, not at every step.
+        let middle = &seen[1..seen.len() - 1];
+        assert!(
+            middle.windows(2).all(|w| w[0].done < w[1].done),
+            "{schedule:?}: {middle:?}"
+        );
+        assert!(
+            middle.iter().all(|p| p.done > 0 && p.done < total),
+            "{middle:?}"
+        );
+        if schedule == Schedule::Exact {
+            assert!(middle.len() >= 2, "{schedule:?}: {} reports", middle.len());
+            assert!(
+                (middle.len() as u64) < 4 * 9 * total / REPORT_EVERY + 2,
+                "{} reports",
+                middle.len()
+            );
+        }
+        // Cancelled from the start: the run stops at its first report.
+        let flag = Arc::new(AtomicBool::new(true));
+        let cancelled = DecimateOptions {
+            schedule,
+            monitor: Monitor::new().cancel_on(flag),
+            ..DecimateOptions::keep(0.1)
+        };
+        assert!(
+            matches!(decimate(&mesh, &cancelled), Err(Error::Cancelled)),
+            "{schedule:?}"
+        );
+    }
+}
