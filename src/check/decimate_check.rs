@@ -97,12 +97,11 @@ impl<'a> DecimateCheck<'a> {
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn of_result(options: &'a DecimateOptions, result: &'a DecimateResult) -> Self {
-        DecimateCheck {
-            vertex_map: Some(&result.vertex_map),
-            collapse_map: Some(&result.collapse_map),
-            face_origin: Some(&result.face_origin),
-            ..DecimateCheck::of_run(options)
-        }
+        let mut check = DecimateCheck::of_run(options);
+        check.vertex_map = Some(&result.vertex_map);
+        check.collapse_map = Some(&result.collapse_map);
+        check.face_origin = Some(&result.face_origin);
+        check
     }
 }
 
