@@ -160,6 +160,7 @@ pub fn respond(case: &CaseMessage) -> Result<Answer, Refused> {
             let r = contractible::reduce(&mesh, &options).map_err(|e| library(&e))?;
             Ok(Answer {
                 faces: Some(in_input_ids(&r.mesh, &r.vertex_map)),
+                history: Some(r.contractions()),
                 ..Answer::default()
             })
         }

@@ -395,6 +395,13 @@ pub struct ReduceArgs {
     /// Skip the independent check that every output component is irreducible.
     #[arg(long)]
     pub no_verify: bool,
+    /// Write every contraction here, one line `KEPT REMOVED` per contraction (0-based
+    /// input vertex ids: REMOVED was contracted into KEPT), oldest first, component by
+    /// component: replayed on the input, they give the output (`check reduce --history`
+    /// checks it). `-` writes them to stdout. Keeping them costs about 44 bytes per
+    /// input triangle.
+    #[arg(long, value_name = "FILE")]
+    pub history: Option<PathBuf>,
     /// Components of the mesh processed at once (default: one per CPU; 1 processes
     /// them one after another). The output is the same for every value.
     #[arg(long, short = 'j')]
@@ -500,7 +507,8 @@ const CHECK_AFTER_HELP: &str = "reduce: OUTPUT is a closed 2-manifold on INPUT's
 vertices (by id when OUTPUT keeps INPUT's vertex list, else by exact position) with \
 INPUT's positions, one component per input component with the same χ and \
 orientability, and irreducible: every edge fails the link condition (the tetrahedron \
-aside). quad (OUTPUT a quad mesh; with --triangles K and --pairs P when the run flipped \
+aside); with --history, each recorded contraction passes the link condition on the \
+surface the earlier ones left and their replay gives OUTPUT. quad (OUTPUT a quad mesh; with --triangles K and --pairs P when the run flipped \
 edges): every quad is two triangles of K (of INPUT's faces without --triangles) split \
 along one of its diagonals (the pair P states for it, if given), every triangle in \
 exactly one quad, and K a closed surface on INPUT's vertices of INPUT's surface per \
@@ -595,6 +603,11 @@ pub struct CheckArgs {
     /// collapse_map, face_origin).
     #[arg(long, value_name = "FILE")]
     pub maps: Option<PathBuf>,
+    /// reduce: the run's contractions, as `reduce --history` writes them (one line
+    /// `KEPT REMOVED` each, input vertex ids, oldest first): each must pass the link
+    /// condition on the surface the earlier ones left, and their replay give OUTPUT.
+    #[arg(long, value_name = "FILE")]
+    pub history: Option<PathBuf>,
     #[command(flatten)]
     pub input_opts: InputOpts,
 }

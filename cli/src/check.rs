@@ -64,7 +64,9 @@ fn report(args: &CheckArgs, v: &Verdict) -> CheckReport {
 
 /// The task's options, checked against the task.
 enum Judged {
-    Reduce,
+    Reduce {
+        history: Option<PathBuf>,
+    },
     Quad {
         triangles: Option<PathBuf>,
         pairs: Option<PathBuf>,
@@ -119,8 +121,13 @@ fn judged(args: &CheckArgs) -> Result<Judged, CliError> {
     if args.task != CheckTask::Quad {
         foreign(&quad_flags, "quad")?;
     }
+    if args.task != CheckTask::Reduce {
+        foreign(&[("--history", args.history.is_some())], "reduce")?;
+    }
     match args.task {
-        CheckTask::Reduce => Ok(Judged::Reduce),
+        CheckTask::Reduce => Ok(Judged::Reduce {
+            history: args.history.clone(),
+        }),
         CheckTask::Decimate => Ok(Judged::Decimate),
         CheckTask::Quad => Ok(Judged::Quad {
             triangles: args.triangles.clone(),
@@ -217,8 +224,10 @@ fn read_quads(path: &Path, opts: &InputOpts, ui: Ui) -> Result<QuadMesh, CliErro
     })
 }
 
-/// A pairs file: one line per quad, two 0-based face indices (blank lines skipped).
-fn read_pairs(path: &Path) -> Result<Vec<[u32; 2]>, CliError> {
+/// A file of index pairs (`quad --pairs`: per quad, two 0-based face indices; `reduce
+/// --history`: per contraction, two 0-based vertex ids), one pair per line, blank lines
+/// skipped. `what` names the indices in errors.
+fn read_pairs(path: &Path, what: &str) -> Result<Vec<[u32; 2]>, CliError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
     let mut pairs = Vec::new();
@@ -231,7 +240,7 @@ fn read_pairs(path: &Path) -> Result<Vec<[u32; 2]>, CliError> {
             (Some(Ok(f)), Some(Ok(g)), None) => pairs.push([f, g]),
             _ => {
                 return Err(CliError::Input(format!(
-                    "{}:{}: expected two face indices (0-based integers), found {:?}",
+                    "{}:{}: expected two {what} (0-based integers), found {:?}",
                     path.display(),
                     n + 1,
                     line.trim()
@@ -246,10 +255,16 @@ pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
     let judged = judged(args)?;
     let (input, _, _, names) = meshio::read_input(&args.input, &args.input_opts, ui)?;
     let (verdict, faces) = match &judged {
-        Judged::Reduce => {
+        Judged::Reduce { history } => {
             let (output, _, _, _) = meshio::read_input(&args.output, &args.input_opts, ui)?;
-            let v = check::reduce(&input, &output)
-                .map_err(|e| meshio::task_error(&input, &names, "check reduce", e))?;
+            let v = match history {
+                Some(path) => {
+                    let steps = read_pairs(path, "vertex ids")?;
+                    check::reduce_history(&input, &output, &steps)
+                }
+                None => check::reduce(&input, &output),
+            }
+            .map_err(|e| meshio::task_error(&input, &names, "check reduce", e))?;
             (v, output.faces.len())
         }
         Judged::Simplify(o) => {
@@ -291,7 +306,7 @@ pub fn run(args: &CheckArgs, ui: Ui) -> Result<(), CliError> {
                 None => None,
             };
             let pairs = match pairs {
-                Some(path) => Some(read_pairs(path)?),
+                Some(path) => Some(read_pairs(path, "face indices")?),
                 None => None,
             };
             let stated = QuadCheck {

@@ -254,7 +254,7 @@ pub fn run(a: &DemoArgs, ui: Ui) -> Result<(), CliError> {
             let algo: Algorithm = algo;
             // The library checks every output by the naive link test and reports a
             // reducible one as an error.
-            let r = reduce_with_bars(&mesh, algo, a.seed, false, false, ui)
+            let r = reduce_with_bars(&mesh, algo, a.seed, false, false, false, ui)
                 .map_err(|e| CliError::Failure(format!("built-in input {name}: {e}")))?;
             let s = r.totals;
             let same_topology = surfaces.components.iter().zip(&r.components).all(|(c, r)| {

@@ -807,3 +807,27 @@ pub fn write<const N: usize>(out: &Output, mesh: &Mesh<N>, ui: Ui) -> Result<f64
         .map_err(|e| CliError::Failure(format!("{}: {e}", path.display())))?;
     Ok(t.elapsed().as_secs_f64())
 }
+
+/// Writes a file of index pairs, one `A B` line each (`quad --pairs`, `reduce
+/// --history`), atomically (temporary file renamed into place), or to stdout for `-`.
+pub fn write_index_pairs(path: &Path, lines: &[[u32; 2]]) -> Result<(), CliError> {
+    if path.as_os_str() == "-" {
+        use std::io::Write;
+        let mut w = std::io::BufWriter::new(std::io::stdout().lock());
+        let r = lines
+            .iter()
+            .try_for_each(|[f, g]| writeln!(w, "{f} {g}"))
+            .and_then(|()| w.flush());
+        return match r {
+            Ok(()) => Ok(()),
+            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => signals::die_of_broken_pipe(),
+            Err(e) => Err(CliError::Failure(format!("-: cannot write to stdout: {e}"))),
+        };
+    }
+    write_side_file(path, |w| {
+        for [f, g] in lines {
+            writeln!(w, "{f} {g}")?;
+        }
+        Ok(())
+    })
+}

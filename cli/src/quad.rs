@@ -140,7 +140,7 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
     let mut seconds_write_pairs = None;
     if let Some(path) = &a.pairs {
         let t = Instant::now();
-        write_pairs(path, &r.pairs)?;
+        meshio::write_index_pairs(path, &r.pairs)?;
         seconds_write_pairs = Some(t.elapsed().as_secs_f64());
     }
     let seconds_write_triangles = match &triangles {
@@ -220,30 +220,4 @@ pub fn run(a: &QuadArgs, ui: Ui) -> Result<(), CliError> {
         }
     }
     Ok(())
-}
-
-/// Writes the pairs file atomically (temporary file renamed into place), or to stdout
-/// for `-`.
-fn write_pairs(path: &Path, lines: &[[u32; 2]]) -> Result<(), CliError> {
-    if path.as_os_str() == "-" {
-        use std::io::Write;
-        let mut w = std::io::BufWriter::new(std::io::stdout().lock());
-        let r = lines
-            .iter()
-            .try_for_each(|[f, g]| writeln!(w, "{f} {g}"))
-            .and_then(|()| w.flush());
-        return match r {
-            Ok(()) => Ok(()),
-            Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => {
-                super::signals::die_of_broken_pipe()
-            }
-            Err(e) => Err(CliError::Failure(format!("-: cannot write to stdout: {e}"))),
-        };
-    }
-    meshio::write_side_file(path, |w| {
-        for [f, g] in lines {
-            writeln!(w, "{f} {g}")?;
-        }
-        Ok(())
-    })
 }

@@ -32,6 +32,12 @@ pub struct ReduceReport {
     /// Writing the output (absent without `-o`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub seconds_write: Option<f64>,
+    /// Where the contractions went (absent without `--history`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub history: Option<String>,
+    /// Writing the contractions (absent without `--history`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub seconds_write_history: Option<f64>,
 }
 
 /// What the bar of the reductions says.
@@ -39,12 +45,14 @@ const VERB: &str = "reducing";
 
 /// [`contractible::reduce`] with the command line's bars (a spinner while the input is
 /// checked, a bar following the algorithm inside each component, a bar over the
-/// verification), ε counted, the outputs verified unless `no_verify`.
+/// verification), ε counted, the outputs verified unless `no_verify`, the contractions
+/// kept when `history`.
 pub fn reduce_with_bars(
     mesh: &TriMesh,
     algorithm: Algorithm,
     seed: u64,
     no_verify: bool,
+    history: bool,
     parallel: bool,
     ui: Ui,
 ) -> Result<ReduceResult, contractible::Error> {
@@ -60,8 +68,8 @@ pub fn reduce_with_bars(
             algorithm,
             seed,
             count_retests: true,
-            // The command writes the surface, never the contractions.
-            keep_history: false,
+            // Only `--history` writes the contractions: without it, no memory for them.
+            keep_history: history,
             verify: !no_verify,
             parallel,
             monitor,
@@ -83,6 +91,9 @@ fn timings(r: &ReduceReport) -> String {
     }
     if let Some(t) = r.seconds_write {
         steps.push(format!("write {t:.3} s"));
+    }
+    if let Some(t) = r.seconds_write_history {
+        steps.push(format!("write history {t:.3} s"));
     }
     format!("time: {}", steps.join(", "))
 }
@@ -139,16 +150,37 @@ pub fn compute(a: &ReduceArgs, ui: Ui) -> Result<ReduceReport, CliError> {
         .as_deref()
         .map(|o| meshio::check_output(o, a.output_format.map(Into::into), &[&a.input]))
         .transpose()?;
+    if let Some(h) = &a.history {
+        if h.as_os_str() == "-" {
+            if output.as_ref().is_some_and(|o| o.path.is_none()) {
+                return Err(CliError::Input(
+                    "-o - and --history - would both write to stdout: send one to a file".into(),
+                ));
+            }
+            super::report_to_stderr();
+        } else {
+            meshio::check_side_file(h, &[&a.input])?;
+        }
+    }
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
+    let keep = a.history.is_some();
     let r = with_jobs(a.jobs, |parallel| {
-        reduce_with_bars(&mesh, a.algo, a.seed, a.no_verify, parallel, ui)
+        reduce_with_bars(&mesh, a.algo, a.seed, a.no_verify, keep, parallel, ui)
     })?
     .map_err(|e| meshio::task_error(&mesh, &names, "reduce", e))?;
     meshio::warn_dropped(&names, r.dropped_vertices, ui);
     drop(mesh);
     let seconds_write = match &output {
         Some(out) => Some(meshio::write(out, &r.mesh, ui)?),
+        None => None,
+    };
+    let seconds_write_history = match &a.history {
+        Some(path) => {
+            let t = std::time::Instant::now();
+            meshio::write_index_pairs(path, &r.contractions())?;
+            Some(t.elapsed().as_secs_f64())
+        }
         None => None,
     };
     Ok(ReduceReport {
@@ -164,6 +196,8 @@ pub fn compute(a: &ReduceArgs, ui: Ui) -> Result<ReduceReport, CliError> {
         seconds_build: r.seconds_build,
         seconds_verify: r.seconds_verify,
         seconds_write,
+        history: a.history.as_deref().map(|p| p.display().to_string()),
+        seconds_write_history,
     })
 }
 
@@ -177,6 +211,9 @@ pub fn run(a: &ReduceArgs, ui: Ui) -> Result<(), CliError> {
         outln!("{}", timings(&report));
         if let (Some(o), Some(_)) = (&report.output, report.seconds_write) {
             outln!("wrote {o}");
+        }
+        if let Some(h) = report.history.as_deref().filter(|&h| h != "-") {
+            outln!("wrote {h}");
         }
     }
     Ok(())

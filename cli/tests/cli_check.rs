@@ -565,3 +565,109 @@ fn check_decimate_judges_the_files_decimate_writes_with_its_maps() {
         stderr(&r)
     );
 }
+
+#[test]
+fn reduce_history_is_the_library_s_contractions_and_check_replays_it() {
+    let d = Scratch::new("check-reduce-history");
+    let input = data_closed("bunny_npm");
+    let (out, steps) = (d.path("r.off"), d.path("steps.txt"));
+    let s = |p: &std::path::Path| p.to_str().unwrap().to_string();
+    let r = run(&[
+        "reduce",
+        &s(&input),
+        "-o",
+        &s(&out),
+        "--history",
+        &s(&steps),
+        "-q",
+    ]);
+    assert!(r.status.success(), "{}", stderr(&r));
+    // The file is the library's `contractions()`, one `KEPT REMOVED` line each.
+    let mesh = read_mesh(&input);
+    let ours = contractible::reduce(&mesh, &Default::default()).expect("reduces");
+    let text = std::fs::read_to_string(&steps).expect("written");
+    let lines: Vec<String> = ours
+        .contractions()
+        .iter()
+        .map(|[u, v]| format!("{u} {v}"))
+        .collect();
+    assert_eq!(text.lines().collect::<Vec<_>>(), lines);
+    assert!(!lines.is_empty());
+    // `--history -` writes the same lines to stdout.
+    let piped = run(&["reduce", &s(&input), "--history", "-", "-q"]);
+    assert_eq!(String::from_utf8_lossy(&piped.stdout), text);
+    let both = run(&[
+        "reduce",
+        &s(&input),
+        "-o",
+        "-",
+        "--output-format",
+        "off",
+        "--history",
+        "-",
+    ]);
+    assert_eq!(both.status.code(), Some(2), "{}", stderr(&both));
+
+    // The replay passes, as the library's verdict says.
+    let ok = run_json(&[
+        "check",
+        "reduce",
+        &s(&input),
+        &s(&out),
+        "--history",
+        &s(&steps),
+    ]);
+    assert_eq!(ok["passed"], true, "{ok}");
+    // A step moved to the end: the same verdict as the library's, exit 1.
+    let mut moved = ours.contractions();
+    let first = moved.remove(0);
+    moved.push(first);
+    let edited = d.path("moved.txt");
+    let body: String = moved.iter().map(|[u, v]| format!("{u} {v}\n")).collect();
+    std::fs::write(&edited, body).unwrap();
+    let verdict = check::reduce_history(&mesh, &read_mesh(&out), &moved).expect("closed");
+    assert!(!verdict.passed());
+    let bad = run(&[
+        "check",
+        "--json",
+        "reduce",
+        &s(&input),
+        &s(&out),
+        "--history",
+        &s(&edited),
+    ]);
+    assert_eq!(bad.status.code(), Some(1));
+    let j: serde_json::Value = serde_json::from_slice(&bad.stdout).expect("JSON");
+    let listed = j["failures"].as_array().expect("failures");
+    assert_eq!(listed.len(), verdict.failures.len());
+    for (a, b) in listed.iter().zip(&verdict.failures) {
+        assert_eq!(a["kind"], b.kind.name());
+        assert_eq!(a["message"], b.message.as_str());
+    }
+    // A line that is not two ids, and the option on another task: exit 2.
+    std::fs::write(&edited, "3 4\n5\n").unwrap();
+    let junk = run(&[
+        "check",
+        "reduce",
+        &s(&input),
+        &s(&out),
+        "--history",
+        &s(&edited),
+    ]);
+    assert_eq!(junk.status.code(), Some(2));
+    assert!(
+        stderr(&junk).contains(":2: expected two vertex ids"),
+        "{}",
+        stderr(&junk)
+    );
+    let other = run(&[
+        "check",
+        "quad",
+        &s(&input),
+        &s(&out),
+        "--history",
+        &s(&steps),
+    ]);
+    assert_eq!(other.status.code(), Some(2));
+    assert!(stderr(&other).contains("--history is an option of `check reduce`"));
+}

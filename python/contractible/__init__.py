@@ -114,7 +114,8 @@ class Reduced:
             ``component_list``).
         history: the contractions; ``history.records()`` is a (c, 5) array of
             ``component, u, v, x, y`` (v contracted into u, {x, y} the edge's link;
-            input vertex ids) and ``history.expand(steps)`` the faces (input ids) after
+            input vertex ids), ``history.contractions()`` its (c, 2) columns ``u, v``
+            (what ``check("reduce", ..., history=)`` replays) and ``history.expand(steps)`` the faces (input ids) after
             undoing the last ``steps`` contractions by vertex splits (all: the input).
     """
 
@@ -384,7 +385,7 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
           max_error: Optional[float] = None, max_error_rel: Optional[float] = None,
           placement: str = "optimal", lock_boundary: bool = False, locked: Any = None,
           vertex_map: Any = None, collapse_map: Any = None,
-          face_origin: Any = None) -> Dict[str, Any]:
+          face_origin: Any = None, history: Any = None) -> Dict[str, Any]:
     """Judges ``(V_out, F_out)``, made by any implementation, as an output of ``task``
     on ``(V, F)``, by its properties (not its bytes); the command line's
     ``contractible check TASK INPUT OUTPUT --json`` without the file names.
@@ -393,7 +394,12 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
     (by index when it keeps the input's vertex list, else by exact position) with the
     input's positions, one component per input component of the same surface, and
     irreducible. Either ``V`` may be None (combinatorial meshes; then the counts say
-    how many vertices there are, by default one more than the largest index).
+    how many vertices there are, by default one more than the largest index). With
+    ``history`` (``(k, 2)``, ``u, v`` per contraction, input indices, oldest first, as
+    ``reduce(...).history.contractions()`` gives them), the contractions are replayed on
+    the input: each must pass the link condition on the surface the earlier ones left
+    (``invalid_history``), and the replay must end at the output's faces
+    (``history_mismatch``).
 
     Or ``"simplify"``, with the run's ``eps`` (absolute) or ``eps_rel`` (a fraction of
     the bounding-box diagonal of the vertices the input's faces use), and its
@@ -435,6 +441,8 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
     task = str(task)
     Va, Fa = _vertices(V), _faces(F)
     Vb, Fb = _vertices(V_out), _faces(F_out, (4,) if task == "quad" else (3,))
+    if task != "reduce" and history is not None:
+        raise ValueError(f"check: history is an option of \"reduce\", not {task!r}")
     if task != "quad" and (triangles is not None or pairs is not None):
         raise ValueError(f"check: triangles and pairs are options of \"quad\", not {task!r}")
     decimate_options = dict(faces=faces, keep=keep, max_error=max_error,
@@ -471,6 +479,14 @@ def check(task: str, V: Any, F: Any, V_out: Any, F_out: Any, *,
                 P = _faces(pairs, (2,))
             return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count,
                                  triangles=K, pairs=P)
+        if history is not None:
+            H = np.asarray(history)
+            if H.size == 0:
+                H = H.reshape(0, 2).astype(np.int64)
+            if H.ndim != 2 or H.shape[1] != 2:
+                raise ValueError(f"history must have shape (k, 2), got {H.shape}")
+            return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count,
+                                 history=_faces(H, (2,)))
         return _native.check(task, Va, Fa, vertex_count, Vb, Fb, out_vertex_count)
     if (eps is None) == (eps_rel is None):
         raise ValueError("check: give exactly one of eps and eps_rel for \"simplify\"")

@@ -1,5 +1,4 @@
-"""The conformance protocol (spec/conformance.md) answered with the Python package:
-contractible conformance --impl 'python python/examples/conformance_adapter.py'"""
+"""Answers one conformance case (spec/conformance.md) with the Python package."""
 import json, sys
 import numpy as np
 import contractible as c
@@ -11,7 +10,8 @@ o, task = case["options"], case["task"]
 try:
     if task == "reduce":
         r = c.reduce(V, F, algo=o.get("algorithm", "rs"), seed=o.get("seed", 0))
-        answer = {"faces": r.vertex_map[r.faces].tolist(), "positions": None}
+        answer = {"faces": r.vertex_map[r.faces].tolist(), "positions": None,
+                  "history": r.history.contractions().tolist()}
     elif task == "quad":
         q = c.quad(V, F, algo=o.get("algorithm", "lrs"), seed=o.get("seed", 0))
         answer = {"faces": q.quads.tolist(), "triangles": q.triangles.tolist(),

@@ -489,6 +489,24 @@ impl History {
             .into_pyarray(py)
     }
 
+    /// `(k, 2)` int64: the contractions as `u, v` (`v` contracted into `u`, input vertex
+    /// ids), oldest first, components in order: the library's
+    /// `ReduceResult::contractions`, what `reduce --history` writes and `check("reduce",
+    /// ..., history=)` replays.
+    fn contractions<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i64>> {
+        let mut flat = Vec::new();
+        for p in &self.parts {
+            let o = &p.vertex_origin;
+            for r in p.reduction.history.records() {
+                flat.extend([i64::from(o[r.u.index()]), i64::from(o[r.v.index()])]);
+            }
+        }
+        let k = flat.len() / 2;
+        Array2::from_shape_vec((k, 2), flat)
+            .unwrap_or_else(|_| Array2::zeros((0, 2)))
+            .into_pyarray(py)
+    }
+
     /// The faces (input vertex ids, `(m, 3)`) after undoing the last `steps` contractions
     /// by vertex splits (all of them when `None`: the input's faces, in input order and
     /// orientation; 0: the reduced output's faces, in input face order).
@@ -786,8 +804,9 @@ fn decimate_py<'py>(
 /// bounding-box diagonal), the run's `position` and `guard`. For `quad` (`out_faces`
 /// `(m, 4)`): the stated `triangles` K (in the output's ids) and `pairs` (rows of K).
 /// For `decimate`: the run's `target_faces`, `keep`, `max_error` (with `relative`),
-/// `placement`, `guard`, `lock_boundary`, `locked`, and the maps.
-#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true, triangles=None, pairs=None, target_faces=None, keep=None, placement="optimal", lock_boundary=false, locked=None, vertex_map=None, collapse_map=None, face_origin=None))]
+/// `placement`, `guard`, `lock_boundary`, `locked`, and the maps. For `reduce`: the
+/// `history` (`(k, 2)`, `u, v` per contraction), replayed when given.
+#[pyo3(signature = (task, vertices, faces, vertex_count, out_vertices, out_faces, out_vertex_count, eps=None, relative=false, position="midpoint", guard=true, triangles=None, pairs=None, target_faces=None, keep=None, placement="optimal", lock_boundary=false, locked=None, vertex_map=None, collapse_map=None, face_origin=None, history=None))]
 #[allow(clippy::too_many_arguments)]
 fn check_py<'py>(
     py: Python<'py>,
@@ -812,6 +831,7 @@ fn check_py<'py>(
     vertex_map: Option<Vec<i64>>,
     collapse_map: Option<Vec<i64>>,
     face_origin: Option<Vec<i64>>,
+    history: Option<Indices<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let input = mesh::<3>(py, vertices.as_ref(), &faces, vertex_count)?;
     if task == "decimate" {
@@ -871,7 +891,7 @@ fn check_py<'py>(
             None => None,
         };
         let pairs = match &pairs {
-            Some(p) => Some(pair_list(p)?),
+            Some(p) => Some(index_pairs(p, "pairs", "face index")?),
             None => None,
         };
         let stated = contractible::check::QuadCheck {
@@ -885,7 +905,13 @@ fn check_py<'py>(
     }
     let output = mesh::<3>(py, out_vertices.as_ref(), &out_faces, out_vertex_count)?;
     let verdict = match task {
-        "reduce" => py.detach(|| contractible::check::reduce(&input, &output)),
+        "reduce" => match &history {
+            Some(h) => {
+                let steps = index_pairs(h, "history", "vertex id")?;
+                py.detach(|| contractible::check::reduce_history(&input, &output, &steps))
+            }
+            None => py.detach(|| contractible::check::reduce(&input, &output)),
+        },
         "simplify" => {
             let Some(e) = eps else {
                 return Err(PyValueError::new_err(
@@ -913,35 +939,36 @@ fn check_py<'py>(
     verdict_dict(py, &verdict)
 }
 
-/// A `(m, 2)` array of row indices (each in `0..2³²`; the checker judges the range).
-fn pair_list(p: &Indices<'_>) -> PyResult<Vec<[u32; 2]>> {
+/// An `(m, 2)` array of ids (`name`: `pairs`, `history`), each row two `what`s (a
+/// `ValueError` naming the row for one outside u32).
+fn index_pairs(p: &Indices<'_>, name: &str, what: &str) -> PyResult<Vec<[u32; 2]>> {
     if p.shape()[1] != 2 {
         return Err(PyValueError::new_err(format!(
-            "pairs must have shape (m, 2), got ({}, {})",
+            "{name} must have shape (m, 2), got ({}, {})",
             p.shape()[0],
             p.shape()[1]
         )));
     }
-    fn rows<T: Copy + Into<i64>>(values: &[T]) -> PyResult<Vec<[u32; 2]>> {
+    /// The rows, or the first row and value that is no u32.
+    fn rows<T: Copy + Into<i64>>(values: &[T]) -> Result<Vec<[u32; 2]>, (usize, i64)> {
         values
             .chunks_exact(2)
             .enumerate()
             .map(|(i, r)| {
                 let get = |x: T| {
                     let x: i64 = x.into();
-                    u32::try_from(x).map_err(|_| {
-                        PyValueError::new_err(format!("pair {i}: {x} is no face index"))
-                    })
+                    u32::try_from(x).map_err(|_| (i, x))
                 };
                 Ok([get(r[0])?, get(r[1])?])
             })
             .collect()
     }
-    match p {
+    let r = match p {
         Indices::I64(a) => with_values(a, rows),
         Indices::I32(a) => with_values(a, rows),
         Indices::U32(a) => with_values(a, rows),
-    }
+    };
+    r.map_err(|(i, x)| PyValueError::new_err(format!("{name}[{i}]: {x} is no {what}")))
 }
 
 /// A verdict as the dict `contractible check --json` prints, without the file names.

@@ -240,3 +240,36 @@ def test_decimations_pass_with_their_maps_and_wrong_ones_are_named(cli, tmp_path
         c.check("decimate", V, F, V, F, vertex_map=[-5])
     with pytest.raises(ValueError, match="decimate needs coordinates"):
         c.check("decimate", None, F, V, F)
+
+
+def test_a_reduction_s_history_replays_as_the_cli_and_library_say(cli, tmp_path, mesh_file):
+    src = mesh_file("bunny_npm")
+    V, F = c.read(src)
+    r = c.reduce(V, F)
+    steps = r.history.contractions()
+    assert steps.shape == (len(r.history), 2) and steps.dtype == np.int64
+    # The columns u, v of records(), and what `reduce --history` writes.
+    assert (steps == r.history.records()[:, 1:3]).all()
+    out, hist = tmp_path / "r.off", tmp_path / "steps.txt"
+    cli("reduce", src, "-o", out, "--history", hist, "-q")
+    written = np.loadtxt(hist, dtype=np.int64, ndmin=2)
+    assert (written == steps).all()
+    ok = c.check("reduce", V, F, r.vertices, r.faces, history=steps)
+    assert ok["passed"], ok
+    # One step too few, and a step repeated: as `check reduce --history` says.
+    for edited, kind in ((steps[:-1], "history_mismatch"),
+                         (np.vstack([steps[:1], steps]), "invalid_history")):
+        np.savetxt(hist, edited, fmt="%d")
+        theirs = json.loads(cli("--json", "check", "reduce", src, out, "--history", hist,
+                                check=False).stdout)
+        ours = c.check("reduce", V, F, r.vertices, r.faces, history=edited)
+        assert not ours["passed"] and kind in ours["counts"], ours
+        for k in ("task", "passed", "counts", "failures"):
+            assert ours[k] == theirs[k], k
+    # An empty history of a reducible input replays to the input, not the output.
+    v = c.check("reduce", V, F, r.vertices, r.faces, history=[])
+    assert "history_mismatch" in v["counts"]
+    with pytest.raises(ValueError, match="history must have shape"):
+        c.check("reduce", V, F, r.vertices, r.faces, history=[1, 2, 3])
+    with pytest.raises(ValueError, match="history is an option of"):
+        c.check("simplify", V, F, r.vertices, r.faces, eps=0.1, history=steps)

@@ -14,6 +14,8 @@
 //!   positions, one component per input component of the same surface (χ and
 //!   orientability), and **irreducible**: every edge fails the link condition (its ends
 //!   have a common neighbour besides the two opposite vertices), the tetrahedron aside.
+//!   [`reduce_history`] also replays a stated contraction history: each step valid in turn
+//!   under the link condition, the replay ending at the output's faces.
 //! - [`simplify()`]: the output is a surface (boundary allowed) with a finite position
 //!   per used vertex, of the input's surface per component (χ, orientability, boundary
 //!   loops; matched by id when the output keeps the input's vertex list, else as
@@ -37,6 +39,7 @@
 //! takes the task's option types, `Eps` and `simplify::Position`, as plain values.)
 
 mod decimate_check;
+mod history;
 mod quad_check;
 mod simplify_check;
 mod surface;
@@ -102,11 +105,16 @@ pub enum FailureKind {
     TargetMissed,
     /// A stated provenance map contradicts itself, the other map or the faces.
     InconsistentMap,
+    /// A step of a stated contraction history is no contraction the link condition
+    /// allows on the surface the steps before it left.
+    InvalidHistory,
+    /// Replaying a stated contraction history does not give the output's faces.
+    HistoryMismatch,
 }
 
 impl FailureKind {
     /// Every kind, in declaration order.
-    pub const ALL: [FailureKind; 22] = [
+    pub const ALL: [FailureKind; 24] = [
         FailureKind::VertexOutOfRange,
         FailureKind::DegenerateFace,
         FailureKind::RepeatedFace,
@@ -129,6 +137,8 @@ impl FailureKind {
         FailureKind::MissingVertex,
         FailureKind::TargetMissed,
         FailureKind::InconsistentMap,
+        FailureKind::InvalidHistory,
+        FailureKind::HistoryMismatch,
     ];
 
     /// The kind's name in reports (snake case), stable across versions.
@@ -161,6 +171,8 @@ impl FailureKind {
             FailureKind::MissingVertex => "missing_vertex",
             FailureKind::TargetMissed => "target_missed",
             FailureKind::InconsistentMap => "inconsistent_map",
+            FailureKind::InvalidHistory => "invalid_history",
+            FailureKind::HistoryMismatch => "history_mismatch",
         }
     }
 }
@@ -488,10 +500,90 @@ fn output_surface(output: &TriMesh, verdict: &mut Verdict) -> Option<Analysis> {
 /// # Ok::<(), contractible::Error>(())
 /// ```
 pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
+    Ok(reduce_verdict(input, output)?.0)
+}
+
+/// Judges `output` as an irreducible triangulation of `input` reached by the stated
+/// contractions: everything [`reduce`] checks, and each step `[u, v]` of `history`
+/// (contract `v` into `u`, input vertex ids, oldest first) is valid in turn and the replay
+/// gives the output. A step is valid when `u` and `v` are distinct vertices of the surface
+/// the earlier steps left, `uv` is one of its edges and passes the link condition (read
+/// off the faces: the ends' only common neighbours are the two opposite vertices, and the
+/// surface there is no tetrahedron); the first invalid step is reported
+/// ([`FailureKind::InvalidHistory`]) and ends the replay. After a whole replay, each face
+/// of the replayed surface or of the output (in input ids) that is not in the other is a
+/// [`FailureKind::HistoryMismatch`]. The contractions of [`crate::reduce`]'s result are
+/// [`crate::ReduceResult::contractions`].
+///
+/// **Complexity.** [`reduce`]'s, plus O(F log F) and, per step, the faces at its two
+/// ends.
+///
+/// # Errors
+/// As [`reduce`]'s.
+///
+/// # Example
+/// ```
+/// use contractible::{check, gen, reduce};
+/// let sphere = gen::icosahedron();
+/// let ours = reduce(&sphere, &Default::default())?;
+/// let history = ours.contractions();
+/// assert_eq!(history.len(), 8); // 12 vertices down to the tetrahedron's 4
+/// assert!(check::reduce_history(&sphere, &ours.mesh, &history)?.passed());
+/// // Stopping one step short leaves a face the output does not have.
+/// let verdict = check::reduce_history(&sphere, &ours.mesh, &history[..7])?;
+/// assert_eq!(verdict.failures[0].kind, check::FailureKind::HistoryMismatch);
+/// # Ok::<(), contractible::Error>(())
+/// ```
+pub fn reduce_history(
+    input: &TriMesh,
+    output: &TriMesh,
+    history: &[[u32; 2]],
+) -> Result<Verdict, Error> {
+    let (mut verdict, faces) = reduce_verdict(input, output)?;
+    let Some(end) = history::replay(input.vertex_count, &input.faces, history, &mut verdict) else {
+        return Ok(verdict);
+    };
+    // An output on the survivors renumbered in increasing input order (as `reduce`
+    // writes it) is read so, positions agreeing: by position alone, input vertices that
+    // share one (a mesh without geometry) could not be told apart.
+    let same_positions = |v: usize, i: u32| match (&output.positions, &input.positions) {
+        (Some(p), Some(q)) => {
+            let bits = |x: Option<&[f64; 3]>| x.map(|x| x.map(|c| (c + 0.0).to_bits()));
+            bits(p.get(v)).is_some() && bits(p.get(v)) == bits(q.get(i as usize))
+        }
+        (None, None) => true,
+        _ => false,
+    };
+    let by_survivors = output.vertex_count == end.survivors.len()
+        && output.vertex_count != input.vertex_count
+        && (end.survivors.iter().enumerate()).all(|(v, &i)| same_positions(v, i));
+    let faces = if by_survivors {
+        (output.faces.iter())
+            .map(|f| f.map(|v| end.survivors.get(v as usize).copied()))
+            .map(|[a, b, c]| Some([a?, b?, c?]))
+            .collect()
+    } else {
+        faces
+    };
+    if let Some(faces) = faces {
+        history::compare(&end.faces, &faces, history.len(), &mut verdict);
+    }
+    Ok(verdict)
+}
+
+/// Faces in input vertex ids.
+type InputFaces = Vec<[u32; 3]>;
+
+/// [`reduce`]'s verdict, and the output's faces in input ids when every vertex they use
+/// is matched to an input vertex.
+fn reduce_verdict(
+    input: &TriMesh,
+    output: &TriMesh,
+) -> Result<(Verdict, Option<InputFaces>), Error> {
     let inp = closed_input(input, "reduce")?;
     let mut verdict = Verdict::new("reduce");
     let Some(out) = output_surface(output, &mut verdict) else {
-        return Ok(verdict);
+        return Ok((verdict, None));
     };
     for &((a, b), _, f) in out.edges.iter().filter(|(_, o, _)| o[1] == u32::MAX) {
         verdict.fail(
@@ -505,12 +597,12 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
     }
     if !verdict.passed() {
         // Not closed: the surface checks below would only restate it.
-        return Ok(verdict);
+        return Ok((verdict, None));
     }
     let out_parts: Vec<&[u32]> = out.parts.iter().map(|p| p.vertices.as_slice()).collect();
     let Some(matching) = match_vertices(input, output, &inp, &out_parts, &mut verdict) else {
         verdict.fail(no_matching(input, output.vertex_count));
-        return Ok(verdict);
+        return Ok((verdict, None));
     };
     let to_input = |v: u32| -> Option<u32> {
         match &matching {
@@ -521,7 +613,13 @@ pub fn reduce(input: &TriMesh, output: &TriMesh) -> Result<Verdict, Error> {
     let by_id = matches!(matching, Matching::ById);
     same_components(input, &inp, &out, &to_input, by_id, false, &mut verdict);
     contractible_edges(&out, &mut verdict);
-    Ok(verdict)
+    let faces: Option<InputFaces> = (output.faces.iter())
+        .map(|f| {
+            let [a, b, c] = f.map(&to_input);
+            Some([a?, b?, c?])
+        })
+        .collect();
+    Ok((verdict, faces))
 }
 
 /// Compares the components of `out` with those of `inp` through `to_input` (an output
@@ -816,6 +914,8 @@ fn contractible_edges(out: &Analysis, verdict: &mut Verdict) {
 
 #[cfg(test)]
 mod decimate_tests;
+#[cfg(test)]
+mod history_tests;
 #[cfg(test)]
 mod quad_tests;
 #[cfg(test)]

@@ -193,6 +193,42 @@ pub struct ReduceResult {
     pub seconds_verify: Option<f64>,
 }
 
+impl ReduceResult {
+    /// Every contraction made, as `[u, v]` in input vertex ids (`v` contracted into `u`,
+    /// which survives): component by component in the order of [`Self::components`],
+    /// each component's oldest first. Replayed on the input, they give [`Self::mesh`]'s
+    /// faces ([`crate::check::reduce_history`] checks exactly that); empty without
+    /// [`ReduceOptions::keep_history`]. The command line's `reduce --history FILE` writes
+    /// them, one per line.
+    ///
+    /// # Example
+    /// ```
+    /// use contractible::{gen, reduce};
+    /// let octahedron = gen::octahedron();
+    /// let r = reduce(&octahedron, &Default::default())?;
+    /// // Six vertices down to the tetrahedron's four: two contractions.
+    /// let steps = r.contractions();
+    /// assert_eq!(steps.len(), 2);
+    /// assert!(steps.iter().all(|&[u, v]| u != v && !r.vertex_map.contains(&v)));
+    /// # Ok::<(), contractible::Error>(())
+    /// ```
+    pub fn contractions(&self) -> Vec<[u32; 2]> {
+        let mut out = Vec::with_capacity(
+            self.components
+                .iter()
+                .map(|c| c.reduction.history.len())
+                .sum(),
+        );
+        for c in &self.components {
+            let origin = |v: crate::VertexId| c.vertex_origin[v.index()];
+            for r in c.reduction.history.records() {
+                out.push([origin(r.u), origin(r.v)]);
+            }
+        }
+        out
+    }
+}
+
 /// Outputs with at most this many edges are checked by the link condition's definition
 /// (O(Σ d_u·d_v)); larger ones by the marked-neighbour test (O(Σ d_u + d_v)), which is
 /// linear where the definition is quadratic in the degrees.

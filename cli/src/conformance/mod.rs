@@ -85,7 +85,10 @@ pub fn verdict(case: &Case, answer: &Answer) -> Result<Verdict, String> {
     let n = input.vertex_count;
     let o = &case.message.options;
     match case.task() {
-        "reduce" => check::reduce(&input, &answer.mesh::<3>(n)?),
+        "reduce" => match &answer.history {
+            Some(steps) => check::reduce_history(&input, &answer.mesh::<3>(n)?, steps),
+            None => check::reduce(&input, &answer.mesh::<3>(n)?),
+        },
         "quad" => check::quad(
             &input,
             &answer.mesh::<4>(n)?,

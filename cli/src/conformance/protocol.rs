@@ -79,6 +79,10 @@ pub struct Answer {
     /// `quad`: per quad, its two rows of K (of the input's faces without `triangles`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub pairs: Option<Vec<[u32; 2]>>,
+    /// `reduce`: the contractions made, `[kept, removed]` in input vertex ids, oldest
+    /// first (optional: when given, the checker replays them).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub history: Option<Vec<[u32; 2]>>,
     /// `decimate`: per output vertex, the input vertex that survives as it.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub vertex_map: Option<Vec<u32>>,

@@ -283,6 +283,27 @@ fn main() {
         json!({"faces": reduced[1..], "positions": null}),
         "boundary_edge",
     ));
+    // reduce with a history: a step repeated (its removed vertex is gone); the last step
+    // left out (the replay ends at another surface).
+    let steps = r.contractions();
+    let mut repeated = steps.clone();
+    repeated.insert(1, steps[0]);
+    bad.push(wrong(
+        "history-step-repeated",
+        "reduce",
+        json!({"algorithm": "rs"}),
+        &torus,
+        json!({"faces": reduced, "positions": null, "history": repeated}),
+        "invalid_history",
+    ));
+    bad.push(wrong(
+        "history-stops-short",
+        "reduce",
+        json!({"algorithm": "rs"}),
+        &torus,
+        json!({"faces": reduced, "positions": null, "history": steps[..steps.len() - 1]}),
+        "history_mismatch",
+    ));
     // quad: a quad given twice; two corners swapped; pairs swapped.
     let sphere = gen::icosahedron();
     let q = quadrangulate(
