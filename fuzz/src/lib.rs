@@ -4840,13 +4840,21 @@ pub struct CheckInput {
     pub edits: Vec<Edit>,
     /// Write the answer with only the vertices its faces use.
     pub compact: bool,
+    /// Edits of the contraction history `(kind, i, j)` (at most [`CHECK_EDITS`]): kind mod
+    /// 4 is 0 drop step i, 1 repeat step i, 2 swap steps i and j, 3 replace step i by
+    /// `[i, j]` as vertex ids (mod capacity); indices mod the steps.
+    pub history_edits: Vec<(u8, u16, u16)>,
 }
 
 /// `check::reduce` on a contracted, maybe edited, answer: never a panic or an error (the
 /// input is a closed surface); on an unedited answer the verdict is exactly the core's
 /// naive link predicate (the contractible edges counted, nothing else wrong); and a
 /// verdict that passes is confirmed by the core: the answer, rebuilt, is a closed
-/// irreducible triangulation of the input's surface.
+/// irreducible triangulation of the input's surface. With the contractions made as a
+/// history, maybe edited (`check::reduce_history`): the unedited history adds no reason
+/// to an unedited answer's verdict, and a replay the checker accepts is confirmed by the
+/// core (every step an edge passing its naive link condition, contracted by the core,
+/// ending at the answer's faces).
 pub fn check_check(input: &CheckInput) {
     use contractible::check::{self, FailureKind};
     let tri = build_surface(&input.base);
@@ -4858,6 +4866,8 @@ pub fn check_check(input: &CheckInput) {
     let source = contractible::TriMesh::with_positions(positions.clone(), tri.face_list());
     let mut t = tri.clone();
     let mut scratch = Vec::new();
+    // The contractions made, `[kept, removed]`.
+    let mut steps: Vec<[u32; 2]> = Vec::new();
     for &(v, k) in input.picks.iter().take(CHECK_PICKS) {
         let u = VertexId(u32::from(v) % n as u32);
         if !t.is_vertex(u) {
@@ -4867,6 +4877,7 @@ pub fn check_check(input: &CheckInput) {
         let w = link[usize::from(k) % link.len()];
         if t.link_condition_naive(u, w) {
             t.collapse(u, w, &mut scratch);
+            steps.push([u.0, w.0]);
         }
     }
     if input.finish {
@@ -4874,6 +4885,7 @@ pub fn check_check(input: &CheckInput) {
             let next = t.edges().find(|&(a, b, _)| t.link_condition_naive(a, b));
             let Some((a, b, _)) = next else { break };
             t.collapse(a, b, &mut scratch);
+            steps.push([a.0, b.0]);
         }
     }
     let mut faces = t.face_list();
@@ -4909,7 +4921,7 @@ pub fn check_check(input: &CheckInput) {
                 .map(|f| f.map(|x| pos[x as usize][0] as u32))
                 .collect()
         } else {
-            faces
+            faces.clone()
         };
         let rebuilt =
             Surfaces::from_mesh(&contractible::TriMesh::combinatorial(n, faces_in_input_ids))
@@ -4919,6 +4931,75 @@ pub fn check_check(input: &CheckInput) {
         assert!(r.is_irreducible_naive(), "a passing answer is reducible");
         assert_eq!(r.euler_characteristic(), tri.euler_characteristic());
         assert_eq!(r.is_orientable(), tri.is_orientable());
+    }
+    // The history, maybe edited.
+    let mut history = steps.clone();
+    for &(kind, i, j) in input.history_edits.iter().take(CHECK_EDITS) {
+        if history.is_empty() {
+            break;
+        }
+        let (i, j) = (
+            usize::from(i) % history.len(),
+            usize::from(j) % history.len(),
+        );
+        match kind % 4 {
+            0 => {
+                history.remove(i);
+            }
+            1 => history.insert(i, history[i]),
+            2 => history.swap(i, j),
+            _ => history[i] = [i as u32 % n as u32, j as u32 % n as u32],
+        }
+    }
+    let vh = check::reduce_history(&source, &answer, &history).expect("a closed input is judged");
+    if history == steps && !edited {
+        assert_eq!(
+            vh.counts, v.counts,
+            "the true history adds a reason: {vh:?}"
+        );
+    }
+    // The replay was judged in full (every step, and the end against the answer's faces)
+    // unless the answer is no closed surface on matched vertices; then, with no replay
+    // reason, the core must replay it to the answer's faces.
+    let judged_in_full = vh.counts.iter().all(|(k, _)| {
+        matches!(
+            k,
+            FailureKind::ContractibleEdge
+                | FailureKind::SurfaceChanged
+                | FailureKind::ComponentLost
+                | FailureKind::ComponentSplit
+                | FailureKind::ComponentsMerged
+        )
+    });
+    if judged_in_full {
+        let mut c = tri.clone();
+        for &[a, b] in &history {
+            let (a, b) = (VertexId(a), VertexId(b));
+            assert!(
+                c.is_vertex(a) && c.is_vertex(b) && c.link_condition_naive(a, b),
+                "an accepted step [{}, {}] is no contractible edge",
+                a.0,
+                b.0
+            );
+            c.collapse(a, b, &mut scratch);
+        }
+        let sorted = |fs: &[[u32; 3]]| {
+            let mut fs: Vec<[u32; 3]> = fs
+                .iter()
+                .map(|f| {
+                    let mut f = *f;
+                    f.sort_unstable();
+                    f
+                })
+                .collect();
+            fs.sort_unstable();
+            fs
+        };
+        assert_eq!(
+            sorted(&c.face_list()),
+            sorted(&faces),
+            "an accepted history does not end at the answer"
+        );
     }
 }
 

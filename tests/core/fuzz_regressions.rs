@@ -764,6 +764,11 @@ fn check_judges_contracted_and_corrupted_answers_as_the_core_does() {
                         finish,
                         edits: edit.clone(),
                         compact: (s + p + e) % 2 == 0,
+                        // Each kind of history edit, and none.
+                        history_edits: match (s + e) % 5 {
+                            0 => vec![],
+                            k => vec![(k as u8 - 1, rng.below(64) as u16, rng.below(64) as u16)],
+                        },
                     });
                 }
             }
