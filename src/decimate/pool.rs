@@ -13,9 +13,11 @@
 //! add at most one block's keys beyond the list being filled.
 
 /// Steps with fewer items run in the calling thread (a task costs microseconds to start).
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 pub(super) const MIN_ITEMS: usize = 1 << 11;
 
 /// Items per block when keys are produced on the pool.
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 const BLOCK: usize = 1 << 16;
 
 /// The number of threads a step of `items` items runs on (1: the calling thread).
@@ -32,6 +34,8 @@ pub(super) fn threads(items: usize) -> usize {
 }
 
 /// Sets `out[i] = f(i)` for every slot.
+// Without the feature, the early return is the whole body.
+#[cfg_attr(not(feature = "parallel"), allow(clippy::needless_return))]
 pub(super) fn fill<T, F>(out: &mut [T], f: F)
 where
     T: Send,
@@ -58,6 +62,8 @@ where
 
 /// Appends to `out` the keys `f` pushes for each of `0..n`, in an order that depends
 /// on the pool: sort `out` before reading it.
+// Without the feature, the early return is the whole body.
+#[cfg_attr(not(feature = "parallel"), allow(clippy::needless_return))]
 pub(super) fn extend_keys<F>(n: usize, out: &mut Vec<u128>, f: F)
 where
     F: Fn(usize, &mut Vec<u128>) + Sync,
@@ -93,6 +99,8 @@ where
 }
 
 /// Sorts keys in increasing order.
+// Without the feature, the early return is the whole body.
+#[cfg_attr(not(feature = "parallel"), allow(clippy::needless_return))]
 pub(super) fn sort(keys: &mut [u128]) {
     if threads(keys.len()) < 2 {
         keys.sort_unstable();

@@ -1,0 +1,207 @@
+/* The C ABI from C: every function on a right call and on each kind of wrong one (NULL
+ * and misaligned pointers, options of an unknown size, unknown algorithms, meshes the
+ * task refuses, files that cannot be read or written), the error's kind and location,
+ * and a shorter (older) error struct left intact past its size. Prints one line per
+ * failed check; exit 0 when all pass. Run by c/tests/c_programs.rs, also under
+ * valgrind. Argument: a scratch directory. */
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include "contractible.h"
+
+static int failures = 0, checks = 0;
+#define CHECK(cond)                                                      \
+    do {                                                                 \
+        checks++;                                                        \
+        if (!(cond)) {                                                   \
+            failures++;                                                  \
+            fprintf(stderr, "abi_test.c:%d: failed: %s\n", __LINE__, #cond); \
+        }                                                                \
+    } while (0)
+
+static const double octahedron_positions[18] = {1, 0, 0, -1, 0, 0, 0, 1, 0,
+                                                0, -1, 0, 0, 0, 1, 0, 0, -1};
+static const uint32_t octahedron_faces[24] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                                              2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+
+static void on_arrays(void) {
+    ctr_error err;
+    ctr_error_init(&err);
+    CHECK(err.size == sizeof(ctr_error) && err.code == CTR_OK && err.face == -1);
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    CHECK(m != NULL && err.code == CTR_OK);
+    CHECK(ctr_mesh_vertex_count(m) == 6 && ctr_mesh_face_count(m) == 8);
+    CHECK(ctr_mesh_positions(m)[3] == -1.0 && ctr_mesh_faces(m)[23] == 5);
+
+    ctr_description d = ctr_description_default();
+    CHECK(ctr_describe(m, &d, &err) == 0 && err.code == CTR_OK);
+    CHECK(d.components == 1 && d.closed && d.orientable && d.euler_characteristic == 2);
+    CHECK(d.vertices == 6 && d.edges == 12 && d.faces == 8 && d.boundary_loops == 0);
+
+    ctr_reduce_options o = ctr_reduce_options_default();
+    CHECK(o.size == sizeof o && o.algorithm == CTR_REDUCE_RS && o.verify && !o.keep_history);
+    o.keep_history = true;
+    ctr_reduce_result *r = ctr_reduce(m, &o, &err);
+    CHECK(r != NULL && err.code == CTR_OK);
+    const ctr_mesh *out = ctr_reduce_result_mesh(r);
+    CHECK(ctr_mesh_vertex_count(out) == 4 && ctr_mesh_face_count(out) == 4);
+    CHECK(ctr_reduce_result_component_count(r) == 1);
+    const uint32_t *map = ctr_reduce_result_vertex_map(r);
+    for (size_t v = 0; v < 4; v++) {
+        /* Each survivor keeps its input position. */
+        CHECK(ctr_mesh_positions(out)[3 * v] == octahedron_positions[3 * map[v]]);
+    }
+    size_t n = 99;
+    const uint32_t *steps = ctr_reduce_result_contractions(r, &n);
+    CHECK(n == 2 && steps != NULL && steps[0] != steps[1]);
+    ctr_reduce_result_free(r);
+
+    /* Without the history: none. The brute force with a seed, NULL error. */
+    o = ctr_reduce_options_default();
+    o.algorithm = CTR_REDUCE_BRUTE;
+    o.seed = 3;
+    r = ctr_reduce(m, &o, NULL);
+    CHECK(r != NULL);
+    n = 99;
+    CHECK(ctr_reduce_result_contractions(r, &n) != NULL && n == 0);
+    ctr_reduce_result_free(r);
+    r = ctr_reduce(m, NULL, &err);
+    CHECK(r != NULL && err.code == CTR_OK);
+    ctr_reduce_result_free(r);
+    ctr_mesh_free(m);
+}
+
+static void wrong_calls(void) {
+    ctr_error err;
+    ctr_error_init(&err);
+    /* NULL arrays with counts, a misaligned one. */
+    CHECK(ctr_mesh_new(NULL, 6, NULL, 8, &err) == NULL);
+    CHECK(err.code == CTR_INVALID_ARGUMENT && strcmp(err.kind, "invalid_argument") == 0);
+    CHECK(strstr(err.message, "faces is NULL") != NULL);
+    uint32_t buffer[32];
+    const uint32_t *odd = (const uint32_t *)((const char *)buffer + 1);
+    CHECK(ctr_mesh_new(NULL, 6, odd, 8, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(strstr(err.message, "aligned") != NULL);
+    CHECK(ctr_mesh_new(NULL, 0, NULL, (size_t)-1, &err) == NULL);
+    CHECK(err.code == CTR_INVALID_ARGUMENT);
+    /* An empty mesh is a mesh; reducing it is refused as the input's fault. */
+    ctr_mesh *empty = ctr_mesh_new(NULL, 0, NULL, 0, &err);
+    CHECK(empty != NULL && err.code == CTR_OK);
+    CHECK(ctr_reduce(empty, NULL, &err) == NULL && err.code == CTR_INPUT);
+    ctr_mesh_free(empty);
+    /* NULL handles. */
+    CHECK(ctr_reduce(NULL, NULL, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_mesh_vertex_count(NULL) == 0 && ctr_mesh_faces(NULL) == NULL);
+    CHECK(ctr_reduce_result_mesh(NULL) == NULL && ctr_reduce_result_vertex_map(NULL) == NULL);
+    size_t n = 5;
+    CHECK(ctr_reduce_result_contractions(NULL, &n) == NULL && n == 0);
+    ctr_mesh_free(NULL);
+    ctr_reduce_result_free(NULL);
+    ctr_error_init(NULL);
+
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    /* Options of an unknown size, an unknown algorithm. */
+    ctr_reduce_options o = ctr_reduce_options_default();
+    o.size = sizeof o + 8;
+    CHECK(ctr_reduce(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(strstr(err.message, "options.size") != NULL);
+    o = ctr_reduce_options_default();
+    o.algorithm = 7;
+    CHECK(ctr_reduce(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(strstr(err.message, "algorithm is 7") != NULL);
+    /* An older, shorter options struct: the fields it has, defaults for the rest. */
+    o = ctr_reduce_options_default();
+    o.size = offsetof(ctr_reduce_options, seed);
+    o.algorithm = CTR_REDUCE_SCHIPPER;
+    ctr_reduce_result *r = ctr_reduce(m, &o, &err);
+    CHECK(r != NULL && err.code == CTR_OK);
+    ctr_reduce_result_free(r);
+    ctr_description d = ctr_description_default();
+    d.size = 8;
+    CHECK(ctr_describe(m, &d, &err) == CTR_INVALID_ARGUMENT && err.code == CTR_INVALID_ARGUMENT);
+    ctr_mesh_free(m);
+
+    /* An open surface: reduce refuses it with the boundary edge's face. */
+    m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 7, &err);
+    CHECK(ctr_reduce(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "boundary_edge") == 0 && err.face >= 0 && err.face < 7);
+    d = ctr_description_default();
+    CHECK(ctr_describe(m, &d, &err) == 0 && !d.closed && d.boundary_loops == 1);
+    ctr_mesh_free(m);
+    /* A non-manifold edge: three faces on [0, 2]. */
+    uint32_t faces[27];
+    memcpy(faces, octahedron_faces, sizeof octahedron_faces);
+    faces[24] = 0, faces[25] = 2, faces[26] = 1;
+    m = ctr_mesh_new(NULL, 6, faces, 9, &err);
+    CHECK(ctr_reduce(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "non_manifold_edge") == 0 && err.face >= 0);
+    CHECK(ctr_describe(m, &d, &err) == CTR_INPUT && err.code == CTR_INPUT);
+    /* A face beyond the vertices: located by face and vertex. */
+    faces[26] = 6;
+    ctr_mesh_free(m);
+    m = ctr_mesh_new(NULL, 6, faces, 9, &err);
+    CHECK(ctr_reduce(m, NULL, &err) == NULL && strcmp(err.kind, "vertex_out_of_range") == 0);
+    CHECK(err.face == 8 && err.vertex == 6);
+    ctr_mesh_free(m);
+
+    /* A shorter, older error struct: nothing written past its size. */
+    struct {
+        ctr_error e;
+        char canary[8];
+    } older;
+    memset(&older, 0x5a, sizeof older);
+    older.e.size = offsetof(ctr_error, message);
+    CHECK(ctr_reduce(NULL, NULL, &older.e) == NULL && older.e.code == CTR_INVALID_ARGUMENT);
+    CHECK(strcmp(older.e.kind, "invalid_argument") == 0);
+    CHECK((unsigned char)older.e.message[0] == 0x5a && older.e.face == 0x5a5a5a5a5a5a5a5aLL);
+    /* Success clears an earlier error. */
+    m = ctr_mesh_new(NULL, 0, NULL, 0, &err);
+    CHECK(err.code == CTR_OK && err.kind[0] == 0 && err.face == -1);
+    ctr_mesh_free(m);
+}
+
+static void files(const char *dir) {
+    ctr_error err;
+    ctr_error_init(&err);
+    char path[4096];
+    snprintf(path, sizeof path, "%s/missing.off", dir);
+    CHECK(ctr_mesh_read(path, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "io") == 0);
+    snprintf(path, sizeof path, "%s/broken.off", dir);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f) {
+        fputs("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 x\n", f);
+        fclose(f);
+    }
+    CHECK(ctr_mesh_read(path, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "read") == 0 && err.line == 6);
+    CHECK(ctr_mesh_read(NULL, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    snprintf(path, sizeof path, "%s/octahedron.ply", dir);
+    CHECK(ctr_mesh_write(m, path, &err) == 0 && err.code == CTR_OK);
+    ctr_mesh *back = ctr_mesh_read(path, &err);
+    CHECK(back != NULL && ctr_mesh_face_count(back) == 8);
+    CHECK(back && memcmp(ctr_mesh_faces(back), octahedron_faces, sizeof octahedron_faces) == 0);
+    CHECK(back && memcmp(ctr_mesh_positions(back), octahedron_positions,
+                         sizeof octahedron_positions) == 0);
+    ctr_mesh_free(back);
+    snprintf(path, sizeof path, "%s/no/such/dir/x.off", dir);
+    CHECK(ctr_mesh_write(m, path, &err) == CTR_FAILURE && err.code == CTR_FAILURE);
+    CHECK(strcmp(err.kind, "write") == 0 && strstr(err.message, "no/such/dir") != NULL);
+    ctr_mesh_free(m);
+}
+
+int main(int argc, char **argv) {
+    if (argc != 2) {
+        fprintf(stderr, "usage: %s SCRATCH_DIR\n", argv[0]);
+        return 2;
+    }
+    CHECK(ctr_abi_version() == CTR_ABI_VERSION);
+    on_arrays();
+    wrong_calls();
+    files(argv[1]);
+    printf("%d of %d checks passed\n", checks - failures, checks);
+    return failures == 0 ? 0 : 1;
+}

@@ -1,0 +1,160 @@
+//! C programs against the static library, compiled by the system's compiler with
+//! warnings as errors and run: the example `file_to_file.c` (its output file is the Rust
+//! call's, byte for byte) and `tests/c/abi_test.c` (every function, right and wrong
+//! calls), also as C++ (the header's `extern "C"`), and both under valgrind's memcheck
+//! when it is installed (no leak, no invalid access, the error paths included).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// The folder of this test's executable (`target/<profile>/deps`), where cargo puts the
+/// static library it built for this run.
+fn deps() -> PathBuf {
+    let exe = std::env::current_exe().expect("the test's path");
+    exe.parent().expect("deps").to_path_buf()
+}
+
+fn crate_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let d = deps().join(format!("c-tests-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).expect("scratch folder");
+    d
+}
+
+/// Compiles `source` with `compiler` (`cc` or `c++`), warnings as errors, against the
+/// static library; the executable's path.
+fn compile(compiler: &str, std: &str, source: &Path, out: &Path) -> PathBuf {
+    let lib = deps().join("libcontractible_c.a");
+    assert!(lib.exists(), "{} not built", lib.display());
+    let mut cmd = Command::new(compiler);
+    if compiler == "c++" {
+        cmd.args(["-x", "c++"]);
+    }
+    cmd.arg(format!("-std={std}"))
+        .args(["-Wall", "-Wextra", "-Werror", "-pedantic", "-g", "-O1"])
+        .arg("-I")
+        .arg(crate_dir().join("include"))
+        .arg(source)
+        .args(["-x", "none"])
+        .arg(&lib)
+        .args(["-lm", "-lpthread", "-ldl", "-o"])
+        .arg(out);
+    let o = cmd.output().expect("the system C compiler runs");
+    assert!(
+        o.status.success(),
+        "{compiler} failed:\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    out.to_path_buf()
+}
+
+fn run(exe: &Path, args: &[&Path]) -> std::process::Output {
+    Command::new(exe).args(args).output().expect("runs")
+}
+
+/// Runs `exe args` under memcheck when valgrind is installed: no error, no leak.
+fn memcheck(exe: &Path, args: &[&Path]) {
+    let Ok(v) = Command::new("valgrind").arg("--version").output() else {
+        eprintln!(
+            "valgrind is not installed: the memory check of {} is skipped",
+            exe.display()
+        );
+        return;
+    };
+    assert!(v.status.success());
+    let o = Command::new("valgrind")
+        .args([
+            "--error-exitcode=99",
+            "--leak-check=full",
+            "--show-leak-kinds=definite,indirect,possible",
+            "--errors-for-leak-kinds=definite,indirect,possible",
+            "-q",
+        ])
+        .arg(exe)
+        .args(args)
+        .output()
+        .expect("valgrind runs");
+    assert_ne!(
+        o.status.code(),
+        Some(99),
+        "memcheck found errors in {}:\n{}",
+        exe.display(),
+        String::from_utf8_lossy(&o.stderr)
+    );
+}
+
+#[test]
+fn the_abi_test_passes_in_c_and_cpp_and_under_memcheck() {
+    let d = scratch("abi");
+    let source = crate_dir().join("tests").join("c").join("abi_test.c");
+    for (compiler, std, name) in [("cc", "c11", "abi_test"), ("c++", "c++17", "abi_test_cpp")] {
+        let exe = compile(compiler, std, &source, &d.join(name));
+        let o = run(&exe, &[&d]);
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            o.status.success(),
+            "{name}: {out}\n{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        assert!(out.contains("checks passed"), "{out}");
+        if compiler == "cc" {
+            memcheck(&exe, &[&d]);
+        }
+    }
+}
+
+#[test]
+fn file_to_file_writes_what_the_rust_call_writes() {
+    let d = scratch("example");
+    let source = crate_dir().join("examples").join("file_to_file.c");
+    let exe = compile("cc", "c11", &source, &d.join("file_to_file"));
+    let input = crate_dir()
+        .join("..")
+        .join("tests/data/meshes/closed/high_genus_3.off.gz");
+    let out = d.join("reduced.off");
+    let o = run(&exe, &[&input, &out]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("1660 vertices") && text.contains("17 vertices"),
+        "{text}"
+    );
+    // The Rust call's output, written the same way: the same bytes.
+    let mesh = contractible::io::read_tri_mesh(&input).expect("reads");
+    let r = contractible::reduce(&mesh, &Default::default()).expect("reduces");
+    let theirs = d.join("rust.off");
+    contractible::io::write_mesh(&theirs, &r.mesh).expect("writes");
+    assert_eq!(
+        std::fs::read(&out).unwrap(),
+        std::fs::read(&theirs).unwrap()
+    );
+    memcheck(&exe, &[&input, &d.join("again.off")]);
+
+    // Errors: a clear message and the error's code as the exit code.
+    let o = run(&exe, &[&d.join("missing.off"), &out]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).starts_with("error (io): "));
+    // A mesh reduce refuses: exit 2, the kind named.
+    let invalid = crate_dir()
+        .join("..")
+        .join("tests/data/meshes/invalid/shared_edge_stl.off.gz");
+    let o = run(&exe, &[&invalid, &out]);
+    assert_eq!(o.status.code(), Some(2));
+    let kind = match contractible::reduce(
+        &contractible::io::read_tri_mesh(&invalid).unwrap(),
+        &Default::default(),
+    ) {
+        Err(e) => e.kind(),
+        Ok(_) => panic!("{} reduces", invalid.display()),
+    };
+    let stderr = String::from_utf8_lossy(&o.stderr);
+    assert!(stderr.starts_with(&format!("error ({kind}): ")), "{stderr}");
+    memcheck(&exe, &[&invalid, &out]);
+    memcheck(&exe, &[&d.join("missing.off"), &out]);
+    let o = run(&exe, &[&input]);
+    assert_eq!(o.status.code(), Some(2));
+}
