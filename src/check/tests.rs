@@ -520,3 +520,58 @@ fn an_output_vertex_at_an_unused_input_vertex_is_named_so() {
     assert_eq!(f.vertex, Some(2));
     assert!(f.message.contains("no input face uses"), "{}", f.message);
 }
+
+#[test]
+fn absorbed_reasons_add_to_the_counts_of_their_kind() {
+    let mut v = Verdict::new("quad");
+    v.fail(Failure::new(FailureKind::RepeatedFace, "one".into()));
+    let failures = vec![
+        Failure::new(FailureKind::RepeatedFace, "two".into()),
+        Failure::new(FailureKind::DegenerateFace, "three".into()),
+    ];
+    v.absorb(
+        failures,
+        vec![(FailureKind::RepeatedFace, 5), (FailureKind::DegenerateFace, 2)],
+    );
+    assert_eq!(
+        v.counts,
+        vec![(FailureKind::RepeatedFace, 6), (FailureKind::DegenerateFace, 2)]
+    );
+    let messages: Vec<&str> = v.failures.iter().map(|f| f.message.as_str()).collect();
+    assert_eq!(messages, ["one", "two", "three"]);
+}
+
+#[test]
+fn minus_zero_and_zero_are_one_position() {
+    // The output keeps the input's vertex list, with -0.0 where the input has 0.0 (and
+    // the reverse): the same positions, no vertex moved.
+    let input = gen::icosahedron();
+    let out = reduced(&input);
+    let mut flipped = out.clone();
+    let positions = flipped.positions.as_mut().expect("positions");
+    let mut zeros = 0;
+    for p in positions.iter_mut() {
+        for x in p.iter_mut() {
+            if *x == 0.0 {
+                *x = if x.is_sign_negative() { 0.0 } else { -0.0 };
+                zeros += 1;
+            }
+        }
+    }
+    assert!(zeros > 0, "the icosahedron has zero coordinates");
+    assert_eq!(reduce(&input, &out).unwrap().failures, vec![]);
+    assert_eq!(reduce(&input, &flipped).unwrap().failures, vec![]);
+    // The input with -0.0, the output with 0.0.
+    let minus_input = TriMesh {
+        positions: flipped.positions.clone(),
+        ..input.clone()
+    };
+    assert_eq!(reduce(&minus_input, &out).unwrap().failures, vec![]);
+    // A real move is still one.
+    positions_of(&mut flipped)[out.faces[0][0] as usize][0] += 1e-12;
+    assert_eq!(kinds(&reduce(&input, &flipped).unwrap()), vec![FailureKind::MovedVertex]);
+}
+
+fn positions_of(m: &mut TriMesh) -> &mut Vec<[f64; 3]> {
+    m.positions.as_mut().expect("positions")
+}
