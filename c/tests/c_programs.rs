@@ -158,3 +158,32 @@ fn file_to_file_writes_what_the_rust_call_writes() {
     let o = run(&exe, &[&input]);
     assert_eq!(o.status.code(), Some(2));
 }
+
+#[test]
+fn the_cpp_layer_gives_values_and_exceptions() {
+    let d = scratch("cpp");
+    let source = crate_dir().join("examples").join("reduce_vectors.cpp");
+    let exe = compile("c++", "c++17", &source, &d.join("reduce_vectors"));
+    let o = run(&exe, &[]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
+    // The Rust call on the same octahedron: the same counts and contractions.
+    let octahedron = contractible::gen::octahedron();
+    let r = contractible::reduce(&octahedron, &Default::default()).expect("reduces");
+    let first = format!(
+        "octahedron: chi 2, 6 vertices -> {} vertices, {} faces, {} contractions",
+        r.mesh.vertex_count,
+        r.mesh.faces.len(),
+        r.contractions().len()
+    );
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines[0], first, "{out}");
+    for (line, [kept, removed]) in lines[1..].iter().zip(r.contractions()) {
+        assert_eq!(*line, format!("  contracted {removed} into {kept}"));
+    }
+    assert!(
+        lines.last().is_some_and(|l| l.starts_with("refused (non_manifold_edge, face ")),
+        "{out}"
+    );
+    memcheck(&exe, &[]);
+}
