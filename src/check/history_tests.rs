@@ -242,3 +242,29 @@ fn an_output_on_the_survivors_in_input_order_is_read_so() {
         assert!(!v.passed());
     }
 }
+
+#[test]
+fn coincident_vertices_of_one_component_are_matched_one_to_one() {
+    // The 7-vertex torus (irreducible) with vertices 2 and 6 at one position, answered
+    // by itself on a vertex list of its own (an unused eighth vertex, vertices 0 and 1
+    // swapped): matched by position, each of the two coincident output vertices must get
+    // its own input vertex, or the faces in input ids are not the input's.
+    let mut input = gen::torus7();
+    let p = input.positions.as_mut().unwrap();
+    p[6] = p[2];
+    let mut positions = input.positions.clone().unwrap();
+    positions.swap(0, 1);
+    positions.push([9.0, 9.0, 9.0]);
+    let swap = |v: u32| match v {
+        0 => 1,
+        1 => 0,
+        v => v,
+    };
+    let output = TriMesh {
+        vertex_count: 8,
+        positions: Some(positions),
+        faces: input.faces.iter().map(|f| f.map(swap)).collect(),
+    };
+    let v = reduce_history(&input, &output, &[]).unwrap();
+    assert!(v.passed(), "{:?}", v.failures);
+}
