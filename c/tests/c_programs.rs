@@ -166,7 +166,11 @@ fn the_cpp_layer_gives_values_and_exceptions() {
     let exe = compile("c++", "c++17", &source, &d.join("reduce_vectors"));
     let o = run(&exe, &[]);
     let out = String::from_utf8_lossy(&o.stdout);
-    assert!(o.status.success(), "{out}\n{}", String::from_utf8_lossy(&o.stderr));
+    assert!(
+        o.status.success(),
+        "{out}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
     // The Rust call on the same octahedron: the same counts and contractions.
     let octahedron = contractible::gen::octahedron();
     let r = contractible::reduce(&octahedron, &Default::default()).expect("reduces");
@@ -182,7 +186,9 @@ fn the_cpp_layer_gives_values_and_exceptions() {
         assert_eq!(*line, format!("  contracted {removed} into {kept}"));
     }
     assert!(
-        lines.last().is_some_and(|l| l.starts_with("refused (non_manifold_edge, face ")),
+        lines
+            .last()
+            .is_some_and(|l| l.starts_with("refused (non_manifold_edge, face ")),
         "{out}"
     );
     memcheck(&exe, &[]);

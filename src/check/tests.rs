@@ -531,11 +531,17 @@ fn absorbed_reasons_add_to_the_counts_of_their_kind() {
     ];
     v.absorb(
         failures,
-        vec![(FailureKind::RepeatedFace, 5), (FailureKind::DegenerateFace, 2)],
+        vec![
+            (FailureKind::RepeatedFace, 5),
+            (FailureKind::DegenerateFace, 2),
+        ],
     );
     assert_eq!(
         v.counts,
-        vec![(FailureKind::RepeatedFace, 6), (FailureKind::DegenerateFace, 2)]
+        vec![
+            (FailureKind::RepeatedFace, 6),
+            (FailureKind::DegenerateFace, 2)
+        ]
     );
     let messages: Vec<&str> = v.failures.iter().map(|f| f.message.as_str()).collect();
     assert_eq!(messages, ["one", "two", "three"]);
@@ -569,7 +575,10 @@ fn minus_zero_and_zero_are_one_position() {
     assert_eq!(reduce(&minus_input, &out).unwrap().failures, vec![]);
     // A real move is still one.
     positions_of(&mut flipped)[out.faces[0][0] as usize][0] += 1e-12;
-    assert_eq!(kinds(&reduce(&input, &flipped).unwrap()), vec![FailureKind::MovedVertex]);
+    assert_eq!(
+        kinds(&reduce(&input, &flipped).unwrap()),
+        vec![FailureKind::MovedVertex]
+    );
 }
 
 fn positions_of(m: &mut TriMesh) -> &mut Vec<[f64; 3]> {
