@@ -193,3 +193,134 @@ fn the_cpp_layer_gives_values_and_exceptions() {
     );
     memcheck(&exe, &[]);
 }
+
+/// The command line built beside this test (the workspace's test command builds it).
+fn command_line() -> PathBuf {
+    let exe = deps()
+        .parent()
+        .expect("the profile folder")
+        .join(format!("contractible{}", std::env::consts::EXE_SUFFIX));
+    assert!(
+        exe.exists(),
+        "{} is not built: run the workspace's test command, which builds it, or `cargo \
+         build --release -p contractible-cli` first",
+        exe.display()
+    );
+    exe
+}
+
+/// The harness's JSON report of `impl_` over the reduce cases.
+fn conformance(impl_: &str) -> serde_json::Value {
+    let o = Command::new(command_line())
+        .args([
+            "--json",
+            "conformance",
+            "--exact",
+            "--task",
+            "reduce",
+            "-j",
+            "2",
+        ])
+        .arg("--suite")
+        .arg(crate_dir().join("..").join("spec"))
+        .arg("--impl")
+        .arg(impl_)
+        .output()
+        .expect("the harness runs");
+    assert!(
+        o.status.success(),
+        "{impl_}: {}\n{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout).expect("the JSON report")
+}
+
+#[test]
+fn the_c_adapter_passes_the_reduce_suite_as_the_command_line_s_does() {
+    let d = scratch("adapter");
+    let source = crate_dir().join("examples").join("conformance_adapter.c");
+    let adapter = compile("cc", "c11", &source, &d.join("conformance_adapter"));
+    let ours = conformance(adapter.to_str().expect("a UTF-8 path"));
+    let cli = format!("{} answer", command_line().display());
+    let theirs = conformance(&cli);
+    // Every reduce case, valid and invalid, passes with --exact: the same verdicts case by
+    // case as the library's own adapter.
+    let verdicts = |r: &serde_json::Value| -> Vec<(String, String)> {
+        r["cases"]
+            .as_array()
+            .expect("cases")
+            .iter()
+            .map(|c| (c["id"].to_string(), c["verdict"].to_string()))
+            .collect()
+    };
+    assert_eq!(verdicts(&ours), verdicts(&theirs));
+    let cases = ours["cases"].as_array().expect("cases");
+    assert!(cases.len() > 200, "{}", cases.len());
+    assert!(cases.iter().all(|c| c["verdict"] == "passed"));
+    assert!(cases
+        .iter()
+        .any(|c| c["id"].as_str().unwrap().starts_with("invalid/")));
+
+    // Under memcheck, case by case: a valid case, every invalid reduce input of the suite
+    // (refused with the suite's kind), a task it does not cover, and bytes that are no
+    // JSON: no memory error or leak on any path.
+    let octahedron = r#"{"protocol": 1, "id": "o", "task": "reduce", "options": {"algorithm": "schipper"}, "vertex_count": 6, "faces": [[0,2,4],[2,1,4],[1,3,4],[3,0,4],[2,0,5],[1,2,5],[3,1,5],[0,3,5]], "positions": null}"#;
+    let mut cases: Vec<(String, i32, String)> = vec![
+        (octahedron.to_string(), 0, "\"history\": [[".to_string()),
+        (
+            octahedron.replace("\"reduce\"", "\"quad\""),
+            2,
+            "unsupported".to_string(),
+        ),
+        ("{\"task\": [1, 2".to_string(), 2, "protocol".to_string()),
+    ];
+    let invalid = std::fs::read_to_string(crate_dir().join("../spec/suite/invalid.jsonl"))
+        .expect("the suite's invalid cases");
+    for line in invalid.lines() {
+        let v: serde_json::Value = serde_json::from_str(line).expect("JSON");
+        if v["task"] == "reduce" {
+            let kind = v["kind"].as_str().expect("kind").to_string();
+            cases.push((line.to_string(), 2, format!("\"kind\": \"{kind}\"")));
+        }
+    }
+    assert!(cases.len() >= 8);
+    let valgrind = Command::new("valgrind").arg("--version").output().is_ok();
+    for (case, code, shown) in &cases {
+        let mut cmd = if valgrind {
+            let mut c = Command::new("valgrind");
+            c.args([
+                "--error-exitcode=99",
+                "--leak-check=full",
+                "--errors-for-leak-kinds=definite,indirect,possible",
+                "-q",
+            ])
+            .arg(&adapter);
+            c
+        } else {
+            Command::new(&adapter)
+        };
+        let mut child = cmd
+            .stdin(std::process::Stdio::piped())
+            .stdout(std::process::Stdio::piped())
+            .stderr(std::process::Stdio::piped())
+            .spawn()
+            .expect("starts");
+        use std::io::Write;
+        child
+            .stdin
+            .take()
+            .expect("stdin")
+            .write_all(case.as_bytes())
+            .expect("writes the case");
+        let o = child.wait_with_output().expect("ends");
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert_eq!(
+            o.status.code(),
+            Some(*code),
+            "{case:.80}: {out}\n{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        assert!(out.contains(shown.as_str()), "{case:.80}: {out}");
+    }
+}
