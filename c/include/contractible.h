@@ -15,6 +15,39 @@
 // fields change (new functions and new trailing fields do not change it).
 #define CTR_ABI_VERSION 1
 
+// Placement: the minimiser of the summed quadric (the default; the best of the
+// endpoints and the midpoint where its system is ill-conditioned).
+#define CTR_PLACEMENT_OPTIMAL 0
+
+// Placement: the edge's midpoint.
+#define CTR_PLACEMENT_MIDPOINT 1
+
+// Placement: the endpoint with the smaller error (every output position is an input
+// position).
+#define CTR_PLACEMENT_ENDPOINT 2
+
+// Schedule: one priority queue, always the cheapest edge that passes every guard (the
+// default).
+#define CTR_SCHEDULE_EXACT 0
+
+// Schedule: passes over a sorted edge list, several times faster, a somewhat larger
+// error.
+#define CTR_SCHEDULE_PASSES 1
+
+// Why a decimation stopped: a face target was reached.
+#define CTR_STOPPED_TARGET 0
+
+// Why a decimation stopped: every edge left is over the error cap or refused by a
+// guard, at least one over the cap.
+#define CTR_STOPPED_ERROR 1
+
+// Why a decimation stopped: every edge left is refused by a guard (`remaining_*` of
+// the statistics say which).
+#define CTR_STOPPED_BLOCKED 2
+
+// The entry of a collapse map for an input vertex no face uses.
+#define CTR_NO_VERTEX UINT32_MAX
+
 // No error.
 #define CTR_OK 0
 
@@ -49,6 +82,10 @@
 // The randomised brute force (its order from `seed`).
 #define CTR_REDUCE_BRUTE 2
 
+// The result of [`ctr_decimate`]: the output mesh, the provenance maps and the
+// statistics. Opaque; freed by [`ctr_decimate_result_free`].
+typedef struct ctr_decimate_result ctr_decimate_result;
+
 // A triangle mesh: `vertex_count` vertices (with a position each, or none) and faces of
 // three vertex indices (0-based). Opaque: made by `ctr_mesh_new` or `ctr_mesh_read`
 // (or returned by a result's accessor, then owned by that result), freed by
@@ -59,6 +96,95 @@ typedef struct ctr_mesh ctr_mesh;
 // vertex of each output vertex, the contractions when kept. Opaque; freed by
 // `ctr_reduce_result_free`.
 typedef struct ctr_reduce_result ctr_reduce_result;
+
+// Options of [`ctr_decimate`]; start from [`ctr_decimate_options_default`]. Targets
+// combine (the first reached stops the run); with none, the run goes as far as the
+// guards allow.
+typedef struct ctr_decimate_options {
+  // `sizeof(ctr_decimate_options)` as the caller was compiled.
+  uint32_t size;
+  // `CTR_PLACEMENT_OPTIMAL`, `CTR_PLACEMENT_MIDPOINT` or `CTR_PLACEMENT_ENDPOINT`.
+  uint32_t placement;
+  // Stop at this many faces (0: no face-count target).
+  uint64_t faces;
+  // Stop at this fraction of the faces kept, in (0, 1] (0: no such target).
+  double keep;
+  // Stop before a collapse whose error would exceed this (negative: no cap).
+  double max_error;
+  // `max_error` is a fraction of the bounding-box diagonal, not a distance.
+  bool max_error_relative;
+  // Allow collapses that turn a face by 90° or more (the fold-over guard off).
+  bool allow_foldover;
+  // Keep every boundary vertex where it is.
+  bool lock_boundary;
+  // Check the output independently before returning it (on by default).
+  bool verify;
+  // `CTR_SCHEDULE_EXACT` or `CTR_SCHEDULE_PASSES`.
+  uint32_t schedule;
+  // Input vertices kept where they are: `locked_count` ids (NULL when 0).
+  const uint32_t *locked;
+  // The number of ids at `locked`.
+  size_t locked_count;
+} ctr_decimate_options;
+
+// What a decimation did and why it stopped.
+typedef struct ctr_decimate_stats {
+  // `sizeof(ctr_decimate_stats)` as the caller was compiled (set by
+  // [`ctr_decimate_stats_default`]).
+  uint32_t size;
+  // `CTR_STOPPED_TARGET`, `CTR_STOPPED_ERROR` or `CTR_STOPPED_BLOCKED`.
+  uint32_t stopped;
+  // Faces of the input.
+  uint64_t faces_in;
+  // Faces of the output.
+  uint64_t faces_out;
+  // Vertices of the input that faces use.
+  uint64_t vertices_in;
+  // Vertices of the output.
+  uint64_t vertices_out;
+  // Connected components.
+  uint64_t components;
+  // Edges collapsed.
+  uint64_t collapses;
+  // The largest error of a collapse (0 without collapses).
+  double max_error;
+  // Edges left at the end refused by a lock (all `remaining_*` are 0 when the run
+  // stopped at its target).
+  uint64_t remaining_lock;
+  // Edges left on the boundary with the boundary locked.
+  uint64_t remaining_boundary;
+  // Edges left whose collapse would exceed the error cap.
+  uint64_t remaining_error;
+  // Edges left that fail the link condition: collapsing them would change the
+  // surface.
+  uint64_t remaining_link_condition;
+  // Edges left that the fold-over guard refuses.
+  uint64_t remaining_foldover;
+} ctr_decimate_stats;
+
+// Why a call failed: what (`code`, `kind`, `message`) and where (`face`, `vertex`,
+// `line`, each -1 when it does not apply).
+typedef struct ctr_error {
+  // `sizeof(ctr_error)` as the caller was compiled: set by `ctr_error_init`. The
+  // library writes no byte past it.
+  uint32_t size;
+  // `CTR_OK`, `CTR_FAILURE`, `CTR_INPUT`, `CTR_INVALID_ARGUMENT` or
+  // `CTR_INTERNAL`.
+  int32_t code;
+  // A stable snake-case name (`boundary_edge`, `non_manifold_edge`, `read`, `io`,
+  // `bad_option`, `invalid_argument`, `internal`...; the library's error kinds),
+  // NUL-terminated; empty when `code` is `CTR_OK`.
+  char kind[CTR_KIND_LEN];
+  // A sentence saying what and where, NUL-terminated UTF-8 (cut at a character
+  // boundary if longer than the array).
+  char message[CTR_MESSAGE_LEN];
+  // The input face involved (0-based), or -1.
+  int64_t face;
+  // The input vertex involved (0-based), or -1.
+  int64_t vertex;
+  // The line of the file involved (1-based), or -1.
+  int64_t line;
+} ctr_error;
 
 // What `ctr_describe` finds: counts and topology summed over the components.
 typedef struct ctr_description {
@@ -85,30 +211,6 @@ typedef struct ctr_description {
   uint64_t boundary_loops;
 } ctr_description;
 
-// Why a call failed: what (`code`, `kind`, `message`) and where (`face`, `vertex`,
-// `line`, each -1 when it does not apply).
-typedef struct ctr_error {
-  // `sizeof(ctr_error)` as the caller was compiled: set by `ctr_error_init`. The
-  // library writes no byte past it.
-  uint32_t size;
-  // `CTR_OK`, `CTR_FAILURE`, `CTR_INPUT`, `CTR_INVALID_ARGUMENT` or
-  // `CTR_INTERNAL`.
-  int32_t code;
-  // A stable snake-case name (`boundary_edge`, `non_manifold_edge`, `read`, `io`,
-  // `bad_option`, `invalid_argument`, `internal`...; the library's error kinds),
-  // NUL-terminated; empty when `code` is `CTR_OK`.
-  char kind[CTR_KIND_LEN];
-  // A sentence saying what and where, NUL-terminated UTF-8 (cut at a character
-  // boundary if longer than the array).
-  char message[CTR_MESSAGE_LEN];
-  // The input face involved (0-based), or -1.
-  int64_t face;
-  // The input vertex involved (0-based), or -1.
-  int64_t vertex;
-  // The line of the file involved (1-based), or -1.
-  int64_t line;
-} ctr_error;
-
 // Options of `ctr_reduce`; start from `ctr_reduce_options_default`.
 typedef struct ctr_reduce_options {
   // `sizeof(ctr_reduce_options)` as the caller was compiled.
@@ -132,6 +234,68 @@ extern "C" {
 // `CTR_ABI_VERSION` as the library was built, to compare with the header's at run
 // time.
 uint32_t ctr_abi_version(void);
+
+// The default options: no target (as coarse as the guards allow), optimal placement,
+// the exact schedule, the fold-over guard on, nothing locked, the output verified.
+struct ctr_decimate_options ctr_decimate_options_default(void);
+
+// A `ctr_decimate_stats` of zeros with its `size` set.
+struct ctr_decimate_stats ctr_decimate_stats_default(void);
+
+// Decimates `mesh` (closed or with boundary, orientable or not, several components;
+// positions needed): every component keeps its surface (χ, orientability, boundary
+// loops), checked before returning. NULL on failure: `CTR_INPUT` for a mesh that is no
+// surface (located), no positions, or an option out of range (kind `bad_option`),
+// `CTR_INVALID_ARGUMENT` for an unknown placement or schedule.
+//
+// # Safety
+// `mesh` is a live mesh; `options` is NULL (the defaults) or from
+// `ctr_decimate_options_default`, its `locked` pointing to `locked_count` ids; `err` is
+// NULL or set up by `ctr_error_init`.
+struct ctr_decimate_result *ctr_decimate(const struct ctr_mesh *mesh, const struct ctr_decimate_options *options, struct ctr_error *err);
+
+// The output mesh (owned by the result: valid until it is freed, not to be passed to
+// `ctr_mesh_free`). NULL for a NULL result.
+//
+// # Safety
+// `result` is NULL or a live result.
+const struct ctr_mesh *ctr_decimate_result_mesh(const struct ctr_decimate_result *result);
+
+// Per output vertex, the input vertex that survives as it (the output's vertex count
+// entries). NULL for a NULL result.
+//
+// # Safety
+// `result` is NULL or a live result.
+const uint32_t *ctr_decimate_result_vertex_map(const struct ctr_decimate_result *result);
+
+// Per input vertex, the output vertex it went into (`CTR_NO_VERTEX` for a vertex no
+// face uses): the input's vertex count entries, to carry any per-vertex attribute
+// across. NULL for a NULL result.
+//
+// # Safety
+// `result` is NULL or a live result.
+const uint32_t *ctr_decimate_result_collapse_map(const struct ctr_decimate_result *result);
+
+// Per output face, the input face it descends from (the output's face count entries).
+// NULL for a NULL result.
+//
+// # Safety
+// `result` is NULL or a live result.
+const uint32_t *ctr_decimate_result_face_origin(const struct ctr_decimate_result *result);
+
+// Copies the statistics into `*out` (made by `ctr_decimate_stats_default`): `CTR_OK`,
+// or `CTR_INVALID_ARGUMENT` for a NULL result or an `out` of another size.
+//
+// # Safety
+// `result` is NULL or a live result; `out` points to a `ctr_decimate_stats` from
+// `ctr_decimate_stats_default`; `err` is NULL or set up by `ctr_error_init`.
+int32_t ctr_decimate_result_stats(const struct ctr_decimate_result *result, struct ctr_decimate_stats *out, struct ctr_error *err);
+
+// Frees a result and the mesh it owns (NULL is ignored).
+//
+// # Safety
+// `result` is NULL or a result of `ctr_decimate` not freed yet.
+void ctr_decimate_result_free(struct ctr_decimate_result *result);
 
 // A `ctr_description` of zeros with its `size` set: pass it to `ctr_describe`.
 struct ctr_description ctr_description_default(void);

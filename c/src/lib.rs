@@ -21,11 +21,13 @@
 #![deny(unsafe_op_in_unsafe_fn)]
 #![deny(clippy::undocumented_unsafe_blocks)]
 
+mod decimate;
 mod describe;
 mod error;
 mod mesh;
 mod reduce;
 
+pub use decimate::*;
 pub use describe::*;
 pub use error::*;
 pub use mesh::*;

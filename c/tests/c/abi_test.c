@@ -193,6 +193,74 @@ static void files(const char *dir) {
     ctr_mesh_free(m);
 }
 
+static void decimation(void) {
+    ctr_error err;
+    ctr_error_init(&err);
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    ctr_decimate_options o = ctr_decimate_options_default();
+    CHECK(o.size == sizeof o && o.placement == CTR_PLACEMENT_OPTIMAL && o.max_error < 0);
+    CHECK(o.verify && !o.allow_foldover && o.locked == NULL && o.locked_count == 0);
+    o.faces = 4;
+    o.allow_foldover = true;
+    o.placement = CTR_PLACEMENT_ENDPOINT;
+    ctr_decimate_result *r = ctr_decimate(m, &o, &err);
+    CHECK(r != NULL && err.code == CTR_OK);
+    ctr_decimate_stats s = ctr_decimate_stats_default();
+    CHECK(ctr_decimate_result_stats(r, &s, &err) == CTR_OK);
+    CHECK(s.faces_in == 8 && s.faces_out == 4 && s.stopped == CTR_STOPPED_TARGET);
+    CHECK(s.vertices_in == 6 && s.vertices_out == 4 && s.collapses == 2 && s.components == 1);
+    const ctr_mesh *out = ctr_decimate_result_mesh(r);
+    CHECK(ctr_mesh_face_count(out) == 4 && ctr_mesh_vertex_count(out) == 4);
+    const uint32_t *vm = ctr_decimate_result_vertex_map(r);
+    const uint32_t *cm = ctr_decimate_result_collapse_map(r);
+    const uint32_t *fo = ctr_decimate_result_face_origin(r);
+    for (size_t v = 0; v < 4; v++) {
+        /* A survivor goes into itself; endpoint placement keeps input positions. */
+        CHECK(vm[v] < 6 && cm[vm[v]] == v);
+        CHECK(memcmp(ctr_mesh_positions(out) + 3 * v, octahedron_positions + 3 * vm[v],
+                     3 * sizeof(double)) == 0);
+    }
+    for (size_t v = 0; v < 6; v++) CHECK(cm[v] < 4);
+    for (size_t f = 0; f < 4; f++) CHECK(fo[f] < 8);
+    ctr_decimate_result_free(r);
+
+    /* As coarse as the guards allow, a vertex locked: blocked, the reasons counted. */
+    o = ctr_decimate_options_default();
+    uint32_t locked[1] = {0};
+    o.locked = locked;
+    o.locked_count = 1;
+    r = ctr_decimate(m, &o, &err);
+    CHECK(r != NULL && ctr_decimate_result_stats(r, &s, &err) == CTR_OK);
+    CHECK(s.stopped == CTR_STOPPED_BLOCKED && s.remaining_link_condition > 0);
+    CHECK(ctr_decimate_result_collapse_map(r)[0] != CTR_NO_VERTEX);
+    ctr_decimate_result_free(r);
+
+    /* Wrong calls. */
+    o = ctr_decimate_options_default();
+    o.placement = 9;
+    CHECK(ctr_decimate(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    o = ctr_decimate_options_default();
+    o.schedule = 5;
+    CHECK(ctr_decimate(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    o = ctr_decimate_options_default();
+    o.locked_count = 3;
+    CHECK(ctr_decimate(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    o = ctr_decimate_options_default();
+    o.keep = 2.0;
+    CHECK(ctr_decimate(m, &o, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "bad_option") == 0);
+    s.size = 12;
+    CHECK(ctr_decimate_result_stats(NULL, &s, &err) == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_decimate_result_mesh(NULL) == NULL && ctr_decimate_result_collapse_map(NULL) == NULL);
+    ctr_decimate_result_free(NULL);
+    ctr_mesh_free(m);
+    /* No positions: the input's fault. */
+    m = ctr_mesh_new(NULL, 6, octahedron_faces, 8, &err);
+    CHECK(ctr_decimate(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "missing_positions") == 0);
+    ctr_mesh_free(m);
+}
+
 int main(int argc, char **argv) {
     if (argc != 2) {
         fprintf(stderr, "usage: %s SCRATCH_DIR\n", argv[0]);
@@ -201,6 +269,7 @@ int main(int argc, char **argv) {
     CHECK(ctr_abi_version() == CTR_ABI_VERSION);
     on_arrays();
     wrong_calls();
+    decimation();
     files(argv[1]);
     printf("%d of %d checks passed\n", checks - failures, checks);
     return failures == 0 ? 0 : 1;
