@@ -236,6 +236,15 @@ fn an_output_on_the_survivors_in_input_order_is_read_so() {
         let history = r.contractions();
         let v = reduce_history(&input, &r.mesh, &history).unwrap();
         assert!(v.passed(), "{:?}", v.failures);
+        if positions.is_some() {
+            // -0.0 where the input has 0.0: the same positions.
+            let mut minus = r.mesh.clone();
+            for p in minus.positions.as_mut().unwrap() {
+                *p = [-0.0; 3];
+            }
+            let v = reduce_history(&input, &minus, &history).unwrap();
+            assert!(v.passed(), "{:?}", v.failures);
+        }
         // One step fewer: the survivors are one more than the output's vertices, so the
         // output is read by position (or by id) and the replay does not end there.
         let v = reduce_history(&input, &r.mesh, &history[1..]).unwrap();
@@ -266,5 +275,25 @@ fn coincident_vertices_of_one_component_are_matched_one_to_one() {
         faces: input.faces.iter().map(|f| f.map(swap)).collect(),
     };
     let v = reduce_history(&input, &output, &[]).unwrap();
+    assert!(v.passed(), "{:?}", v.failures);
+}
+
+#[test]
+fn an_output_on_the_survivors_in_another_order_is_read_by_position() {
+    // Distinct positions; the reduction written with its vertex list reversed: as many
+    // vertices as survivors, but not in increasing input order, so read by position.
+    let torus = random(SurfaceKind::Orientable(1), 300, 9);
+    let positions: Vec<[f64; 3]> = (0..torus.vertex_count)
+        .map(|v| [v as f64, (v * v % 17) as f64, 0.5])
+        .collect();
+    let input = TriMesh::with_positions(positions, torus.faces.clone());
+    let r = run_reduce(&input, &ReduceOptions::default()).unwrap();
+    let n = r.mesh.vertex_count as u32;
+    let mut reversed = r.mesh.clone();
+    reversed.positions.as_mut().unwrap().reverse();
+    for f in &mut reversed.faces {
+        *f = f.map(|v| n - 1 - v);
+    }
+    let v = reduce_history(&input, &reversed, &r.contractions()).unwrap();
     assert!(v.passed(), "{:?}", v.failures);
 }

@@ -584,3 +584,60 @@ fn minus_zero_and_zero_are_one_position() {
 fn positions_of(m: &mut TriMesh) -> &mut Vec<[f64; 3]> {
     m.positions.as_mut().expect("positions")
 }
+
+#[test]
+fn a_vertex_only_another_component_still_has_is_read_as_that_component_s() {
+    // Two tetrahedra touching at one point: vertex 0 of the first and vertex 4 of the
+    // second share a position. The answer, a bipyramid on the first's positions with
+    // both apexes at that point, has two vertices there; the first component has one
+    // vertex there, so the second apex is the second component's vertex: the answer
+    // joins the two components (and leaves the second without an output of its own).
+    let p = |x: f64, y: f64, z: f64| [x, y, z];
+    let tet = |o: u32| {
+        [
+            [o, o + 1, o + 2],
+            [o, o + 3, o + 1],
+            [o + 1, o + 3, o + 2],
+            [o, o + 2, o + 3],
+        ]
+    };
+    let mut faces = tet(0).to_vec();
+    faces.extend(tet(4));
+    let input = TriMesh::with_positions(
+        vec![
+            p(0.0, 0.0, 0.0),
+            p(1.0, 0.0, 0.0),
+            p(0.0, 1.0, 0.0),
+            p(0.0, 0.0, 1.0),
+            p(0.0, 0.0, 0.0),
+            p(-1.0, 0.0, 0.0),
+            p(0.0, -1.0, 0.0),
+            p(0.0, 0.0, -1.0),
+        ],
+        faces,
+    );
+    // Bipyramid: apexes 0 and 1 (both at the shared point), equator 2, 3, 4.
+    let output = TriMesh::with_positions(
+        vec![
+            p(0.0, 0.0, 0.0),
+            p(0.0, 0.0, 0.0),
+            p(1.0, 0.0, 0.0),
+            p(0.0, 1.0, 0.0),
+            p(0.0, 0.0, 1.0),
+        ],
+        vec![
+            [0, 2, 3],
+            [0, 3, 4],
+            [0, 4, 2],
+            [1, 3, 2],
+            [1, 4, 3],
+            [1, 2, 4],
+        ],
+    );
+    let v = reduce(&input, &output).unwrap();
+    assert!(
+        kinds(&v).contains(&FailureKind::ComponentsMerged),
+        "{:?}",
+        v.failures
+    );
+}
