@@ -320,3 +320,51 @@ fn inputs_decimate_refuses_are_errors() {
         })
     ));
 }
+
+#[test]
+fn a_map_that_lies_stops_the_checks_that_would_read_it() {
+    let (_, mesh) = surfaces().remove(1);
+    let o = DecimateOptions {
+        locked: vec![5],
+        ..DecimateOptions::keep(0.3)
+    };
+    let r = run_decimate(&mesh, &o).expect("decimates");
+    assert!(judge(&mesh, &r, &o, true).passed());
+    // One entry too many: one reason, and nothing reads the map past the output.
+    let mut long = r.vertex_map.clone();
+    long.push(0);
+    let mut c = DecimateCheck::of_result(&o, &r);
+    c.vertex_map = Some(&long);
+    let v = decimate(&mesh, &r.mesh, &c).expect("judged");
+    assert_eq!(v.counts, vec![(FailureKind::InconsistentMap, 1)], "{v:?}");
+    // The locked vertex's survivor swapped with another in vertex_map: the maps
+    // disagree, and the map is not used to find the locked vertex (which did not move).
+    let kept = r.collapse_map[5] as usize;
+    let mut swapped = r.vertex_map.clone();
+    let other = (kept + 1) % swapped.len();
+    swapped.swap(kept, other);
+    let mut c = DecimateCheck::of_result(&o, &r);
+    c.vertex_map = Some(&swapped);
+    let v = decimate(&mesh, &r.mesh, &c).expect("judged");
+    assert_eq!(kinds(&v), vec![FailureKind::InconsistentMap], "{v:?}");
+}
+
+#[test]
+fn surface_changes_name_the_orientability() {
+    // A Klein bottle answered by the 7-vertex torus on seven of its vertices: the reason
+    // says which is which.
+    let klein = super::tests::random(gen::SurfaceKind::NonOrientable(2), 200, 4);
+    let torus = TriMesh::combinatorial(klein.vertex_count, gen::torus7().faces);
+    let v = super::reduce(&klein, &torus).expect("judged");
+    let changed = v
+        .failures
+        .iter()
+        .find(|f| f.kind == FailureKind::SurfaceChanged)
+        .expect("the surface changed");
+    assert!(
+        changed.message.contains("χ 0 non-orientable")
+            && changed.message.contains("χ 0 orientable"),
+        "{}",
+        changed.message
+    );
+}
