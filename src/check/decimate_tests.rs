@@ -368,3 +368,34 @@ fn surface_changes_name_the_orientability() {
         changed.message
     );
 }
+
+#[test]
+fn endpoint_positions_take_minus_zero_as_zero() {
+    // The octahedron (coordinates 0 and ±1) decimated with endpoint placement; its
+    // output written with -0.0 for every 0.0, and the input with them too: the same
+    // positions either way.
+    let mesh = gen::octahedron();
+    let o = DecimateOptions {
+        placement: Placement::Endpoint,
+        allow_foldover: true,
+        ..DecimateOptions::faces(4)
+    };
+    let r = run_decimate(&mesh, &o).expect("decimates");
+    let flip = |m: &TriMesh| {
+        let mut m = m.clone();
+        for p in m.positions.as_mut().expect("positions") {
+            for x in p.iter_mut() {
+                if *x == 0.0 {
+                    *x = -*x;
+                }
+            }
+        }
+        m
+    };
+    let c = DecimateCheck::of_result(&o, &r);
+    assert!(decimate(&mesh, &r.mesh, &c).expect("judged").passed());
+    let v = decimate(&mesh, &flip(&r.mesh), &c).expect("judged");
+    assert!(v.passed(), "{v:?}");
+    let v = decimate(&flip(&mesh), &r.mesh, &c).expect("judged");
+    assert!(v.passed(), "{v:?}");
+}
