@@ -4,7 +4,7 @@
 use contractible::decimate::{Placement, Schedule, Stopped};
 use contractible::{DecimateOptions, DecimateResult, MaxError};
 
-use crate::error::{ctr_error, guard, object, read_options, slice, status, Failure};
+use crate::error::{ctr_error, guard, object, read_options, sized_out, slice, status, Failure};
 use crate::mesh::ctr_mesh;
 
 /// Placement: the minimiser of the summed quadric (the default; the best of the
@@ -312,17 +312,8 @@ pub unsafe extern "C" fn ctr_decimate_result_stats(
     status(err, || {
         // SAFETY: NULL or live, by the caller's promise.
         let r = unsafe { object(result, "result") }?;
-        // SAFETY: checked for NULL and alignment; the caller promises its size field.
-        let size = unsafe { object(out.cast_const(), "out") }?.size as usize;
-        if size != std::mem::size_of::<ctr_decimate_stats>() {
-            return Err(Failure::argument(format!(
-                "out->size is {size}: this library writes {} bytes (initialise it with \
-                 ctr_decimate_stats_default())",
-                std::mem::size_of::<ctr_decimate_stats>()
-            )));
-        }
-        // SAFETY: non-null, aligned, and sized as this struct (checked).
-        unsafe { out.write(r.stats) };
+        // SAFETY: the caller promises a `ctr_decimate_stats` from its default function.
+        *unsafe { sized_out(out, "ctr_decimate_stats_default") }? = r.stats;
         Ok(())
     })
 }

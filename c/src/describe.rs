@@ -2,7 +2,7 @@
 
 use contractible::task::Description;
 
-use crate::error::{ctr_error, object, status, Failure};
+use crate::error::{ctr_error, object, sized_out, status, Failure};
 use crate::mesh::ctr_mesh;
 
 /// What `ctr_describe` finds: counts and topology summed over the components.
@@ -66,15 +66,8 @@ pub unsafe extern "C" fn ctr_describe(
     status(err, || {
         // SAFETY: the caller promises a live mesh.
         let m = unsafe { object(mesh, "mesh") }?;
-        // SAFETY: checked for NULL and alignment; the caller promises its size field.
-        let size = unsafe { object(out.cast_const(), "out") }?.size as usize;
-        if size != std::mem::size_of::<ctr_description>() {
-            return Err(Failure::argument(format!(
-                "out->size is {size}: this library writes {} bytes (initialise it with \
-                 ctr_description_default())",
-                std::mem::size_of::<ctr_description>()
-            )));
-        }
+        // SAFETY: the caller promises a `ctr_description` from its default function.
+        let out = unsafe { sized_out(out, "ctr_description_default") }?;
         let d = contractible::describe(&m.mesh).map_err(Failure::from)?;
         let (components, dropped) = match d {
             Description::Surfaces {
@@ -101,8 +94,7 @@ pub unsafe extern "C" fn ctr_describe(
             .iter()
             .map(|c| c.surface.boundary_loops() as u64)
             .sum();
-        // SAFETY: checked above: non-null, aligned, and sized as this struct.
-        unsafe { out.write(v) };
+        *out = v;
         Ok(())
     })
 }

@@ -327,6 +327,26 @@ pub(crate) unsafe fn object<'a, T>(value: *const T, what: &str) -> Result<&'a T,
     Ok(unsafe { &*value })
 }
 
+/// `out` as a writable struct the library fills whole: refused when NULL, misaligned, or
+/// its leading `size` (a `u32`) is not `sizeof(T)` (`init` names the function that sets
+/// it).
+///
+/// # Safety
+/// A non-null aligned `out` points to a writable `T` whose first field is its size.
+pub(crate) unsafe fn sized_out<'a, T>(out: *mut T, init: &str) -> Result<&'a mut T, Failure> {
+    // SAFETY: checked for NULL and alignment; the caller promises the size field.
+    let size = unsafe { object(out.cast_const().cast::<u32>(), "out") }.map(|s| *s as usize)?;
+    let whole = size_of::<T>();
+    if size != whole {
+        return Err(Failure::argument(format!(
+            "out->size is {size}: this library writes {whole} bytes (initialise it with {init}())"
+        )));
+    }
+    // SAFETY: non-null, aligned and of this struct's size (checked); writable by the
+    // caller's promise.
+    Ok(unsafe { &mut *out })
+}
+
 /// Reads an options struct whose first field is its `size` (a `u32`): the caller's
 /// bytes over `default` (fields past the caller's size keep their default), or `default`
 /// for NULL. A size below 4 or above `sizeof(T)` is refused.

@@ -808,6 +808,28 @@ pub fn write<const N: usize>(out: &Output, mesh: &Mesh<N>, ui: Ui) -> Result<f64
     Ok(t.elapsed().as_secs_f64())
 }
 
+/// Checks where a file of index pairs will go (`quad --pairs`, `reduce --history`,
+/// named `flag`): `-` is stdout, which the main output must then not take
+/// (`output_on_stdout`), and the report moves to stderr; a path must be writable and no
+/// input.
+pub fn check_index_pairs_output(
+    path: &Path,
+    flag: &str,
+    output_on_stdout: bool,
+    inputs: &[&Path],
+) -> Result<(), CliError> {
+    if path.as_os_str() != "-" {
+        return check_side_file(path, inputs);
+    }
+    if output_on_stdout {
+        return Err(CliError::Input(format!(
+            "-o - and {flag} - would both write to stdout: send one to a file"
+        )));
+    }
+    super::report_to_stderr();
+    Ok(())
+}
+
 /// Writes a file of index pairs, one `A B` line each (`quad --pairs`, `reduce
 /// --history`), atomically (temporary file renamed into place), or to stdout for `-`.
 pub fn write_index_pairs(path: &Path, lines: &[[u32; 2]]) -> Result<(), CliError> {

@@ -96,16 +96,8 @@ pub fn compute(a: &QuadArgs, ui: Ui) -> Result<QuadReport, CliError> {
         None => None,
     };
     if let Some(p) = &a.pairs {
-        if p.as_os_str() == "-" {
-            if output.as_ref().is_some_and(|o| o.path.is_none()) {
-                return Err(CliError::Input(
-                    "-o - and --pairs - would both write to stdout: send one to a file".into(),
-                ));
-            }
-            super::report_to_stderr();
-        } else {
-            meshio::check_side_file(p, &[&a.input])?;
-        }
+        let on_stdout = output.as_ref().is_some_and(|o| o.path.is_none());
+        meshio::check_index_pairs_output(p, "--pairs", on_stdout, &[&a.input])?;
     }
     let triangles = match &a.triangles {
         Some(t) => {

@@ -151,16 +151,8 @@ pub fn compute(a: &ReduceArgs, ui: Ui) -> Result<ReduceReport, CliError> {
         .map(|o| meshio::check_output(o, a.output_format.map(Into::into), &[&a.input]))
         .transpose()?;
     if let Some(h) = &a.history {
-        if h.as_os_str() == "-" {
-            if output.as_ref().is_some_and(|o| o.path.is_none()) {
-                return Err(CliError::Input(
-                    "-o - and --history - would both write to stdout: send one to a file".into(),
-                ));
-            }
-            super::report_to_stderr();
-        } else {
-            meshio::check_side_file(h, &[&a.input])?;
-        }
+        let on_stdout = output.as_ref().is_some_and(|o| o.path.is_none());
+        meshio::check_index_pairs_output(h, "--history", on_stdout, &[&a.input])?;
     }
     let (mesh, seconds_read, welded_vertices, names) =
         meshio::read_input(&a.input, &a.input_opts, ui)?;
