@@ -207,3 +207,89 @@ fn stops_print_as_their_names() {
         assert_eq!(s.to_string(), s.name());
     }
 }
+
+/// A flat `k × k` grid of unit squares in the plane z = 0, each split along the same
+/// diagonal, every face counter-clockwise seen from +z; the interior vertices take the
+/// smallest ids (row by row), the border the rest.
+fn flat_grid(k: u32) -> TriMesh {
+    let border = |i: u32, j: u32| i == 0 || j == 0 || i == k - 1 || j == k - 1;
+    let cells = || (0..k).flat_map(move |j| (0..k).map(move |i| (i, j)));
+    let order = cells()
+        .filter(|&(i, j)| !border(i, j))
+        .chain(cells().filter(|&(i, j)| border(i, j)));
+    let mut id = vec![0u32; (k * k) as usize];
+    let mut positions = Vec::new();
+    for (n, (i, j)) in order.enumerate() {
+        id[(i + k * j) as usize] = n as u32;
+        positions.push([f64::from(i), f64::from(j), 0.0]);
+    }
+    let mut faces = Vec::new();
+    for j in 0..k - 1 {
+        for i in 0..k - 1 {
+            let v = |di: u32, dj: u32| id[(i + di + k * (j + dj)) as usize];
+            faces.push([v(0, 0), v(1, 0), v(1, 1)]);
+            faces.push([v(0, 0), v(1, 1), v(0, 1)]);
+        }
+    }
+    TriMesh {
+        vertex_count: positions.len(),
+        positions: Some(positions),
+        faces,
+    }
+}
+
+/// Endpoint placement keeps the endpoint of smaller error, ties going to the smaller id.
+/// On a flat grid every interior vertex's quadric is the plane's alone, so an edge
+/// between interior vertices costs exactly 0 at either end: a tie. With the interior
+/// first in id order, the first collapse is such an edge at vertex 0 (every cost is 0,
+/// and keys order ties by ids), and the vertex it removes is the larger endpoint.
+#[test]
+fn endpoint_ties_keep_the_smaller_id() {
+    let mesh = flat_grid(8);
+    let faces = mesh.faces.len();
+    for schedule in Schedule::ALL {
+        let d = decimate(
+            &mesh,
+            &DecimateOptions {
+                placement: Placement::Endpoint,
+                schedule,
+                ..DecimateOptions::faces(faces - 2)
+            },
+        )
+        .expect("valid");
+        assert_eq!(d.stats.collapses, 1, "{schedule:?}");
+        let gone: Vec<usize> = (0..mesh.vertex_count)
+            .filter(|&v| d.vertex_map[d.collapse_map[v] as usize] as usize != v)
+            .collect();
+        let [g] = gone[..] else {
+            panic!("{schedule:?}: {gone:?} merged");
+        };
+        let kept = d.vertex_map[d.collapse_map[g] as usize];
+        assert_eq!(kept, 0, "{schedule:?}: vertex {g} went into {kept}");
+        assert!(
+            g > 0 && g < 36,
+            "{schedule:?}: {g} is not an interior vertex"
+        );
+    }
+}
+
+/// The exact schedule queues only edges both endpoints allow (locks, the error cap), so
+/// its refusals while running are the link condition's and the fold-over guard's alone;
+/// the edges the endpoints refuse show up only among those left at the end.
+#[test]
+fn the_exact_schedule_never_queues_an_edge_its_endpoints_refuse() {
+    for (name, mesh) in shapes() {
+        let o = DecimateOptions {
+            lock_boundary: true,
+            locked: (0..mesh.vertex_count as u32).step_by(7).collect(),
+            max_error: Some(MaxError::Relative(0.02)),
+            ..DecimateOptions::faces(0)
+        };
+        let d = decimate(&mesh, &o).unwrap_or_else(|e| panic!("{name}: {e}"));
+        let r = d.stats.refused;
+        assert_eq!((r.lock, r.boundary, r.error), (0, 0, 0), "{name}: {r:?}");
+        let left = d.stats.remaining;
+        assert!(left.lock > 0, "{name}: {left:?}");
+        assert!(left.error > 0, "{name}: {left:?}");
+    }
+}
