@@ -297,3 +297,33 @@ fn an_output_on_the_survivors_in_another_order_is_read_by_position() {
     let v = reduce_history(&input, &reversed, &r.contractions()).unwrap();
     assert!(v.passed(), "{:?}", v.failures);
 }
+
+/// The comparison walks both sorted face lists to their ends and names each face found on
+/// one side only, once, on its own side: in the middle of the order and after the other
+/// list has ended.
+#[test]
+fn each_face_on_one_side_only_is_named_once_on_its_side() {
+    let (a, b, c, z) = ([0, 1, 2], [0, 1, 3], [0, 2, 3], [4, 5, 6]);
+    let run = |ours: &[[u32; 3]], theirs: &[[u32; 3]]| {
+        let mut v = Verdict::new("reduce");
+        history::compare(ours, theirs, 7, &mut v);
+        assert!(v.failures.iter().all(|f| f.kind == FailureKind::HistoryMismatch));
+        v.failures
+            .iter()
+            .map(|f| (f.face, f.message.contains("the output does not have")))
+            .collect::<Vec<_>>()
+    };
+    // Equal lists, the output's in another order and with other first corners.
+    assert_eq!(run(&[a, b, c], &[[2, 3, 0], a, [3, 0, 1]]), vec![]);
+    // An output face between two of the replay's (given last, so located as face 2).
+    assert_eq!(run(&[a, c], &[a, c, b]), vec![(Some(2), false)]);
+    // A replay face between two of the output's.
+    assert_eq!(run(&[a, b, c], &[c, a]), vec![(None, true)]);
+    // A replay face after the output's last.
+    assert_eq!(run(&[a, b, z], &[b, a]), vec![(None, true)]);
+    // An output face after the replay's last.
+    assert_eq!(run(&[a, b], &[z, a, b]), vec![(Some(0), false)]);
+    // Only one side.
+    assert_eq!(run(&[], &[a, b]), vec![(Some(0), false), (Some(1), false)]);
+    assert_eq!(run(&[a, b], &[]), vec![(None, true), (None, true)]);
+}
