@@ -307,7 +307,10 @@ fn each_face_on_one_side_only_is_named_once_on_its_side() {
     let run = |ours: &[[u32; 3]], theirs: &[[u32; 3]]| {
         let mut v = Verdict::new("reduce");
         history::compare(ours, theirs, 7, &mut v);
-        assert!(v.failures.iter().all(|f| f.kind == FailureKind::HistoryMismatch));
+        assert!(v
+            .failures
+            .iter()
+            .all(|f| f.kind == FailureKind::HistoryMismatch));
         v.failures
             .iter()
             .map(|f| (f.face, f.message.contains("the output does not have")))

@@ -54,7 +54,7 @@ pub(crate) struct Decimator<'o> {
     /// condition, or the fold-over guard at every position), or queued at a raised cost
     /// because the guard refused the placement's position and took an alternative
     /// (`false`; the raised cost is in `edge_cost`).
-    adjusted: HashMap<(u32, u32), bool>,
+    pub(super) adjusted: HashMap<(u32, u32), bool>,
     /// Per vertex: an upper bound on the adjusted edges at it (0: none).
     adjusted_at: Vec<u32>,
     pub(super) lock: Vec<u8>,
@@ -733,6 +733,7 @@ impl<'o> Decimator<'o> {
                     continue;
                 }
                 let (p, q) = (VertexId(p), VertexId(q));
+                spec::current_entry(self, cost, p, q);
                 match self.resolve(p, q) {
                     Ok((c, at, removed)) if at.to_bits() == cost.to_bits() => {
                         spec::before_collapse(self, (cost, p.0, q.0), &c);
@@ -1003,6 +1004,6 @@ pub(super) fn edge_key(p: VertexId, q: VertexId, cost: f64) -> u128 {
 const NO_KEY: u128 = u128::MAX;
 
 /// An edge as an ordered pair of ids.
-fn pair(p: VertexId, q: VertexId) -> (u32, u32) {
+pub(super) fn pair(p: VertexId, q: VertexId) -> (u32, u32) {
     (p.0.min(q.0), p.0.max(q.0))
 }

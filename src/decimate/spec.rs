@@ -10,11 +10,15 @@
 //! - **M3, stop rule**: the run stops at the first face count at or below the target,
 //!   or, short of it, only when no edge passes every guard (checked independently), and
 //!   the face count it keeps is the true one.
+//! - **M4, current entries** (the exact schedule): every entry the queue hands out as
+//!   current names a live real edge that no guard has refused since the last collapse
+//!   next to it, at its cost now (recomputed from the endpoints' quadrics; not below it
+//!   where the fold-over guard refused the placement's position).
 //!
 //! M1 and the blocked half of M3 examine every edge, so they run in full on meshes of at
 //! most [`FULL_CHECK_FACES`] live faces (the tests' sizes) and are skipped above.
 
-use super::run::{Candidate, Decimator};
+use super::run::{pair, Candidate, Decimator};
 use super::Stopped;
 use crate::core::ids::NONE;
 use crate::core::VertexId;
@@ -199,6 +203,39 @@ pub(super) fn before_pass_collapse(
             e.cost
         );
     }
+}
+
+/// M4, when the queue hands out the entry `(cost, p, q)` as current, before it is
+/// resolved: `[p, q]` is a live real edge, not refused by a guard since the last collapse
+/// next to it (only such a collapse can change the verdict, so a second verdict would
+/// count one refusal twice), at its cost now: the placement's cost recomputed from the
+/// endpoints' quadrics, or, where the fold-over guard refused the placement's position
+/// and the edge was queued again at an alternative's cost, not below it (a stale cost
+/// would order the edge among the others wrongly).
+pub(super) fn current_entry(d: &Decimator<'_>, cost: f64, p: VertexId, q: VertexId) {
+    if !ENABLED {
+        return;
+    }
+    let n = d.collapses;
+    assert!(
+        !d.is_virtual(p) && !d.is_virtual(q) && d.tri.find_edge(p, q).is_some(),
+        "specification violated: M4 (current entries): collapse {n}: the queue handed out [{p}, {q}], which is not a real edge"
+    );
+    let adjusted = d.adjusted.get(&pair(p, q)).copied();
+    assert!(
+        adjusted != Some(true),
+        "specification violated: M4 (current entries): collapse {n}: the queue handed out [{p}, {q}], refused since the last collapse next to it"
+    );
+    let now = d.candidate(p, q).map(|c| c.cost);
+    let current = match now {
+        Ok(c) if adjusted.is_none() => c.to_bits() == cost.to_bits(),
+        Ok(c) => cost >= c,
+        Err(_) => false,
+    };
+    assert!(
+        current,
+        "specification violated: M4 (current entries): collapse {n}: the queue handed out [{p}, {q}] at cost {cost}; its cost now: {now:?}"
+    );
 }
 
 /// M3, when the queue is empty short of the target: the sweep found `missed` allowed
@@ -490,6 +527,30 @@ mod tests {
         let extra = d.initial[v].0;
         d.quadric[v].add(&extra);
         assert_fails("M2", || at_end(&d, Stopped::Target));
+    }
+
+    #[test]
+    fn m4_accepts_a_current_entry_and_fails_on_a_stale_cost_a_non_edge_and_a_refused_edge() {
+        let mesh = sphere();
+        let opts = options(0);
+        let mut d = decimator(&mesh, &opts);
+        let [(cheap, _), _] = extremes(&d);
+        let (cost, p, q) = (cheap.0, VertexId(cheap.1), VertexId(cheap.2));
+        current_entry(&d, cost, p, q);
+        assert_fails("M4", || current_entry(&d, cost * 2.0 + 1.0, p, q));
+        let far = (0..d.first_virtual)
+            .map(VertexId)
+            .find(|&v| v != p && d.tri.is_vertex(v) && d.tri.find_edge(p, v).is_none())
+            .expect("a vertex not next to p");
+        assert_fails("M4", || current_entry(&d, cost, p, far));
+        // Queued again above the placement's cost: accepted there, not below it.
+        d.adjusted.insert(pair(p, q), false);
+        current_entry(&d, cost * 2.0 + 1.0, p, q);
+        if cost > 0.0 {
+            assert_fails("M4", || current_entry(&d, cost / 2.0, p, q));
+        }
+        d.adjusted.insert(pair(p, q), true);
+        assert_fails("M4", || current_entry(&d, cost, p, q));
     }
 
     #[test]
