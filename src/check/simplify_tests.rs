@@ -621,6 +621,17 @@ fn inputs_simplify_refuses_are_errors() {
         )
         .expect_err("refused");
         assert_eq!(lib.kind(), "bad_option", "{bad:?}");
+        // Refused for the option itself, before the input is read, as the library does.
+        assert_eq!(e.to_string(), lib.to_string(), "{bad:?}");
+        // (A finite fraction whose ε overflows is known bad only with the diagonal.)
+        if !matches!(bad.eps, Eps::Relative(r) if r == f64::MAX) {
+            let e = simplify(&bare, &sphere, &bad).expect_err("refused");
+            assert_eq!(
+                e.kind(),
+                "bad_option",
+                "{bad:?} on an input without positions"
+            );
+        }
     }
     let mut pinched = sphere.clone();
     pinched.faces.push(pinched.faces[0]);
