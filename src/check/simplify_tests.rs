@@ -668,10 +668,30 @@ fn disc_with_a_short_edge_to_the_boundary(b_first: bool) -> (TriMesh, [u32; 2]) 
     )
 }
 
+/// `mesh` turned by `angle` about the axis (1, 2, 3): no coordinate of a normal or an
+/// edge vector stays zero, so every component of the guard's cross products counts.
+fn turned(mesh: &TriMesh, angle: f64) -> TriMesh {
+    let n = 14f64.sqrt();
+    let (x, y, z) = (1.0 / n, 2.0 / n, 3.0 / n);
+    let (c, s) = (angle.cos(), angle.sin());
+    let t = 1.0 - c;
+    let r = [
+        [t * x * x + c, t * x * y - s * z, t * x * z + s * y],
+        [t * x * y + s * z, t * y * y + c, t * y * z - s * x],
+        [t * x * z - s * y, t * y * z + s * x, t * z * z + c],
+    ];
+    let mut m = mesh.clone();
+    for p in m.positions.as_mut().expect("positions") {
+        *p = r.map(|row| row[0] * p[0] + row[1] * p[1] + row[2] * p[2]);
+    }
+    m
+}
+
 #[test]
 fn an_edge_with_one_end_on_the_boundary_is_guarded_at_that_end() {
-    for b_first in [true, false] {
+    for (b_first, angle) in [(true, 0.0), (false, 0.0), (true, 1.0), (false, 2.5)] {
         let (disc, edge) = disc_with_a_short_edge_to_the_boundary(b_first);
+        let disc = turned(&disc, angle);
         let v = simplify(&disc, &disc, &SimplifyCheck::absolute(0.1)).expect("valid");
         assert_eq!(kinds(&v), [FailureKind::ShortContractibleEdge], "{b_first}");
         assert_eq!(flagged(&v), [edge]);
