@@ -411,7 +411,7 @@ pub(super) fn passes_link_condition(
 }
 
 /// Per vertex, the faces holding it (CSR: `start`, `faces`).
-fn faces_at(vertex_count: usize, faces: &[[u32; 3]]) -> (Vec<usize>, Vec<u32>) {
+pub(super) fn faces_at(vertex_count: usize, faces: &[[u32; 3]]) -> (Vec<usize>, Vec<u32>) {
     let mut start = vec![0usize; vertex_count + 1];
     for f in faces {
         for &v in f {
@@ -436,7 +436,7 @@ fn faces_at(vertex_count: usize, faces: &[[u32; 3]]) -> (Vec<usize>, Vec<u32>) {
 /// `to`: every face at `a` or `b` but the edge's own, with its corner at `a` or `b`
 /// moved to `to`, keeps a nonzero area (`|n| > ZERO_AREA · L²`) and, when it had a
 /// nonzero normal, turns it by less than 90° (`n_old · n_new > 0`). Positions scaled.
-fn guard_allows(
+pub(super) fn guard_allows(
     faces: &[[u32; 3]],
     at: &(Vec<usize>, Vec<u32>),
     pos: &dyn Fn(u32) -> [f64; 3],

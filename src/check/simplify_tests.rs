@@ -704,3 +704,62 @@ fn an_edge_with_one_end_on_the_boundary_is_guarded_at_that_end() {
             .passed());
     }
 }
+
+/// The checker's guard (its own arithmetic) decides every moved triangle as the
+/// library's guard does (`simplify::geometry::fan_move_ok`), on random triangles in every
+/// orientation and on the margins: `to` near the line of the opposite edge at a
+/// thousandth, half, twice and a thousand times the zero-area bound (the distance from
+/// the line over the edge's length is the ratio of the area to the bound here), on either
+/// side, so across the line too (a fold by a hair).
+#[test]
+fn the_guard_decides_each_moved_triangle_as_the_librarys() {
+    use super::simplify_check::{faces_at, guard_allows};
+    use crate::simplify::geometry::{cross, dot, fan_move_ok, sub};
+    let mut rng = crate::rng::Rng::new(20261207);
+    let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+    // One face [0, 1, 2]; the edge [0, 3] moves vertex 0 (vertex 3 has no face).
+    let faces = [[0u32, 1, 2]];
+    let at = faces_at(4, &faces);
+    let (mut allowed, mut refused) = (0, 0);
+    for _ in 0..4000 {
+        let x = [unit(), unit(), unit()];
+        let p1 = [unit(), unit(), unit()];
+        let p2 = [unit(), unit(), unit()];
+        let e = sub(p2, p1);
+        let n = cross(sub(p1, x), e);
+        let along = 0.5 + unit();
+        // The unit vector in the face's plane, across the edge [p1, p2] towards x.
+        let towards = cross(e, n);
+        let len = dot(towards, towards).sqrt();
+        if len == 0.0 {
+            continue;
+        }
+        let scale = dot(e, e).sqrt();
+        let side = if dot(towards, sub(x, p1)) > 0.0 {
+            1.0
+        } else {
+            -1.0
+        };
+        for offset in [
+            0.0, 1e-13, 5e-11, 2e-10, 1e-7, -1e-13, -5e-11, -2e-10, -1e-7, 0.3, -0.3,
+        ] {
+            let h = side * offset * scale / len;
+            let to: [f64; 3] = std::array::from_fn(|k| {
+                p1[k] + along * e[k] + h * towards[k] + 0.01 * offset.signum() * n[k]
+            });
+            let pos = |v: u32| [x, p1, p2, [9.0; 3]][v as usize];
+            let ours = guard_allows(&faces, &at, &pos, (0, 3), to);
+            let library = fan_move_ok(x, to, p1, p2);
+            assert_eq!(ours, library, "x {x:?} p1 {p1:?} p2 {p2:?} to {to:?}");
+            if ours {
+                allowed += 1;
+            } else {
+                refused += 1;
+            }
+        }
+    }
+    assert!(
+        allowed > 10000 && refused > 10000,
+        "{allowed} allowed, {refused} refused"
+    );
+}
