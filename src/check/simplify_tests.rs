@@ -20,10 +20,15 @@ fn count(v: &Verdict, kind: FailureKind) -> usize {
         .map_or(0, |&(_, n)| n)
 }
 
+/// A uniform number in [0, 1) from `rng` (its top 53 bits).
+fn uniform(rng: &mut crate::rng::Rng) -> f64 {
+    (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+}
+
 /// Seeded positions in the unit cube.
 fn random_positions(n: usize, seed: u64) -> Vec<[f64; 3]> {
     let mut rng = crate::rng::Rng::new(seed);
-    let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64;
+    let mut unit = || uniform(&mut rng);
     (0..n).map(|_| [unit(), unit(), unit()]).collect()
 }
 
@@ -289,7 +294,7 @@ fn options(mode: Mode, position: Position, allow_foldover: bool, eps: Eps) -> Si
 /// that the guard has triangles to refuse.
 fn perturbed(mesh: &TriMesh, amount: f64, seed: u64) -> TriMesh {
     let mut rng = crate::rng::Rng::new(seed);
-    let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+    let mut unit = || uniform(&mut rng) - 0.5;
     let mut m = mesh.clone();
     for p in m.positions.as_mut().expect("positions") {
         for x in p.iter_mut() {
@@ -716,7 +721,7 @@ fn the_guard_decides_each_moved_triangle_as_the_librarys() {
     use super::simplify_check::{faces_at, guard_allows};
     use crate::simplify::geometry::{cross, dot, fan_move_ok, sub};
     let mut rng = crate::rng::Rng::new(20261207);
-    let mut unit = || (rng.next_u64() >> 11) as f64 / (1u64 << 53) as f64 - 0.5;
+    let mut unit = || uniform(&mut rng) - 0.5;
     // One face [0, 1, 2]; the edge [0, 3] moves vertex 0 (vertex 3 has no face).
     let faces = [[0u32, 1, 2]];
     let at = faces_at(4, &faces);
