@@ -678,6 +678,42 @@ pub(crate) fn check(input: &TriMesh, o: &DecimateOptions, r: &DecimateResult, la
         out.faces.len(),
         "{label}: per-component faces"
     );
+    // Each component's counts, in and out, are those of one component of the meshes
+    // (compared as multisets: the order of the list is the library's).
+    let sorted = |mut v: Vec<(usize, usize, usize)>| {
+        v.sort_unstable();
+        v
+    };
+    assert_eq!(
+        sorted(
+            s.component_list
+                .iter()
+                .map(|c| (c.faces_in, c.vertices_in, c.boundary_loops))
+                .collect()
+        ),
+        sorted(
+            cin.parts
+                .iter()
+                .map(|p| (p.faces, p.vertices, p.loops))
+                .collect()
+        ),
+        "{label}: per-component input counts"
+    );
+    assert_eq!(
+        sorted(
+            s.component_list
+                .iter()
+                .map(|c| (c.faces_out, c.vertices_out, c.boundary_loops))
+                .collect()
+        ),
+        sorted(
+            cout.parts
+                .iter()
+                .map(|p| (p.faces, p.vertices, p.loops))
+                .collect()
+        ),
+        "{label}: per-component output counts"
+    );
     assert_eq!(
         s.component_list
             .iter()

@@ -644,6 +644,7 @@ fn f2_catches_a_broken_lift() {
 
 /// The ladder of `2k` nodes: the cycles `0 … k−1` and `k … 2k−1`, and the rungs
 /// `i`–`k+i`, which are edge `3i + 2` and together a perfect matching.
+#[cfg(any(debug_assertions, feature = "invariants"))]
 fn ladder(k: u32) -> Cubic {
     let mut edges = Vec::new();
     for i in 0..k {
