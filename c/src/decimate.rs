@@ -152,6 +152,56 @@ pub struct ctr_decimate_result {
     stats: ctr_decimate_stats,
 }
 
+/// The library's options for the C options, or why they are refused.
+///
+/// # Safety
+/// `o.locked` points to `o.locked_count` readable ids (or the count is 0).
+pub(crate) unsafe fn decimate_options(
+    o: &ctr_decimate_options,
+) -> Result<DecimateOptions, Failure> {
+    let placement = match o.placement {
+        CTR_PLACEMENT_OPTIMAL => Placement::Optimal,
+        CTR_PLACEMENT_MIDPOINT => Placement::Midpoint,
+        CTR_PLACEMENT_ENDPOINT => Placement::Endpoint,
+        other => {
+            return Err(Failure::argument(format!(
+                "options->placement is {other}: CTR_PLACEMENT_OPTIMAL (0), \
+                 CTR_PLACEMENT_MIDPOINT (1) or CTR_PLACEMENT_ENDPOINT (2)"
+            )))
+        }
+    };
+    let schedule = match o.schedule {
+        CTR_SCHEDULE_EXACT => Schedule::Exact,
+        CTR_SCHEDULE_PASSES => Schedule::Passes,
+        other => {
+            return Err(Failure::argument(format!(
+                "options->schedule is {other}: CTR_SCHEDULE_EXACT (0) or \
+                 CTR_SCHEDULE_PASSES (1)"
+            )))
+        }
+    };
+    // SAFETY: the caller promises `locked_count` readable ids at `locked`.
+    let locked = unsafe { slice(o.locked, o.locked_count, "options->locked") }?;
+    Ok(DecimateOptions {
+        faces: (o.faces > 0).then_some(usize::try_from(o.faces).unwrap_or(usize::MAX)),
+        keep: (o.keep != 0.0).then_some(o.keep),
+        max_error: (o.max_error >= 0.0 || o.max_error.is_nan()).then_some(
+            if o.max_error_relative {
+                MaxError::Relative(o.max_error)
+            } else {
+                MaxError::Absolute(o.max_error)
+            },
+        ),
+        placement,
+        schedule,
+        allow_foldover: o.allow_foldover,
+        lock_boundary: o.lock_boundary,
+        locked: locked.to_vec(),
+        skip_verify: !o.verify,
+        ..DecimateOptions::default()
+    })
+}
+
 /// Decimates `mesh` (closed or with boundary, orientable or not, several components;
 /// positions needed): every component keeps its surface (χ, orientability, boundary
 /// loops), checked before returning. NULL on failure: `CTR_INPUT` for a mesh that is no
@@ -173,47 +223,8 @@ pub unsafe extern "C" fn ctr_decimate(
         let m = unsafe { object(mesh, "mesh") }?;
         // SAFETY: NULL or a valid options struct of its stated size.
         let o = unsafe { read_options(options, ctr_decimate_options_default(), "options") }?;
-        let placement = match o.placement {
-            CTR_PLACEMENT_OPTIMAL => Placement::Optimal,
-            CTR_PLACEMENT_MIDPOINT => Placement::Midpoint,
-            CTR_PLACEMENT_ENDPOINT => Placement::Endpoint,
-            other => {
-                return Err(Failure::argument(format!(
-                    "options->placement is {other}: CTR_PLACEMENT_OPTIMAL (0), \
-                     CTR_PLACEMENT_MIDPOINT (1) or CTR_PLACEMENT_ENDPOINT (2)"
-                )))
-            }
-        };
-        let schedule = match o.schedule {
-            CTR_SCHEDULE_EXACT => Schedule::Exact,
-            CTR_SCHEDULE_PASSES => Schedule::Passes,
-            other => {
-                return Err(Failure::argument(format!(
-                    "options->schedule is {other}: CTR_SCHEDULE_EXACT (0) or \
-                     CTR_SCHEDULE_PASSES (1)"
-                )))
-            }
-        };
         // SAFETY: the caller promises `locked_count` readable ids at `locked`.
-        let locked = unsafe { slice(o.locked, o.locked_count, "options->locked") }?;
-        let options = DecimateOptions {
-            faces: (o.faces > 0).then_some(usize::try_from(o.faces).unwrap_or(usize::MAX)),
-            keep: (o.keep != 0.0).then_some(o.keep),
-            max_error: (o.max_error >= 0.0 || o.max_error.is_nan()).then_some(
-                if o.max_error_relative {
-                    MaxError::Relative(o.max_error)
-                } else {
-                    MaxError::Absolute(o.max_error)
-                },
-            ),
-            placement,
-            schedule,
-            allow_foldover: o.allow_foldover,
-            lock_boundary: o.lock_boundary,
-            locked: locked.to_vec(),
-            skip_verify: !o.verify,
-            ..DecimateOptions::default()
-        };
+        let options = unsafe { decimate_options(&o) }?;
         let r: DecimateResult = contractible::decimate(&m.mesh, &options).map_err(Failure::from)?;
         let s = &r.stats;
         let mut stats = ctr_decimate_stats_default();

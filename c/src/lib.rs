@@ -21,17 +21,23 @@
 #![deny(unsafe_op_in_unsafe_fn)]
 #![deny(clippy::undocumented_unsafe_blocks)]
 
+mod check;
 mod decimate;
 mod describe;
 mod error;
 mod mesh;
+mod quadrangulate;
 mod reduce;
+mod simplify;
 
+pub use check::*;
 pub use decimate::*;
 pub use describe::*;
 pub use error::*;
 pub use mesh::*;
+pub use quadrangulate::*;
 pub use reduce::*;
+pub use simplify::*;
 
 /// The version of this ABI: incremented when a function's meaning or a struct's existing
 /// fields change (new functions and new trailing fields do not change it).

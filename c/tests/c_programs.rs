@@ -212,18 +212,10 @@ fn command_line() -> PathBuf {
     exe
 }
 
-/// The harness's JSON report of `impl_` over the reduce cases.
+/// The harness's JSON report of `impl_` over the whole suite, with `--exact`.
 fn conformance(impl_: &str) -> serde_json::Value {
     let o = Command::new(command_line())
-        .args([
-            "--json",
-            "conformance",
-            "--exact",
-            "--task",
-            "reduce",
-            "-j",
-            "2",
-        ])
+        .args(["--json", "conformance", "--exact", "-j", "2"])
         .arg("--suite")
         .arg(crate_dir().join("..").join("spec"))
         .arg("--impl")
@@ -240,15 +232,15 @@ fn conformance(impl_: &str) -> serde_json::Value {
 }
 
 #[test]
-fn the_c_adapter_passes_the_reduce_suite_as_the_command_line_s_does() {
+fn the_c_adapter_passes_the_whole_suite_as_the_command_line_s_does() {
     let d = scratch("adapter");
     let source = crate_dir().join("examples").join("conformance_adapter.c");
     let adapter = compile("cc", "c11", &source, &d.join("conformance_adapter"));
     let ours = conformance(adapter.to_str().expect("a UTF-8 path"));
     let cli = format!("{} answer", command_line().display());
     let theirs = conformance(&cli);
-    // Every reduce case, valid and invalid, passes with --exact: the same verdicts case by
-    // case as the library's own adapter.
+    // Every case of every task, valid and invalid, passes with --exact: the same verdicts
+    // case by case as the library's own adapter.
     let verdicts = |r: &serde_json::Value| -> Vec<(String, String)> {
         r["cases"]
             .as_array()
@@ -259,35 +251,62 @@ fn the_c_adapter_passes_the_reduce_suite_as_the_command_line_s_does() {
     };
     assert_eq!(verdicts(&ours), verdicts(&theirs));
     let cases = ours["cases"].as_array().expect("cases");
-    assert!(cases.len() > 200, "{}", cases.len());
+    assert!(cases.len() > 1500, "{}", cases.len());
     assert!(cases.iter().all(|c| c["verdict"] == "passed"));
-    assert!(cases
-        .iter()
-        .any(|c| c["id"].as_str().unwrap().starts_with("invalid/")));
+    for task in ["reduce", "quad", "simplify", "decimate"] {
+        for class in ["", "invalid/"] {
+            let prefix = format!("{class}{task}/");
+            assert!(
+                cases
+                    .iter()
+                    .any(|c| c["id"].as_str().unwrap().starts_with(&prefix)),
+                "no case {prefix}"
+            );
+        }
+    }
 
-    // Under memcheck, case by case: a valid case, every invalid reduce input of the suite
-    // (refused with the suite's kind), a task it does not cover, and bytes that are no
+    // Under memcheck, case by case: a valid case of each task, every invalid input of the
+    // suite (refused with the suite's kind), a task it does not know, and bytes that are no
     // JSON: no memory error or leak on any path.
-    let octahedron = r#"{"protocol": 1, "id": "o", "task": "reduce", "options": {"algorithm": "schipper"}, "vertex_count": 6, "faces": [[0,2,4],[2,1,4],[1,3,4],[3,0,4],[2,0,5],[1,2,5],[3,1,5],[0,3,5]], "positions": null}"#;
+    let octahedron = r#"{"protocol": 1, "id": "o", "task": "reduce", "options": {"algorithm": "schipper"}, "vertex_count": 6, "faces": [[0,2,4],[2,1,4],[1,3,4],[3,0,4],[2,0,5],[1,2,5],[3,1,5],[0,3,5]], "positions": [[1,0,0],[-1,0,0],[0,1,0],[0,-1,0],[0,0,1],[0,0,-1]]}"#;
+    let as_task = |task: &str, options: &str| {
+        octahedron
+            .replace("\"reduce\"", &format!("\"{task}\""))
+            .replace(r#"{"algorithm": "schipper"}"#, options)
+    };
     let mut cases: Vec<(String, i32, String)> = vec![
         (octahedron.to_string(), 0, "\"history\": [[".to_string()),
         (
-            octahedron.replace("\"reduce\"", "\"quad\""),
-            2,
-            "unsupported".to_string(),
+            as_task("quad", r#"{"algorithm": "ps", "seed": 1}"#),
+            0,
+            "\"pairs\": [[".to_string(),
         ),
+        (
+            as_task("simplify", r#"{"eps": 2, "guard": false}"#),
+            0,
+            "\"positions\": [[".to_string(),
+        ),
+        (
+            as_task("decimate", r#"{"faces": 4, "locked": [0, 5]}"#),
+            0,
+            "\"collapse_map\": [".to_string(),
+        ),
+        (
+            as_task("decimate", r#"{"placement": "nowhere"}"#),
+            2,
+            "unknown_name".to_string(),
+        ),
+        (as_task("flatten", "{}"), 2, "unsupported".to_string()),
         ("{\"task\": [1, 2".to_string(), 2, "protocol".to_string()),
     ];
     let invalid = std::fs::read_to_string(crate_dir().join("../spec/suite/invalid.jsonl"))
         .expect("the suite's invalid cases");
     for line in invalid.lines() {
         let v: serde_json::Value = serde_json::from_str(line).expect("JSON");
-        if v["task"] == "reduce" {
-            let kind = v["kind"].as_str().expect("kind").to_string();
-            cases.push((line.to_string(), 2, format!("\"kind\": \"{kind}\"")));
-        }
+        let kind = v["kind"].as_str().expect("kind").to_string();
+        cases.push((line.to_string(), 2, format!("\"kind\": \"{kind}\"")));
     }
-    assert!(cases.len() >= 8);
+    assert!(cases.len() >= 30);
     let valgrind = Command::new("valgrind").arg("--version").output().is_ok();
     for (case, code, shown) in &cases {
         let mut cmd = if valgrind {

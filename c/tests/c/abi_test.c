@@ -261,6 +261,224 @@ static void decimation(void) {
     ctr_mesh_free(m);
 }
 
+static void quadrangulation(void) {
+    ctr_error err;
+    ctr_error_init(&err);
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    ctr_quad_options o = ctr_quad_options_default();
+    CHECK(o.size == sizeof o && o.algorithm == CTR_QUAD_LRS && o.seed == 0 && o.verify);
+    for (uint32_t a = CTR_QUAD_LRS; a <= CTR_QUAD_DS_NAIVE; a++) {
+        o.algorithm = a;
+        ctr_quad_result *r = ctr_quadrangulate(m, &o, &err);
+        CHECK(r != NULL && err.code == CTR_OK);
+        size_t quads = 0, triangles = 0, pairs = 0;
+        const uint32_t *q = ctr_quad_result_quads(r, &quads);
+        const uint32_t *t = ctr_quad_result_triangles(r, &triangles);
+        const uint32_t *p = ctr_quad_result_pairs(r, &pairs);
+        CHECK(quads == 4 && triangles == 8 && pairs == 4 && q && t && p);
+        /* Every row of K in exactly one pair; every quad on four distinct vertices. */
+        int used[8] = {0};
+        for (size_t i = 0; i < 8; i++) CHECK(p[i] < 8 && ++used[p[i]] == 1);
+        for (size_t i = 0; i < 4; i++)
+            CHECK(q[4 * i] != q[4 * i + 2] && q[4 * i + 1] != q[4 * i + 3] && q[4 * i] < 6);
+        ctr_quad_stats s = ctr_quad_stats_default();
+        CHECK(ctr_quad_result_stats(r, &s, &err) == CTR_OK);
+        CHECK(s.faces == 8 && s.quads == 4 && s.components == 1);
+        CHECK(s.euler_characteristic == 2 && s.orientable);
+        /* The checker passes it, with and without the stated pairs. */
+        ctr_verdict *v = ctr_check_quad(m, q, quads, t, triangles, p, &err);
+        CHECK(v != NULL && ctr_verdict_passed(v) && ctr_verdict_failure_count(v) == 0);
+        ctr_verdict_free(v);
+        v = ctr_check_quad(m, q, quads, t, triangles, NULL, &err);
+        CHECK(v != NULL && ctr_verdict_passed(v));
+        ctr_verdict_free(v);
+        ctr_quad_result_free(r);
+    }
+    ctr_quad_result *r = ctr_quadrangulate(m, NULL, &err);
+    char path[4096];
+    snprintf(path, sizeof path, "/nonexistent-dir-of-abi-test/q.obj");
+    CHECK(ctr_quad_result_write(r, path, &err) == CTR_FAILURE && strcmp(err.kind, "write") == 0);
+    /* A quad given twice pairs its triangles twice. */
+    size_t quads = 0, triangles = 0;
+    uint32_t q[16];
+    memcpy(q, ctr_quad_result_quads(r, &quads), sizeof q);
+    memcpy(q + 4, q, 4 * sizeof *q);
+    const uint32_t *k = ctr_quad_result_triangles(r, &triangles);
+    ctr_verdict *v = ctr_check_quad(m, q, 4, k, triangles, NULL, &err);
+    CHECK(v != NULL && !ctr_verdict_passed(v) && ctr_verdict_failure_count(v) >= 1);
+    ctr_check_failure f = ctr_check_failure_default();
+    CHECK(ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
+    CHECK(strcmp(f.kind, "triangle_used_twice") == 0 && strlen(f.message) > 0);
+    CHECK(ctr_verdict_failure(v, 99, &f, &err) == CTR_INVALID_ARGUMENT);
+    f.size = 4;
+    CHECK(ctr_verdict_failure(v, 0, &f, &err) == CTR_INVALID_ARGUMENT);
+    ctr_verdict_free(v);
+    ctr_quad_result_free(r);
+
+    /* Wrong calls: an unknown algorithm, an odd face count, NULL handles. */
+    o = ctr_quad_options_default();
+    o.algorithm = 8;
+    CHECK(ctr_quadrangulate(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_check_quad(m, NULL, 4, NULL, 0, NULL, &err) == NULL);
+    CHECK(err.code == CTR_INVALID_ARGUMENT);
+    size_t n = 7;
+    CHECK(ctr_quad_result_quads(NULL, &n) == NULL && n == 0);
+    CHECK(ctr_quad_result_pairs(NULL, NULL) == NULL);
+    ctr_quad_result_free(NULL);
+    ctr_mesh_free(m);
+    uint32_t faces[27];
+    memcpy(faces, octahedron_faces, sizeof octahedron_faces);
+    m = ctr_mesh_new(NULL, 6, faces, 7, &err);
+    CHECK(ctr_quadrangulate(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(ctr_check_quad(m, faces, 1, NULL, 0, NULL, &err) == NULL && err.code == CTR_INPUT);
+    ctr_mesh_free(m);
+}
+
+static void simplification(void) {
+    ctr_error err;
+    ctr_error_init(&err);
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    ctr_simplify_options o = ctr_simplify_options_default();
+    CHECK(o.size == sizeof o && o.eps == 0.01 && o.eps_relative && o.verify);
+    CHECK(o.mode == CTR_SIMPLIFY_NESTED && o.side == CTR_SIDE_COUNT && !o.allow_foldover);
+    /* The defaults: every edge (1.41) is longer than 1 % of the diagonal (3.46). */
+    ctr_simplify_result *r = ctr_simplify(m, NULL, &err);
+    ctr_simplify_stats s = ctr_simplify_stats_default();
+    CHECK(r != NULL && ctr_simplify_result_stats(r, &s, &err) == CTR_OK);
+    CHECK(s.faces_in == 8 && s.faces_out == 8 && s.edges_contracted == 0);
+    CHECK(s.shortest_remaining_edge > 1.41 && s.shortest_remaining_edge < 1.42);
+    ctr_simplify_result_free(r);
+    /* Every edge short, the guard off: down to the tetrahedron, which is irreducible. */
+    o.eps = 2;
+    o.eps_relative = false;
+    o.allow_foldover = true;
+    r = ctr_simplify(m, &o, &err);
+    CHECK(r != NULL && ctr_simplify_result_stats(r, &s, &err) == CTR_OK);
+    CHECK(s.eps == 2 && s.faces_out == 4 && s.vertices_out == 4 && s.edges_contracted == 2);
+    CHECK(s.short_edges_remaining == 6 && s.components == 1 && s.boundary_loops == 0);
+    const ctr_mesh *out = ctr_simplify_result_mesh(r);
+    CHECK(ctr_mesh_face_count(out) == 4 && ctr_mesh_positions(out) != NULL);
+    ctr_verdict *v = ctr_check_simplify(m, out, &o, &err);
+    CHECK(v != NULL && ctr_verdict_passed(v));
+    ctr_verdict_free(v);
+    /* The input is no answer: its short edges pass the link condition. */
+    v = ctr_check_simplify(m, m, &o, &err);
+    CHECK(v != NULL && !ctr_verdict_passed(v));
+    ctr_check_failure f = ctr_check_failure_default();
+    CHECK(ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
+    CHECK(strcmp(f.kind, "short_contractible_edge") == 0);
+    CHECK(f.edge_from >= 0 && f.edge_from < f.edge_to && f.edge_to < 6);
+    ctr_verdict_free(v);
+    ctr_simplify_result_free(r);
+
+    /* Wrong calls: unknown names, ε zero, no positions. */
+    o = ctr_simplify_options_default();
+    o.mode = 2;
+    CHECK(ctr_simplify(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    o = ctr_simplify_options_default();
+    o.side = 3;
+    CHECK(ctr_simplify(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    o = ctr_simplify_options_default();
+    o.position = 2;
+    CHECK(ctr_simplify(m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_check_simplify(m, m, &o, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    o = ctr_simplify_options_default();
+    o.eps = 0;
+    CHECK(ctr_simplify(m, &o, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "bad_option") == 0);
+    CHECK(ctr_simplify_result_stats(NULL, &s, &err) == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_simplify_result_mesh(NULL) == NULL);
+    ctr_simplify_result_free(NULL);
+    ctr_mesh_free(m);
+    m = ctr_mesh_new(NULL, 6, octahedron_faces, 8, &err);
+    CHECK(ctr_simplify(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "missing_positions") == 0);
+    ctr_mesh_free(m);
+}
+
+static void checking(void) {
+    ctr_error err;
+    ctr_error_init(&err);
+    ctr_mesh *m = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 8, &err);
+    /* A reduction and its history pass; the history one step short does not. */
+    ctr_reduce_options ro = ctr_reduce_options_default();
+    ro.keep_history = true;
+    ctr_reduce_result *rr = ctr_reduce(m, &ro, &err);
+    const ctr_mesh *reduced = ctr_reduce_result_mesh(rr);
+    /* The output in the input's vertex ids, as a port would give it. */
+    const uint32_t *map = ctr_reduce_result_vertex_map(rr), *of = ctr_mesh_faces(reduced);
+    uint32_t faces[12];
+    for (size_t i = 0; i < 12; i++) faces[i] = map[of[i]];
+    ctr_mesh *answer = ctr_mesh_new(octahedron_positions, 6, faces, 4, &err);
+    size_t steps = 0;
+    const uint32_t *h = ctr_reduce_result_contractions(rr, &steps);
+    ctr_verdict *v = ctr_check_reduce(m, answer, NULL, 0, &err);
+    CHECK(v != NULL && ctr_verdict_passed(v));
+    ctr_verdict_free(v);
+    v = ctr_check_reduce(m, answer, h, steps, &err);
+    CHECK(v != NULL && ctr_verdict_passed(v));
+    ctr_verdict_free(v);
+    v = ctr_check_reduce(m, answer, h, steps - 1, &err);
+    ctr_check_failure f = ctr_check_failure_default();
+    CHECK(v != NULL && !ctr_verdict_passed(v) && ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
+    CHECK(strcmp(f.kind, "history_mismatch") == 0);
+    ctr_verdict_free(v);
+    /* The input itself is reducible: an edge passes the link condition. */
+    v = ctr_check_reduce(m, m, NULL, 0, &err);
+    CHECK(v != NULL && ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
+    /* The first in edge order, [0, 2], located by its ends and a face on it. */
+    CHECK(strcmp(f.kind, "contractible_edge") == 0 && f.edge_from == 0 && f.edge_to == 2);
+    CHECK(f.face == 0 && f.vertex == -1 && f.component == -1);
+    ctr_verdict_free(v);
+    ctr_mesh_free(answer);
+    ctr_reduce_result_free(rr);
+
+    /* A decimation and its maps pass; a map that lies does not. */
+    ctr_decimate_options o = ctr_decimate_options_default();
+    o.faces = 4;
+    o.allow_foldover = true;
+    ctr_decimate_result *r = ctr_decimate(m, &o, &err);
+    const ctr_mesh *out = ctr_decimate_result_mesh(r);
+    const uint32_t *vm = ctr_decimate_result_vertex_map(r);
+    const uint32_t *cm = ctr_decimate_result_collapse_map(r);
+    const uint32_t *fo = ctr_decimate_result_face_origin(r);
+    v = ctr_check_decimate(m, out, &o, vm, cm, fo, &err);
+    CHECK(v != NULL && ctr_verdict_passed(v));
+    ctr_verdict_free(v);
+    v = ctr_check_decimate(m, out, &o, NULL, NULL, NULL, &err);
+    CHECK(v != NULL && ctr_verdict_passed(v));
+    ctr_verdict_free(v);
+    uint32_t lying[4];
+    memcpy(lying, vm, sizeof lying);
+    lying[0] = lying[1];
+    v = ctr_check_decimate(m, out, &o, lying, cm, fo, &err);
+    CHECK(v != NULL && ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
+    CHECK(strcmp(f.kind, "inconsistent_map") == 0);
+    ctr_verdict_free(v);
+    /* The input is no answer to a run to 4 faces with the guard off. */
+    v = ctr_check_decimate(m, m, &o, NULL, NULL, NULL, &err);
+    CHECK(v != NULL && ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
+    CHECK(strcmp(f.kind, "target_missed") == 0);
+    ctr_verdict_free(v);
+    o.keep = 3;
+    CHECK(ctr_check_decimate(m, out, &o, NULL, NULL, NULL, &err) == NULL);
+    CHECK(err.code == CTR_INPUT && strcmp(err.kind, "bad_option") == 0);
+    ctr_decimate_result_free(r);
+
+    /* Wrong calls: NULL meshes and verdicts, an input the task refuses. */
+    CHECK(ctr_check_reduce(NULL, m, NULL, 0, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_check_simplify(m, NULL, NULL, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
+    CHECK(ctr_check_decimate(m, NULL, NULL, NULL, NULL, NULL, &err) == NULL);
+    CHECK(!ctr_verdict_passed(NULL) && ctr_verdict_failure_count(NULL) == 0);
+    CHECK(ctr_verdict_failure(NULL, 0, &f, &err) == CTR_INVALID_ARGUMENT);
+    ctr_verdict_free(NULL);
+    ctr_mesh *open = ctr_mesh_new(octahedron_positions, 6, octahedron_faces, 7, &err);
+    CHECK(ctr_check_reduce(open, m, NULL, 0, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "boundary_edge") == 0);
+    ctr_mesh_free(open);
+    ctr_mesh_free(m);
+}
+
 int main(int argc, char **argv) {
     if (argc != 2) {
         fprintf(stderr, "usage: %s SCRATCH_DIR\n", argv[0]);
@@ -270,6 +488,9 @@ int main(int argc, char **argv) {
     on_arrays();
     wrong_calls();
     decimation();
+    quadrangulation();
+    simplification();
+    checking();
     files(argv[1]);
     printf("%d of %d checks passed\n", checks - failures, checks);
     return failures == 0 ? 0 : 1;
