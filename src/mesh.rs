@@ -31,6 +31,59 @@ pub type TriMesh = Mesh<3>;
 /// A quadrilateral mesh (the output of the tri-quad conversion).
 pub type QuadMesh = Mesh<4>;
 
+/// A borrowed indexed mesh: the fields of a [`Mesh`] as slices, so arrays a caller
+/// already holds (a C program's flat arrays, another library's buffers) are read in
+/// place. The tasks that take `impl Into<TriMeshRef>` ([`crate::reduce`],
+/// [`crate::quadrangulate`]) accept a `&TriMesh` or one of these, with the same results.
+///
+/// # Example
+/// ```
+/// use contractible::mesh::TriMeshRef;
+/// let octahedron = contractible::gen::octahedron();
+/// let view = TriMeshRef {
+///     vertex_count: 6,
+///     positions: octahedron.positions.as_deref(),
+///     faces: &octahedron.faces,
+/// };
+/// let r = contractible::reduce(view, &Default::default())?;
+/// assert_eq!(r.mesh.faces.len(), 4);
+/// assert_eq!(view.to_mesh(), octahedron);
+/// # Ok::<(), contractible::Error>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MeshRef<'a, const N: usize> {
+    /// Number of vertices (the length of `positions` when positions are present).
+    pub vertex_count: usize,
+    /// Vertex coordinates, if any.
+    pub positions: Option<&'a [[f64; 3]]>,
+    /// Faces as vertex indices.
+    pub faces: &'a [[u32; N]],
+}
+
+/// A borrowed triangle mesh.
+pub type TriMeshRef<'a> = MeshRef<'a, 3>;
+
+impl<const N: usize> MeshRef<'_, N> {
+    /// The owned mesh with the same fields (copies the slices).
+    pub fn to_mesh(&self) -> Mesh<N> {
+        Mesh {
+            vertex_count: self.vertex_count,
+            positions: self.positions.map(<[_]>::to_vec),
+            faces: self.faces.to_vec(),
+        }
+    }
+}
+
+impl<'a, const N: usize> From<&'a Mesh<N>> for MeshRef<'a, N> {
+    fn from(m: &'a Mesh<N>) -> Self {
+        MeshRef {
+            vertex_count: m.vertex_count,
+            positions: m.positions.as_deref(),
+            faces: &m.faces,
+        }
+    }
+}
+
 impl<const N: usize> Mesh<N> {
     /// A mesh with positions; `vertex_count` is `positions.len()`.
     pub fn with_positions(positions: Vec<[f64; 3]>, faces: Vec<[u32; N]>) -> Self {

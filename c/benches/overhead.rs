@@ -1,8 +1,9 @@
 //! The C interface's cost over the Rust call: `reduce` on B0 (the RS paper's largest
 //! genus-0 brick, 4,193,392 triangles) through `contractible::reduce`, and through the C
-//! ABI as a C program calls it (`ctr_mesh_new` copying the flat arrays, `ctr_reduce`,
-//! reading the output's arrays, both freed). Both in one run, so the ratio of the medians
-//! is like-for-like; docs/c.md quotes it.
+//! ABI as a C program calls it (a mesh over its flat arrays, `ctr_reduce`, reading the
+//! output's arrays, both freed): with `ctr_mesh_borrow` (the arrays read in place) and
+//! with `ctr_mesh_new` (copied first). All in one run, so the ratios of the medians are
+//! like-for-like; docs/c.md quotes them.
 //!
 //! Run: `cargo bench -p contractible-c --bench overhead`. Divan reports medians.
 
@@ -45,17 +46,25 @@ fn rust_reduce() -> usize {
     r.mesh.faces.len()
 }
 
-#[divan::bench(sample_count = 10, sample_size = 1)]
-fn c_reduce() -> usize {
+/// `ctr_reduce` on a mesh made by `make` over B0's flat arrays.
+fn c_reduce(
+    make: unsafe extern "C" fn(
+        *const f64,
+        usize,
+        *const u32,
+        usize,
+        *mut ctr_error,
+    ) -> *mut ctr_mesh,
+) -> usize {
     let m = b0();
     let (positions, faces) = flat();
-    // SAFETY: the arrays have the stated lengths and outlive the calls; every handle is
-    // freed once.
+    // SAFETY: the arrays have the stated lengths and outlive the calls (a borrowing mesh
+    // is freed before them); every handle is freed once.
     unsafe {
         let mut err = std::mem::MaybeUninit::<ctr_error>::uninit();
         ctr_error_init(err.as_mut_ptr());
         let err = err.as_mut_ptr();
-        let mesh = ctr_mesh_new(
+        let mesh = make(
             positions.as_ptr(),
             m.vertex_count,
             faces.as_ptr(),
@@ -70,4 +79,14 @@ fn c_reduce() -> usize {
         ctr_mesh_free(mesh);
         n
     }
+}
+
+#[divan::bench(sample_count = 10, sample_size = 1)]
+fn c_reduce_borrowed() -> usize {
+    c_reduce(ctr_mesh_borrow)
+}
+
+#[divan::bench(sample_count = 10, sample_size = 1)]
+fn c_reduce_copied() -> usize {
+    c_reduce(ctr_mesh_new)
 }

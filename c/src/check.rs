@@ -111,7 +111,7 @@ pub unsafe extern "C" fn ctr_check_reduce(
         // SAFETY: the caller promises live meshes.
         let (i, o) = unsafe { (object(input, "input")?, object(output, "output")?) };
         let v = if history.is_null() {
-            check::reduce(&i.mesh, &o.mesh)
+            check::reduce(&i.mesh(), &o.mesh())
         } else {
             let ids = history_count.checked_mul(2).ok_or_else(|| {
                 Failure::argument(format!("{history_count} contractions cannot exist"))
@@ -119,7 +119,7 @@ pub unsafe extern "C" fn ctr_check_reduce(
             // SAFETY: the caller promises `2 * history_count` readable ids.
             let h = unsafe { slice(history, ids, "history") }?;
             let pairs: Vec<[u32; 2]> = h.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
-            check::reduce_history(&i.mesh, &o.mesh, &pairs)
+            check::reduce_history(&i.mesh(), &o.mesh(), &pairs)
         };
         Ok(verdict(v.map_err(Failure::from)?))
     })
@@ -158,7 +158,7 @@ pub unsafe extern "C" fn ctr_check_simplify(
             allow_foldover: opts.allow_foldover,
         };
         Ok(verdict(
-            check::simplify(&i.mesh, &o.mesh, &c).map_err(Failure::from)?,
+            check::simplify(&i.mesh(), &o.mesh(), &c).map_err(Failure::from)?,
         ))
     })
 }
@@ -212,8 +212,8 @@ pub unsafe extern "C" fn ctr_check_quad(
             Some(t.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
         };
         let output = QuadMesh {
-            vertex_count: i.mesh.vertex_count,
-            positions: i.mesh.positions.clone(),
+            vertex_count: i.view().vertex_count,
+            positions: i.view().positions.map(<[_]>::to_vec),
             faces: q
                 .chunks_exact(4)
                 .map(|c| [c[0], c[1], c[2], c[3]])
@@ -224,7 +224,7 @@ pub unsafe extern "C" fn ctr_check_quad(
             pairs: p.as_deref(),
         };
         Ok(verdict(
-            check::quad(&i.mesh, &output, &stated).map_err(Failure::from)?,
+            check::quad(&i.mesh(), &output, &stated).map_err(Failure::from)?,
         ))
     })
 }
@@ -269,13 +269,13 @@ pub unsafe extern "C" fn ctr_check_decimate(
             }
         };
         let c = DecimateCheck {
-            vertex_map: map(vertex_map, o.mesh.vertex_count, "vertex_map")?,
-            collapse_map: map(collapse_map, i.mesh.vertex_count, "collapse_map")?,
-            face_origin: map(face_origin, o.mesh.faces.len(), "face_origin")?,
+            vertex_map: map(vertex_map, o.view().vertex_count, "vertex_map")?,
+            collapse_map: map(collapse_map, i.view().vertex_count, "collapse_map")?,
+            face_origin: map(face_origin, o.view().faces.len(), "face_origin")?,
             ..DecimateCheck::of_run(&run)
         };
         Ok(verdict(
-            check::decimate(&i.mesh, &o.mesh, &c).map_err(Failure::from)?,
+            check::decimate(&i.mesh(), &o.mesh(), &c).map_err(Failure::from)?,
         ))
     })
 }

@@ -225,7 +225,8 @@ pub unsafe extern "C" fn ctr_decimate(
         let o = unsafe { read_options(options, ctr_decimate_options_default(), "options") }?;
         // SAFETY: the caller promises `locked_count` readable ids at `locked`.
         let options = unsafe { decimate_options(&o) }?;
-        let r: DecimateResult = contractible::decimate(&m.mesh, &options).map_err(Failure::from)?;
+        let r: DecimateResult =
+            contractible::decimate(&m.mesh(), &options).map_err(Failure::from)?;
         let s = &r.stats;
         let mut stats = ctr_decimate_stats_default();
         stats.stopped = match s.stopped {
@@ -246,7 +247,7 @@ pub unsafe extern "C" fn ctr_decimate(
         stats.remaining_link_condition = s.remaining.link_condition as u64;
         stats.remaining_foldover = s.remaining.foldover as u64;
         Ok(Box::into_raw(Box::new(ctr_decimate_result {
-            mesh: ctr_mesh { mesh: r.mesh },
+            mesh: ctr_mesh::owned(r.mesh),
             vertex_map: r.vertex_map,
             collapse_map: r.collapse_map,
             face_origin: r.face_origin,

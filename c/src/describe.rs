@@ -68,7 +68,7 @@ pub unsafe extern "C" fn ctr_describe(
         let m = unsafe { object(mesh, "mesh") }?;
         // SAFETY: the caller promises a `ctr_description` from its default function.
         let out = unsafe { sized_out(out, "ctr_description_default") }?;
-        let d = contractible::describe(&m.mesh).map_err(Failure::from)?;
+        let d = contractible::describe(&m.mesh()).map_err(Failure::from)?;
         let (components, dropped) = match d {
             Description::Surfaces {
                 components,

@@ -152,7 +152,7 @@ pub unsafe extern "C" fn ctr_quadrangulate(
             ..QuadOptions::default()
         };
         let r: QuadResult =
-            contractible::quadrangulate(&m.mesh, &options).map_err(Failure::from)?;
+            contractible::quadrangulate(m.view(), &options).map_err(Failure::from)?;
         let t = &r.totals;
         let mut stats = ctr_quad_stats_default();
         stats.faces = t.faces as u64;

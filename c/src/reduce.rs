@@ -90,13 +90,13 @@ pub unsafe extern "C" fn ctr_reduce(
             keep_history: o.keep_history,
             ..ReduceOptions::default()
         };
-        let r: ReduceResult = contractible::reduce(&m.mesh, &options).map_err(Failure::from)?;
+        let r: ReduceResult = contractible::reduce(m.view(), &options).map_err(Failure::from)?;
         let contractions = r.contractions();
         Ok(Box::into_raw(Box::new(ctr_reduce_result {
             components: r.components.len(),
             vertex_map: r.vertex_map,
             contractions,
-            mesh: ctr_mesh { mesh: r.mesh },
+            mesh: ctr_mesh::owned(r.mesh),
         })))
     })
 }

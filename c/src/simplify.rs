@@ -196,7 +196,8 @@ pub unsafe extern "C" fn ctr_simplify(
         // SAFETY: NULL or a valid options struct of its stated size.
         let o = unsafe { read_options(options, ctr_simplify_options_default(), "options") }?;
         let options = simplify_options(&o)?;
-        let r: SimplifyResult = contractible::simplify(&m.mesh, &options).map_err(Failure::from)?;
+        let r: SimplifyResult =
+            contractible::simplify(&m.mesh(), &options).map_err(Failure::from)?;
         let s = &r.stats;
         let mut stats = ctr_simplify_stats_default();
         stats.eps = r.eps;
@@ -211,7 +212,7 @@ pub unsafe extern "C" fn ctr_simplify(
         stats.short_edges_remaining = s.short_edges_remaining as u64;
         stats.shortest_remaining_edge = s.shortest_remaining_edge.unwrap_or(-1.0);
         Ok(Box::into_raw(Box::new(ctr_simplify_result {
-            mesh: ctr_mesh { mesh: r.mesh },
+            mesh: ctr_mesh::owned(r.mesh),
             stats,
         })))
     })

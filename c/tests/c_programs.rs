@@ -162,6 +162,82 @@ fn file_to_file_writes_what_the_rust_call_writes() {
     assert_eq!(o.status.code(), Some(2));
 }
 
+/// Installed as docs/c.md says (the header and the static library under a prefix, the
+/// pkg-config file from `contractible.pc.in`), a program builds with `pkg-config
+/// --cflags --libs --static contractible` alone and runs.
+#[test]
+fn pkg_config_builds_a_program_against_an_installed_prefix() {
+    if Command::new("pkg-config")
+        .arg("--version")
+        .output()
+        .is_err()
+    {
+        eprintln!("pkg-config is not installed: the installed-prefix build is skipped");
+        return;
+    }
+    let d = scratch("pkg-config");
+    let prefix = d.join("prefix");
+    for sub in ["include", "lib/pkgconfig"] {
+        std::fs::create_dir_all(prefix.join(sub)).expect("the prefix's folders");
+    }
+    std::fs::copy(
+        crate_dir().join("include/contractible.h"),
+        prefix.join("include/contractible.h"),
+    )
+    .expect("installs the header");
+    std::fs::copy(
+        deps().join("libcontractible_c.a"),
+        prefix.join("lib/libcontractible_c.a"),
+    )
+    .expect("installs the library");
+    let template =
+        std::fs::read_to_string(crate_dir().join("contractible.pc.in")).expect("the template");
+    let pc = template
+        .replace("@PREFIX@", prefix.to_str().expect("a UTF-8 path"))
+        .replace("@VERSION@", env!("CARGO_PKG_VERSION"));
+    std::fs::write(prefix.join("lib/pkgconfig/contractible.pc"), pc).expect("writes it");
+    let flags = Command::new("pkg-config")
+        .args(["--cflags", "--libs", "--static", "contractible"])
+        .env("PKG_CONFIG_PATH", prefix.join("lib/pkgconfig"))
+        .output()
+        .expect("pkg-config runs");
+    assert!(
+        flags.status.success(),
+        "{}",
+        String::from_utf8_lossy(&flags.stderr)
+    );
+    let flags = String::from_utf8(flags.stdout).expect("UTF-8 flags");
+    assert!(
+        flags.contains("-lcontractible_c") && flags.contains("-lpthread"),
+        "{flags}"
+    );
+    let version = Command::new("pkg-config")
+        .args(["--modversion", "contractible"])
+        .env("PKG_CONFIG_PATH", prefix.join("lib/pkgconfig"))
+        .output()
+        .expect("pkg-config runs");
+    assert_eq!(
+        String::from_utf8_lossy(&version.stdout).trim(),
+        env!("CARGO_PKG_VERSION")
+    );
+    let exe = d.join("file_to_file");
+    let o = Command::new("cc")
+        .args(["-std=c11", "-Wall", "-Wextra", "-Werror", "-pedantic"])
+        .arg(crate_dir().join("examples/file_to_file.c"))
+        .args(flags.split_whitespace())
+        .arg("-o")
+        .arg(&exe)
+        .output()
+        .expect("cc runs");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let input = crate_dir()
+        .join("..")
+        .join("tests/data/meshes/closed/high_genus_3.off.gz");
+    let o = run(&exe, &[&input, &d.join("out.off")]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("17 vertices"));
+}
+
 #[test]
 fn the_cpp_layer_gives_values_and_exceptions() {
     let d = scratch("cpp");

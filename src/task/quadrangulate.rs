@@ -2,7 +2,7 @@
 //! triangles of every component.
 
 use crate::core::{FaceId, Triangulation, VertexId};
-use crate::mesh::{QuadMesh, TriMesh};
+use crate::mesh::{QuadMesh, TriMeshRef};
 use crate::quad::{self, Algorithm, Quadrangulation, DS_NAIVE_MAX_FACES};
 use crate::topology::SurfaceType;
 
@@ -234,7 +234,7 @@ struct Origin {
 /// and the pairing is perfect with every pair sharing an edge of `K`. The task's output
 /// (quads, triangles, pairs) is read from `K`'s face lists and the pairing alone, which
 /// is what this checks.
-fn verify_component(mesh: &TriMesh, origin: &Origin, q: &Quadrangulation) -> bool {
+fn verify_component(mesh: TriMeshRef<'_>, origin: &Origin, q: &Quadrangulation) -> bool {
     let k = &q.tri;
     let (n, m) = (origin.vertex_origin.len(), origin.face_origin.len());
     let faces_unchanged = k.face_capacity() == m
@@ -288,7 +288,11 @@ fn quad_of_faces(f: [u32; 3], g: [u32; 3]) -> Option<[u32; 4]> {
 /// assert_eq!(q.mesh.faces.len(), 4);
 /// # Ok::<(), contractible::Error>(())
 /// ```
-pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult, Error> {
+pub fn quadrangulate<'a>(
+    mesh: impl Into<TriMeshRef<'a>>,
+    options: &QuadOptions,
+) -> Result<QuadResult, Error> {
+    let mesh: TriMeshRef<'a> = mesh.into();
     let monitor = &options.monitor;
     let algorithm = options.algorithm;
     position_count(mesh)?;
@@ -368,7 +372,7 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
     }
     let mut quads: Vec<[u32; 4]> = Vec::with_capacity(mesh.faces.len() / 2);
     let mut pairs: Vec<[u32; 2]> = Vec::with_capacity(mesh.faces.len() / 2);
-    let mut triangles = mesh.faces.clone();
+    let mut triangles = mesh.faces.to_vec();
     let mut components = Vec::with_capacity(n);
     for ((origin, q), ok) in done.iter().zip(verdicts) {
         // The rows of `K` first, in mesh ids; each quad is then read from its pair's rows.
@@ -400,7 +404,7 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
     Ok(QuadResult {
         mesh: QuadMesh {
             vertex_count: mesh.vertex_count,
-            positions: mesh.positions.clone(),
+            positions: mesh.positions.map(<[_]>::to_vec),
             faces: quads,
         },
         triangles,
@@ -417,6 +421,7 @@ pub fn quadrangulate(mesh: &TriMesh, options: &QuadOptions) -> Result<QuadResult
 mod tests {
     use super::*;
     use crate::gen;
+    use crate::TriMesh;
 
     /// Every algorithm on two components with positions: the quads carry the input's
     /// positions, cover each input triangle exactly once (by the pairs), and each quad is
@@ -563,28 +568,31 @@ mod tests {
         let opts = Options { seed: 1 };
         for algorithm in Algorithm::ALL {
             let q = convert(c.tri.clone(), algorithm, &opts).expect("converted");
-            assert!(verify_component(&mesh, &origin, &q), "{algorithm}");
+            assert!(verify_component((&mesh).into(), &origin, &q), "{algorithm}");
         }
         let lrs = convert(c.tri.clone(), Algorithm::Lrs, &opts).expect("converted");
         assert!(lrs.tri != c.tri, "LRS flipped no edge on this input");
         let ps = convert(c.tri.clone(), Algorithm::PulliSegal, &opts).expect("converted");
 
         let other = convert(klein, Algorithm::PulliSegal, &opts).expect("converted");
-        assert!(!verify_component(&mesh, &origin, &other), "another surface");
+        assert!(
+            !verify_component((&mesh).into(), &origin, &other),
+            "another surface"
+        );
 
         let mut broken = ps.clone();
         broken.tri.corner_vertex[0] = broken.tri.corner_vertex[1];
         assert!(
-            !verify_component(&mesh, &origin, &broken),
+            !verify_component((&mesh).into(), &origin, &broken),
             "a corrupted face"
         );
         let mut adjacency = ps.clone();
         adjacency.tri.degree[0] += 1;
-        assert!(verify_component(&mesh, &origin, &adjacency));
+        assert!(verify_component((&mesh).into(), &origin, &adjacency));
 
         for q in [&lrs, &ps] {
             for (wrong, what) in wrong_pairings(q) {
-                assert!(!verify_component(&mesh, &origin, &wrong), "{what}");
+                assert!(!verify_component((&mesh).into(), &origin, &wrong), "{what}");
             }
         }
     }

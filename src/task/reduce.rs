@@ -2,7 +2,7 @@
 
 use crate::core::{BuildError, Surfaces, Triangulation};
 use crate::irreducible::{self, Algorithm, Reduction};
-use crate::mesh::TriMesh;
+use crate::mesh::{TriMesh, TriMeshRef};
 use crate::topology::SurfaceType;
 
 use super::{Error, Monitor, Step};
@@ -267,8 +267,8 @@ fn check_irreducible_with(tri: &Triangulation, naive_max_edges: usize) -> Irredu
 /// Positions, when `mesh` has them, must be one per vertex: the combinatorial tasks carry
 /// them over to their outputs (reassembled by vertex), so a mesh with too few or too many
 /// is the input's fault ([`Error::PositionCount`]), not an output that fails to map back.
-pub(crate) fn position_count(mesh: &TriMesh) -> Result<(), Error> {
-    match &mesh.positions {
+pub(crate) fn position_count(mesh: TriMeshRef<'_>) -> Result<(), Error> {
+    match mesh.positions {
         Some(p) if p.len() != mesh.vertex_count => Err(Error::PositionCount {
             vertices: mesh.vertex_count,
             positions: p.len(),
@@ -281,18 +281,18 @@ pub(crate) fn position_count(mesh: &TriMesh) -> Result<(), Error> {
 /// with a boundary edge reported as [`Error::NotClosed`] (naming the mesh's boundary
 /// loops when it is a surface with boundary).
 pub(crate) fn closed_surfaces(
-    mesh: &TriMesh,
+    mesh: TriMeshRef<'_>,
     task: &'static str,
     monitor: &Monitor,
 ) -> Result<Surfaces, Error> {
     monitor.step(Step::Build, 0, 0, mesh.faces.len())?;
-    Surfaces::from_mesh(mesh).map_err(|e| match e {
+    Surfaces::from_faces(mesh.vertex_count, mesh.faces).map_err(|e| match e {
         BuildError::BoundaryEdge { a, b, face } => Error::NotClosed {
             task,
             a,
             b,
             face,
-            boundary_loops: crate::core::ConedSurfaces::from_mesh(mesh)
+            boundary_loops: crate::core::ConedSurfaces::from_faces(mesh.vertex_count, mesh.faces)
                 .ok()
                 .map(|s| s.loop_count()),
         },
@@ -323,7 +323,11 @@ pub(crate) fn closed_surfaces(
 /// assert_eq!(r.totals.irreducible, Some(true));
 /// # Ok::<(), contractible::Error>(())
 /// ```
-pub fn reduce(mesh: &TriMesh, options: &ReduceOptions) -> Result<ReduceResult, Error> {
+pub fn reduce<'a>(
+    mesh: impl Into<TriMeshRef<'a>>,
+    options: &ReduceOptions,
+) -> Result<ReduceResult, Error> {
+    let mesh: TriMeshRef<'a> = mesh.into();
     let monitor = &options.monitor;
     position_count(mesh)?;
     let started = std::time::Instant::now();
@@ -382,7 +386,7 @@ pub fn reduce(mesh: &TriMesh, options: &ReduceOptions) -> Result<ReduceResult, E
     let totals = ReduceStats::total(options.algorithm, &stats);
     let out = TriMesh::reassemble(
         mesh.vertex_count,
-        mesh.positions.as_deref(),
+        mesh.positions,
         components
             .iter()
             .map(|c| (&c.reduction.tri, &c.vertex_origin[..])),

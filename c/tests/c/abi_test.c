@@ -67,6 +67,39 @@ static void on_arrays(void) {
     ctr_reduce_result_free(r);
     r = ctr_reduce(m, NULL, &err);
     CHECK(r != NULL && err.code == CTR_OK);
+
+    /* A mesh over the caller's arrays, read in place: the same answers. */
+    ctr_mesh *b = ctr_mesh_borrow(octahedron_positions, 6, octahedron_faces, 8, &err);
+    CHECK(b != NULL && err.code == CTR_OK);
+    CHECK(ctr_mesh_positions(b) == octahedron_positions && ctr_mesh_faces(b) == octahedron_faces);
+    CHECK(ctr_mesh_vertex_count(b) == 6 && ctr_mesh_face_count(b) == 8);
+    ctr_reduce_result *rb = ctr_reduce(b, NULL, &err);
+    CHECK(rb != NULL && err.code == CTR_OK);
+    const ctr_mesh *x = ctr_reduce_result_mesh(r), *y = ctr_reduce_result_mesh(rb);
+    CHECK(ctr_mesh_face_count(x) == ctr_mesh_face_count(y));
+    CHECK(memcmp(ctr_mesh_faces(x), ctr_mesh_faces(y), 3 * sizeof(uint32_t) * ctr_mesh_face_count(x)) == 0);
+    CHECK(memcmp(ctr_reduce_result_vertex_map(r), ctr_reduce_result_vertex_map(rb),
+                 sizeof(uint32_t) * ctr_mesh_vertex_count(x)) == 0);
+    ctr_reduce_result_free(rb);
+    ctr_description db = ctr_description_default();
+    CHECK(ctr_describe(b, &db, &err) == CTR_OK && db.euler_characteristic == 2 && db.faces == 8);
+    ctr_quad_result *qb = ctr_quadrangulate(b, NULL, &err);
+    CHECK(qb != NULL && err.code == CTR_OK);
+    ctr_quad_result_free(qb);
+    ctr_mesh_free(b);
+    /* Without positions, and empty: fine; a NULL or misaligned array with a count: refused. */
+    b = ctr_mesh_borrow(NULL, 6, octahedron_faces, 8, &err);
+    CHECK(b != NULL && ctr_mesh_positions(b) == NULL);
+    ctr_mesh_free(b);
+    b = ctr_mesh_borrow(NULL, 0, NULL, 0, &err);
+    CHECK(b != NULL && ctr_mesh_face_count(b) == 0 && ctr_mesh_faces(b) != NULL);
+    CHECK(ctr_reduce(b, NULL, &err) == NULL && err.code == CTR_INPUT);
+    ctr_mesh_free(b);
+    CHECK(ctr_mesh_borrow(octahedron_positions, 6, NULL, 8, &err) == NULL);
+    CHECK(err.code == CTR_INVALID_ARGUMENT && strstr(err.message, "faces is NULL") != NULL);
+    CHECK(ctr_mesh_borrow((const double *)((const char *)octahedron_positions + 4), 6,
+                          octahedron_faces, 8, &err) == NULL);
+    CHECK(err.code == CTR_INVALID_ARGUMENT && strstr(err.message, "aligned") != NULL);
     ctr_reduce_result_free(r);
     ctr_mesh_free(m);
 }
