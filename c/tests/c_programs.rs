@@ -1,8 +1,10 @@
 //! C programs against the static library, compiled by the system's compiler with
-//! warnings as errors and run: the example `file_to_file.c` (its output file is the Rust
-//! call's, byte for byte) and `tests/c/abi_test.c` (every function, right and wrong
-//! calls), also as C++ (the header's `extern "C"`), and both under valgrind's memcheck
-//! when it is installed (no leak, no invalid access, the error paths included).
+//! warnings as errors and run: the examples (`file_to_file.c` and the C++
+//! `decimate_file.cpp` write the Rust call's bytes), `tests/c/abi_test.c` (every
+//! function, right and wrong calls, also compiled as C++: the header's `extern "C"`),
+//! `tests/c/hpp_test.cpp` (the C++ layer), the conformance adapter over the whole suite,
+//! a build through the pkg-config file, and all of them under valgrind's memcheck when it
+//! is installed (no leak, no invalid access, the error paths included).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -108,6 +110,22 @@ fn the_abi_test_passes_in_c_and_cpp_and_under_memcheck() {
             memcheck(&exe, &[&d]);
         }
     }
+}
+
+#[test]
+fn the_cpp_layer_test_passes_and_under_memcheck() {
+    let d = scratch("hpp");
+    let source = crate_dir().join("tests").join("c").join("hpp_test.cpp");
+    let exe = compile("c++", "c++17", &source, &d.join("hpp_test"));
+    let o = run(&exe, &[]);
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{out}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("checks passed"), "{out}");
+    memcheck(&exe, &[]);
 }
 
 #[test]
@@ -271,6 +289,55 @@ fn the_cpp_layer_gives_values_and_exceptions() {
         "{out}"
     );
     memcheck(&exe, &[]);
+}
+
+#[test]
+fn the_cpp_decimation_writes_what_the_rust_call_writes_and_passes_the_checker() {
+    let d = scratch("cpp-decimate");
+    let source = crate_dir().join("examples").join("decimate_file.cpp");
+    let exe = compile("c++", "c++17", &source, &d.join("decimate_file"));
+    let input = crate_dir()
+        .join("..")
+        .join("tests/data/meshes/closed/high_genus_3.off.gz");
+    let out = d.join("decimated.off");
+    let o = run(&exe, &[&input, &out, Path::new("1000")]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        o.status.success(),
+        "{text}\n{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    // The Rust call: the same file, the same report.
+    let mesh = contractible::io::read_tri_mesh(&input).expect("reads");
+    let r = contractible::decimate(&mesh, &contractible::DecimateOptions::faces(1000))
+        .expect("decimates");
+    let theirs = d.join("rust.off");
+    contractible::io::write_mesh(&theirs, &r.mesh).expect("writes");
+    assert_eq!(
+        std::fs::read(&out).unwrap(),
+        std::fs::read(&theirs).unwrap()
+    );
+    assert!(
+        text.contains(&format!(
+            "3328 faces -> {}: {} faces (target reached), largest error",
+            out.display(),
+            r.mesh.faces.len()
+        )) && text.trim_end().ends_with("checked"),
+        "{text}"
+    );
+    memcheck(&exe, &[&input, &d.join("again.off"), Path::new("600")]);
+    // An input decimate refuses: the error's code, its kind named.
+    let invalid = crate_dir()
+        .join("..")
+        .join("tests/data/meshes/invalid/shared_edge_stl.off.gz");
+    let o = run(&exe, &[&invalid, &out, Path::new("10")]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        String::from_utf8_lossy(&o.stderr).starts_with("error ("),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    memcheck(&exe, &[&invalid, &out, Path::new("10")]);
 }
 
 /// The command line built beside this test (the workspace's test command builds it).
