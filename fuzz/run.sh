@@ -17,7 +17,7 @@ shift
 here=$(cd "$(dirname "$0")" && pwd)
 cd "$here"
 
-all_targets=(surface_ops rs_vertex_orders contract_split journal_ops quad_ops simplify decimate tasks check check_simplify check_quad check_decimate parse_off parse_obj parse_ply parse_stl parse_any poly_weld)
+all_targets=(surface_ops rs_vertex_orders contract_split journal_ops quad_ops simplify decimate tasks check check_simplify check_quad check_decimate parse_off parse_obj parse_ply parse_stl parse_any poly_weld c_abi)
 if [ $# -gt 0 ]; then targets=("$@"); else targets=("${all_targets[@]}"); fi
 
 export RUSTC_BOOTSTRAP=1

@@ -768,3 +768,69 @@ fn the_guard_decides_each_moved_triangle_as_the_librarys() {
         "{allowed} allowed, {refused} refused"
     );
 }
+
+/// `mesh` with every position multiplied by `s`.
+fn scaled(mesh: &TriMesh, s: f64) -> TriMesh {
+    let mut m = mesh.clone();
+    for p in m.positions.as_mut().expect("positions") {
+        *p = p.map(|x| x * s);
+    }
+    m
+}
+
+/// A verdict without its sentences (which print lengths): what, where, how many.
+type Located = (
+    Vec<(FailureKind, Option<usize>, Option<[u32; 2]>, Option<u32>)>,
+    Vec<(FailureKind, usize)>,
+);
+
+fn located(v: &Verdict) -> Located {
+    let failures = v
+        .failures
+        .iter()
+        .map(|f| (f.kind, f.face, f.edge, f.vertex))
+        .collect();
+    (failures, v.counts.clone())
+}
+
+/// Scaling the input and the output by a power of two changes no verdict, even where the
+/// squared lengths and the areas of the scaled meshes leave the `f64` range (2^±560: the
+/// checker works on coordinates brought near 1 by a power of two, exactly).
+#[test]
+fn verdicts_are_the_same_at_every_power_of_two_scale() {
+    let mut failing = 0;
+    for (name, mesh) in geometric() {
+        for allow_foldover in [false, true] {
+            let run = |rel| {
+                run_simplify(
+                    &mesh,
+                    &options(
+                        Mode::Naive,
+                        Position::Midpoint,
+                        allow_foldover,
+                        Eps::Relative(rel),
+                    ),
+                )
+                .expect("simplifies")
+            };
+            // The library's output, one that stops early, and the input itself.
+            let outputs = [run(0.05).mesh, run(0.02).mesh, mesh.clone()];
+            let check = SimplifyCheck {
+                allow_foldover,
+                ..SimplifyCheck::relative(0.05)
+            };
+            for (k, out) in outputs.iter().enumerate() {
+                let label = format!("{name} {allow_foldover} output {k}");
+                let at_one = simplify(&mesh, out, &check).expect("valid");
+                failing += usize::from(!at_one.passed());
+                for e in [560, -560, 3] {
+                    let s = 2f64.powi(e);
+                    let v = simplify(&scaled(&mesh, s), &scaled(out, s), &check)
+                        .unwrap_or_else(|err| panic!("{label} at 2^{e}: {err}"));
+                    assert_eq!(located(&v), located(&at_one), "{label} at 2^{e}");
+                }
+            }
+        }
+    }
+    assert!(failing >= 12, "{failing} failing verdicts compared");
+}

@@ -340,6 +340,8 @@ static void quadrangulation(void) {
     ctr_verdict *v = ctr_check_quad(m, q, 4, k, triangles, NULL, &err);
     CHECK(v != NULL && !ctr_verdict_passed(v) && ctr_verdict_failure_count(v) >= 1);
     ctr_check_failure f = ctr_check_failure_default();
+    CHECK(f.size == sizeof f && f.kind == NULL && f.message == NULL && f.face == -1);
+    CHECK(f.edge_from == -1 && f.edge_to == -1 && f.vertex == -1 && f.component == -1);
     CHECK(ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
     CHECK(strcmp(f.kind, "triangle_used_twice") == 0 && strlen(f.message) > 0);
     CHECK(ctr_verdict_failure(v, 99, &f, &err) == CTR_INVALID_ARGUMENT);
