@@ -344,6 +344,9 @@ static void quadrangulation(void) {
     CHECK(f.edge_from == -1 && f.edge_to == -1 && f.vertex == -1 && f.component == -1);
     CHECK(ctr_verdict_failure(v, 0, &f, &err) == CTR_OK);
     CHECK(strcmp(f.kind, "triangle_used_twice") == 0 && strlen(f.message) > 0);
+    /* A stated triangle, not an output face, edge or vertex: no location. */
+    CHECK(f.face == -1 && f.edge_from == -1 && f.edge_to == -1 && f.vertex == -1);
+    CHECK(f.component == -1 && f.size == sizeof f);
     CHECK(ctr_verdict_failure(v, 99, &f, &err) == CTR_INVALID_ARGUMENT);
     f.size = 4;
     CHECK(ctr_verdict_failure(v, 0, &f, &err) == CTR_INVALID_ARGUMENT);
