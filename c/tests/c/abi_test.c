@@ -111,6 +111,7 @@ static void wrong_calls(void) {
     CHECK(ctr_mesh_new(NULL, 6, NULL, 8, &err) == NULL);
     CHECK(err.code == CTR_INVALID_ARGUMENT && strcmp(err.kind, "invalid_argument") == 0);
     CHECK(strstr(err.message, "faces is NULL") != NULL);
+    CHECK(err.face == -1 && err.vertex == -1 && err.line == -1);
     uint32_t buffer[32];
     const uint32_t *odd = (const uint32_t *)((const char *)buffer + 1);
     CHECK(ctr_mesh_new(NULL, 6, odd, 8, &err) == NULL && err.code == CTR_INVALID_ARGUMENT);
