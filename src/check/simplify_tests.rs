@@ -834,3 +834,63 @@ fn verdicts_are_the_same_at_every_power_of_two_scale() {
     }
     assert!(failing >= 12, "{failing} failing verdicts compared");
 }
+
+/// A face list on one used vertex (a degenerate face) is refused as the library refuses
+/// it, not as "every vertex at one point" (which needs two vertices to say anything).
+#[test]
+fn a_single_used_vertex_is_refused_as_the_library_refuses_it() {
+    let one = TriMesh::with_positions(vec![[1.0, 2.0, 3.0]; 2], vec![[0, 0, 0]]);
+    let e = simplify(&one, &one, &SimplifyCheck::relative(0.05)).expect_err("refused");
+    let lib = run_simplify(&one, &SimplifyOptions::relative(0.05)).expect_err("refused");
+    assert_eq!((e.kind(), e.to_string()), (lib.kind(), lib.to_string()));
+    assert_ne!(e.kind(), "no_coordinates");
+}
+
+/// A grid in a tilted plane far from the origin (every coordinate near 10), one interior
+/// vertex moved towards a neighbour so that their edge is the only one shorter than ε:
+/// the guard allows it at its true midpoint, so an output that kept it stopped early. A
+/// guard tried at any other point (a coordinate of the midpoint computed wrongly lands
+/// about 10 away, outside the edge's fan) would refuse it and pass the output.
+#[test]
+fn a_short_edge_the_guard_allows_at_its_midpoint_is_flagged() {
+    let n = 5u32;
+    let id = |i: u32, j: u32| i * n + j;
+    let mut positions: Vec<[f64; 3]> = (0..n * n)
+        .map(|v| {
+            let (i, j) = (f64::from(v / n), f64::from(v % n));
+            [10.0 + i, 10.0 + j, 10.0 + 0.5 * i + 0.5 * j]
+        })
+        .collect();
+    let mut faces = Vec::new();
+    for i in 0..n - 1 {
+        for j in 0..n - 1 {
+            faces.push([id(i, j), id(i + 1, j), id(i + 1, j + 1)]);
+            faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
+        }
+    }
+    // b moves to 0.3 of the way from a: |ab| = 0.3 · |(1, 0, 0.5)| ≈ 0.34, every other
+    // edge at least 0.7 · 1.1.
+    let (a, b) = (id(2, 2), id(3, 2));
+    let (pa, pb) = (positions[a as usize], positions[b as usize]);
+    positions[b as usize] = [0, 1, 2].map(|k| pa[k] + 0.3 * (pb[k] - pa[k]));
+    let grid = TriMesh::with_positions(positions, faces);
+    let eps = Eps::Absolute(0.5);
+    let check = SimplifyCheck {
+        eps,
+        position: Position::Midpoint,
+        allow_foldover: false,
+    };
+    let v = simplify(&grid, &grid, &check).expect("valid");
+    let edges: Vec<_> = v.failures.iter().map(|f| (f.kind, f.edge)).collect();
+    assert_eq!(
+        edges,
+        [(FailureKind::ShortContractibleEdge, Some([a, b]))],
+        "{:?}",
+        v.failures
+    );
+    // The library contracts exactly that edge, and its output passes.
+    let midpoints = options(Mode::Naive, Position::Midpoint, false, eps);
+    let r = run_simplify(&grid, &midpoints).expect("runs");
+    assert_eq!(r.stats.edges_contracted, 1);
+    assert!(simplify(&grid, &r.mesh, &check).expect("valid").passed());
+}
