@@ -178,6 +178,39 @@ static void wrong_calls(void) {
     CHECK(err.face == 8 && err.vertex == 6);
     ctr_mesh_free(m);
 
+    /* A pinched vertex (two tetrahedra sharing vertex 0): located by the vertex. */
+    static const uint32_t pinched[24] = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2,
+                                         0, 4, 5, 0, 6, 4, 0, 5, 6, 4, 6, 5};
+    m = ctr_mesh_new(NULL, 7, pinched, 8, &err);
+    CHECK(ctr_reduce(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(err.vertex == 0 && err.face == -1 && err.line == -1);
+    ctr_mesh_free(m);
+    /* A coordinate that is not finite: located by its vertex. */
+    double bad[18];
+    memcpy(bad, octahedron_positions, sizeof bad);
+    bad[3 * 4 + 1] = 1.0 / 0.0;
+    m = ctr_mesh_new(bad, 6, octahedron_faces, 8, &err);
+    CHECK(ctr_simplify(m, NULL, &err) == NULL && err.code == CTR_INPUT);
+    CHECK(strcmp(err.kind, "non_finite_coordinate") == 0 && err.vertex == 4 && err.face == -1);
+    ctr_mesh_free(m);
+    /* A message longer than the struct holds is cut at a UTF-8 character boundary: a path of
+     * two-byte characters, at two offsets so that one of them ends mid-character. */
+    for (int offset = 0; offset < 2; offset++) {
+        char path[2000] = "/nonexistent/";
+        size_t n = strlen(path);
+        if (offset) path[n++] = 'a';
+        for (int i = 0; i < 600; i++) {
+            path[n++] = (char)0xc3;
+            path[n++] = (char)0xa9; /* U+00E9 */
+            if (i % 100 == 99) path[n++] = '/';
+        }
+        strcpy(path + n, "x.off");
+        CHECK(ctr_mesh_read(path, &err) == NULL && err.code == CTR_INPUT);
+        size_t len = strlen(err.message);
+        CHECK(len >= CTR_MESSAGE_LEN - 2 && len <= CTR_MESSAGE_LEN - 1);
+        CHECK((unsigned char)err.message[len - 1] != 0xc3);
+    }
+
     /* A shorter, older error struct: nothing written past its size. */
     struct {
         ctr_error e;
@@ -283,6 +316,7 @@ static void decimation(void) {
     o.keep = 2.0;
     CHECK(ctr_decimate(m, &o, &err) == NULL && err.code == CTR_INPUT);
     CHECK(strcmp(err.kind, "bad_option") == 0);
+    CHECK(err.face == -1 && err.vertex == -1 && err.line == -1);
     s.size = 12;
     CHECK(ctr_decimate_result_stats(NULL, &s, &err) == CTR_INVALID_ARGUMENT);
     CHECK(ctr_decimate_result_mesh(NULL) == NULL && ctr_decimate_result_collapse_map(NULL) == NULL);
