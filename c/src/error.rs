@@ -439,9 +439,21 @@ mod tests {
         assert_eq!((v, e.code), (7, CTR_INTERNAL));
         assert!(text(&e.message).contains("boom"), "{}", text(&e.message));
         assert_eq!(text(&e.kind), "internal");
+        assert_eq!((e.face, e.vertex, e.line), (-1, -1, -1), "no location");
+        let located = || -> Result<i32, Failure> {
+            Err(Failure {
+                face: 4,
+                vertex: 5,
+                line: 6,
+                ..Failure::argument("located")
+            })
+        };
+        assert_eq!(guard(&mut e, 7, located), 7);
+        assert_eq!((e.face, e.vertex, e.line), (4, 5, 6));
         let v = guard(&mut e, 7, || Ok(3));
         assert_eq!((v, e.code), (3, CTR_OK));
         assert_eq!(text(&e.kind), "");
+        assert_eq!((e.face, e.vertex, e.line), (-1, -1, -1), "cleared");
         // A status is the failure's code, with or without an error struct.
         let bad = || Err(Failure::argument("no"));
         assert_eq!(status(&mut e, bad), CTR_INVALID_ARGUMENT);
