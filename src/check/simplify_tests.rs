@@ -846,21 +846,17 @@ fn a_single_used_vertex_is_refused_as_the_library_refuses_it() {
     assert_ne!(e.kind(), "no_coordinates");
 }
 
-/// A grid in a tilted plane far from the origin (every coordinate near 10), one interior
-/// vertex moved towards a neighbour so that their edge is the only one shorter than ε:
-/// the guard allows it at its true midpoint, so an output that kept it stopped early. A
-/// guard tried at any other point (a coordinate of the midpoint computed wrongly lands
-/// about 10 away, outside the edge's fan) would refuse it and pass the output.
+/// A grid in a coordinate plane far from the origin (every coordinate near 10), one
+/// interior vertex moved towards a neighbour so that their edge is the only one shorter
+/// than ε: the guard allows it at its true midpoint, so an output that kept it stopped
+/// early. A guard tried at another point (a coordinate of the midpoint computed wrongly
+/// lands about 10 away, outside the edge's fan in the planes that contain that axis)
+/// would refuse it and pass the output. The coordinates are multiples of 1/8, so the
+/// verdict is also the same, exactly, on the grid scaled into the subnormal range.
 #[test]
 fn a_short_edge_the_guard_allows_at_its_midpoint_is_flagged() {
     let n = 5u32;
     let id = |i: u32, j: u32| i * n + j;
-    let mut positions: Vec<[f64; 3]> = (0..n * n)
-        .map(|v| {
-            let (i, j) = (f64::from(v / n), f64::from(v % n));
-            [10.0 + i, 10.0 + j, 10.0 + 0.5 * i + 0.5 * j]
-        })
-        .collect();
     let mut faces = Vec::new();
     for i in 0..n - 1 {
         for j in 0..n - 1 {
@@ -868,29 +864,53 @@ fn a_short_edge_the_guard_allows_at_its_midpoint_is_flagged() {
             faces.push([id(i, j), id(i + 1, j + 1), id(i, j + 1)]);
         }
     }
-    // b moves to 0.3 of the way from a: |ab| = 0.3 · |(1, 0, 0.5)| ≈ 0.34, every other
-    // edge at least 0.7 · 1.1.
     let (a, b) = (id(2, 2), id(3, 2));
-    let (pa, pb) = (positions[a as usize], positions[b as usize]);
-    positions[b as usize] = [0, 1, 2].map(|k| pa[k] + 0.3 * (pb[k] - pa[k]));
-    let grid = TriMesh::with_positions(positions, faces);
-    let eps = Eps::Absolute(0.5);
-    let check = SimplifyCheck {
-        eps,
-        position: Position::Midpoint,
-        allow_foldover: false,
-    };
-    let v = simplify(&grid, &grid, &check).expect("valid");
-    let edges: Vec<_> = v.failures.iter().map(|f| (f.kind, f.edge)).collect();
-    assert_eq!(
-        edges,
-        [(FailureKind::ShortContractibleEdge, Some([a, b]))],
-        "{:?}",
-        v.failures
-    );
-    // The library contracts exactly that edge, and its output passes.
-    let midpoints = options(Mode::Naive, Position::Midpoint, false, eps);
-    let r = run_simplify(&grid, &midpoints).expect("runs");
-    assert_eq!(r.stats.edges_contracted, 1);
-    assert!(simplify(&grid, &r.mesh, &check).expect("valid").passed());
+    // The grid's two directions along axes `u` and `w`, the third coordinate 10.
+    for (u, w) in [(0, 1), (1, 2), (2, 0)] {
+        let mut positions: Vec<[f64; 3]> = (0..n * n)
+            .map(|v| {
+                let mut p = [10.0; 3];
+                p[u] += f64::from(v / n);
+                p[w] += f64::from(v % n);
+                p
+            })
+            .collect();
+        // b moves to a quarter of the way from a: |ab| = 0.25, every other edge at
+        // least 0.75.
+        let (pa, pb) = (positions[a as usize], positions[b as usize]);
+        positions[b as usize] = [0, 1, 2].map(|k| pa[k] + 0.25 * (pb[k] - pa[k]));
+        let grid = TriMesh::with_positions(positions, faces.clone());
+        let check = |s: f64| SimplifyCheck {
+            eps: Eps::Absolute(0.5 * s),
+            position: Position::Midpoint,
+            allow_foldover: false,
+        };
+        let label = format!("plane of axes {u} and {w}");
+        let v = simplify(&grid, &grid, &check(1.0)).expect("valid");
+        let edges: Vec<_> = v.failures.iter().map(|f| (f.kind, f.edge)).collect();
+        assert_eq!(
+            edges,
+            [(FailureKind::ShortContractibleEdge, Some([a, b]))],
+            "{label}: {:?}",
+            v.failures
+        );
+        for e in [-1068, 600] {
+            // 2^e from its bits (`powi` would go through 2^1068, which overflows).
+            let s = if e < -1022 {
+                f64::from_bits(1 << (e + 1074))
+            } else {
+                f64::from_bits(((e + 1023) as u64) << 52)
+            };
+            let tiny = scaled(&grid, s);
+            let at_scale = simplify(&tiny, &tiny, &check(s)).expect("valid");
+            assert_eq!(located(&at_scale), located(&v), "{label} at 2^{e}");
+        }
+        // The library contracts exactly that edge, and its output passes.
+        let midpoints = options(Mode::Naive, Position::Midpoint, false, Eps::Absolute(0.5));
+        let r = run_simplify(&grid, &midpoints).expect("runs");
+        assert_eq!(r.stats.edges_contracted, 1, "{label}");
+        assert!(simplify(&grid, &r.mesh, &check(1.0))
+            .expect("valid")
+            .passed());
+    }
 }
