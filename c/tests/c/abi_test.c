@@ -417,6 +417,7 @@ static void simplification(void) {
     /* The defaults: every edge (1.41) is longer than 1 % of the diagonal (3.46). */
     ctr_simplify_result *r = ctr_simplify(m, NULL, &err);
     ctr_simplify_stats s = ctr_simplify_stats_default();
+    CHECK(s.size == sizeof s && s.shortest_remaining_edge == -1 && s.faces_in == 0);
     CHECK(r != NULL && ctr_simplify_result_stats(r, &s, &err) == CTR_OK);
     CHECK(s.faces_in == 8 && s.faces_out == 8 && s.edges_contracted == 0);
     CHECK(s.shortest_remaining_edge > 1.41 && s.shortest_remaining_edge < 1.42);
@@ -442,6 +443,18 @@ static void simplification(void) {
     CHECK(strcmp(f.kind, "short_contractible_edge") == 0);
     CHECK(f.edge_from >= 0 && f.edge_from < f.edge_to && f.edge_to < 6);
     ctr_verdict_free(v);
+    /* Quadric positions: the same contractions, other positions (the octahedron's
+     * vertices pulled towards its faces' planes, not to edge midpoints). */
+    ctr_simplify_options oq = o;
+    oq.position = CTR_POSITION_QUADRIC;
+    ctr_simplify_result *rq = ctr_simplify(m, &oq, &err);
+    CHECK(rq != NULL && ctr_mesh_face_count(ctr_simplify_result_mesh(rq)) == 4);
+    CHECK(rq && memcmp(ctr_mesh_positions(ctr_simplify_result_mesh(rq)), ctr_mesh_positions(out),
+                       12 * sizeof(double)) != 0);
+    v = ctr_check_simplify(m, ctr_simplify_result_mesh(rq), &oq, &err);
+    CHECK(v != NULL && ctr_verdict_passed(v));
+    ctr_verdict_free(v);
+    ctr_simplify_result_free(rq);
     ctr_simplify_result_free(r);
 
     /* Wrong calls: unknown names, ε zero, no positions. */
