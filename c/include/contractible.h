@@ -592,7 +592,7 @@ void ctr_error_init(struct ctr_error *err);
 struct ctr_mesh *ctr_mesh_new(const double *positions, size_t vertex_count, const uint32_t *faces, size_t face_count, struct ctr_error *err);
 
 // A mesh over the caller's flat arrays, read in place: as `ctr_mesh_new` but without
-// the copy, for large meshes (the copy costs about 5 % of a `ctr_reduce` on 4 million
+// the copy, for large meshes (the copy costs about a tenth of a `ctr_reduce` on 4 million
 // triangles). `ctr_reduce` and `ctr_quadrangulate` read the arrays where they are;
 // the other functions copy them for the call. The arrays must stay valid and
 // unchanged until the mesh is freed. NULL on failure (`CTR_INVALID_ARGUMENT` for a
