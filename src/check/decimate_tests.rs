@@ -121,6 +121,27 @@ fn stopping_early_or_going_past_the_target_is_named() {
         ..unguarded.clone()
     };
     assert!(decimate(&mesh, &mesh, &locked).expect("judged").passed());
+    // An unguarded run stopped early, its output on its own (compacted) vertex list and
+    // judged without maps: with nothing locked, its collapsible edges are still named.
+    let half = run_decimate(
+        &mesh,
+        &DecimateOptions {
+            allow_foldover: true,
+            ..DecimateOptions::keep(0.5)
+        },
+    )
+    .expect("decimates");
+    assert_ne!(half.mesh.vertex_count, mesh.vertex_count);
+    let v = decimate(
+        &mesh,
+        &half.mesh,
+        &DecimateCheck {
+            keep: Some(0.25),
+            ..unguarded.clone()
+        },
+    )
+    .expect("judged");
+    assert_eq!(kinds(&v), vec![FailureKind::TargetMissed], "{v:?}");
     // A quarter of the faces judged against a target of a half: gone past it.
     let r = run_decimate(&mesh, &DecimateOptions::keep(0.25)).expect("decimates");
     let v = decimate(
@@ -261,6 +282,13 @@ fn locks_and_endpoint_positions_are_checked() {
     }
     let v = judge(&mesh, &moved, &o, true);
     assert!(kinds(&v).contains(&FailureKind::MovedVertex), "{v:?}");
+    // Named by the output vertex it survives as (not its input id, 3).
+    assert_ne!(o3, 3);
+    let named = v
+        .failures
+        .iter()
+        .find(|f| f.kind == FailureKind::MovedVertex);
+    assert_eq!(named.and_then(|f| f.vertex), Some(o3 as u32), "{v:?}");
     // ... and no longer an input position: the endpoint placement is broken too.
     assert!(kinds(&v).contains(&FailureKind::InvalidPosition), "{v:?}");
     // Without the maps the output's vertices are not the input's (a compacted list):
