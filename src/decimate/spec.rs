@@ -61,7 +61,7 @@ fn allowed(d: &Decimator<'_>, p: VertexId, q: VertexId) -> Option<(f64, u32, u32
 /// `simplify::geometry`'s tests). The faces are enumerated from the stars of both
 /// endpoints, sorted and deduplicated, without the decimator's walk.
 fn guard_ok(d: &Decimator<'_>, c: &Candidate) -> bool {
-    let pos = |v: VertexId| d.pos[v.index()];
+    let pos = |v: VertexId| d.vert[v.index()].pos;
     let mut faces: Vec<_> = [c.keep, c.gone]
         .iter()
         .flat_map(|&v| d.tri.star(v).map(|s| s.corner.face()))
@@ -302,15 +302,15 @@ pub(super) fn at_end(d: &Decimator<'_>, stopped: Stopped) {
     }
     // M2: each live vertex's quadric is the sum of its class's initial quadrics (summed
     // here in id order, so equal up to rounding).
-    let n = d.merged_into.len();
+    let n = d.vert.len();
     let mut sum = vec![(Quadric::default(), 0.0f64); n];
     for v in 0..d.first_virtual as usize {
-        if d.merged_into[v] == NONE && !d.tri.is_vertex(VertexId(v as u32)) {
+        if d.vert[v].merged_into == NONE && !d.tri.is_vertex(VertexId(v as u32)) {
             continue;
         }
         let mut r = v;
-        while d.merged_into[r] != NONE {
-            r = d.merged_into[r] as usize;
+        while d.vert[r].merged_into != NONE {
+            r = d.vert[r].merged_into as usize;
         }
         let (q, w) = d.initial[v];
         sum[r].0.add(&q);
@@ -320,14 +320,14 @@ pub(super) fn at_end(d: &Decimator<'_>, stopped: Stopped) {
         if !d.tri.is_vertex(VertexId(v as u32)) {
             continue;
         }
-        let (have, have_w) = (d.quadric[v], d.weight[v]);
+        let (have, have_w) = (d.vert[v].quadric, d.vert[v].weight);
         let tol = 1e-9 * w.abs().max(1e-300);
         assert!(
             (have_w - w).abs() <= tol,
             "specification violated: M2 (quadric sums): vertex {v}'s weight {have_w} is not its class's sum {w}"
         );
         // The quadrics compared at the vertex and at the corners of its class's box.
-        let p = d.pos[v];
+        let p = d.vert[v].pos;
         for probe in [p, [p[0] + 1.0, p[1], p[2]], [p[0], p[1] - 1.0, p[2] + 1.0]] {
             let (a, b) = (have.error(probe), q.error(probe));
             let scale = a.abs().max(b.abs()).max(w);
@@ -525,7 +525,7 @@ mod tests {
             .find(|&v| d.tri.is_vertex(VertexId(v as u32)))
             .expect("a live vertex");
         let extra = d.initial[v].0;
-        d.quadric[v].add(&extra);
+        d.vert[v].quadric.add(&extra);
         assert_fails("M2", || at_end(&d, Stopped::Target));
     }
 
@@ -670,8 +670,8 @@ mod tests {
         let v = (0..d.first_virtual as usize)
             .find(|&v| d.tri.is_vertex(VertexId(v as u32)))
             .expect("a live vertex");
-        let p = d.pos[v];
-        let kept = d.quadric[v];
+        let p = d.vert[v].pos;
+        let kept = d.vert[v].quadric;
         for (axis, sign) in [(0, 1.0), (1, -1.0), (2, 1.0)] {
             let mut normal = [0.0; 3];
             normal[axis] = 1.0;
@@ -686,9 +686,9 @@ mod tests {
             bump.add(&Quadric::plane(normal, at(sign), -0.25));
             assert!(bump.error(p).abs() < 1e-12 && bump.error(at(-sign)).abs() < 1e-12);
             assert!((bump.error(at(sign)) - 2.0).abs() < 1e-12);
-            d.quadric[v].add(&bump);
+            d.vert[v].quadric.add(&bump);
             assert_fails("quadric gives", || at_end(&d, Stopped::Target));
-            d.quadric[v] = kept;
+            d.vert[v].quadric = kept;
             at_end(&d, Stopped::Target);
         }
     }
@@ -705,13 +705,13 @@ mod tests {
         at_end(&d, Stopped::Target);
         let v = (0..d.first_virtual as usize)
             .filter(|&v| d.tri.is_vertex(VertexId(v as u32)))
-            .min_by(|&a, &b| d.weight[a].total_cmp(&d.weight[b]))
+            .min_by(|&a, &b| d.vert[a].weight.total_cmp(&d.vert[b].weight))
             .expect("a live vertex");
-        let w = d.weight[v];
+        let w = d.vert[v].weight;
         assert!(0.0 < w && w < 0.25, "a light vertex: {w}");
-        d.weight[v] = w * (1.0 + 1e-12);
+        d.vert[v].weight = w * (1.0 + 1e-12);
         at_end(&d, Stopped::Target);
-        d.weight[v] = w * (1.0 + 1e-8);
+        d.vert[v].weight = w * (1.0 + 1e-8);
         assert_fails("weight", || at_end(&d, Stopped::Target));
     }
 }
