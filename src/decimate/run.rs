@@ -753,10 +753,11 @@ impl<'o> Decimator<'o> {
                 let (cost, p, q) = unpack(e);
                 // An entry is current while it is the best key of one of its ends (both
                 // then live): a vertex whose best key changes queues the new one, and
-                // the old entries are dropped here.
-                if self.vert[p as usize].merged_into != NONE
+                // the old entries are dropped here. (The best keys first: most entries
+                // fail there, and the records are read only for the few that pass.)
+                if (self.best[p as usize] != e && self.best[q as usize] != e)
+                    || self.vert[p as usize].merged_into != NONE
                     || self.vert[q as usize].merged_into != NONE
-                    || (self.best[p as usize] != e && self.best[q as usize] != e)
                 {
                     continue;
                 }
