@@ -258,6 +258,25 @@ mod tests {
         }
     }
 
+    /// A heap of `n ≥ 1` keys holds them in `⌈(n + 3) / 4⌉` lines (node 0 at slot 3; no
+    /// line for no key), built at once or pushed one by one: the memory bound of the decimator counts on it (the
+    /// build allocates an eighth more room, which pushes fill before the list grows).
+    #[test]
+    fn a_heap_of_n_keys_takes_n_plus_three_slots() {
+        for n in [0usize, 1, 2, 5, 13, 14, 100, 1000] {
+            let keys: Vec<u128> = (0..n as u128).rev().collect();
+            let lines = if n == 0 { 0 } else { (n + OFFSET).div_ceil(4) };
+            let built = Queue::from_vec(keys.clone());
+            assert_eq!(built.lines.len(), lines, "built, n = {n}");
+            assert!(built.lines.capacity() >= (n + n / 8 + OFFSET).div_ceil(4));
+            let mut pushed = Queue::default();
+            for &k in &keys {
+                pushed.push(k);
+            }
+            assert_eq!(pushed.lines.len(), lines, "pushed, n = {n}");
+        }
+    }
+
     /// Heaps built from no key, one key and two keys give them back in order (the
     /// bottom-up build has no parent to sift below two keys).
     #[test]
