@@ -43,9 +43,9 @@ pub(super) struct Candidate {
 /// **Why one record.** Costing an edge reads both endpoints' quadrics, weights,
 /// positions and locks, and the endpoints are all over the mesh: kept in separate
 /// lists, they were five to seven cache misses per endpoint, and the loads of the
-/// quadrics the largest share of the run (cachegrind, with a 2 MiB last-level cache as
-/// this machine's L2: 16 % fewer misses of the whole `decimate` call on botijo, 82k
-/// faces). Aligned to 64 bytes, the 121 bytes of a record take two lines exactly; the
+/// quadrics the largest share of the run (cachegrind with a 2 MiB last-level cache, a
+/// per-core L2's size: 16 % fewer misses of the whole `decimate` call on botijo, 82k
+/// faces; docs/benchmarks.md, "Cache misses of the run"). Aligned to 64 bytes, the 121 bytes of a record take two lines exactly; the
 /// fields folded in from their own lists pay for most of the padding.
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[repr(C, align(64))]
