@@ -259,8 +259,9 @@ mod tests {
     }
 
     /// A heap of `n ≥ 1` keys holds them in `⌈(n + 3) / 4⌉` lines (node 0 at slot 3; no
-    /// line for no key), built at once or pushed one by one: the memory bound of the decimator counts on it (the
-    /// build allocates an eighth more room, which pushes fill before the list grows).
+    /// line for no key), built at once or pushed one by one: the memory bound of the
+    /// decimator counts on it (the build allocates an eighth more room, which pushes
+    /// fill before the list grows).
     #[test]
     fn a_heap_of_n_keys_takes_n_plus_three_slots() {
         for n in [0usize, 1, 2, 5, 13, 14, 100, 1000] {

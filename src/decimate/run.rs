@@ -45,8 +45,9 @@ pub(super) struct Candidate {
 /// lists, they were five to seven cache misses per endpoint, and the loads of the
 /// quadrics the largest share of the run (cachegrind with a 2 MiB last-level cache, a
 /// per-core L2's size: 16 % fewer misses of the whole `decimate` call on botijo, 82k
-/// faces; docs/benchmarks.md, "Cache misses of the run"). Aligned to 64 bytes, the 121 bytes of a record take two lines exactly; the
-/// fields folded in from their own lists pay for most of the padding.
+/// faces; docs/benchmarks.md, "Cache misses of the run"). Aligned to 64 bytes, the 121
+/// bytes of a record take two lines exactly; the fields folded in from their own lists
+/// pay for most of the padding.
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[repr(C, align(64))]
 pub(super) struct Vert {
@@ -82,11 +83,11 @@ pub(crate) struct Decimator<'o> {
     pub(super) tri: Triangulation,
     /// Ids from here on are virtual (cone apexes).
     pub(super) first_virtual: u32,
-    /// Per vertex: its position, quadric, weight and lock (one record, see [`Vert`]).
+    /// Per vertex: its state in one record (see [`Vert`]).
     pub(super) vert: Vec<Vert>,
     /// Per vertex: the key of its cheapest edge that its endpoints allow and no guard
-    /// has refused since (`NO_KEY` if none; empty under the pass schedule). The queue holds an entry for every such
-    /// key; other entries are stale.
+    /// has refused since (`NO_KEY` if none; empty under the pass schedule). The queue
+    /// holds an entry for every such key; other entries are stale.
     best: Vec<u128>,
     /// The edges whose verdict the neighbourhood decided, until a collapse next to them
     /// (the only thing that can change it): refused by a guard (`true`; the link
@@ -165,12 +166,11 @@ impl<'o> Decimator<'o> {
             .fold(0.0f64, |a, x| a.max(x.abs()));
         let scale = power_of_two_scale(largest);
         let mut vert = vec![Vert::default(); nv];
-        for (v, p) in vert.iter_mut().zip(positions) {
+        // The real vertices are the first `first_virtual`, one per position.
+        for (k, (v, p)) in vert.iter_mut().zip(positions).enumerate() {
             v.pos = p.map(|x| x * scale);
-        }
-        for (v, l) in vert.iter_mut().enumerate().take(first_virtual as usize) {
-            if opts.locked.get(v).copied().unwrap_or(false) {
-                l.lock = LOCKED;
+            if opts.locked.get(k).copied().unwrap_or(false) {
+                v.lock = LOCKED;
             }
         }
         if opts.lock_boundary {
